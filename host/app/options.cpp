@@ -1,0 +1,64 @@
+#include "app/options.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <regex>
+
+namespace clr {
+namespace {
+
+// "WxH" with positive integers.
+bool parse_size(const std::string& text, int& width, int& height) {
+    std::smatch match;
+    static const std::regex pattern(R"((\d{1,6})[xX](\d{1,6}))");
+    if (!std::regex_match(text, match, pattern)) return false;
+    width = std::stoi(match[1]);
+    height = std::stoi(match[2]);
+    return width > 0 && height > 0;
+}
+
+}  // namespace
+
+ParsedOptions parse_options(int argc, const char* const* argv) {
+    ParsedOptions parsed;
+    Options& options = parsed.options;
+    CLI::App app{"clrender: renders spheres-and-billboards scenes with OpenCL", "clrender"};
+    app.set_version_flag("--version", std::string("clrender ") + CLRENDER_VERSION);
+    app.add_option("scene", options.scene_path, "Scene file (.json or .js)");
+    app.add_option("-o,--output", options.output_path, "Image to write (.png or .ppm); default <scene name>.png");
+    app.add_flag("--list-devices", options.list_devices, "Print the OpenCL platforms and devices, then exit");
+    app.add_option("-d,--device", options.device,
+                   "OpenCL device: index (0), platform:device (0:1) or a name substring; "
+                   "default $CLRENDER_DEVICE, else the first CPU device");
+    std::string size;
+    app.add_option("--size", size, "Override the scene's resolution, e.g. 1920x1080");
+    app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
+    app.add_flag("--placeholders", options.placeholders,
+                 "Render a magenta checkerboard for billboard images that are missing, instead of failing");
+    app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file");
+    app.add_flag("-q,--quiet", options.quiet, "No progress output");
+    app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
+
+    try {
+        app.parse(argc, argv);
+        if (!size.empty()) {
+            int width = 0, height = 0;
+            if (!parse_size(size, width, height))
+                throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT with positive integers, got '" + size + "'");
+            options.width = width;
+            options.height = height;
+        }
+        if (options.scene_path.empty() && !options.list_devices)
+            throw CLI::RequiredError("a scene file");
+    } catch (const CLI::ParseError& error) {
+        int code = app.exit(error);  // prints help, version or the error with a usage hint
+        parsed.exit_code = code == 0 ? 0 : 1;
+        return parsed;
+    }
+    if (options.device.empty()) {
+        if (const char* env = std::getenv("CLRENDER_DEVICE")) options.device = env;
+    }
+    return parsed;
+}
+
+}  // namespace clr

@@ -1,0 +1,61 @@
+// Typed errors thrown at the program's boundaries and caught once in main, each mapped to
+// the exit code the command line documents (SPEC 3).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace clr {
+
+enum ExitCode : int {
+    kExitOk = 0,
+    kExitUsage = 1,
+    kExitScene = 2,   // bad scene file or input image
+    kExitDevice = 3,  // OpenCL platform, device, build or run-time error
+    kExitOutput = 4,  // output file or encoder error
+};
+
+class Error : public std::runtime_error {
+public:
+    Error(const std::string& message, ExitCode code) : std::runtime_error(message), code_(code) {}
+    ExitCode code() const { return code_; }
+
+private:
+    ExitCode code_;
+};
+
+// A problem with the scene or an input image. `file` is the file at fault, `location` a
+// JSON pointer such as "/spheres/3/radius" (empty when the whole file is meant, or for
+// images), and `detail` says what is wrong.
+class SceneError : public Error {
+public:
+    SceneError(const std::string& file, const std::string& location, const std::string& detail)
+        : Error(format(file, location, detail), kExitScene), file_(file), location_(location), detail_(detail) {}
+
+    const std::string& file() const { return file_; }
+    const std::string& location() const { return location_; }
+    const std::string& detail() const { return detail_; }
+
+private:
+    static std::string format(const std::string& file, const std::string& location, const std::string& detail) {
+        return file + (location.empty() ? "" : ": " + location) + ": " + detail;
+    }
+    std::string file_, location_, detail_;
+};
+
+class DeviceError : public Error {
+public:
+    explicit DeviceError(const std::string& message) : Error(message, kExitDevice) {}
+};
+
+class OutputError : public Error {
+public:
+    explicit OutputError(const std::string& message) : Error(message, kExitOutput) {}
+};
+
+class UsageError : public Error {
+public:
+    explicit UsageError(const std::string& message) : Error(message, kExitUsage) {}
+};
+
+}  // namespace clr

@@ -1,0 +1,32 @@
+// One OpenCL device ready for work: its context and an in-order, profiling-enabled queue
+// (profiling gives the kernel times of the timing report), and program builds on it.
+#pragma once
+
+#include <string>
+
+#include "device/device_selection.h"
+#include "device/opencl.h"
+
+namespace clr {
+
+class DeviceContext {
+public:
+    // Throws DeviceError when the device cannot be opened.
+    explicit DeviceContext(const DeviceEntry& device);
+
+    const DeviceEntry& entry() const { return entry_; }
+    const cl::Device& device() const { return entry_.device; }
+    const cl::Context& context() const { return context_; }
+    cl::CommandQueue& queue() { return queue_; }
+
+    // Builds `source` with `options`. A failure throws DeviceError carrying the build
+    // options and the compiler's log.
+    cl::Program build_program(const std::string& source, const std::string& options) const;
+
+private:
+    DeviceEntry entry_;
+    cl::Context context_;
+    cl::CommandQueue queue_;
+};
+
+}  // namespace clr

@@ -1,0 +1,112 @@
+#include "device/device_selection.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <sstream>
+
+#include "core/errors.h"
+#include "device/cl_errors.h"
+
+namespace clr {
+namespace {
+
+std::string device_type_name(cl_device_type type) {
+    if (type & CL_DEVICE_TYPE_GPU) return "GPU";
+    if (type & CL_DEVICE_TYPE_CPU) return "CPU";
+    if (type & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
+    return "other";
+}
+
+std::string lower(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+}
+
+// The bindings return strings with the C terminator included on some drivers.
+std::string trimmed(std::string text) {
+    while (!text.empty() && (text.back() == '\0' || std::isspace(static_cast<unsigned char>(text.back()))))
+        text.pop_back();
+    return text;
+}
+
+std::optional<int> parse_index(const std::string& text) {
+    if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), ::isdigit)) return std::nullopt;
+    return std::stoi(text);
+}
+
+}  // namespace
+
+std::vector<DeviceEntry> list_devices() {
+    std::vector<cl::Platform> platforms;
+    try {
+        cl::Platform::get(&platforms);
+    } catch (const cl::Error& error) {
+        if (error.err() == -1001) return {};  // the ICD loader found no driver at all
+        throw DeviceError(describe_cl_error(error, "listing OpenCL platforms"));
+    }
+    std::vector<DeviceEntry> entries;
+    for (std::size_t p = 0; p < platforms.size(); ++p) {
+        std::vector<cl::Device> devices;
+        try {
+            platforms[p].getDevices(CL_DEVICE_TYPE_ALL, &devices);
+        } catch (const cl::Error&) {
+            continue;  // a platform without devices reports CL_DEVICE_NOT_FOUND
+        }
+        for (std::size_t d = 0; d < devices.size(); ++d) {
+            DeviceEntry entry;
+            entry.index = static_cast<int>(entries.size());
+            entry.platform_index = static_cast<int>(p);
+            entry.device_index = static_cast<int>(d);
+            entry.platform_name = trimmed(platforms[p].getInfo<CL_PLATFORM_NAME>());
+            entry.device_name = trimmed(devices[d].getInfo<CL_DEVICE_NAME>());
+            entry.type = device_type_name(devices[d].getInfo<CL_DEVICE_TYPE>());
+            entry.version = trimmed(devices[d].getInfo<CL_DEVICE_VERSION>());
+            entry.device = devices[d];
+            entries.push_back(entry);
+        }
+    }
+    return entries;
+}
+
+std::string format_device_list(const std::vector<DeviceEntry>& devices) {
+    if (devices.empty()) return "No OpenCL devices found (is an OpenCL driver such as pocl-opencl-icd installed?)\n";
+    std::ostringstream out;
+    std::string platform;
+    for (const DeviceEntry& entry : devices) {
+        if (entry.platform_name != platform || entry.device_index == 0) {
+            platform = entry.platform_name;
+            out << "Platform " << entry.platform_index << ": " << platform << "\n";
+        }
+        out << "  [" << entry.index << "] " << entry.platform_index << ":" << entry.device_index << "  "
+            << entry.device_name << " (" << entry.type << ", " << entry.version << ")\n";
+    }
+    return out.str();
+}
+
+DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::string& selector) {
+    if (devices.empty())
+        throw DeviceError("no OpenCL device found; install an OpenCL driver (for the CPU: pocl-opencl-icd)");
+    if (selector.empty()) {
+        auto cpu = std::find_if(devices.begin(), devices.end(), [](const DeviceEntry& e) { return e.type == "CPU"; });
+        return cpu != devices.end() ? *cpu : devices.front();
+    }
+    if (auto index = parse_index(selector)) {
+        if (*index < static_cast<int>(devices.size())) return devices[*index];
+    } else if (auto colon = selector.find(':'); colon != std::string::npos) {
+        auto platform = parse_index(selector.substr(0, colon));
+        auto device = parse_index(selector.substr(colon + 1));
+        for (const DeviceEntry& entry : devices)
+            if (platform && device && entry.platform_index == *platform && entry.device_index == *device) return entry;
+    }
+    if (!parse_index(selector)) {
+        std::string wanted = lower(selector);
+        for (const DeviceEntry& entry : devices)
+            if (lower(entry.device_name).find(wanted) != std::string::npos ||
+                lower(entry.platform_name).find(wanted) != std::string::npos)
+                return entry;
+    }
+    throw DeviceError("unknown OpenCL device '" + selector + "'; available devices:\n" + format_device_list(devices));
+}
+
+}  // namespace clr

@@ -1,0 +1,21 @@
+// Writes rendered frames: PNG or PPM (binary P6), chosen by the path's extension, always
+// atomically (see atomic_file.h).
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace clr {
+
+enum class ImageFormat { Png, Ppm };
+
+// The format for `path` from its extension (".png", ".ppm", any case). Throws UsageError for
+// any other extension, naming the path and the supported ones.
+ImageFormat image_format_for(const std::string& path);
+
+// Writes the RGBA image (alpha is dropped: outputs are opaque RGB). Throws OutputError
+// naming the path when the file cannot be written; nothing is left under `path` then.
+void write_image(const std::string& path, const Image& image);
+
+}  // namespace clr

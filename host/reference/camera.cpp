@@ -1,0 +1,44 @@
+// Reference camera: the orthonormal basis and the witness point of each pixel (SPEC 2,
+// Camera; the lecture's "Building coordinates system" and "Witness points").
+#include <cmath>
+
+#include "reference/reference.h"
+
+namespace clr::reference {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, double fov_degrees, int width,
+                        int height) {
+    CameraFrame camera;
+    camera.eye = eye;
+    camera.w = normalize(eye - lookat);         // points back, towards the viewer
+    camera.u = normalize(cross(up, camera.w));  // screen right
+    camera.v = cross(camera.w, camera.u);       // screen up; unit because w and u are orthonormal
+    camera.width = width;
+    camera.height = height;
+
+    // The image plane sits at distance 1, so tan(fov/2) is half its extent across the larger
+    // image dimension; the smaller one is scaled down so that pixels stay square.
+    const double half_extent = std::tan(fov_degrees * kPi / 360.0);
+    if (width >= height) {
+        camera.half_width = half_extent;
+        camera.half_height = half_extent * height / width;
+    } else {
+        camera.half_height = half_extent;
+        camera.half_width = half_extent * width / height;
+    }
+    return camera;
+}
+
+Ray primary_ray(const CameraFrame& camera, int col, int row) {
+    // Pixel centres: (col + 0.5, row + 0.5) mapped to [-1, 1], row 0 at the top (+v).
+    const double x = 2.0 * (col + 0.5) / camera.width - 1.0;
+    const double y = 1.0 - 2.0 * (row + 0.5) / camera.height;
+    const Vec3 witness_direction = -camera.w + camera.u * (x * camera.half_width) + camera.v * (y * camera.half_height);
+    return {camera.eye, normalize(witness_direction)};
+}
+
+}  // namespace clr::reference

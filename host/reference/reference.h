@@ -1,0 +1,72 @@
+// The double-precision host reference: an independent implementation of every kernel stage
+// (camera rays, nearest-hit intersection, shading), written from the lecture's formulas and
+// SPEC section 2, not from the kernels. Tests compare each kernel with it; `--reference`
+// renders with it.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace clr::reference {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct Ray {
+    Vec3 origin;
+    Vec3 direction;  // unit length
+};
+
+// The camera of one frame (SPEC 2, Camera).
+struct CameraFrame {
+    Vec3 eye;
+    Vec3 u, v, w;        // orthonormal: u screen right, v screen up, w towards the viewer
+    double half_width;   // half the image plane's extent along u, at distance 1
+    double half_height;  // half the extent along v
+    int width = 0, height = 0;
+};
+
+CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, double fov_degrees, int width,
+                        int height);
+
+// The ray from the eye through the centre of pixel (col, row); row 0 is the top row.
+Ray primary_ray(const CameraFrame& camera, int col, int row);
+
+enum class HitKind { None, Sphere, Billboard };
+
+struct Hit {
+    HitKind kind = HitKind::None;
+    int index = -1;
+    double t = kInfinity;  // distance along the unit direction
+    double a = 0, b = 0;   // billboard coordinates of the hit: P = UL + a(UR-UL) + b(LL-UL)
+};
+
+// The surface a secondary ray leaves, which it must not hit again.
+struct SurfaceId {
+    HitKind kind = HitKind::None;
+    int index = -1;
+};
+
+// Nearest surface with 0 < t < t_max, skipping `leaving`. Billboard texels whose alpha is
+// below 255 let the ray through.
+Hit intersect(const Scene& scene, const Ray& ray, double t_max = kInfinity, SurfaceId leaving = {});
+
+// How close `ray` passes to a place where intersect()'s answer changes: a sphere's
+// silhouette, a billboard's edge, the edge of a texel, or two surfaces at nearly the same
+// depth. Relative measure (distances divided by the sphere radius, by the billboard's unit
+// coordinates, by the depth); tests allow float kernels to disagree only where this is small.
+double decision_margin(const Scene& scene, const Ray& ray);
+
+// The colour seen along a primary ray: flat or sun-lit surfaces, shadows, mirrors up to the
+// scene's MaxDepth, background (SPEC 2, Lighting and Mirrors). Unclamped.
+Color trace(const Scene& scene, const Ray& ray);
+
+// Display byte for a colour channel: round(clamp(c, 0, 1) * 255).
+std::uint8_t to_byte(double channel);
+
+// Renders one frame: RGBA bytes, alpha 255, rows from the top.
+Image render(const Scene& scene, const CameraFrame& camera);
+
+}  // namespace clr::reference

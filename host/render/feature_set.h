@@ -1,0 +1,31 @@
+// Which optional code paths the kernels compile in for a scene. A scene pays only for what
+// it uses: without billboards no billboard loop, without transparent texels no alpha test,
+// without a sun no shadow rays, without mirrors no reflection path.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace clr {
+
+struct FeatureSet {
+    bool spheres = false;      // at least one sphere
+    bool billboards = false;   // at least one billboard
+    bool textures = false;     // a billboard shows an image
+    bool alpha = false;        // a shown image has a texel with alpha below 255
+    bool sun = false;          // sun lighting with shadow rays
+    bool mirrors = false;      // a mirror surface
+
+    // Everything on: the general kernel that every specialised variant must match.
+    static FeatureSet all();
+    static FeatureSet of(const Scene& scene);
+
+    // The -D options, sorted and always listing every macro (0 or 1), so that equal
+    // feature sets give byte-identical option strings.
+    std::string build_options() const;
+
+    bool operator==(const FeatureSet& other) const { return build_options() == other.build_options(); }
+};
+
+}  // namespace clr

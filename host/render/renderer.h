@@ -1,0 +1,53 @@
+// Renders frames of one scene on one OpenCL device. Construction builds the program for the
+// scene's feature set and uploads the scene buffers once; each frame then only changes the
+// camera.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "device/device_context.h"
+#include "render/compiled_scene.h"
+#include "scene/scene.h"
+
+namespace clr {
+
+struct RendererOptions {
+    std::string kernel_dir;                // read kernels from here instead of the embedded copies
+    std::optional<FeatureSet> features;    // compile these instead of the scene's own (tests)
+};
+
+struct FrameTiming {
+    double kernel_ms = 0;  // device time of the render kernel (OpenCL profiling events)
+    double total_ms = 0;   // wall time from enqueue to the finished image in host memory
+};
+
+class Renderer {
+public:
+    // Throws DeviceError on a build or upload failure.
+    Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options = {});
+
+    // Renders one frame seen by `camera` (its width and height set the image size).
+    Image render_frame(const ClrCamera& camera, FrameTiming* timing = nullptr);
+
+    const FeatureSet& features() const { return features_; }
+    double build_ms() const { return build_ms_; }
+
+    // For the stage tests: the built program and the scene's kernel arguments, bound from
+    // argument `first` on in the order of CLR_SCENE_PARAMS (spheres, billboards, texels, info).
+    const cl::Program& program() const { return program_; }
+    void bind_scene(cl::Kernel& kernel, int first) const;
+
+private:
+    DeviceContext& device_;
+    FeatureSet features_;
+    ClrSceneInfo info_{};
+    cl::Program program_;
+    cl::Kernel render_kernel_;
+    cl::Buffer spheres_, billboards_, texels_;
+    cl::Buffer pixels_;
+    std::size_t pixels_capacity_ = 0;
+    double build_ms_ = 0;
+};
+
+}  // namespace clr

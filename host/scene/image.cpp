@@ -1,0 +1,16 @@
+// Image helpers declared in scene.h.
+#include <cstddef>
+
+#include "scene/scene.h"
+
+namespace clr {
+
+bool Image::has_transparency() const {
+    // Alpha is every fourth byte; SPEC 2 treats any alpha below 255 as transparent.
+    for (std::size_t i = 3; i < rgba.size(); i += 4) {
+        if (rgba[i] < 255) return true;
+    }
+    return false;
+}
+
+}  // namespace clr

@@ -1,0 +1,273 @@
+// Image input. PNG and JPEG are decoded by stb_image; PPM (P3 and P6) by the small reader
+// below, for the reasons given at read_ppm(). The format is taken from the file's first bytes.
+#include "scene/image_loader.h"
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <initializer_list>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace clr {
+namespace {
+
+using Bytes = std::vector<unsigned char>;
+
+constexpr int kRgba = 4;
+
+// ---------------------------------------------------------------------------------------
+// Reading the file and recognising its format
+
+Bytes read_whole_file(const std::string& path) {
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (status.type() == std::filesystem::file_type::not_found) throw ImageError("no such file");
+    if (error) throw ImageError("cannot read: " + error.message());
+    if (status.type() != std::filesystem::file_type::regular) throw ImageError("not a file");
+
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
+    if (!file) throw ImageError(std::string("cannot open: ") + std::strerror(errno));
+    Bytes bytes;
+    unsigned char chunk[1 << 16];
+    while (std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get())) {
+        bytes.insert(bytes.end(), chunk, chunk + got);
+    }
+    if (std::ferror(file.get())) throw ImageError(std::string("cannot read: ") + std::strerror(errno));
+    if (bytes.empty()) throw ImageError("empty file");
+    // stb_image takes the length as an int.
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw ImageError("file too large");
+    return bytes;
+}
+
+enum class FileFormat { Png, Jpeg, PpmAscii, PpmBinary };
+
+bool starts_with(const Bytes& bytes, std::initializer_list<unsigned char> magic) {
+    return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+}
+
+bool is_ppm_whitespace(unsigned char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+FileFormat detect_format(const Bytes& bytes) {
+    if (starts_with(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'})) return FileFormat::Png;
+    if (starts_with(bytes, {0xFF, 0xD8, 0xFF})) return FileFormat::Jpeg;
+    // Netpbm: "P" and a digit, then whitespace (or a comment) before the width.
+    if (bytes.size() >= 3 && bytes[0] == 'P' && (is_ppm_whitespace(bytes[2]) || bytes[2] == '#')) {
+        if (bytes[1] == '3') return FileFormat::PpmAscii;
+        if (bytes[1] == '6') return FileFormat::PpmBinary;
+        if (bytes[1] >= '1' && bytes[1] <= '7') {
+            throw ImageError(std::string("unsupported image format: Netpbm P") + char(bytes[1]) +
+                             " (only PPM P3 and P6 are read)");
+        }
+    }
+    throw ImageError("unsupported image format (PNG, JPEG, PPM P3 and P6 are read)");
+}
+
+// A sample in 0..maxval as a byte in 0..255, rounded to nearest (halves up).
+std::uint8_t scale_to_byte(std::uint32_t sample, std::uint32_t maxval) {
+    return static_cast<std::uint8_t>((sample * 255 + maxval / 2) / maxval);
+}
+
+// ---------------------------------------------------------------------------------------
+// PNG and JPEG, through stb_image
+
+struct StbFree {
+    void operator()(void* pixels) const { stbi_image_free(pixels); }
+};
+
+ImageError stb_error(const char* format_name) {
+    const char* reason = stbi_failure_reason();
+    return ImageError(std::string("corrupt ") + format_name + ": " + (reason ? reason : "unknown error"));
+}
+
+// Decodes to 8-bit RGBA; stb fills in alpha 255 for images without alpha, and expands grey.
+void decode_with_stb(const Bytes& bytes, const char* format_name, Image& image) {
+    const int length = static_cast<int>(bytes.size());
+    int channels_in_file = 0;
+    // 16-bit files are read at full depth and rounded here: stbi_load would truncate
+    // (value >> 8), which is up to one step darker than round(value * 255 / 65535).
+    if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
+        std::unique_ptr<std::uint16_t, StbFree> pixels(stbi_load_16_from_memory(
+            bytes.data(), length, &image.width, &image.height, &channels_in_file, kRgba));
+        if (!pixels) throw stb_error(format_name);
+        const std::size_t count = static_cast<std::size_t>(image.width) * image.height * kRgba;
+        image.rgba.resize(count);
+        for (std::size_t i = 0; i < count; ++i) image.rgba[i] = scale_to_byte(pixels.get()[i], 65535);
+        return;
+    }
+    std::unique_ptr<unsigned char, StbFree> pixels(
+        stbi_load_from_memory(bytes.data(), length, &image.width, &image.height, &channels_in_file, kRgba));
+    if (!pixels) throw stb_error(format_name);
+    const std::size_t count = static_cast<std::size_t>(image.width) * image.height * kRgba;
+    image.rgba.assign(pixels.get(), pixels.get() + count);
+}
+
+// ---------------------------------------------------------------------------------------
+// PPM, P3 and P6
+//
+// Hand-written because stb_image cannot do the job: it does not read P3 (ASCII) at all, and
+// its P6 reader (stb_image 2.27, as packaged by Debian) returns uninitialised pixels instead
+// of an error when the raster is cut short, does not scale samples whose maxval is not 255,
+// and reads 16-bit samples in the host's byte order instead of big-endian. Both variants
+// share the header, so one reader serves both, and the binary raster takes a few lines.
+
+// Reads the unsigned decimal numbers of a Netpbm header (and of a P3 raster), separated by
+// whitespace, where '#' starts a comment that runs to the end of its line. Netpbm allows a
+// comment wherever whitespace may appear.
+class PpmNumberReader {
+public:
+    PpmNumberReader(const Bytes& bytes, std::size_t start) : bytes_(bytes), pos_(start) {}
+
+    // The next number; `what` names it in errors ("width", "sample", ...). Stops right
+    // after the last digit, so a P6 reader can find the single whitespace byte after maxval.
+    std::uint32_t next(const char* what, const char* error_at_end) {
+        skip_whitespace_and_comments();
+        if (pos_ == bytes_.size()) throw ImageError(error_at_end);
+        if (!is_digit(bytes_[pos_])) throw ImageError(std::string("corrupt PPM: expected a number for ") + what);
+        std::uint64_t value = 0;
+        for (; pos_ < bytes_.size() && is_digit(bytes_[pos_]); ++pos_) {
+            value = value * 10 + (bytes_[pos_] - '0');
+            if (value > kLargestNumber) throw ImageError(std::string("corrupt PPM: ") + what + " is too large");
+        }
+        if (pos_ < bytes_.size() && !is_ppm_whitespace(bytes_[pos_]) && bytes_[pos_] != '#') {
+            throw ImageError(std::string("corrupt PPM: unexpected character after ") + what);
+        }
+        return static_cast<std::uint32_t>(value);
+    }
+
+    std::size_t position() const { return pos_; }
+
+private:
+    // Larger than any valid maxval (65535) and any width or height we could hold.
+    static constexpr std::uint64_t kLargestNumber = 1u << 30;
+
+    static bool is_digit(unsigned char c) { return c >= '0' && c <= '9'; }
+
+    void skip_whitespace_and_comments() {
+        while (pos_ < bytes_.size()) {
+            if (bytes_[pos_] == '#') {
+                while (pos_ < bytes_.size() && bytes_[pos_] != '\n' && bytes_[pos_] != '\r') ++pos_;
+            } else if (is_ppm_whitespace(bytes_[pos_])) {
+                ++pos_;
+            } else {
+                return;
+            }
+        }
+    }
+
+    const Bytes& bytes_;
+    std::size_t pos_;
+};
+
+struct PpmHeader {
+    std::uint32_t width = 0, height = 0, maxval = 0;
+    std::uint64_t sample_count() const { return std::uint64_t(width) * height * 3; }
+};
+
+PpmHeader read_ppm_header(PpmNumberReader& numbers) {
+    const char* truncated = "truncated PPM header";
+    PpmHeader header;
+    header.width = numbers.next("width", truncated);
+    header.height = numbers.next("height", truncated);
+    header.maxval = numbers.next("maxval", truncated);
+    if (header.width == 0 || header.height == 0) throw ImageError("corrupt PPM: zero width or height");
+    if (header.maxval == 0 || header.maxval > 65535) {
+        throw ImageError("corrupt PPM: maxval " + std::to_string(header.maxval) + " is not in 1..65535");
+    }
+    return header;
+}
+
+void check_sample(std::uint32_t sample, const PpmHeader& header) {
+    if (sample > header.maxval) {
+        throw ImageError("corrupt PPM: sample " + std::to_string(sample) + " exceeds maxval " +
+                         std::to_string(header.maxval));
+    }
+}
+
+void allocate_opaque(const PpmHeader& header, Image& image) {
+    image.width = static_cast<int>(header.width);
+    image.height = static_cast<int>(header.height);
+    image.rgba.assign(static_cast<std::size_t>(header.width) * header.height * kRgba, 255);
+}
+
+void read_ppm_ascii_raster(PpmNumberReader& numbers, const PpmHeader& header, Image& image) {
+    allocate_opaque(header, image);
+    for (std::uint64_t i = 0; i < header.sample_count(); ++i) {
+        const std::uint32_t sample = numbers.next("sample", "truncated PPM data");
+        check_sample(sample, header);
+        image.rgba[i / 3 * kRgba + i % 3] = scale_to_byte(sample, header.maxval);
+    }
+}
+
+void read_ppm_binary_raster(const Bytes& bytes, std::size_t start, const PpmHeader& header, Image& image) {
+    const std::uint64_t bytes_per_sample = header.maxval > 255 ? 2 : 1;  // big-endian when 2
+    if (bytes.size() - start < header.sample_count() * bytes_per_sample) throw ImageError("truncated PPM data");
+    allocate_opaque(header, image);
+    const unsigned char* raster = bytes.data() + start;
+    for (std::uint64_t i = 0; i < header.sample_count(); ++i) {
+        const std::uint32_t sample =
+            bytes_per_sample == 2 ? (std::uint32_t(raster[2 * i]) << 8) | raster[2 * i + 1] : raster[i];
+        check_sample(sample, header);
+        image.rgba[i / 3 * kRgba + i % 3] = scale_to_byte(sample, header.maxval);
+    }
+}
+
+void read_ppm(const Bytes& bytes, bool ascii, Image& image) {
+    PpmNumberReader numbers(bytes, 2);  // after the magic "P3" or "P6"
+    const PpmHeader header = read_ppm_header(numbers);
+    // Every sample takes at least one byte, so a raster larger than the rest of the file is
+    // truncated; checking before allocating keeps a corrupt header from claiming gigabytes.
+    if (header.sample_count() > bytes.size() - numbers.position()) throw ImageError("truncated PPM data");
+    if (ascii) {
+        read_ppm_ascii_raster(numbers, header, image);
+        return;
+    }
+    // Exactly one whitespace byte separates maxval from the binary raster.
+    if (numbers.position() == bytes.size() || !is_ppm_whitespace(bytes[numbers.position()])) {
+        throw ImageError("truncated PPM data");
+    }
+    read_ppm_binary_raster(bytes, numbers.position() + 1, header, image);
+}
+
+}  // namespace
+
+std::shared_ptr<const Image> load_image(const std::string& path) {
+    const Bytes bytes = read_whole_file(path);
+    auto image = std::make_shared<Image>();
+    image->path = path;
+    switch (detect_format(bytes)) {
+        case FileFormat::Png: decode_with_stb(bytes, "PNG", *image); break;
+        case FileFormat::Jpeg: decode_with_stb(bytes, "JPEG", *image); break;
+        case FileFormat::PpmAscii: read_ppm(bytes, true, *image); break;
+        case FileFormat::PpmBinary: read_ppm(bytes, false, *image); break;
+    }
+    return image;
+}
+
+std::shared_ptr<const Image> make_placeholder_image(const std::string& path_it_replaces) {
+    constexpr int kSize = 8;
+    constexpr std::uint8_t kMagenta[kRgba] = {255, 0, 255, 255};
+    constexpr std::uint8_t kGrey[kRgba] = {128, 128, 128, 255};
+    auto image = std::make_shared<Image>();
+    image->path = path_it_replaces;
+    image->width = kSize;
+    image->height = kSize;
+    for (int row = 0; row < kSize; ++row) {
+        for (int col = 0; col < kSize; ++col) {
+            const std::uint8_t* texel = (row + col) % 2 == 0 ? kMagenta : kGrey;
+            image->rgba.insert(image->rgba.end(), texel, texel + kRgba);
+        }
+    }
+    return image;
+}
+
+}  // namespace clr

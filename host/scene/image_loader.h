@@ -1,0 +1,27 @@
+// Reads billboard images: PNG (8- and 16-bit, with or without alpha), JPEG, PPM P6 and
+// PPM P3 (ASCII, with '#' comments). Every image becomes 8-bit RGBA (SPEC 2, Images).
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace clr {
+
+// Why an image could not be read. The scene loader adds the scene file and JSON location.
+class ImageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Reads the image at `path`; the format is taken from the file's content, not its name.
+// Throws ImageError with a one-line reason (missing, unreadable, corrupt, unsupported).
+std::shared_ptr<const Image> load_image(const std::string& path);
+
+// A stand-in for an image that cannot be read, used only when the user asks for
+// placeholders: an opaque 8x8 magenta and grey checkerboard, unmistakable in a render.
+std::shared_ptr<const Image> make_placeholder_image(const std::string& path_it_replaces);
+
+}  // namespace clr

@@ -1,0 +1,79 @@
+// The validated scene model: what a scene file says, in the course's terms, with defaults
+// applied. Nothing here knows about OpenCL; render/ turns a Scene into device data.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace clr {
+
+using Color = Vec3;  // display-referred RGB in [0,1] (values outside are clamped on output)
+
+// An 8-bit RGBA image, rows from top to bottom, 4 bytes a texel. Images without alpha get
+// alpha 255 everywhere.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
+    std::string path;                // where it was read from, for messages
+
+    std::uint8_t at(int col, int row, int channel) const {
+        return rgba[(static_cast<std::size_t>(row) * width + col) * 4 + channel];
+    }
+    bool has_transparency() const;  // any alpha below 255
+};
+
+struct Sphere {
+    Vec3 center;
+    double radius = 1;
+    Color ambient;  // base colour
+    bool is_mirror = false;
+};
+
+struct Billboard {
+    Vec3 upper_left;   // UL: the image's top-left texel
+    Vec3 lower_left;   // LL: the image's left column runs UL -> LL
+    Vec3 upper_right;  // UR: the image's top row runs UL -> UR
+    bool has_ambient = false;
+    Color ambient;
+    std::shared_ptr<const Image> image;  // null: flat `ambient` colour (or a mirror)
+    bool is_mirror = false;
+};
+
+// One key of the camera path. A still scene has one key.
+struct CameraKey {
+    Vec3 eye;
+    Vec3 lookat;
+};
+
+struct Scene {
+    std::string path;  // the scene file, for messages and default output names
+    std::string name;  // file name without folder and extension
+
+    std::vector<CameraKey> camera_path;  // at least one key
+    Vec3 up;
+    double fov_degrees = 60;  // full field of view across the larger image dimension
+    int width = 0;
+    int height = 0;
+
+    Color background;  // DefaultColor / DefaulColor
+    bool only_ambient = false;
+    bool has_sun = false;
+    Vec3 sun_location;
+    int max_depth = 5;
+
+    std::vector<Sphere> spheres;
+    std::vector<Billboard> billboards;
+
+    std::vector<std::string> warnings;  // unknown keys and similar, one line each
+
+    // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (SPEC 2, Lighting).
+    bool lit() const { return has_sun && !only_ambient; }
+    bool is_animated() const { return camera_path.size() >= 2; }
+};
+
+}  // namespace clr

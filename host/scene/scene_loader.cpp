@@ -1,0 +1,395 @@
+// The scene format is documented in docs/scene-format.md (and docs/scene.schema.json);
+// keep the three in step.
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/errors.h"
+#include "scene/image_loader.h"
+#include "scene/json_reader.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kDefaultMaxDepth = 5;  // SPEC 1
+// More reflections than this change no visible pixel in any sensible scene, and each one
+// costs a full trace per pixel: a larger value is a typo, not an intent.
+constexpr int kMaxMaxDepth = 64;
+// Up is "parallel" to the view direction when the sine of the angle between them is below
+// this. Both are unit vectors first, so the test does not depend on the scene's scale.
+constexpr double kParallelSine = 1e-9;
+// Billboard corners are degenerate when the parallelogram's area is at most this fraction of
+// |UR-UL| * |LL-UL| (the sine of the corner angle), again independent of scale.
+constexpr double kDegenerateSine = 1e-12;
+
+std::string format_vec3(const Vec3& v) {
+    std::ostringstream text;
+    text << "[" << v.x << ", " << v.y << ", " << v.z << "]";
+    return text.str();
+}
+
+// Unit vector along `v`, scaled by its largest component first so that tiny or huge
+// vectors neither underflow nor overflow on the way. Zero stays zero.
+Vec3 direction(const Vec3& v) {
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (largest == 0) return v;
+    return normalize(v / largest);
+}
+
+// --------------------------------------------------------------------------------------
+// Camera
+
+// Camera positions given either as one point under `single_key` ("eye") or as a list under
+// `list_key` ("eyeLocations"), with each point's location for messages.
+struct PathPoints {
+    std::vector<Vec3> points;
+    std::vector<std::string> locations;
+    std::string location;  // of the key itself
+    bool from_list = false;
+};
+
+std::optional<PathPoints> read_path_points(ObjectReader& file, const std::string& single_key,
+                                           const std::string& list_key) {
+    const std::optional<Node> single = file.optional(single_key);
+    const std::optional<Node> list = file.optional(list_key);
+    if (single && list) list->fail("give either '" + single_key + "' or '" + list_key + "', not both");
+    PathPoints path;
+    if (single) {
+        path.points.push_back(single->vec3());
+        path.locations.push_back(single->location());
+        path.location = single->location();
+    } else if (list) {
+        for (const Node& entry : list->elements()) {
+            path.points.push_back(entry.vec3());
+            path.locations.push_back(entry.location());
+        }
+        if (path.points.empty()) list->fail(list_key + " must hold at least one [x, y, z] position");
+        path.location = list->location();
+        path.from_list = true;
+    } else {
+        return std::nullopt;
+    }
+    return path;
+}
+
+std::string count_of_entries(std::size_t n) {
+    return std::to_string(n) + (n == 1 ? " entry" : " entries");
+}
+
+// The view must have a direction and `up` must fix the camera's roll, at every path key.
+void check_camera_key(const Scene& scene, std::size_t key, const std::string& key_location,
+                      const std::string& up_location, const Diagnostics& diagnostics) {
+    const CameraKey& camera = scene.camera_path[key];
+    const std::string at_key = scene.is_animated() ? " at camera key " + std::to_string(key) : "";
+    if (camera.eye == camera.lookat) {
+        diagnostics.fail(key_location, "eye and lookat are the same point " + format_vec3(camera.eye) + at_key +
+                                           ", so the camera has no view direction");
+    }
+    const Vec3 view = direction(camera.lookat - camera.eye);
+    const double sine = length(cross(direction(scene.up), view));
+    if (!(sine >= kParallelSine)) {  // written so that NaN fails too
+        diagnostics.fail(up_location, "up " + format_vec3(scene.up) + " is parallel to the view direction " +
+                                          format_vec3(view) + at_key + ", so the camera's roll is undefined");
+    }
+}
+
+void read_camera(ObjectReader& file, Scene& scene, const Diagnostics& diagnostics) {
+    const std::optional<PathPoints> eyes = read_path_points(file, "eye", "eyeLocations");
+    if (!eyes) file.node().fail("scene needs 'eye' (a camera position) or 'eyeLocations' (a camera path)");
+    const std::optional<PathPoints> lookats = read_path_points(file, "lookat", "lookatLocations");
+    if (!lookats) file.node().fail("scene needs 'lookat' (or 'lookatLocations', one per eye position)");
+
+    const std::size_t key_count = eyes->points.size();
+    if (lookats->from_list && lookats->points.size() != key_count) {
+        const std::string eye_count = eyes->from_list ? "eyeLocations has " + count_of_entries(key_count)
+                                                      : "there is a single 'eye'";
+        diagnostics.fail(lookats->location, "lookatLocations has " + count_of_entries(lookats->points.size()) +
+                                                " but " + eye_count +
+                                                "; give one look-at point per eye position, or one 'lookat' for all");
+    }
+    for (std::size_t key = 0; key < key_count; ++key)
+        scene.camera_path.push_back({eyes->points[key], lookats->points[lookats->from_list ? key : 0]});
+
+    const Node up = file.required("up");
+    scene.up = up.vec3();
+    if (scene.up == Vec3{}) up.fail("up must not be the zero vector");
+
+    // A problem at one key of a path is best found at that key's entry.
+    const PathPoints& per_key = eyes->from_list || !lookats->from_list ? *eyes : *lookats;
+    for (std::size_t key = 0; key < key_count; ++key) {
+        const std::string& key_location = per_key.locations[key];
+        check_camera_key(scene, key, key_location, scene.is_animated() ? key_location : up.location(), diagnostics);
+    }
+
+    const Node fov = file.required("fov_angle");
+    scene.fov_degrees = fov.number();
+    if (!(scene.fov_degrees > 0 && scene.fov_degrees < 180))
+        fov.fail("fov_angle must be between 0 and 180 degrees, both excluded (got " + fov.shown() + ")");
+}
+
+// --------------------------------------------------------------------------------------
+// Image size
+
+// The scene's width or height, or the command line's value, which replaces it (the scene's
+// value is then not read at all).
+int read_image_side(ObjectReader& file, const std::string& key, const std::optional<int>& override_value) {
+    if (override_value) {
+        file.has(key);  // known, so not warned about
+        if (*override_value < 1 || *override_value > kMaxImageSide) {
+            file.node().fail("image " + key + " " + std::to_string(*override_value) +
+                             " given on the command line must be from 1 to " + std::to_string(kMaxImageSide));
+        }
+        return *override_value;
+    }
+    const Node side = file.required(key, " (or give the size on the command line: --size WxH)");
+    return static_cast<int>(side.integer(1, kMaxImageSide));
+}
+
+void read_image_size(ObjectReader& file, const LoadOptions& options, Scene& scene) {
+    scene.width = read_image_side(file, "width", options.width_override);
+    scene.height = read_image_side(file, "height", options.height_override);
+    const long long pixels = static_cast<long long>(scene.width) * scene.height;
+    if (pixels > kMaxImagePixels) {
+        const std::string location = !options.height_override ? "/height" : !options.width_override ? "/width" : "";
+        file.node().diagnostics().fail(
+            location, "the image has " + std::to_string(scene.width) + " x " + std::to_string(scene.height) + " = " +
+                          std::to_string(pixels) + " pixels, more than the limit of " +
+                          std::to_string(kMaxImagePixels) + " (8192 x 8192)");
+    }
+}
+
+// --------------------------------------------------------------------------------------
+// Background and lighting
+
+void read_background(ObjectReader& file, Scene& scene) {
+    // The course's scenes spell it "DefaulColor" as often as "DefaultColor".
+    const bool has_correct = file.has("DefaultColor");
+    const bool has_misspelt = file.has("DefaulColor");
+    if (has_correct && has_misspelt) {
+        file.required("DefaulColor")
+            .fail("both 'DefaultColor' and 'DefaulColor' (the course's spelling) are given; keep one");
+    }
+    if (has_correct || has_misspelt) scene.background = file.required(has_correct ? "DefaultColor" : "DefaulColor").color();
+}
+
+void read_lighting(ObjectReader& file, Scene& scene) {
+    if (const auto only_ambient = file.optional("OnlyAmbient")) scene.only_ambient = only_ambient->flag();
+    if (const auto sun = file.optional("SunLocation")) {
+        scene.has_sun = true;
+        scene.sun_location = sun->vec3();
+    }
+    scene.max_depth = kDefaultMaxDepth;
+    if (const auto depth = file.optional("MaxDepth")) scene.max_depth = static_cast<int>(depth->integer(0, kMaxMaxDepth));
+}
+
+// --------------------------------------------------------------------------------------
+// Spheres and billboards
+
+// "type" may be left out, but when given it must name what the list holds: a sphere in
+// "billboards" is a mistake to report, not an object to skip.
+void check_type(ObjectReader& fields, const std::vector<std::string>& accepted, const std::string& expected) {
+    const std::optional<Node> type = fields.optional("type");
+    if (!type) return;
+    const std::string value = type->string();
+    if (std::find(accepted.begin(), accepted.end(), value) == accepted.end())
+        type->fail("type must be " + expected + " here, got " + type->shown());
+}
+
+Sphere read_sphere(const Node& node) {
+    ObjectReader fields(node, "sphere");
+    check_type(fields, {"sphere"}, "\"sphere\"");
+    Sphere sphere;
+    sphere.center = fields.required("center").vec3();
+    const Node radius = fields.required("radius");
+    sphere.radius = radius.number();
+    if (!(sphere.radius > 0)) radius.fail("radius must be > 0 (got " + radius.shown() + ")");
+    sphere.ambient = fields.required("ambient").color();
+    if (const auto mirror = fields.optional("IsMirror")) sphere.is_mirror = mirror->flag();
+    fields.warn_about_unknown_keys();
+    return sphere;
+}
+
+// Corners UL, LL, UR must span a parallelogram of non-zero area (SPEC 2, Billboards).
+void check_billboard_corners(const Billboard& billboard, const Node& node) {
+    const Vec3 across = billboard.upper_right - billboard.upper_left;
+    const Vec3 down = billboard.lower_left - billboard.upper_left;
+    const double area = length(cross(across, down));
+    if (area > kDegenerateSine * length(across) * length(down)) return;
+    if (across == Vec3{}) node.fail("billboard has no area: UpperRight is the same point as UpperLeft");
+    if (down == Vec3{}) node.fail("billboard has no area: LowerLeft is the same point as UpperLeft");
+    node.fail("billboard has no area: its corners UpperLeft, LowerLeft and UpperRight are collinear");
+}
+
+// A billboard and, when it shows an image, the "filename" value naming it. `always_mirror`
+// is for the course's top-level "mirror" key, whose billboard is a mirror without saying so.
+std::pair<Billboard, std::optional<Node>> read_billboard(const Node& node, bool always_mirror) {
+    ObjectReader fields(node, "billboard");
+    check_type(fields, {"billboard", "billboards"}, "\"billboard\" (or \"billboards\")");
+    Billboard billboard;
+    billboard.upper_left = fields.required("UpperLeft").vec3();
+    billboard.lower_left = fields.required("LowerLeft").vec3();
+    billboard.upper_right = fields.required("UpperRight").vec3();
+    if (const auto ambient = fields.optional("ambient")) {
+        billboard.has_ambient = true;
+        billboard.ambient = ambient->color();
+    }
+    billboard.is_mirror = always_mirror;
+    if (const auto mirror = fields.optional("IsMirror")) {
+        billboard.is_mirror = mirror->flag();
+        if (always_mirror && !billboard.is_mirror)
+            mirror->fail("a 'mirror' is always a mirror: remove IsMirror or set it to 1");
+    }
+    const std::optional<Node> filename = fields.optional("filename");
+    if (filename && filename->string().empty()) filename->fail("filename must not be empty");
+    if (!billboard.is_mirror && !filename && !billboard.has_ambient)
+        node.fail("billboard needs 'filename' (an image) or 'ambient' (a flat colour), unless IsMirror is 1");
+    check_billboard_corners(billboard, node);
+    fields.warn_about_unknown_keys();
+    // A mirror shows what it reflects, never its image (SPEC 2, Mirrors), so that image is
+    // not even read: a missing file does no harm there.
+    return {billboard, billboard.is_mirror ? std::nullopt : filename};
+}
+
+// A billboard's image still to be read, once every other part of the scene is valid.
+struct PendingImage {
+    std::size_t billboard;
+    Node filename;
+};
+
+void read_objects(ObjectReader& file, Scene& scene, std::vector<PendingImage>& pending_images) {
+    if (const auto spheres = file.optional("spheres")) {
+        for (const Node& sphere : spheres->elements()) scene.spheres.push_back(read_sphere(sphere));
+    }
+    const auto add_billboard = [&](const Node& node, bool always_mirror) {
+        auto [billboard, filename] = read_billboard(node, always_mirror);
+        if (filename) pending_images.push_back({scene.billboards.size(), *filename});
+        scene.billboards.push_back(std::move(billboard));
+    };
+    if (const auto billboards = file.optional("billboards")) {
+        for (const Node& billboard : billboards->elements()) add_billboard(billboard, false);
+    }
+    // Variants of the 2025 WebGL assignment: one billboard, and one mirror, each on its own key.
+    if (const auto billboard = file.optional("billboard")) add_billboard(*billboard, false);
+    if (const auto mirror = file.optional("mirror")) add_billboard(*mirror, true);
+}
+
+// --------------------------------------------------------------------------------------
+// Images
+
+// Reads each distinct image file once, however many billboards show it.
+class ImageLibrary {
+public:
+    ImageLibrary(const std::string& scene_path, bool placeholders)
+        : scene_folder_(fs::path(scene_path).parent_path()), placeholders_(placeholders) {}
+
+    std::shared_ptr<const Image> image_for(const Node& filename) {
+        const std::string path = resolve(filename.string());
+        auto [entry, is_new] = entries_.try_emplace(path);
+        if (is_new) entry->second = read(path);
+        const Entry& image = entry->second;
+        if (!image.failure.empty()) {
+            const std::string problem = "cannot read image '" + path + "': " + image.failure;
+            if (!placeholders_) filename.fail(problem);
+            filename.warn(problem + "; rendering a placeholder instead");
+        }
+        return image.image;
+    }
+
+private:
+    struct Entry {
+        std::shared_ptr<const Image> image;
+        std::string failure;  // empty when the image was read
+    };
+
+    // Relative to the scene file's folder; lexically normal, so that "./a.png" and
+    // "a.png" are one file.
+    std::string resolve(const std::string& filename) const {
+        const fs::path path(filename);
+        return (path.is_absolute() ? path : scene_folder_ / path).lexically_normal().string();
+    }
+
+    Entry read(const std::string& path) const {
+        try {
+            return {load_image(path), ""};
+        } catch (const ImageError& error) {
+            const std::string reason = *error.what() ? error.what() : "unknown error";
+            return {placeholders_ ? make_placeholder_image(path) : nullptr, reason};
+        }
+    }
+
+    fs::path scene_folder_;
+    bool placeholders_;
+    std::map<std::string, Entry> entries_;
+};
+
+void attach_images(Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
+    ImageLibrary library(scene.path, options.placeholder_images);
+    for (const PendingImage& pending : pending_images)
+        scene.billboards[pending.billboard].image = library.image_for(pending.filename);
+}
+
+// --------------------------------------------------------------------------------------
+
+// Keys of related formats that clrender recognises but does not render: each gets a
+// warning that says so, rather than the generic unknown-key one.
+void note_unsupported_keys(ObjectReader& file) {
+    file.note_ignored("near", "near clipping plane is not supported (ignored)");
+    file.note_ignored("far", "far clipping plane is not supported (ignored)");
+    file.note_ignored("obj", "OBJ meshes are not supported (ignored)");
+    const std::string older_format =
+        "unknown key (ignored); this looks like the older (fall 2019) scene format, which clrender does not read: "
+        "use 'spheres', 'billboards' and 'SunLocation'";
+    file.note_ignored("surfaces", older_format);
+    file.note_ignored("lights", older_format);
+    file.note_ignored("clrender", "reserved for clrender's own extensions; this version defines none (ignored)");
+}
+
+std::string read_scene_text(const std::string& path) {
+    std::error_code error;
+    if (fs::is_directory(path, error)) throw SceneError(path, "", "cannot read scene file: it is a folder");
+    if (!fs::exists(path, error)) throw SceneError(path, "", "cannot read scene file: no such file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path, "", std::string("cannot read scene file: ") + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SceneError(path, "", "cannot read scene file: read error");
+    return text.str();
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& path, const LoadOptions& options) {
+    Scene scene;
+    scene.path = path;
+    scene.name = fs::path(path).stem().string();
+    const Diagnostics diagnostics{path, &scene.warnings};
+    const Json document = parse_json_text(text, diagnostics);
+
+    ObjectReader file(Node(document, "", "scene", diagnostics), "scene");
+    read_camera(file, scene, diagnostics);
+    read_image_size(file, options, scene);
+    read_background(file, scene);
+    read_lighting(file, scene);
+    std::vector<PendingImage> pending_images;
+    read_objects(file, scene, pending_images);
+    note_unsupported_keys(file);
+    file.warn_about_unknown_keys();
+    // Images last: reading them is the slow part, and pointless if the scene is invalid.
+    attach_images(scene, pending_images, options);
+    return scene;
+}
+
+Scene load_scene(const std::string& path, const LoadOptions& options) {
+    return parse_scene(read_scene_text(path), path, options);
+}
+
+}  // namespace clr

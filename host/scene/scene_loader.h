@@ -1,0 +1,35 @@
+// Turns a scene file (the course's "balls and billboards" JSON) into a validated Scene.
+// Every failure is a SceneError naming the file, the JSON location and what is wrong.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace clr {
+
+// Largest image the loader accepts, so that a frame (RGBA, 4 bytes a pixel, plus a ray and
+// a hit record per pixel for the stage kernels) stays well inside memory.
+constexpr int kMaxImageSide = 16384;
+constexpr long long kMaxImagePixels = 8192LL * 8192LL;
+
+struct LoadOptions {
+    // Render a placeholder image (see make_placeholder_image) for a billboard image that is
+    // missing or unreadable, with a warning, instead of failing.
+    bool placeholder_images = false;
+    // Resolution given on the command line; replaces the scene's width and height, which
+    // may then be absent.
+    std::optional<int> width_override;
+    std::optional<int> height_override;
+};
+
+// Reads and validates the scene file at `path`. Relative image paths are resolved against
+// the scene file's folder. Throws SceneError.
+Scene load_scene(const std::string& path, const LoadOptions& options = {});
+
+// The same for scene text already in memory; `path` names it in messages and anchors
+// relative image paths.
+Scene parse_scene(const std::string& text, const std::string& path, const LoadOptions& options = {});
+
+}  // namespace clr

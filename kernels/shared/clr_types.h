@@ -1,0 +1,97 @@
+/*
+ * The data both sides share: the host fills these structs and the kernels read them, so each
+ * struct is textually one definition. Rules that keep the layouts identical in C++ and
+ * OpenCL C: only 4-byte scalars and float4-sized vectors (never float3, which is 12 bytes on
+ * the host and 16 in OpenCL C), explicit padding to a multiple of 16 bytes, and a size check
+ * on the host (static_assert below) and on the device (tests/device/struct_layout_test.cpp).
+ */
+#ifndef CLR_TYPES_H
+#define CLR_TYPES_H
+
+#ifdef __OPENCL_VERSION__
+typedef float4 clr_float4;
+typedef float clr_float;
+typedef int clr_int;
+typedef uint clr_uint;
+#else
+#include <CL/cl_platform.h>
+typedef cl_float4 clr_float4;
+typedef cl_float clr_float;
+typedef cl_int clr_int;
+typedef cl_uint clr_uint;
+#endif
+
+/* Surface flags (ClrSphere.flags, ClrBillboard.flags). */
+#define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
+#define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
+
+/* What a ray hit (ClrHit.kind). */
+#define CLR_HIT_NONE 0
+#define CLR_HIT_SPHERE 1
+#define CLR_HIT_BILLBOARD 2
+
+/* The pinhole camera of one frame, flattened from SPEC 2 (Camera). The direction through
+ * the centre of pixel (col, row) is
+ *   forward + (2(col+0.5)/width - 1) * right + (1 - 2(row+0.5)/height) * up. */
+typedef struct {
+    clr_float4 eye;     /* xyz = eye position; w unused */
+    clr_float4 forward; /* xyz = -w, the unit view direction (image plane at distance 1) */
+    clr_float4 right;   /* xyz = halfW * u: from the plane's centre to its right edge */
+    clr_float4 up;      /* xyz = halfH * v: from the plane's centre to its top edge */
+    clr_int width;      /* image width in pixels */
+    clr_int height;     /* image height in pixels */
+    clr_int pad0, pad1;
+} ClrCamera;
+
+typedef struct {
+    clr_float4 center_radius; /* xyz = centre, w = radius (> 0) */
+    clr_float4 color;         /* xyz = ambient colour; w unused */
+    clr_uint flags;           /* CLR_SURFACE_* */
+    clr_uint pad0, pad1, pad2;
+} ClrSphere;
+
+/* A parallelogram UL + a*(UR-UL) + b*(LL-UL), 0 <= a, b <= 1. */
+typedef struct {
+    clr_float4 corner; /* xyz = UL */
+    clr_float4 normal; /* xyz = unit front normal normalize((LL-UL) x (UR-UL)) */
+    clr_float4 dual_a; /* xyz = vector whose dot with (P - UL) gives a, for P in the plane */
+    clr_float4 dual_b; /* xyz = vector whose dot with (P - UL) gives b, for P in the plane */
+    clr_float4 color;  /* xyz = flat colour (ambient); w unused */
+    clr_uint texel_offset; /* first texel of its image in the texel buffer */
+    clr_int texture_width;  /* image width in texels (0 when untextured) */
+    clr_int texture_height; /* image height in texels (0 when untextured) */
+    clr_uint flags;         /* CLR_SURFACE_* */
+} ClrBillboard;
+
+typedef struct {
+    clr_float4 origin;    /* xyz = origin; w unused */
+    clr_float4 direction; /* xyz = unit direction; w unused */
+} ClrRay;
+
+typedef struct {
+    clr_float t;    /* distance along the (unit) ray direction; +inf when kind is NONE */
+    clr_int kind;   /* CLR_HIT_* */
+    clr_int index;  /* sphere or billboard index; -1 when kind is NONE */
+    clr_int pad0;
+} ClrHit;
+
+/* Everything about the scene that is not per object and not per frame. */
+typedef struct {
+    clr_float4 background; /* xyz = background colour */
+    clr_float4 sun;        /* xyz = sun position */
+    clr_int sphere_count;
+    clr_int billboard_count;
+    clr_int max_depth; /* mirror reflections allowed along one path */
+    clr_int lit;       /* 1: sun lighting (a kernel compiled without CLR_FEATURE_SUN ignores it) */
+} ClrSceneInfo;
+
+#ifndef __OPENCL_VERSION__
+static_assert(sizeof(ClrCamera) == 80, "ClrCamera layout");
+static_assert(sizeof(ClrSphere) == 48, "ClrSphere layout");
+static_assert(sizeof(ClrBillboard) == 96, "ClrBillboard layout");
+static_assert(sizeof(ClrRay) == 32, "ClrRay layout");
+static_assert(sizeof(ClrHit) == 16, "ClrHit layout");
+static_assert(sizeof(ClrSceneInfo) == 48, "ClrSceneInfo layout");
+#endif
+
+#endif /* CLR_TYPES_H */

@@ -1,0 +1,85 @@
+// Each specialised kernel (only the features a scene uses compiled in) must render exactly
+// what the fully general kernel renders for the same scene.
+#include <gtest/gtest.h>
+
+#include "render/feature_set.h"
+#include "support/random_scene.h"
+#include "support/render_helpers.h"
+#include "support/scene_builder.h"
+
+namespace clr {
+namespace {
+
+void expect_same_as_general(const Scene& scene) {
+    RendererOptions general;
+    general.features = FeatureSet::all();
+    Image specialised = testing::render_with_kernels(scene);
+    Image reference = testing::render_with_kernels(scene, general);
+    ASSERT_EQ(specialised.rgba.size(), reference.rgba.size());
+    EXPECT_TRUE(specialised.rgba == reference.rgba) << "features: " << FeatureSet::of(scene).build_options();
+}
+
+Scene camera_on(Scene scene) {
+    scene.camera_path = {{{4, 6, 32}, {0, 0, 0}}};
+    scene.width = 96;
+    scene.height = 64;
+    return scene;
+}
+
+TEST(FeatureVariants, SpheresOnly) { expect_same_as_general(camera_on(testing::make_random_scene(11, 15, 0))); }
+
+TEST(FeatureVariants, BillboardsOnlyWithAlpha) { expect_same_as_general(camera_on(testing::make_random_scene(12, 0, 15))); }
+
+TEST(FeatureVariants, OpaqueTexturesAndFlatBillboards) {
+    Scene scene = camera_on(testing::make_random_scene(13, 5, 0));
+    auto opaque = testing::make_image(3, 2, [](int col, int row) {
+        return std::array<std::uint8_t, 4>{std::uint8_t(col * 100), std::uint8_t(row * 200), 50, 255};
+    });
+    scene.billboards.push_back(testing::make_billboard({-8, 8, -5}, {-8, -8, -5}, {8, 8, -5}, {0, 1, 0}, opaque));
+    scene.billboards.push_back(testing::make_billboard({-3, 9, 2}, {-3, 5, 2}, {3, 9, 2}, {1, 0, 1}));
+    EXPECT_FALSE(FeatureSet::of(scene).alpha);
+    expect_same_as_general(scene);
+}
+
+TEST(FeatureVariants, SunAndMirrors) {
+    Scene scene = camera_on(testing::make_random_scene(14, 10, 6));
+    scene.has_sun = true;
+    scene.sun_location = {30, 40, 20};
+    scene.spheres[0].is_mirror = true;
+    scene.billboards[1].is_mirror = true;
+    scene.max_depth = 3;
+    FeatureSet features = FeatureSet::of(scene);
+    EXPECT_TRUE(features.sun && features.mirrors);
+    expect_same_as_general(scene);
+}
+
+TEST(FeatureVariants, EmptyScene) { expect_same_as_general(camera_on(testing::make_random_scene(15, 0, 0))); }
+
+TEST(FeatureSet, OptionsAreDeterministicAndComplete) {
+    FeatureSet none;
+    EXPECT_EQ(none.build_options(),
+              "-DCLR_FEATURE_ALPHA=0 -DCLR_FEATURE_BILLBOARDS=0 -DCLR_FEATURE_MIRRORS=0 -DCLR_FEATURE_SPHERES=0 "
+              "-DCLR_FEATURE_SUN=0 -DCLR_FEATURE_TEXTURES=0");
+    EXPECT_EQ(FeatureSet::all().build_options(),
+              "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_MIRRORS=1 -DCLR_FEATURE_SPHERES=1 "
+              "-DCLR_FEATURE_SUN=1 -DCLR_FEATURE_TEXTURES=1");
+}
+
+TEST(FeatureSet, AnalysisFollowsTheScene) {
+    Scene scene = testing::make_random_scene(16, 2, 0);
+    FeatureSet features = FeatureSet::of(scene);
+    EXPECT_TRUE(features.spheres);
+    EXPECT_FALSE(features.billboards || features.textures || features.alpha || features.sun || features.mirrors);
+    scene.has_sun = true;
+    EXPECT_TRUE(FeatureSet::of(scene).sun);
+    scene.only_ambient = true;  // OnlyAmbient 1 turns the sun off
+    EXPECT_FALSE(FeatureSet::of(scene).sun);
+    auto holey = testing::make_image(1, 1, [](int, int) { return std::array<std::uint8_t, 4>{1, 2, 3, 0}; });
+    scene.billboards.push_back(testing::make_billboard({0, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 0, 0}, holey, true));
+    features = FeatureSet::of(scene);
+    EXPECT_TRUE(features.billboards && features.mirrors);
+    EXPECT_FALSE(features.textures || features.alpha) << "a mirror ignores its image";
+}
+
+}  // namespace
+}  // namespace clr
