@@ -50,11 +50,22 @@ struct CameraKey {
     Vec3 lookat;
 };
 
+enum class Interpolation { Linear, CatmullRom };
+
+// How a camera path becomes frames: clrender's extension keys under "clrender" in the scene.
+struct AnimationSettings {
+    int frames_per_segment = 10;  // frames from one key to the next; the last key adds one
+    int frame_count = 0;          // > 0: total frames, spread evenly over the path instead
+    double fps = 10;              // frames per second of the video
+    Interpolation interpolation = Interpolation::Linear;
+};
+
 struct Scene {
     std::string path;  // the scene file, for messages and default output names
     std::string name;  // file name without folder and extension
 
     std::vector<CameraKey> camera_path;  // at least one key
+    AnimationSettings animation;
     Vec3 up;
     double fov_degrees = 60;  // full field of view across the larger image dimension
     int width = 0;

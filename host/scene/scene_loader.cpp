@@ -85,6 +85,16 @@ std::string count_of_entries(std::size_t n) {
     return std::to_string(n) + (n == 1 ? " entry" : " entries");
 }
 
+// lookatLocations pairs with the eye positions one to one (a single `lookat` serves all).
+void check_lookat_count(const PathPoints& eyes, const PathPoints& lookats, const Diagnostics& diagnostics) {
+    if (!lookats.from_list || lookats.points.size() == eyes.points.size()) return;
+    const std::string eye_count =
+        eyes.from_list ? "eyeLocations has " + count_of_entries(eyes.points.size()) : "there is a single 'eye'";
+    diagnostics.fail(lookats.location, "lookatLocations has " + count_of_entries(lookats.points.size()) + " but " +
+                                           eye_count +
+                                           "; give one look-at point per eye position, or one 'lookat' for all");
+}
+
 // The view must have a direction and `up` must fix the camera's roll, at every path key.
 void check_camera_key(const Scene& scene, std::size_t key, const std::string& key_location,
                       const std::string& up_location, const Diagnostics& diagnostics) {
@@ -108,14 +118,8 @@ void read_camera(ObjectReader& file, Scene& scene, const Diagnostics& diagnostic
     const std::optional<PathPoints> lookats = read_path_points(file, "lookat", "lookatLocations");
     if (!lookats) file.node().fail("scene needs 'lookat' (or 'lookatLocations', one per eye position)");
 
+    check_lookat_count(*eyes, *lookats, diagnostics);
     const std::size_t key_count = eyes->points.size();
-    if (lookats->from_list && lookats->points.size() != key_count) {
-        const std::string eye_count = eyes->from_list ? "eyeLocations has " + count_of_entries(key_count)
-                                                      : "there is a single 'eye'";
-        diagnostics.fail(lookats->location, "lookatLocations has " + count_of_entries(lookats->points.size()) +
-                                                " but " + eye_count +
-                                                "; give one look-at point per eye position, or one 'lookat' for all");
-    }
     for (std::size_t key = 0; key < key_count; ++key)
         scene.camera_path.push_back({eyes->points[key], lookats->points[lookats->from_list ? key : 0]});
 
@@ -178,7 +182,8 @@ void read_background(ObjectReader& file, Scene& scene) {
         file.required("DefaulColor")
             .fail("both 'DefaultColor' and 'DefaulColor' (the course's spelling) are given; keep one");
     }
-    if (has_correct || has_misspelt) scene.background = file.required(has_correct ? "DefaultColor" : "DefaulColor").color();
+    if (has_correct || has_misspelt)
+        scene.background = file.required(has_correct ? "DefaultColor" : "DefaulColor").color();
 }
 
 void read_lighting(ObjectReader& file, Scene& scene) {
@@ -188,7 +193,8 @@ void read_lighting(ObjectReader& file, Scene& scene) {
         scene.sun_location = sun->vec3();
     }
     scene.max_depth = kDefaultMaxDepth;
-    if (const auto depth = file.optional("MaxDepth")) scene.max_depth = static_cast<int>(depth->integer(0, kMaxMaxDepth));
+    if (const auto depth = file.optional("MaxDepth"))
+        scene.max_depth = static_cast<int>(depth->integer(0, kMaxMaxDepth));
 }
 
 // --------------------------------------------------------------------------------------
@@ -350,7 +356,49 @@ void note_unsupported_keys(ObjectReader& file) {
         "use 'spheres', 'billboards' and 'SunLocation'";
     file.note_ignored("surfaces", older_format);
     file.note_ignored("lights", older_format);
-    file.note_ignored("clrender", "reserved for clrender's own extensions; this version defines none (ignored)");
+}
+
+Interpolation read_interpolation(const Node& node) {
+    const std::string name = node.string();
+    if (name == "linear") return Interpolation::Linear;
+    if (name == "catmull-rom") return Interpolation::CatmullRom;
+    node.fail("interpolation must be \"linear\" or \"catmull-rom\" (got \"" + name + "\")");
+}
+
+// clrender's own keys, all under "clrender" so they never clash with the course's. The
+// animation's length is given at most one way: frames per segment, total frames, or a
+// duration in seconds at the frame rate.
+void read_extensions(ObjectReader& file, Scene& scene) {
+    std::optional<Node> node = file.optional("clrender");
+    if (!node) return;
+    ObjectReader extensions(*node, "clrender settings");
+    AnimationSettings& animation = scene.animation;
+    if (auto fps = extensions.optional("fps")) {
+        animation.fps = fps->number();
+        if (!(animation.fps > 0 && animation.fps <= 1000)) fps->fail("fps must be in (0, 1000] (got " + fps->shown() + ")");
+    }
+    if (auto interpolation = extensions.optional("interpolation")) animation.interpolation = read_interpolation(*interpolation);
+    std::vector<std::string> length_keys;
+    if (auto per_segment = extensions.optional("frames_per_segment")) {
+        animation.frames_per_segment = static_cast<int>(per_segment->integer(1, 100000));
+        length_keys.push_back("frames_per_segment");
+    }
+    if (auto frames = extensions.optional("frames")) {
+        animation.frame_count = static_cast<int>(frames->integer(2, 1000000));
+        length_keys.push_back("frames");
+    }
+    if (auto duration = extensions.optional("duration")) {
+        double seconds = duration->number();
+        double frames = std::round(seconds * animation.fps);
+        if (!(seconds > 0 && frames >= 2 && frames <= 1000000))
+            duration->fail("duration must give from 2 to 1000000 frames at " + std::to_string(animation.fps) + " fps (got " +
+                           duration->shown() + " s)");
+        animation.frame_count = static_cast<int>(frames);
+        length_keys.push_back("duration");
+    }
+    if (length_keys.size() > 1)
+        node->fail("give the animation's length one way only, not both '" + length_keys[0] + "' and '" + length_keys[1] + "'");
+    extensions.warn_about_unknown_keys();
 }
 
 std::string read_scene_text(const std::string& path) {
@@ -381,6 +429,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     read_lighting(file, scene);
     std::vector<PendingImage> pending_images;
     read_objects(file, scene, pending_images);
+    read_extensions(file, scene);
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.

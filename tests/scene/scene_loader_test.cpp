@@ -617,11 +617,14 @@ TEST(SceneLoader, RejectsUpParallelToTheView) {
     json["eyeLocations"] = {{0, 0, 5}, {0, 7, 0}};
     EXPECT_TRUE(FailsAt(json, "/eyeLocations/1", "at camera key 1"));
 
-    // With a fixed eye and moving look-at points, the look-at entry is named.
+    // One eye with a one-entry lookatLocations is a still: the error is at up.
     json = minimal_scene();
     json.erase("lookat");
     json["lookatLocations"] = {{0, 1e6, 5}};
     EXPECT_TRUE(FailsAt(json, "/up", "is parallel"));
+    // ... but eye == lookat is found at the look-at entry.
+    json["lookatLocations"] = {{0, 0, 5}};
+    EXPECT_TRUE(FailsAt(json, "/lookatLocations/0", "eye and lookat are the same point"));
 }
 
 TEST(SceneLoader, AcceptsUpNearlyParallelToTheView) {
@@ -839,11 +842,50 @@ TEST(SceneLoader, OlderFormatKeysAreRecognised) {
     EXPECT_TRUE(scene.spheres.empty());
 }
 
-TEST(SceneLoader, ClrenderKeyIsReservedForExtensions) {
+TEST(SceneLoader, ExtensionsDefaultToTheCoursesAnimation) {
+    const Scene scene = parse(minimal_scene());
+    EXPECT_EQ(scene.animation.frames_per_segment, 10);
+    EXPECT_EQ(scene.animation.frame_count, 0);
+    EXPECT_EQ(scene.animation.fps, 10);
+    EXPECT_EQ(scene.animation.interpolation, Interpolation::Linear);
+}
+
+TEST(SceneLoader, ReadsAnimationExtensions) {
     Json json = minimal_scene();
-    json["clrender"] = Json::object();
+    json["clrender"] = {{"fps", 24}, {"frames", 48}, {"interpolation", "catmull-rom"}};
+    Scene scene = parse(json);
+    EXPECT_EQ(scene.animation.fps, 24);
+    EXPECT_EQ(scene.animation.frame_count, 48);
+    EXPECT_EQ(scene.animation.interpolation, Interpolation::CatmullRom);
+    EXPECT_TRUE(scene.warnings.empty()) << all_warnings(scene);
+
+    json["clrender"] = {{"fps", 30}, {"duration", 2.5}};
+    EXPECT_EQ(parse(json).animation.frame_count, 75);
+    json["clrender"] = {{"frames_per_segment", 4}};
+    EXPECT_EQ(parse(json).animation.frames_per_segment, 4);
+}
+
+TEST(SceneLoader, RejectsBadAnimationExtensions) {
+    Json json = minimal_scene();
+    json["clrender"] = {{"fps", 0}};
+    EXPECT_TRUE(FailsAt(json, "/clrender/fps", "fps must be in (0, 1000]"));
+    json["clrender"] = {{"interpolation", "cubic"}};
+    EXPECT_TRUE(FailsAt(json, "/clrender/interpolation", "\"linear\" or \"catmull-rom\""));
+    json["clrender"] = {{"frames", 1}};
+    EXPECT_TRUE(FailsAt(json, "/clrender/frames", "frames"));
+    json["clrender"] = {{"frames", 10}, {"duration", 1}};
+    EXPECT_TRUE(FailsAt(json, "/clrender", "one way only"));
+    json["clrender"] = {{"duration", -1}};
+    EXPECT_TRUE(FailsAt(json, "/clrender/duration", "duration must give"));
+    json["clrender"] = 3;
+    EXPECT_TRUE(FailsAt(json, "/clrender", "object"));
+}
+
+TEST(SceneLoader, UnknownExtensionKeysAreWarned) {
+    Json json = minimal_scene();
+    json["clrender"] = {{"fsp", 24}};
     const Scene scene = parse(json);
-    EXPECT_TRUE(has_warning(scene, "/clrender: reserved for clrender's own extensions")) << all_warnings(scene);
+    EXPECT_TRUE(has_warning(scene, "/clrender/fsp: unknown key")) << all_warnings(scene);
 }
 
 TEST(SceneLoader, DuplicateKeysAreWarnedAndTheLastWins) {
