@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev libstb-dev libcli11-dev
   googletest libgtest-dev
   ffmpeg
+  parallel
 )
 
 missing=()

@@ -25,8 +25,21 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     CLI::App app{"clrender: renders spheres-and-billboards scenes with OpenCL", "clrender"};
     app.set_version_flag("--version", std::string("clrender ") + CLRENDER_VERSION);
     app.add_option("scene", options.scene_path, "Scene file (.json or .js)");
-    app.add_option("-o,--output", options.output_path, "Image to write (.png or .ppm); default <scene name>.png");
+    app.add_option("-o,--output", options.output_path,
+                   "Image to write (.png or .ppm); for an animation a frame pattern with %04d or ####. "
+                   "Default: <scene name>.png for a still, no frames for an animation");
+    app.add_option("--video", options.video_path,
+                   "Video of the animation (.mp4: H.264, yuv420p; .gif). Default for an animation without -o: "
+                   "<scene name>.mp4");
+    app.add_option("--frames", options.frames, "Frames to render, 0-based: 7, 0-99 or 5,7,10-20; default all");
+    app.add_flag("--assemble", options.assemble,
+                 "Encode the frames that -o names (rendered earlier, e.g. split across processes) into --video "
+                 "instead of rendering");
+    app.add_option("--quality", options.quality, "MP4 quality as x264 CRF, 0 (best) to 51; default 18")
+        ->check(CLI::Range(0, 51));
     app.add_flag("--list-devices", options.list_devices, "Print the OpenCL platforms and devices, then exit");
+    app.add_flag("--frame-count", options.print_frame_count,
+                 "Print the number of frames of the scene's animation (1 for a still), then exit");
     app.add_option("-d,--device", options.device,
                    "OpenCL device: index (0), platform:device (0:1) or a name substring; "
                    "default $CLRENDER_DEVICE, else the first CPU device");

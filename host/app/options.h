@@ -8,11 +8,16 @@ namespace clr {
 
 struct Options {
     std::string scene_path;
-    std::string output_path;     // empty: <scene name>.png in the current folder
+    std::string output_path;     // image, or frame pattern (%04d, ####) for an animation
+    std::string video_path;      // --video: .mp4 or .gif
+    std::string frames;          // --frames: "7", "0-99", "5,7,10-20"; empty: every frame
+    bool assemble = false;       // --assemble: encode the frames named by -o instead of rendering
+    int quality = 18;            // --quality: x264 CRF of MP4 videos (0 best .. 51 worst)
     std::string device;          // selector; empty: CLRENDER_DEVICE, else the first CPU device
     std::optional<int> width;    // --size
     std::optional<int> height;
     bool list_devices = false;
+    bool print_frame_count = false;  // --frame-count: print the animation's frame count, exit
     bool reference = false;      // render with the double-precision host reference
     bool placeholders = false;   // stand-in images for missing ones
     bool quiet = false;

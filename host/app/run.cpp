@@ -1,19 +1,18 @@
 #include "app/run.h"
 
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "app/frame_sink.h"
+#include "app/output_plan.h"
+#include "app/progress.h"
 #include "core/errors.h"
-#include "device/device_context.h"
 #include "device/device_selection.h"
 #include "output/atomic_file.h"
-#include "output/image_writer.h"
-#include "reference/reference.h"
-#include "render/device_camera.h"
-#include "render/renderer.h"
+#include "render/camera_path.h"
+#include "render/frame_renderer.h"
+#include "scene/image_loader.h"
 #include "scene/scene_loader.h"
 
 namespace clr {
@@ -25,25 +24,33 @@ double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+struct FrameRecord {
+    int index = 0;
+    FrameTiming timing;
+};
+
+// Everything the --stats report says.
 struct RunReport {
     std::string device;
-    double build_ms = 0;
-    int cache_hits = 0;
     double load_ms = 0;
+    double build_ms = 0;
+    double render_ms = 0;
     double write_ms = 0;
-    FrameTiming frame;
+    double total_ms = 0;
+    std::vector<FrameRecord> frames;
 };
 
 void write_stats(const std::string& path, const RunReport& report) {
+    nlohmann::json frames = nlohmann::json::array();
+    for (const FrameRecord& frame : report.frames)
+        frames.push_back({{"index", frame.index}, {"kernel_ms", frame.timing.kernel_ms}, {"total_ms", frame.timing.total_ms}});
     nlohmann::json stats = {
         {"device", report.device},
         {"build_ms", report.build_ms},
-        {"cache_hits", report.cache_hits},
-        {"load_ms", report.load_ms},
-        {"write_ms", report.write_ms},
-        {"frames", nlohmann::json::array({{{"index", 0},
-                                           {"kernel_ms", report.frame.kernel_ms},
-                                           {"total_ms", report.frame.total_ms}}})},
+        {"cache_hits", 0},  // programs are built on every run; PoCL's own cache makes rebuilds fast
+        {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
+                       {"write", report.write_ms}, {"total", report.total_ms}}},
+        {"frames", frames},
     };
     std::string text = stats.dump(2) + "\n";
     AtomicFile file(path);
@@ -61,28 +68,72 @@ Scene load(const Options& options) {
     return scene;
 }
 
-Image render_with_opencl(const Options& options, const Scene& scene, RunReport& report) {
-    DeviceEntry entry = select_device(list_devices(), options.device);
-    report.device = entry.device_name;
-    if (!options.quiet) std::cerr << "clrender: device " << entry.device_name << "\n";
-    DeviceContext device(entry);
+std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene) {
+    if (options.reference) return make_reference_frame_renderer(scene);
     RendererOptions renderer_options;
     renderer_options.kernel_dir = options.kernel_dir;
-    Renderer renderer(device, scene, renderer_options);
-    report.build_ms = renderer.build_ms();
-    const CameraKey& key = scene.camera_path.front();
-    ClrCamera camera = make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
-    return renderer.render_frame(camera, &report.frame);
+    return make_opencl_frame_renderer(scene, options.device, renderer_options);
 }
 
-Image render_with_reference(const Scene& scene, RunReport& report) {
-    report.device = "host reference (double precision)";
+// Renders the planned frames one after another; the sink writes and encodes each while the
+// next one renders. The program and scene buffers are made once, before the first frame.
+void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report) {
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene);
+    report.device = renderer->device_name();
+    report.build_ms = renderer->build_ms();
+    if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
+
+    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality);
+    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     auto start = Clock::now();
-    const CameraKey& key = scene.camera_path.front();
-    Image image = reference::render(
-        scene, reference::make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height));
-    report.frame.kernel_ms = report.frame.total_ms = ms_since(start);
-    return image;
+    for (int frame : plan.frames) {
+        FrameRecord record{frame, {}};
+        Image image = renderer->render(camera_at_frame(scene, frame), &record.timing);
+        report.frames.push_back(record);
+        sink.push(frame, std::move(image));
+        progress.frame_done();
+    }
+    sink.finish();
+    progress.finish();
+    report.render_ms = ms_since(start);
+    report.write_ms = sink.write_ms();
+}
+
+// --assemble: encodes frames rendered earlier (by this or other processes) into the video.
+void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report) {
+    report.device = "none (assembling frames)";
+    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality);
+    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    for (int frame : plan.frames) {
+        std::string path = plan.image_path(frame);
+        std::shared_ptr<const Image> image;
+        try {
+            image = load_image(path);
+        } catch (const ImageError& error) {
+            throw SceneError(path, "", std::string("cannot read frame ") + std::to_string(frame) + ": " + error.what());
+        }
+        if (image->width != scene.width || image->height != scene.height)
+            throw SceneError(path, "", "frame " + std::to_string(frame) + " is " + std::to_string(image->width) + "x" +
+                                           std::to_string(image->height) + ", the scene renders " +
+                                           std::to_string(scene.width) + "x" + std::to_string(scene.height));
+        sink.push(frame, *image);
+        progress.frame_done();
+    }
+    sink.finish();
+    progress.finish();
+    report.write_ms = sink.write_ms();
+}
+
+void print_summary(const OutputPlan& plan, const RunReport& report) {
+    if (!plan.image_target.empty() && !plan.assemble)
+        std::cerr << "clrender: wrote " << (plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
+                  << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
+    if (!plan.video_path.empty())
+        std::cerr << "clrender: wrote " << plan.video_path << " (" << plan.frames.size() << " frames)\n";
+    double kernel_ms = 0;
+    for (const FrameRecord& frame : report.frames) kernel_ms += frame.timing.kernel_ms;
+    std::cerr << "clrender: " << report.frames.size() << " frame(s), kernel " << kernel_ms << " ms, build "
+              << report.build_ms << " ms, total " << report.total_ms << " ms\n";
 }
 
 }  // namespace
@@ -96,22 +147,19 @@ int run(const Options& options) {
     RunReport report;
     Scene scene = load(options);
     report.load_ms = ms_since(start);
+    if (options.print_frame_count) {
+        std::cout << animation_frame_count(scene) << "\n";
+        return kExitOk;
+    }
+    OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
 
-    std::string output = options.output_path.empty() ? scene.name + ".png" : options.output_path;
-    image_format_for(output);  // an unsupported extension fails before any rendering
-    if (scene.is_animated() && !options.quiet)
-        std::cerr << "clrender: warning: " << scene.path << ": the camera path has " << scene.camera_path.size()
-                  << " keys; rendering the first one as a still\n";
-
-    Image image = options.reference ? render_with_reference(scene, report) : render_with_opencl(options, scene, report);
-
-    auto write_start = Clock::now();
-    write_image(output, image);
-    report.write_ms = ms_since(write_start);
+    if (plan.assemble)
+        assemble_frames(options, scene, plan, report);
+    else
+        render_frames(options, scene, plan, report);
+    report.total_ms = ms_since(start);
     if (!options.stats_path.empty()) write_stats(options.stats_path, report);
-    if (!options.quiet)
-        std::cerr << "clrender: wrote " << output << " (" << image.width << "x" << image.height << ", kernel "
-                  << report.frame.kernel_ms << " ms, total " << ms_since(start) << " ms)\n";
+    if (!options.quiet) print_summary(plan, report);
     return kExitOk;
 }
 

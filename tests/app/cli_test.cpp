@@ -2,16 +2,16 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "scene/image_loader.h"
 #include "support/command.h"
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::read_bytes;
 using testing::run_clrender;
 using testing::TempFolder;
 
@@ -78,8 +78,7 @@ TEST(Cli, StatsReportIsJsonWithTheRequiredKeys) {
     TempFolder folder;
     folder.write("small.json", kSmallScene);
     ASSERT_EQ(run_clrender("small.json -q --stats stats.json", folder.path()).exit_code, 0);
-    std::ifstream in(folder.file("stats.json"));
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = read_bytes(folder.file("stats.json"));
     for (const char* key : {"\"device\"", "\"build_ms\"", "\"cache_hits\"", "\"frames\"", "\"kernel_ms\"", "\"total_ms\""})
         EXPECT_NE(text.find(key), std::string::npos) << key << " in " << text;
 }

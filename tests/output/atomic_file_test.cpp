@@ -3,7 +3,6 @@
 #include "output/atomic_file.h"
 
 #include <gtest/gtest.h>
-#include <stdlib.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -11,35 +10,15 @@
 #include <string>
 
 #include "core/errors.h"
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempFolder {
-public:
-    TempFolder() {
-        std::string name = (fs::temp_directory_path() / "clrender-atomic-file-XXXXXX").string();
-        if (!::mkdtemp(name.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = name;
-    }
-    ~TempFolder() {
-        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add);
-        fs::remove_all(path_);
-    }
-    const fs::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    int entry_count() const { return static_cast<int>(std::distance(fs::directory_iterator(path_), {})); }
-
-private:
-    fs::path path_;
-};
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using testing::read_bytes;
+using testing::TempFolder;
 
 void write(AtomicFile& file, const std::string& text) { file.write(text.data(), text.size()); }
 
@@ -52,7 +31,7 @@ TEST(AtomicFile, NothingUnderTheFinalNameBeforeCommit) {
     EXPECT_FALSE(fs::exists(final_path));
     EXPECT_TRUE(fs::exists(file.temp_path()));
     // Same folder, so that the rename is atomic; a hidden name, unlike the final one.
-    EXPECT_EQ(fs::path(file.temp_path()).parent_path(), folder.path());
+    EXPECT_EQ(fs::path(file.temp_path()).parent_path(), fs::path(folder.path()));
     EXPECT_EQ(fs::path(file.temp_path()).filename().string().rfind(".out.png.tmp-", 0), 0u) << file.temp_path();
 
     file.commit();

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <stdlib.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -13,32 +12,15 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempFolder {
-public:
-    TempFolder() {
-        std::string name = (fs::temp_directory_path() / "clrender-image-writer-XXXXXX").string();
-        if (!::mkdtemp(name.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = name;
-    }
-    ~TempFolder() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-    int entry_count() const { return static_cast<int>(std::distance(fs::directory_iterator(path_), {})); }
-
-private:
-    fs::path path_;
-};
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using testing::read_bytes;
+using testing::TempFolder;
 
 // 3x2 texels, every channel different, alpha varied (it must not reach the file).
 Image make_test_image() {

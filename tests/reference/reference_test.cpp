@@ -7,12 +7,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <memory>
 #include <random>
 
+#include "support/scene_builder.h"
+
 namespace clr::reference {
 namespace {
+
+using testing::make_billboard;
+using testing::make_image;
+using testing::make_scene;
+using testing::make_sphere;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTight = 1e-12;  // double-precision agreement for simple closed forms
@@ -38,56 +44,22 @@ const Color kBlue{0, 0, 1};
 const Color kSky{0.2, 0.4, 0.6};
 const Color kBlack{0, 0, 0};
 
-// A flat-shaded scene with a recognisable background and no objects yet.
+// A flat-shaded scene with a recognisable background and no objects yet. The reference takes
+// the image size from the camera, so the scene's own is left at 0.
 Scene empty_scene() {
-    Scene scene;
+    Scene scene = make_scene(Vec3(0, 0, 0), Vec3(0, 0, -1), Vec3(0, 1, 0), 60, 0, 0);
     scene.background = kSky;
-    scene.camera_path = {{Vec3(0, 0, 0), Vec3(0, 0, -1)}};
-    scene.up = Vec3(0, 1, 0);
     return scene;
-}
-
-Sphere sphere(const Vec3& center, double radius, const Color& ambient, bool mirror = false) {
-    Sphere s;
-    s.center = center;
-    s.radius = radius;
-    s.ambient = ambient;
-    s.is_mirror = mirror;
-    return s;
-}
-
-Billboard billboard(const Vec3& ul, const Vec3& ur, const Vec3& ll, const Color& ambient, bool mirror = false) {
-    Billboard b;
-    b.upper_left = ul;
-    b.upper_right = ur;
-    b.lower_left = ll;
-    b.has_ambient = true;
-    b.ambient = ambient;
-    b.is_mirror = mirror;
-    return b;
 }
 
 // An axis-aligned billboard in the plane z = `z`, facing +z (its image reads correctly from
 // z > `z`): x from x0 to x1 left to right, y from y1 (top) down to y0.
 Billboard facing_plus_z(double x0, double x1, double y0, double y1, double z, const Color& ambient,
                         bool mirror = false) {
-    return billboard(Vec3(x0, y1, z), Vec3(x1, y1, z), Vec3(x0, y0, z), ambient, mirror);
+    return make_billboard(Vec3(x0, y1, z), Vec3(x0, y0, z), Vec3(x1, y1, z), ambient, nullptr, mirror);
 }
 
 using Rgba = std::array<std::uint8_t, 4>;
-
-std::shared_ptr<const Image> make_image(int width, int height, const std::function<Rgba(int, int)>& texel) {
-    auto image = std::make_shared<Image>();
-    image->width = width;
-    image->height = height;
-    for (int row = 0; row < height; ++row) {
-        for (int col = 0; col < width; ++col) {
-            const Rgba rgba = texel(col, row);
-            image->rgba.insert(image->rgba.end(), rgba.begin(), rgba.end());
-        }
-    }
-    return image;
-}
 
 Rgba pixel(const Image& image, int col, int row) {
     return {image.at(col, row, 0), image.at(col, row, 1), image.at(col, row, 2), image.at(col, row, 3)};
@@ -139,7 +111,7 @@ TEST(ReferenceCamera, ObjectsRightOfAndAboveTheAxisLandRightAndUp) {
     // Camera at the origin facing +x with z up: the viewer's right is -y, up is +z.
     Scene scene = empty_scene();
     scene.background = kBlack;
-    scene.spheres = {sphere({10, -3, 0}, 1, kRed), sphere({10, 0, 3}, 1, kGreen)};
+    scene.spheres = {make_sphere({10, -3, 0}, 1, kRed), make_sphere({10, 0, 3}, 1, kGreen)};
     const int width = 41, height = 31;
     const Image image = render(scene, make_camera({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 60, width, height));
     int red = 0, green = 0;
@@ -254,7 +226,7 @@ TEST(ReferenceSphere, HeadOnCentrePixelHitsAtDistanceMinusRadius) {
     Scene scene = empty_scene();
     const Vec3 eye{1, 2, 3};
     const Vec3 center = eye + Vec3(3, 4, 12);  // 13 away
-    scene.spheres = {sphere(center, 2, kRed)};
+    scene.spheres = {make_sphere(center, 2, kRed)};
     const CameraFrame camera = make_camera(eye, center, {0, 1, 0}, 40, 5, 5);
     const Hit hit = intersect(scene, primary_ray(camera, 2, 2));
     EXPECT_EQ(hit.kind, HitKind::Sphere);
@@ -268,14 +240,14 @@ TEST(ReferenceSphere, GrazingRaysHitOrMissAsTheGeometrySays) {
     const Ray ray{{0, 0, 0}, {0, 0, -1}};
     for (const double offset : {0.0, 0.5, 0.999, 1 - 1e-9}) {
         Scene scene = empty_scene();
-        scene.spheres = {sphere({offset, 0, -10}, 1, kRed)};
+        scene.spheres = {make_sphere({offset, 0, -10}, 1, kRed)};
         const Hit hit = intersect(scene, ray);
         ASSERT_EQ(hit.kind, HitKind::Sphere) << offset;
         EXPECT_NEAR(hit.t, 10 - std::sqrt(1 - offset * offset), 1e-9) << offset;
     }
     for (const double offset : {1 + 1e-9, 1.001, 3.0}) {
         Scene scene = empty_scene();
-        scene.spheres = {sphere({offset, 0, -10}, 1, kRed)};
+        scene.spheres = {make_sphere({offset, 0, -10}, 1, kRed)};
         EXPECT_EQ(intersect(scene, ray).kind, HitKind::None) << offset;
     }
 }
@@ -285,7 +257,7 @@ TEST(ReferenceSphere, SmallDistantSphereIsHitAccurately) {
     // naive discriminant loses every digit of the 1e-6 it should be.
     Scene scene = empty_scene();
     const Vec3 direction = normalize(Vec3(1, 2, -2));
-    scene.spheres = {sphere(direction * 1e6, 1e-3, kRed)};
+    scene.spheres = {make_sphere(direction * 1e6, 1e-3, kRed)};
     const Hit hit = intersect(scene, {{0, 0, 0}, direction});
     ASSERT_EQ(hit.kind, HitKind::Sphere);
     EXPECT_NEAR(hit.t, 1e6 - 1e-3, 1e-7);
@@ -294,7 +266,7 @@ TEST(ReferenceSphere, SmallDistantSphereIsHitAccurately) {
 TEST(ReferenceSphere, EyeAtTheCentreHitsTheFarSideAtTheRadius) {
     Scene scene = empty_scene();
     const Vec3 center{2, -1, 4};
-    scene.spheres = {sphere(center, 3, kRed)};
+    scene.spheres = {make_sphere(center, 3, kRed)};
     for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(1, 2, 3), Vec3(-3, 1, -1)}) {
         const Hit hit = intersect(scene, {center, normalize(d)});
         ASSERT_EQ(hit.kind, HitKind::Sphere);
@@ -304,20 +276,21 @@ TEST(ReferenceSphere, EyeAtTheCentreHitsTheFarSideAtTheRadius) {
 
 TEST(ReferenceSphere, EyeInsideOffCentreTakesTheFarRoot) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, 0}, 2, kRed)};
+    scene.spheres = {make_sphere({0, 0, 0}, 2, kRed)};
     EXPECT_NEAR(intersect(scene, {{0.5, 0, 0}, {1, 0, 0}}).t, 1.5, kTight);
     EXPECT_NEAR(intersect(scene, {{0.5, 0, 0}, {-1, 0, 0}}).t, 2.5, kTight);
 }
 
 TEST(ReferenceSphere, SpheresBehindTheOriginAreIgnored) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, 5}, 1, kRed)};
+    scene.spheres = {make_sphere({0, 0, 5}, 1, kRed)};
     EXPECT_EQ(intersect(scene, {{0, 0, 0}, {0, 0, -1}}).kind, HitKind::None);
 }
 
 TEST(ReferenceSphere, NearestOfSeveralWinsWhateverTheOrder) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, -20}, 1, kRed), sphere({0, 0, -10}, 1, kGreen), sphere({0, 0, -30}, 1, kBlue)};
+    scene.spheres = {make_sphere({0, 0, -20}, 1, kRed), make_sphere({0, 0, -10}, 1, kGreen),
+                     make_sphere({0, 0, -30}, 1, kBlue)};
     const Hit hit = intersect(scene, {{0, 0, 0}, {0, 0, -1}});
     EXPECT_EQ(hit.index, 1);
     EXPECT_NEAR(hit.t, 9, kTight);
@@ -326,7 +299,7 @@ TEST(ReferenceSphere, NearestOfSeveralWinsWhateverTheOrder) {
 
 TEST(ReferenceSphere, TMaxAndTheSurfaceBeingLeftAreRespected) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, -10}, 1, kRed), sphere({0, 0, -20}, 1, kGreen)};
+    scene.spheres = {make_sphere({0, 0, -10}, 1, kRed), make_sphere({0, 0, -20}, 1, kGreen)};
     const Ray ray{{0, 0, 0}, {0, 0, -1}};
     EXPECT_EQ(intersect(scene, ray, 9).kind, HitKind::None);  // t must be strictly below t_max
     EXPECT_EQ(intersect(scene, ray, 9.5).index, 0);
@@ -340,7 +313,7 @@ TEST(ReferenceSphere, RandomHitsLieOnTheSurfaceAndNothingIsNearer) {
     std::uniform_real_distribution<double> coord(-5, 5);
     Scene scene = empty_scene();
     for (int i = 0; i < 6; ++i)
-        scene.spheres.push_back(sphere({coord(rng), coord(rng), coord(rng)}, 0.5 + i * 0.2, kRed));
+        scene.spheres.push_back(make_sphere({coord(rng), coord(rng), coord(rng)}, 0.5 + i * 0.2, kRed));
     int hits = 0;
     for (int i = 0; i < 2000; ++i) {
         const Ray ray = ray_towards({coord(rng), coord(rng), 12}, {coord(rng), coord(rng), coord(rng)});
@@ -414,7 +387,7 @@ TEST(ReferenceBillboard, ParallelogramCoordinatesAreRecovered) {
     const Vec3 edge_a{2, 0, 0.5};
     const Vec3 edge_b{0.8, -2, 0};
     Scene scene = empty_scene();
-    scene.billboards = {billboard(ul, ul + edge_a, ul + edge_b, kRed)};
+    scene.billboards = {make_billboard(ul, ul + edge_b, ul + edge_a, kRed)};
     const Vec3 origin{0.3, 0.2, 3};
     const std::array<double, 2> inside[] = {{0.5, 0.5}, {0.1, 0.9}, {0.95, 0.02}, {0, 0.3}, {1, 1}};
     for (const auto& ab : inside) {
@@ -463,7 +436,7 @@ TEST(ReferenceBillboard, TransparentTexelsLetTheSphereBehindShow) {
     });
     Scene scene = empty_scene();
     scene.billboards = {b};
-    scene.spheres = {sphere({0, 0, -10}, 3, kBlue)};
+    scene.spheres = {make_sphere({0, 0, -10}, 3, kBlue)};
     const Vec3 eye{0, 0, 0};
     const double texel_centres_x[] = {-2.0 / 3, 0, 2.0 / 3};
     EXPECT_EQ(intersect(scene, ray_towards(eye, {texel_centres_x[0], 0, -5})).kind, HitKind::Sphere);
@@ -477,7 +450,7 @@ TEST(ReferenceBillboard, TransparentTexelsLetTheSphereBehindShow) {
 
 TEST(ReferenceBillboard, FlatBillboardShowsItsAmbientAndHidesWhatIsBehind) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, -10}, 1, kBlue)};
+    scene.spheres = {make_sphere({0, 0, -10}, 1, kBlue)};
     scene.billboards = {facing_plus_z(-1, 1, -1, 1, -5, kGreen)};
     EXPECT_EQ(trace(scene, {{0, 0, 0}, {0, 0, -1}}), kGreen);
     EXPECT_EQ(trace(scene, {{0, 0, -20}, {0, 0, 1}}), kBlue);  // from the other side, the sphere is nearer
@@ -497,7 +470,7 @@ const Color kAmbient{0.8, 0.6, 0.4};
 LitSetup lit_sphere(double sun_angle_degrees) {
     LitSetup setup;
     setup.scene = empty_scene();
-    setup.scene.spheres = {sphere({0, 0, 0}, 1, kAmbient)};
+    setup.scene.spheres = {make_sphere({0, 0, 0}, 1, kAmbient)};
     setup.scene.has_sun = true;
     const double angle = radians(sun_angle_degrees);
     setup.scene.sun_location = Vec3(0, 0, 1) + Vec3(std::sin(angle), 0, std::cos(angle)) * 50;
@@ -532,7 +505,7 @@ TEST(ReferenceLighting, SphereBetweenPointAndSunCastsAShadow) {
     const Vec3 p{0, 0, 1};
     const Vec3 l = normalize(Vec3(1, 0, 1));  // sun at 45 degrees, 50 away
     LitSetup setup = lit_sphere(45);
-    setup.scene.spheres.push_back(sphere(p + l * 10, 1, kRed));  // on the way to the sun
+    setup.scene.spheres.push_back(make_sphere(p + l * 10, 1, kRed));  // on the way to the sun
     EXPECT_EQ(trace(setup.scene, setup.centre_ray), kBlack);
 
     setup.scene.spheres.back().center = p + l * 60;  // beyond the sun: no shadow
@@ -578,7 +551,7 @@ TEST(ReferenceLighting, BillboardsAreUnlit) {
 
 TEST(ReferenceMirror, MirrorBillboardShowsTheSphereBehindTheCamera) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, 5}, 1, kRed)};
+    scene.spheres = {make_sphere({0, 0, 5}, 1, kRed)};
     Billboard mirror = facing_plus_z(-2, 2, -2, 2, -5, kBlack, true);
     // A mirror ignores its image, transparent texels included.
     mirror.image = make_image(1, 1, [](int, int) { return Rgba{0, 255, 0, 0}; });
@@ -591,18 +564,18 @@ TEST(ReferenceMirror, MirrorBillboardShowsTheSphereBehindTheCamera) {
 
 TEST(ReferenceMirror, TheBackOfAMirrorIsBlack) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, 5}, 1, kRed)};
+    scene.spheres = {make_sphere({0, 0, 5}, 1, kRed)};
     scene.billboards = {facing_plus_z(-2, 2, -2, 2, -5, kBlack, true)};
     EXPECT_EQ(trace(scene, {{0, 0, -10}, {0, 0, 1}}), kBlack);  // from behind
     // The same square with its image read from the other side: the front faces -z, so the
     // camera at the origin sees the back.
-    scene.billboards = {billboard({2, 2, -5}, {-2, 2, -5}, {2, -2, -5}, kBlack, true)};
+    scene.billboards = {make_billboard({2, 2, -5}, {2, -2, -5}, {-2, 2, -5}, kBlack, nullptr, true)};
     EXPECT_EQ(trace(scene, {{0, 0, 0}, {0, 0, -1}}), kBlack);
 }
 
 TEST(ReferenceMirror, MirrorSphereReflectsStraightBackAndIsBlackInside) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, -5}, 1, kBlack, true), sphere({0, 0, 5}, 1, kRed)};
+    scene.spheres = {make_sphere({0, 0, -5}, 1, kBlack, true), make_sphere({0, 0, 5}, 1, kRed)};
     EXPECT_EQ(trace(scene, {{0, 0, 0}, {0, 0, -1}}), kRed);
     EXPECT_EQ(trace(scene, {{0, 0, -5}, {0, 1, 0}}), kBlack);  // inside: its back side
 }
@@ -615,7 +588,7 @@ Scene facing_mirrors(int max_depth) {
     Scene scene = empty_scene();
     scene.max_depth = max_depth;
     const Billboard m1 = facing_plus_z(-1, 4, -2, 2, -5, kBlack, true);
-    const Billboard m2 = billboard({6, 2, 5}, {-1, 2, 5}, {6, -2, 5}, kBlack, true);  // faces -z
+    const Billboard m2 = make_billboard({6, 2, 5}, {6, -2, 5}, {-1, 2, 5}, kBlack, nullptr, true);  // faces -z
     const Billboard picture = facing_plus_z(4, 6, -2, 2, -5, kGreen);
     scene.billboards = {m1, m2, picture};
     return scene;
@@ -636,7 +609,7 @@ TEST(ReferenceMirror, FacingMirrorsAllowMaxDepthReflections) {
 
 TEST(ReferenceMargin, SmallAtASilhouetteLargeAtTheCentre) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 0, -10}, 2, kRed)};
+    scene.spheres = {make_sphere({0, 0, -10}, 2, kRed)};
     const auto margin_at = [&](double x) { return decision_margin(scene, {{x, 0, 0}, {0, 0, -1}}); };
     EXPECT_NEAR(margin_at(0), 1, kTight);  // |0 - r| / r
     EXPECT_NEAR(margin_at(1), 0.5, kTight);
@@ -649,7 +622,7 @@ TEST(ReferenceMargin, SmallAtASilhouetteLargeAtTheCentre) {
 TEST(ReferenceMargin, InfiniteWithNothingNear) {
     Scene scene = empty_scene();
     EXPECT_EQ(decision_margin(scene, {{0, 0, 0}, {0, 0, -1}}), kInfinity);
-    scene.spheres = {sphere({0, 0, 10}, 2, kRed)};  // behind the origin
+    scene.spheres = {make_sphere({0, 0, 10}, 2, kRed)};  // behind the origin
     scene.billboards = {facing_plus_z(-1, 1, -1, 1, 5, kRed)};
     EXPECT_EQ(decision_margin(scene, {{0, 0, 0}, {0, 0, -1}}), kInfinity);
 }
@@ -681,7 +654,7 @@ TEST(ReferenceMargin, CountsTheShadowRayOfALitPixel) {
     // The shadow ray from P = (0,0,1) runs up the z axis, grazing an occluder of radius 1
     // centred 1 away from it.
     LitSetup setup = lit_sphere(0);
-    setup.scene.spheres.push_back(sphere({1, 0, 11}, 1, kRed));
+    setup.scene.spheres.push_back(make_sphere({1, 0, 11}, 1, kRed));
     EXPECT_LT(decision_margin(setup.scene, setup.centre_ray), 1e-12);
     setup.scene.only_ambient = true;  // no shadow ray, no shadow edge
     EXPECT_GT(decision_margin(setup.scene, setup.centre_ray), 0.5);
@@ -691,7 +664,7 @@ TEST(ReferenceMargin, CountsReflectedRays) {
     // The mirror sends the ray back up the z axis, grazing a sphere centred 1 off it.
     Scene scene = empty_scene();
     scene.billboards = {facing_plus_z(-2, 2, -2, 2, -5, kBlack, true)};
-    scene.spheres = {sphere({1, 0, 5}, 1, kRed)};
+    scene.spheres = {make_sphere({1, 0, 5}, 1, kRed)};
     EXPECT_LT(decision_margin(scene, {{0, 0, 0}, {0, 0, -1}}), 1e-12);
     scene.billboards[0].is_mirror = false;
     EXPECT_NEAR(decision_margin(scene, {{0, 0, 0}, {0, 0, -1}}), 0.5, 1e-12);
@@ -721,7 +694,7 @@ TEST(ReferenceToByte, TexelBytesSurviveTheRoundTrip) {
 
 TEST(ReferenceRender, SizeAlphaAndRowOrder) {
     Scene scene = empty_scene();
-    scene.spheres = {sphere({0, 3, -10}, 1, kRed)};  // above the view axis
+    scene.spheres = {make_sphere({0, 3, -10}, 1, kRed)};  // above the view axis
     const int width = 9, height = 15;
     const CameraFrame camera = make_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, width, height);
     const Image image = render(scene, camera);

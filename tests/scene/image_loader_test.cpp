@@ -4,15 +4,15 @@
 
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
-#include <stdlib.h>
 
 #include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
+
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
@@ -20,29 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 using Texel = std::array<int, 4>;
 
-// A fresh folder under the system's temporary folder, removed with everything in it.
-class TempFolder {
-public:
-    TempFolder() {
-        std::string name = (fs::temp_directory_path() / "clrender-image-loader-XXXXXX").string();
-        if (!::mkdtemp(name.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = name;
-    }
-    ~TempFolder() { fs::remove_all(path_); }
-    std::string file(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-    fs::path path_;
-};
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using testing::read_bytes;
+using testing::TempFolder;
 
 Texel texel_at(const Image& image, int col, int row) {
     return {image.at(col, row, 0), image.at(col, row, 1), image.at(col, row, 2), image.at(col, row, 3)};
@@ -68,7 +47,7 @@ std::string make_16bit_png(const TempFolder& folder, const std::string& pixel_fo
                            const std::vector<std::uint16_t>& samples) {
     std::string raw;
     for (std::uint16_t s : samples) raw += {char(s >> 8), char(s & 0xFF)};
-    write_bytes(folder.file("in.raw"), raw);
+    folder.write("in.raw", raw);
     const std::string png = folder.file(pixel_format + ".png");
     const std::string command = "ffmpeg -v error -y -f rawvideo -pix_fmt " + pixel_format + " -s " +
                                 std::to_string(width) + "x" + std::to_string(height) + " -i '" +
@@ -171,7 +150,7 @@ TEST(ImageLoader, DetectsTheFormatByContentNotByName) {
     TempFolder folder;
     const std::uint8_t rgb[] = {9, 8, 7};
     ASSERT_TRUE(stbi_write_png(folder.file("really_a_png.ppm").c_str(), 1, 1, 3, rgb, 3));
-    write_bytes(folder.file("really_a_ppm.png"), "P3 1 1 255 4 5 6\n");
+    folder.write("really_a_ppm.png", "P3 1 1 255 4 5 6\n");
     EXPECT_EQ(texel_at(*load_image(folder.file("really_a_png.ppm")), 0, 0), (Texel{9, 8, 7, 255}));
     EXPECT_EQ(texel_at(*load_image(folder.file("really_a_ppm.png")), 0, 0), (Texel{4, 5, 6, 255}));
 }
@@ -181,8 +160,8 @@ TEST(ImageLoader, DetectsTheFormatByContentNotByName) {
 
 TEST(ImageLoader, ReadsBinaryPpmWithComments) {
     TempFolder folder;
-    write_bytes(folder.file("p6.ppm"), std::string("P6\n# made by hand\n2 1\n# maxval next\n255\n") +
-                                           std::string("\x00\x80\xff\x0a\x0b\x0c", 6));
+    folder.write("p6.ppm", std::string("P6\n# made by hand\n2 1\n# maxval next\n255\n") +
+                               std::string("\x00\x80\xff\x0a\x0b\x0c", 6));
     const auto image = load_image(folder.file("p6.ppm"));
     ASSERT_EQ(image->width, 2);
     ASSERT_EQ(image->height, 1);
@@ -193,22 +172,22 @@ TEST(ImageLoader, ReadsBinaryPpmWithComments) {
 TEST(ImageLoader, ReadsBinaryPpmWithSixteenBitSamples) {
     TempFolder folder;
     // maxval > 255: two bytes a sample, most significant first; 0x01FF / 257 = 1.99 -> 2.
-    write_bytes(folder.file("p6_16.ppm"), std::string("P6 1 1 65535\n") + std::string("\x01\xff\xff\xff\x00\x00", 6));
+    folder.write("p6_16.ppm", std::string("P6 1 1 65535\n") + std::string("\x01\xff\xff\xff\x00\x00", 6));
     EXPECT_EQ(texel_at(*load_image(folder.file("p6_16.ppm")), 0, 0), (Texel{2, 255, 0, 255}));
 }
 
 TEST(ImageLoader, ReadsAsciiPpmWithCommentsAnywhere) {
     TempFolder folder;
     // maxval 15: a sample v becomes v * 255 / 15 = 17 v exactly.
-    write_bytes(folder.file("p3.ppm"),
-                "P3 # magic\n"
-                "# whole-line comment\n"
-                "2 # width\n 2\n"
-                "15\n"
-                "0 7 15# comment right after a number\n"
-                "15\t15 15\r\n"
-                "#\n"
-                "1 2 3   4 5 6\n");
+    folder.write("p3.ppm",
+                 "P3 # magic\n"
+                 "# whole-line comment\n"
+                 "2 # width\n 2\n"
+                 "15\n"
+                 "0 7 15# comment right after a number\n"
+                 "15\t15 15\r\n"
+                 "#\n"
+                 "1 2 3   4 5 6\n");
     const auto image = load_image(folder.file("p3.ppm"));
     ASSERT_EQ(image->width, 2);
     ASSERT_EQ(image->height, 2);
@@ -220,7 +199,7 @@ TEST(ImageLoader, ReadsAsciiPpmWithCommentsAnywhere) {
 
 TEST(ImageLoader, ReadsAsciiPpmWithMaxval255Unchanged) {
     TempFolder folder;
-    write_bytes(folder.file("p3.ppm"), "P3\n# GIMP style\n3 1\n255\n0 1 2\n127 128 129\n253 254 255\n");
+    folder.write("p3.ppm", "P3\n# GIMP style\n3 1\n255\n0 1 2\n127 128 129\n253 254 255\n");
     const auto image = load_image(folder.file("p3.ppm"));
     EXPECT_EQ(texel_at(*image, 0, 0), (Texel{0, 1, 2, 255}));
     EXPECT_EQ(texel_at(*image, 1, 0), (Texel{127, 128, 129, 255}));
@@ -230,7 +209,7 @@ TEST(ImageLoader, ReadsAsciiPpmWithMaxval255Unchanged) {
 TEST(ImageLoader, ScalesPpmSamplesRoundingToNearest) {
     TempFolder folder;
     // maxval 100: 50 -> 127.5 -> 128 (halves up), 1 -> 2.55 -> 3, 99 -> 252.45 -> 252.
-    write_bytes(folder.file("p3.ppm"), "P3 1 1 100 50 1 99");
+    folder.write("p3.ppm", "P3 1 1 100 50 1 99");
     EXPECT_EQ(texel_at(*load_image(folder.file("p3.ppm")), 0, 0), (Texel{128, 3, 252, 255}));
 }
 
@@ -246,11 +225,11 @@ TEST(ImageLoader, ReportsMissingFilesAndFolders) {
 
 TEST(ImageLoader, ReportsEmptyAndUnrecognisedFiles) {
     TempFolder folder;
-    write_bytes(folder.file("empty.png"), "");
+    folder.write("empty.png", "");
     expect_image_error(folder.file("empty.png"), "empty file");
-    write_bytes(folder.file("garbage.png"), "this is not an image at all");
+    folder.write("garbage.png", "this is not an image at all");
     expect_image_error(folder.file("garbage.png"), "unsupported image format");
-    write_bytes(folder.file("grey.pgm"), "P5 1 1 255\n\x10");
+    folder.write("grey.pgm", "P5 1 1 255\n\x10");
     expect_image_error(folder.file("grey.pgm"), "unsupported image format");
 }
 
@@ -259,36 +238,36 @@ TEST(ImageLoader, ReportsCorruptPng) {
     std::vector<std::uint8_t> rgb(32 * 32 * 3, 90);
     ASSERT_TRUE(stbi_write_png(folder.file("whole.png").c_str(), 32, 32, 3, rgb.data(), 32 * 3));
     const std::string whole = read_bytes(folder.file("whole.png"));
-    write_bytes(folder.file("cut.png"), whole.substr(0, whole.size() / 2));
+    folder.write("cut.png", whole.substr(0, whole.size() / 2));
     expect_image_error(folder.file("cut.png"), "corrupt PNG: ");
 }
 
 TEST(ImageLoader, ReportsTruncatedPpm) {
     TempFolder folder;
-    write_bytes(folder.file("p3.ppm"), "P3 2 2 255\n1 2 3 4 5 6 7 8 9 10 11\n");  // one sample short
+    folder.write("p3.ppm", "P3 2 2 255\n1 2 3 4 5 6 7 8 9 10 11\n");  // one sample short
     expect_image_error(folder.file("p3.ppm"), "truncated PPM data");
-    write_bytes(folder.file("p6.ppm"), "P6 2 2 255\n" + std::string(11, '\x7f'));
+    folder.write("p6.ppm", "P6 2 2 255\n" + std::string(11, '\x7f'));
     expect_image_error(folder.file("p6.ppm"), "truncated PPM data");
-    write_bytes(folder.file("p6_no_raster.ppm"), "P6 2 2 255");
+    folder.write("p6_no_raster.ppm", "P6 2 2 255");
     expect_image_error(folder.file("p6_no_raster.ppm"), "truncated PPM data");
-    write_bytes(folder.file("header.ppm"), "P3 2 # no height or maxval\n");
+    folder.write("header.ppm", "P3 2 # no height or maxval\n");
     expect_image_error(folder.file("header.ppm"), "truncated PPM header");
     // A header claiming a huge raster fails at once instead of allocating it.
-    write_bytes(folder.file("huge.ppm"), "P6 1000000 1000000 255\n\x01\x02\x03");
+    folder.write("huge.ppm", "P6 1000000 1000000 255\n\x01\x02\x03");
     expect_image_error(folder.file("huge.ppm"), "truncated PPM data");
 }
 
 TEST(ImageLoader, ReportsInvalidPpmValues) {
     TempFolder folder;
-    write_bytes(folder.file("over.ppm"), "P3 1 1 15 1 2 16");
+    folder.write("over.ppm", "P3 1 1 15 1 2 16");
     expect_image_error(folder.file("over.ppm"), "sample 16 exceeds maxval 15");
-    write_bytes(folder.file("maxval.ppm"), "P3 1 1 70000 1 2 3");
+    folder.write("maxval.ppm", "P3 1 1 70000 1 2 3");
     expect_image_error(folder.file("maxval.ppm"), "maxval 70000 is not in 1..65535");
-    write_bytes(folder.file("zero.ppm"), "P3 0 1 255");
+    folder.write("zero.ppm", "P3 0 1 255");
     expect_image_error(folder.file("zero.ppm"), "zero width or height");
-    write_bytes(folder.file("letters.ppm"), "P3 1 1 255 1 2 x");
+    folder.write("letters.ppm", "P3 1 1 255 1 2 x");
     expect_image_error(folder.file("letters.ppm"), "corrupt PPM");
-    write_bytes(folder.file("glued.ppm"), "P3 1 1 255 1 2 3x");
+    folder.write("glued.ppm", "P3 1 1 255 1 2 3x");
     expect_image_error(folder.file("glued.ppm"), "corrupt PPM");
 }
 

@@ -3,22 +3,22 @@
 #include "scene/scene_loader.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using testing::TempFolder;
 
 // The smallest valid scene; tests add or change keys.
 Json minimal_scene() {
@@ -41,22 +41,23 @@ Scene parse(const Json& scene, const LoadOptions& options = {}) {
 
 // Passes when parsing `text` throws a SceneError at `location` whose detail contains
 // `fragment`; otherwise says what happened instead.
-testing::AssertionResult TextFailsAt(const std::string& text, const std::string& location, const std::string& fragment,
-                                 const LoadOptions& options = {}, const std::string& path = "test.json") {
+::testing::AssertionResult TextFailsAt(const std::string& text, const std::string& location,
+                                       const std::string& fragment, const LoadOptions& options = {},
+                                       const std::string& path = "test.json") {
     try {
         parse_scene(text, path, options);
     } catch (const SceneError& error) {
-        if (error.file() != path) return testing::AssertionFailure() << "file is '" << error.file() << "'";
+        if (error.file() != path) return ::testing::AssertionFailure() << "file is '" << error.file() << "'";
         if (error.location() == location && error.detail().find(fragment) != std::string::npos)
-            return testing::AssertionSuccess();
-        return testing::AssertionFailure() << "got location '" << error.location() << "', detail '"
-                                           << error.detail() << "'";
+            return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << "got location '" << error.location() << "', detail '"
+                                             << error.detail() << "'";
     }
-    return testing::AssertionFailure() << "no SceneError for " << text;
+    return ::testing::AssertionFailure() << "no SceneError for " << text;
 }
 
-testing::AssertionResult FailsAt(const Json& scene, const std::string& location, const std::string& fragment,
-                                 const LoadOptions& options = {}) {
+::testing::AssertionResult FailsAt(const Json& scene, const std::string& location, const std::string& fragment,
+                                   const LoadOptions& options = {}) {
     return TextFailsAt(scene.dump(), location, fragment, options);
 }
 
@@ -72,37 +73,13 @@ std::string all_warnings(const Scene& scene) {
     return text;
 }
 
-// A fresh folder for files a test writes, removed afterwards.
-class TempFolder {
-public:
-    TempFolder() {
-        const auto* test = testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() /
-                ("clrender_scene_test_" + std::to_string(getpid()) + "_" + test->name());
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    const fs::path& path() const { return path_; }
-
-    std::string write(const std::string& name, const std::string& content) const {
-        const fs::path file = path_ / name;
-        std::ofstream(file, std::ios::binary) << content;
-        return file.string();
-    }
-    // A binary PPM (P6) of `width` x `height` texels, all of one colour.
-    std::string write_ppm(const std::string& name, int width, int height) const {
-        std::string content = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
-        for (int i = 0; i < width * height; ++i) content += "\x10\x20\x30";
-        return write(name, content);
-    }
-
-private:
-    fs::path path_;
-};
+// Writes a binary PPM (P6) of `width` x `height` texels, all of one colour, into `folder`;
+// returns its path.
+std::string write_ppm(const TempFolder& folder, const std::string& name, int width, int height) {
+    std::string content = "P6\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+    for (int i = 0; i < width * height; ++i) content += "\x10\x20\x30";
+    return folder.write(name, content);
+}
 
 // ---------------------------------------------------------------------------------------
 // Keys and defaults
@@ -413,12 +390,12 @@ TEST(SceneLoader, RejectsAnEmptyFilename) {
 
 TEST(SceneLoader, LoadsImagesRelativeToTheSceneFolder) {
     TempFolder folder;
-    fs::create_directories(folder.path() / "textures");
-    folder.write_ppm("textures/tex.ppm", 2, 3);
+    fs::create_directories(folder.file("textures"));
+    write_ppm(folder, "textures/tex.ppm", 2, 3);
     Json json = minimal_scene();
     json["billboards"] = {flat_billboard()};
     json["billboards"][0]["filename"] = "textures/tex.ppm";
-    const Scene scene = parse_scene(json.dump(), (folder.path() / "scene.json").string());
+    const Scene scene = parse_scene(json.dump(), folder.file("scene.json"));
     const Billboard& billboard = scene.billboards[0];
     ASSERT_NE(billboard.image, nullptr);
     EXPECT_EQ(billboard.image->width, 2);
@@ -431,14 +408,14 @@ TEST(SceneLoader, LoadsImagesRelativeToTheSceneFolder) {
 
 TEST(SceneLoader, LoadsEachImageFileOnce) {
     TempFolder folder;
-    folder.write_ppm("a.ppm", 1, 1);
-    folder.write_ppm("b.ppm", 1, 1);
+    write_ppm(folder, "a.ppm", 1, 1);
+    write_ppm(folder, "b.ppm", 1, 1);
     Json json = minimal_scene();
     json["billboards"] = {flat_billboard(), flat_billboard(), flat_billboard()};
     json["billboards"][0]["filename"] = "a.ppm";
     json["billboards"][1]["filename"] = "./sub/../a.ppm";  // the same file, spelt differently
     json["billboards"][2]["filename"] = "b.ppm";
-    const Scene scene = parse_scene(json.dump(), (folder.path() / "scene.json").string());
+    const Scene scene = parse_scene(json.dump(), folder.file("scene.json"));
     ASSERT_NE(scene.billboards[0].image, nullptr);
     EXPECT_EQ(scene.billboards[0].image, scene.billboards[1].image);
     EXPECT_NE(scene.billboards[0].image, scene.billboards[2].image);
@@ -446,7 +423,7 @@ TEST(SceneLoader, LoadsEachImageFileOnce) {
 
 TEST(SceneLoader, UsesAbsoluteImagePathsAsGiven) {
     TempFolder folder;
-    const std::string image = folder.write_ppm("abs.ppm", 3, 1);
+    const std::string image = write_ppm(folder, "abs.ppm", 3, 1);
     Json json = minimal_scene();
     json["billboards"] = {flat_billboard()};
     json["billboards"][0]["filename"] = image;
@@ -460,8 +437,8 @@ TEST(SceneLoader, MissingImageIsAnErrorAtItsFilename) {
     Json json = minimal_scene();
     json["billboards"] = {flat_billboard(), flat_billboard()};
     json["billboards"][1]["filename"] = "missing.png";
-    const std::string scene_path = (folder.path() / "scene.json").string();
-    const std::string resolved = (folder.path() / "missing.png").string();
+    const std::string scene_path = folder.file("scene.json");
+    const std::string resolved = folder.file("missing.png");
     EXPECT_TRUE(TextFailsAt(json.dump(), "/billboards/1/filename", "cannot read image '" + resolved + "': ", {},
                         scene_path));
 }
@@ -473,7 +450,7 @@ TEST(SceneLoader, CorruptImageIsAnErrorAtItsFilename) {
     json["billboards"] = {flat_billboard()};
     json["billboards"][0]["filename"] = "bad.ppm";
     EXPECT_TRUE(TextFailsAt(json.dump(), "/billboards/0/filename", "cannot read image '", {},
-                        (folder.path() / "scene.json").string()));
+                        folder.file("scene.json")));
 }
 
 TEST(SceneLoader, MissingImageBecomesAPlaceholderWhenAsked) {
@@ -484,7 +461,7 @@ TEST(SceneLoader, MissingImageBecomesAPlaceholderWhenAsked) {
     json["billboards"][1]["filename"] = "missing.png";
     LoadOptions options;
     options.placeholder_images = true;
-    const Scene scene = parse_scene(json.dump(), (folder.path() / "scene.json").string(), options);
+    const Scene scene = parse_scene(json.dump(), folder.file("scene.json"), options);
     ASSERT_NE(scene.billboards[0].image, nullptr);
     EXPECT_EQ(scene.billboards[0].image, scene.billboards[1].image);
     EXPECT_TRUE(has_warning(scene, "/billboards/0/filename: cannot read image")) << all_warnings(scene);
@@ -906,7 +883,7 @@ TEST(SceneLoader, DuplicateKeysAreWarnedAndTheLastWins) {
 
 TEST(SceneLoader, LoadSceneReadsAFile) {
     TempFolder folder;
-    folder.write_ppm("tex.ppm", 1, 1);
+    write_ppm(folder, "tex.ppm", 1, 1);
     Json json = minimal_scene();
     json["billboards"] = {flat_billboard()};
     json["billboards"][0]["filename"] = "tex.ppm";
@@ -919,7 +896,7 @@ TEST(SceneLoader, LoadSceneReadsAFile) {
 
 TEST(SceneLoader, LoadSceneRejectsMissingFilesAndFolders) {
     TempFolder folder;
-    const std::string missing = (folder.path() / "missing.json").string();
+    const std::string missing = folder.file("missing.json");
     try {
         load_scene(missing);
         ADD_FAILURE() << "no SceneError";
@@ -930,7 +907,7 @@ TEST(SceneLoader, LoadSceneRejectsMissingFilesAndFolders) {
         EXPECT_EQ(error.code(), kExitScene);
     }
     try {
-        load_scene(folder.path().string());
+        load_scene(folder.path());
         ADD_FAILURE() << "no SceneError";
     } catch (const SceneError& error) {
         EXPECT_NE(error.detail().find("cannot read scene file: it is a folder"), std::string::npos) << error.detail();

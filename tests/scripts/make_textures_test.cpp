@@ -2,7 +2,6 @@
 // the committed bytes. And they show what the demo is for (transparent and opaque texels).
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <stdlib.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -12,33 +11,17 @@
 #include <string>
 
 #include "scene/image_loader.h"
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::read_bytes;
+using testing::TempFolder;
 
 const fs::path kDemoFolder = fs::path(CLRENDER_SOURCE_DIR) / "scenes" / "demo";
 const std::set<std::string> kTextures = {"backdrop.png", "checker.png", "cutout.png", "sign.ppm"};
-
-class TempFolder {
-public:
-    TempFolder() {
-        std::string name = (fs::temp_directory_path() / "clrender-make-textures-XXXXXX").string();
-        if (!::mkdtemp(name.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = name;
-    }
-    ~TempFolder() { fs::remove_all(path_); }
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
-
-std::string read_bytes(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // Counts texels with alpha 0, alpha 255 and anything in between.
 struct AlphaCounts {
@@ -55,7 +38,7 @@ AlphaCounts count_alpha(const Image& image) {
 
 TEST(MakeTextures, RegeneratesTheCommittedTexturesByteForByte) {
     TempFolder folder;
-    const std::string command = std::string("'") + CLRENDER_MAKE_TEXTURES + "' '" + folder.path().string() + "'";
+    const std::string command = std::string("'") + CLRENDER_MAKE_TEXTURES + "' '" + folder.path() + "'";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
 
     std::set<std::string> generated;
@@ -64,7 +47,7 @@ TEST(MakeTextures, RegeneratesTheCommittedTexturesByteForByte) {
     for (const std::string& name : kTextures) {
         const std::string committed = read_bytes(kDemoFolder / name);
         ASSERT_FALSE(committed.empty()) << "scenes/demo/" << name << " is missing";
-        EXPECT_TRUE(read_bytes(folder.path() / name) == committed)
+        EXPECT_TRUE(read_bytes(folder.file(name)) == committed)
             << name << " differs from scenes/demo/" << name << ": run clrender_make_textures scenes/demo";
     }
 }

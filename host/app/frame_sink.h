@@ -1,0 +1,52 @@
+// Where finished frames go: their image files and the video. A worker thread does the
+// writing and encoding, so that writing frame N overlaps with rendering frame N+1.
+#pragma once
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include "app/output_plan.h"
+#include "output/video_encoder.h"
+#include "scene/scene.h"
+
+namespace clr {
+
+class FrameSink {
+public:
+    // Starts the encoder (when the plan has a video) for frames of width x height.
+    FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality);
+    // Stops the worker; an unfinished video is abandoned and leaves no file behind.
+    ~FrameSink();
+    FrameSink(const FrameSink&) = delete;
+    FrameSink& operator=(const FrameSink&) = delete;
+
+    // Hands a frame over; waits while the worker is still busy with two. Rethrows an error
+    // the worker met (the render then stops).
+    void push(int frame, Image image);
+    // Writes what is queued and completes the video under its final name. Rethrows errors.
+    void finish();
+
+    double write_ms() const { return write_ms_; }  // worker time spent writing and encoding
+
+private:
+    void work();
+    void consume(int frame, const Image& image);
+    void rethrow_worker_error();
+
+    const OutputPlan& plan_;
+    std::unique_ptr<VideoEncoder> encoder_;
+    std::deque<std::pair<int, Image>> queue_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    bool closing_ = false;
+    std::exception_ptr error_;
+    double write_ms_ = 0;
+    std::thread worker_;
+};
+
+}  // namespace clr

@@ -1,0 +1,61 @@
+#include "render/frame_renderer.h"
+
+#include <chrono>
+
+#include "reference/reference.h"
+#include "render/device_camera.h"
+
+namespace clr {
+namespace {
+
+class OpenClFrameRenderer : public FrameRenderer {
+public:
+    OpenClFrameRenderer(const Scene& scene, const DeviceEntry& entry, const RendererOptions& options)
+        : scene_(scene), device_(entry), renderer_(device_, scene, options) {}
+
+    Image render(const CameraKey& key, FrameTiming* timing) override {
+        return renderer_.render_frame(
+            make_device_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, scene_.width, scene_.height), timing);
+    }
+    std::string device_name() const override { return device_.entry().device_name; }
+    double build_ms() const override { return renderer_.build_ms(); }
+
+private:
+    const Scene& scene_;
+    DeviceContext device_;
+    Renderer renderer_;
+};
+
+class ReferenceFrameRenderer : public FrameRenderer {
+public:
+    explicit ReferenceFrameRenderer(const Scene& scene) : scene_(scene) {}
+
+    Image render(const CameraKey& key, FrameTiming* timing) override {
+        auto start = std::chrono::steady_clock::now();
+        Image image = reference::render(
+            scene_, reference::make_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, scene_.width, scene_.height));
+        if (timing) {
+            timing->total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            timing->kernel_ms = timing->total_ms;  // all of it is "kernel" work, on the host
+        }
+        return image;
+    }
+    std::string device_name() const override { return "host reference (double precision)"; }
+    double build_ms() const override { return 0; }
+
+private:
+    const Scene& scene_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::string& device_selector,
+                                                          const RendererOptions& options) {
+    return std::make_unique<OpenClFrameRenderer>(scene, select_device(list_devices(), device_selector), options);
+}
+
+std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene) {
+    return std::make_unique<ReferenceFrameRenderer>(scene);
+}
+
+}  // namespace clr

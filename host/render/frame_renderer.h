@@ -1,0 +1,28 @@
+// Something that renders a frame for a camera key: the OpenCL renderer, or the
+// double-precision host reference (--reference). The frame loop does not care which.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace clr {
+
+class FrameRenderer {
+public:
+    virtual ~FrameRenderer() = default;
+    virtual Image render(const CameraKey& key, FrameTiming* timing) = 0;
+    virtual std::string device_name() const = 0;
+    virtual double build_ms() const = 0;  // program build time, 0 for the reference
+};
+
+// Opens the device chosen by `device_selector` (see select_device), builds the scene's
+// program and uploads its buffers, once. Throws DeviceError.
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::string& device_selector,
+                                                          const RendererOptions& options = {});
+
+std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene);
+
+}  // namespace clr

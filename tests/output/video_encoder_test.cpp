@@ -1,0 +1,316 @@
+// VideoEncoder: real videos checked with ffprobe (skipped where ffmpeg is not installed), and
+// fake encoders (small shell scripts chosen through CLRENDER_FFMPEG) that fail in the ways a
+// real one can, to show that failures are reported and leave nothing behind.
+#include "output/video_encoder.h"
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_bytes;
+using testing::TempFolder;
+
+// Sets an environment variable for the scope of a test and restores the old value after.
+class ScopedEnvironment {
+public:
+    ScopedEnvironment(const char* name, const std::string& value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        ::setenv(name, value.c_str(), 1);
+    }
+    ~ScopedEnvironment() {
+        if (old_) ::setenv(name_, old_->c_str(), 1);
+        else ::unsetenv(name_);
+    }
+
+private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
+
+// The real encoder, or nullopt where ffmpeg is not installed.
+std::optional<std::string> real_encoder() {
+    try {
+        return find_encoder();
+    } catch (const OutputError&) {
+        return std::nullopt;
+    }
+}
+
+// A frame whose colours change across it and from frame to frame.
+Image test_frame(int width, int height, int index) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+    for (int row = 0; row < height; ++row)
+        for (int col = 0; col < width; ++col) {
+            std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(row) * width + col) * 4];
+            texel[0] = static_cast<std::uint8_t>(col * 255 / width);
+            texel[1] = static_cast<std::uint8_t>(row * 255 / height);
+            texel[2] = static_cast<std::uint8_t>(index * 40);
+            texel[3] = 255;
+        }
+    return image;
+}
+
+void encode(const VideoSettings& settings, const std::string& encoder, int frames) {
+    VideoEncoder video(settings, encoder);
+    for (int i = 0; i < frames; ++i) video.add_frame(test_frame(settings.width, settings.height, i));
+    video.finish();
+}
+
+// stdout (and stderr) of a shell command.
+std::string command_output(const std::string& command) {
+    std::string output;
+    FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return output;
+    std::array<char, 4096> buffer;
+    std::size_t count;
+    while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), count);
+    ::pclose(pipe);
+    return output;
+}
+
+std::string probe(const std::string& video) {
+    return command_output(
+        "ffprobe -v error -select_streams v:0 -count_frames "
+        "-show_entries stream=codec_name,pix_fmt,width,height,nb_read_frames -of default=nw=1 '" + video + "'");
+}
+
+std::vector<std::string> entries(const std::string& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    return names;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += name + " ";
+    return text;
+}
+
+// Writes an executable shell script and returns its path.
+std::string write_script(const TempFolder& folder, const std::string& name, const std::string& body) {
+    folder.write(name, "#!/bin/sh\n" + body + "\n");
+    ::chmod(folder.file(name).c_str(), 0755);
+    return folder.file(name);
+}
+
+// The OutputError message of running `action`, or "" if it throws none.
+template <typename Action>
+std::string output_error_of(Action action) {
+    try {
+        action();
+    } catch (const OutputError& error) {
+        EXPECT_EQ(error.code(), kExitOutput);
+        return error.what();
+    }
+    return "";
+}
+
+TEST(VideoEncoder, FormatFromExtension) {
+    EXPECT_EQ(video_format_for("out.mp4"), VideoFormat::Mp4);
+    EXPECT_EQ(video_format_for("a/b/Out.MP4"), VideoFormat::Mp4);
+    EXPECT_EQ(video_format_for("loop.gif"), VideoFormat::Gif);
+    EXPECT_EQ(video_format_for("LOOP.Gif"), VideoFormat::Gif);
+    for (const char* path : {"out.avi", "out", "mp4", "out.mp4.png", "gif/"}) {
+        try {
+            video_format_for(path);
+            ADD_FAILURE() << path << " was accepted";
+        } catch (const UsageError& error) {
+            EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
+        }
+    }
+}
+
+TEST(VideoEncoder, MissingEncoderIsReportedUpFront) {
+    {
+        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", "/nonexistent/ffmpeg");
+        const std::string message = output_error_of([] { find_encoder(); });
+        EXPECT_NE(message.find("/nonexistent/ffmpeg"), std::string::npos) << message;
+        EXPECT_NE(message.find("CLRENDER_FFMPEG"), std::string::npos) << message;
+    }
+    {
+        TempFolder empty;
+        ScopedEnvironment path("PATH", empty.path());
+        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", "");
+        EXPECT_EQ(output_error_of([] { find_encoder(); }),
+                  "video encoder 'ffmpeg' not found on PATH; install the ffmpeg package (apt-get install ffmpeg)");
+    }
+}
+
+TEST(VideoEncoder, FindsTheEncoderOnPathOrFromTheEnvironment) {
+    TempFolder bin;
+    const std::string fake = write_script(bin, "ffmpeg", "exit 0");
+    bin.write("not-executable", "#!/bin/sh\n");
+    ScopedEnvironment path("PATH", "/nonexistent:" + bin.path());
+    {
+        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", "");
+        EXPECT_EQ(find_encoder(), fake);
+    }
+    {
+        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", fake);
+        EXPECT_EQ(find_encoder(), fake);
+    }
+    {
+        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", bin.file("not-executable"));
+        EXPECT_THROW(find_encoder(), OutputError);
+    }
+}
+
+TEST(VideoEncoder, Mp4OfOddSizedFramesIsPaddedH264) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    const std::string video = folder.file("odd.mp4");
+    encode({video, 33, 17}, *encoder, 5);
+    const std::string info = probe(video);
+    for (const char* line : {"codec_name=h264", "pix_fmt=yuv420p", "width=34", "height=18", "nb_read_frames=5"})
+        EXPECT_NE(info.find(line), std::string::npos) << line << " not in:\n" << info;
+    EXPECT_EQ(entries(folder.path()), std::vector<std::string>({"odd.mp4"})) << "temporary files left behind";
+}
+
+TEST(VideoEncoder, GifHasEveryFrame) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    const std::string video = folder.file("loop.gif");
+    encode({video, 20, 12}, *encoder, 4);
+    const std::string info = probe(video);
+    for (const char* line : {"codec_name=gif", "width=20", "height=12", "nb_read_frames=4"})
+        EXPECT_NE(info.find(line), std::string::npos) << line << " not in:\n" << info;
+    EXPECT_EQ(entries(folder.path()), std::vector<std::string>({"loop.gif"}));
+}
+
+// SPEC 4: the same frames and options give the same bytes.
+TEST(VideoEncoder, SameFramesGiveTheSameBytes) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    for (const char* extension : {".mp4", ".gif"}) {
+        const std::string first = folder.file(std::string("first") + extension);
+        const std::string second = folder.file(std::string("second") + extension);
+        encode({first, 32, 24}, *encoder, 3);
+        encode({second, 32, 24}, *encoder, 3);
+        EXPECT_EQ(read_bytes(first), read_bytes(second)) << extension;
+    }
+}
+
+TEST(VideoEncoder, NothingAppearsBeforeFinish) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    const std::string video = folder.file("partial.mp4");
+    {
+        VideoEncoder encoding({video, 16, 16}, *encoder);
+        encoding.add_frame(test_frame(16, 16, 0));
+        EXPECT_FALSE(fs::exists(video));
+    }  // destroyed without finish(): abandoned
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+TEST(VideoEncoder, FailingEncoderReportsItsLogAndLeavesNothing) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "cat >/dev/null; echo boom >&2; exit 1");
+    const std::string video = folder.file("out.mp4");
+    const std::string message = output_error_of([&] { encode({video, 33, 17}, fake, 3); });
+    EXPECT_NE(message.find(video), std::string::npos) << message;
+    EXPECT_NE(message.find("boom"), std::string::npos) << message;
+    EXPECT_NE(message.find("exited with status 1"), std::string::npos) << message;
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+// The encoder exits before reading anything: writing to its stdin would raise SIGPIPE and
+// kill the test binary if clrender did not ignore it. 256x256 frames (192 KiB) overflow the
+// pipe's buffer, so the failure shows up in add_frame itself.
+TEST(VideoEncoder, EncoderDyingAtOnceIsAnErrorNotACrash) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "exit 3");
+    for (int size : {8, 256}) {
+        const std::string video = folder.file("out.gif");
+        const std::string message = output_error_of([&] { encode({video, size, size}, fake, 10); });
+        EXPECT_NE(message.find("exited with status 3"), std::string::npos) << size << ": " << message;
+        if (size == 256) {
+            EXPECT_NE(message.find("stopped reading frames"), std::string::npos) << message;
+        }
+        EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+    }
+}
+
+TEST(VideoEncoder, EncoderThatWritesNothingIsAnError) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "cat >/dev/null; exit 0");
+    const std::string message = output_error_of([&] { encode({folder.file("out.mp4"), 8, 8}, fake, 2); });
+    EXPECT_NE(message.find("wrote no video"), std::string::npos) << message;
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "cat >/dev/null");
+    const std::string message = output_error_of([&] { encode({folder.file("out.mp4"), 8, 8}, fake, 0); });
+    EXPECT_NE(message.find("no frames"), std::string::npos) << message;
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+// A fake encoder that copies its input to the output file (its last argument) receives every
+// byte of every frame, RGB without alpha, in order.
+TEST(VideoEncoder, SendsRawRgbFrames) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "for last; do :; done; cat >\"$last\"");
+    const std::string video = folder.file("raw.mp4");
+    encode({video, 5, 3}, fake, 2);
+    std::string expected;
+    for (int index = 0; index < 2; ++index) {
+        const Image frame = test_frame(5, 3, index);
+        for (std::size_t i = 0; i < frame.rgba.size(); i += 4) expected.append(reinterpret_cast<const char*>(&frame.rgba[i]), 3);
+    }
+    EXPECT_EQ(read_bytes(video), expected);
+}
+
+TEST(VideoEncoder, DestructorStopsAStuckEncoder) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "exec sleep 1000");
+    const auto start = std::chrono::steady_clock::now();
+    {
+        VideoEncoder video({folder.file("out.mp4"), 8, 8}, fake);
+        video.add_frame(test_frame(8, 8, 0));  // fits in the pipe's buffer
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+TEST(VideoEncoder, RejectsFramesOfTheWrongSize) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "cat >/dev/null");
+    VideoEncoder video({folder.file("out.mp4"), 8, 8}, fake);
+    EXPECT_THROW(video.add_frame(test_frame(8, 9, 0)), std::invalid_argument);
+    EXPECT_THROW(video.add_frame(test_frame(9, 8, 0)), std::invalid_argument);
+}
+
+TEST(VideoEncoder, UnstartableEncoderOrMissingFolderIsAnOutputError) {
+    TempFolder folder;
+    EXPECT_THROW(VideoEncoder({folder.file("out.mp4"), 8, 8}, "/nonexistent/ffmpeg"), OutputError);
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+    EXPECT_THROW(VideoEncoder({folder.file("missing/out.mp4"), 8, 8}, "/bin/cat"), OutputError);
+    EXPECT_THROW(VideoEncoder({folder.file("out.avi"), 8, 8}, "/bin/cat"), UsageError);
+}
+
+}  // namespace
+}  // namespace clr
