@@ -163,3 +163,35 @@ TEST(Cli, UnwritableOutputExitsWith4AndLeavesNothing) {
 
 }  // namespace
 }  // namespace clr
+
+namespace clr {
+namespace {
+
+// A kernel that does not compile: the run fails with exit code 3, the build log (naming the
+// kernel file and line) and the build options.
+TEST(Cli, KernelBuildFailurePrintsTheLogAndOptions) {
+    TempFolder folder;
+    folder.write("small.json", kSmallScene);
+    fs::copy(std::string(CLRENDER_SOURCE_DIR) + "/kernels", folder.file("kernels"), fs::copy_options::recursive);
+    std::string source = testing::read_bytes(folder.file("kernels/shade.cl"));
+    source.replace(source.find("ShadeResult result;"), 19, "ShadeResult result; this is not C;");
+    folder.write("kernels/shade.cl", source);
+    auto result = run_clrender("small.json -q --kernel-dir kernels", folder.path());
+    EXPECT_EQ(result.exit_code, 3);
+    EXPECT_NE(result.output.find("CL_BUILD_PROGRAM_FAILURE"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("kernels/shade.cl"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("-DCLR_FEATURE_SPHERES=1"), std::string::npos) << result.output;
+    EXPECT_FALSE(fs::exists(folder.file("small.png")));
+}
+
+TEST(Cli, KernelDirectoryGivesTheSameImageAsTheEmbeddedKernels) {
+    TempFolder folder;
+    folder.write("small.json", kSmallScene);
+    std::string kernels = std::string(CLRENDER_SOURCE_DIR) + "/kernels";
+    ASSERT_EQ(run_clrender("small.json -q -o embedded.png", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("small.json -q -o from-dir.png --kernel-dir '" + kernels + "'", folder.path()).exit_code, 0);
+    EXPECT_EQ(testing::read_bytes(folder.file("embedded.png")), testing::read_bytes(folder.file("from-dir.png")));
+}
+
+}  // namespace
+}  // namespace clr

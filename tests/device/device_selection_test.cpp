@@ -1,0 +1,93 @@
+// Choosing an OpenCL device by index, platform:device or name, and naming OpenCL errors.
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "device/cl_errors.h"
+#include "device/device_selection.h"
+
+namespace clr {
+namespace {
+
+DeviceEntry entry(int index, int platform, int device, const std::string& platform_name, const std::string& name,
+                  const std::string& type) {
+    DeviceEntry e;
+    e.index = index;
+    e.platform_index = platform;
+    e.device_index = device;
+    e.platform_name = platform_name;
+    e.device_name = name;
+    e.type = type;
+    e.version = "OpenCL 1.2";
+    return e;
+}
+
+// Two platforms: a GPU first, then two CPU devices.
+std::vector<DeviceEntry> fake_devices() {
+    return {entry(0, 0, 0, "NVIDIA CUDA", "NVIDIA H100", "GPU"),
+            entry(1, 1, 0, "Portable Computing Language", "pthread-skylake", "CPU"),
+            entry(2, 1, 1, "Portable Computing Language", "cpu-other", "CPU")};
+}
+
+TEST(DeviceSelection, DefaultIsTheFirstCpuDevice) {
+    EXPECT_EQ(select_device(fake_devices(), "").index, 1);
+    auto gpus_only = fake_devices();
+    gpus_only.resize(1);
+    EXPECT_EQ(select_device(gpus_only, "").index, 0) << "without a CPU device, the first device";
+}
+
+TEST(DeviceSelection, ByFlatIndexAndByPlatformColonDevice) {
+    EXPECT_EQ(select_device(fake_devices(), "0").device_name, "NVIDIA H100");
+    EXPECT_EQ(select_device(fake_devices(), "2").device_name, "cpu-other");
+    EXPECT_EQ(select_device(fake_devices(), "1:1").device_name, "cpu-other");
+    EXPECT_EQ(select_device(fake_devices(), "1:0").device_name, "pthread-skylake");
+}
+
+TEST(DeviceSelection, ByCaseInsensitiveNameOrPlatformSubstring) {
+    EXPECT_EQ(select_device(fake_devices(), "h100").index, 0);
+    EXPECT_EQ(select_device(fake_devices(), "SKYLAKE").index, 1);
+    EXPECT_EQ(select_device(fake_devices(), "portable").index, 1) << "the first match wins";
+}
+
+TEST(DeviceSelection, UnknownSelectorsAreDeviceErrorsListingTheDevices) {
+    for (const char* selector : {"3", "2:0", "0:5", "quantum", "1:x"}) {
+        try {
+            select_device(fake_devices(), selector);
+            ADD_FAILURE() << selector << " was accepted";
+        } catch (const DeviceError& error) {
+            std::string message = error.what();
+            EXPECT_NE(message.find(std::string("'") + selector + "'"), std::string::npos) << message;
+            EXPECT_NE(message.find("NVIDIA H100"), std::string::npos) << message;
+            EXPECT_EQ(error.code(), kExitDevice);
+        }
+    }
+    EXPECT_THROW(select_device({}, ""), DeviceError);
+}
+
+TEST(DeviceSelection, ListingShowsIndicesAndPlatforms) {
+    std::string listing = format_device_list(fake_devices());
+    EXPECT_NE(listing.find("Platform 0: NVIDIA CUDA"), std::string::npos) << listing;
+    EXPECT_NE(listing.find("Platform 1: Portable Computing Language"), std::string::npos) << listing;
+    EXPECT_NE(listing.find("[2] 1:1  cpu-other (CPU"), std::string::npos) << listing;
+    EXPECT_NE(format_device_list({}).find("No OpenCL devices"), std::string::npos);
+}
+
+TEST(DeviceSelection, RealDevicesAreListed) {
+    auto devices = list_devices();
+    ASSERT_FALSE(devices.empty()) << "the tests need an OpenCL device (pocl-opencl-icd)";
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+        EXPECT_EQ(devices[i].index, static_cast<int>(i));
+        EXPECT_FALSE(devices[i].device_name.empty());
+    }
+}
+
+TEST(ClErrors, NamesErrorCodes) {
+    EXPECT_EQ(cl_error_name(CL_SUCCESS), "CL_SUCCESS");
+    EXPECT_EQ(cl_error_name(-5), "CL_OUT_OF_RESOURCES");
+    EXPECT_EQ(cl_error_name(-11), "CL_BUILD_PROGRAM_FAILURE");
+    EXPECT_EQ(cl_error_name(-46), "CL_INVALID_KERNEL_NAME");
+    EXPECT_EQ(cl_error_name(-1001), "CL_PLATFORM_NOT_FOUND_KHR");
+    EXPECT_EQ(cl_error_name(-12345), "unknown OpenCL error -12345");
+}
+
+}  // namespace
+}  // namespace clr
