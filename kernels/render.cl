@@ -19,16 +19,17 @@ float3 trace_path(float3 origin, float3 direction, CLR_SCENE_PARAMS)
     }
 }
 
-/* One work-item per pixel: writes the display colour of pixel (x, y) to
+/* One work-item per pixel of a band of rows starting at `first_row` (the whole image when
+ * it fits in one buffer): writes the display colour of pixel (x, first_row + y) to
  * pixels[y * width + x] as RGBA bytes (alpha 255). */
-__kernel void render(ClrCamera camera, CLR_SCENE_PARAMS, __global uchar4* pixels)
+__kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS, __global uchar4* pixels)
 {
     int col = get_global_id(0);
-    int row = get_global_id(1);
-    if (col >= camera.width || row >= camera.height)
+    int band_row = get_global_id(1);
+    if (col >= camera.width || band_row >= row_count)
         return;
-    ClrRay ray = camera_ray(camera, col, row);
+    ClrRay ray = camera_ray(camera, col, first_row + band_row);
     float3 color = trace_path(ray.origin.xyz, ray.direction.xyz, CLR_SCENE_ARGS);
-    pixels[row * camera.width + col] =
+    pixels[band_row * camera.width + col] =
         (uchar4)(color_to_byte(color.x), color_to_byte(color.y), color_to_byte(color.z), 255);
 }

@@ -34,11 +34,11 @@ FrameSink::~FrameSink() {
     if (worker_.joinable()) worker_.join();
 }
 
-void FrameSink::push(int frame, Image image) {
+void FrameSink::push(int frame, Image image, bool on_disk) {
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait(lock, [this] { return queue_.size() < kMaxQueuedFrames || error_; });
     if (error_) std::rethrow_exception(error_);
-    queue_.emplace_back(frame, std::move(image));
+    queue_.push_back({frame, std::move(image), on_disk});
     changed_.notify_all();
 }
 
@@ -60,7 +60,7 @@ void FrameSink::rethrow_worker_error() {
 
 void FrameSink::work() {
     for (;;) {
-        std::pair<int, Image> item;
+        QueuedFrame item;
         {
             std::unique_lock<std::mutex> lock(mutex_);
             changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
@@ -70,7 +70,7 @@ void FrameSink::work() {
         }
         changed_.notify_all();
         try {
-            consume(item.first, item.second);
+            consume(item);
         } catch (...) {
             std::lock_guard<std::mutex> lock(mutex_);
             error_ = std::current_exception();
@@ -81,10 +81,10 @@ void FrameSink::work() {
     }
 }
 
-void FrameSink::consume(int frame, const Image& image) {
+void FrameSink::consume(const QueuedFrame& item) {
     auto start = std::chrono::steady_clock::now();
-    if (!plan_.image_target.empty() && !plan_.assemble) write_image(plan_.image_path(frame), image);
-    if (encoder_) encoder_->add_frame(image);
+    if (!plan_.image_target.empty() && !item.on_disk) write_image(plan_.image_path(item.frame), item.image);
+    if (encoder_) encoder_->add_frame(item.image);
     write_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -26,8 +26,9 @@ public:
     FrameSink& operator=(const FrameSink&) = delete;
 
     // Hands a frame over; waits while the worker is still busy with two. Rethrows an error
-    // the worker met (the render then stops).
-    void push(int frame, Image image);
+    // the worker met (the render then stops). `on_disk`: the frame's image file exists
+    // already (--resume, --assemble) and only goes to the video.
+    void push(int frame, Image image, bool on_disk = false);
     // Writes what is queued and completes the video under its final name. Rethrows errors.
     void finish();
 
@@ -35,12 +36,17 @@ public:
 
 private:
     void work();
-    void consume(int frame, const Image& image);
+    struct QueuedFrame {
+        int frame = 0;
+        Image image;
+        bool on_disk = false;
+    };
+    void consume(const QueuedFrame& item);
     void rethrow_worker_error();
 
     const OutputPlan& plan_;
     std::unique_ptr<VideoEncoder> encoder_;
-    std::deque<std::pair<int, Image>> queue_;
+    std::deque<QueuedFrame> queue_;
     std::mutex mutex_;
     std::condition_variable changed_;
     bool closing_ = false;

@@ -35,6 +35,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_flag("--assemble", options.assemble,
                  "Encode the frames that -o names (rendered earlier, e.g. split across processes) into --video "
                  "instead of rendering");
+    app.add_flag("--resume", options.resume,
+                 "Skip frames whose file (from the -o pattern) already exists, e.g. after an interrupted run; "
+                 "a video still gets every frame (existing ones are read back)");
     app.add_option("--quality", options.quality, "MP4 quality as x264 CRF, 0 (best) to 51; default 18")
         ->check(CLI::Range(0, 51));
     app.add_flag("--list-devices", options.list_devices, "Print the OpenCL platforms and devices, then exit");

@@ -12,6 +12,7 @@ struct Options {
     std::string video_path;      // --video: .mp4 or .gif
     std::string frames;          // --frames: "7", "0-99", "5,7,10-20"; empty: every frame
     bool assemble = false;       // --assemble: encode the frames named by -o instead of rendering
+    bool resume = false;         // --resume: frames whose file (-o pattern) exists are not rendered again
     int quality = 18;            // --quality: x264 CRF of MP4 videos (0 best .. 51 worst)
     std::string device;          // selector; empty: CLRENDER_DEVICE, else the first CPU device
     std::optional<int> width;    // --size

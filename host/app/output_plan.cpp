@@ -52,6 +52,8 @@ OutputPlan plan_outputs(const Options& options, const Scene& scene) {
     plan_images(options, scene, plan);
     plan_video(options, scene, plan);
     plan.assemble = options.assemble;
+    if (options.resume && !plan.image_is_pattern)
+        throw UsageError("--resume needs -o with a frame pattern: it skips the frames whose files exist");
     if (plan.assemble && (!plan.image_is_pattern || plan.video_path.empty() || options.video_path.empty()))
         throw UsageError("--assemble needs -o with the frame pattern to read and --video with the video to write");
     return plan;

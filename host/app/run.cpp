@@ -1,10 +1,12 @@
 #include "app/run.h"
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "app/frame_sink.h"
+#include "app/interruption.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
 #include "core/errors.h"
@@ -19,6 +21,7 @@ namespace clr {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+namespace fs = std::filesystem;
 
 double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -75,6 +78,22 @@ std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene
     return make_opencl_frame_renderer(scene, options.device, renderer_options);
 }
 
+// A frame written earlier (--assemble, --resume), checked to be of the scene's size.
+Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
+    std::string path = plan.image_path(frame);
+    std::shared_ptr<const Image> image;
+    try {
+        image = load_image(path);
+    } catch (const ImageError& error) {
+        throw SceneError(path, "", std::string("cannot read frame ") + std::to_string(frame) + ": " + error.what());
+    }
+    if (image->width != scene.width || image->height != scene.height)
+        throw SceneError(path, "", "frame " + std::to_string(frame) + " is " + std::to_string(image->width) + "x" +
+                                       std::to_string(image->height) + ", the scene renders " +
+                                       std::to_string(scene.width) + "x" + std::to_string(scene.height));
+    return *image;
+}
+
 // Renders the planned frames one after another; the sink writes and encodes each while the
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report) {
@@ -87,12 +106,19 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     auto start = Clock::now();
     for (int frame : plan.frames) {
+        throw_if_interrupted();
+        if (options.resume && plan.image_is_pattern && fs::exists(plan.image_path(frame))) {
+            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, scene, frame), true);
+            progress.frame_done();
+            continue;
+        }
         FrameRecord record{frame, {}};
         Image image = renderer->render(camera_at_frame(scene, frame), &record.timing);
         report.frames.push_back(record);
         sink.push(frame, std::move(image));
         progress.frame_done();
     }
+    throw_if_interrupted();
     sink.finish();
     progress.finish();
     report.render_ms = ms_since(start);
@@ -105,18 +131,8 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
     FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality);
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     for (int frame : plan.frames) {
-        std::string path = plan.image_path(frame);
-        std::shared_ptr<const Image> image;
-        try {
-            image = load_image(path);
-        } catch (const ImageError& error) {
-            throw SceneError(path, "", std::string("cannot read frame ") + std::to_string(frame) + ": " + error.what());
-        }
-        if (image->width != scene.width || image->height != scene.height)
-            throw SceneError(path, "", "frame " + std::to_string(frame) + " is " + std::to_string(image->width) + "x" +
-                                           std::to_string(image->height) + ", the scene renders " +
-                                           std::to_string(scene.width) + "x" + std::to_string(scene.height));
-        sink.push(frame, *image);
+        throw_if_interrupted();
+        sink.push(frame, read_frame(plan, scene, frame), true);
         progress.frame_done();
     }
     sink.finish();
@@ -152,6 +168,7 @@ int run(const Options& options) {
         return kExitOk;
     }
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
+    install_interruption_handlers();
 
     if (plan.assemble)
         assemble_frames(options, scene, plan, report);

@@ -169,7 +169,11 @@ pid_t spawn(const std::vector<std::string>& arguments, int stdin_fd, int stderr_
     posix_spawnattr_setsigmask(&attributes, &signals);
     sigaddset(&signals, SIGPIPE);
     posix_spawnattr_setsigdefault(&attributes, &signals);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    // Its own process group: Ctrl-C at the terminal then reaches clrender alone, which stops
+    // the encoder itself and removes its files, instead of ffmpeg dying first and the
+    // interruption looking like an encoder failure.
+    posix_spawnattr_setpgroup(&attributes, 0);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
 
     pid_t pid = -1;
     const int error = ::posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);

@@ -45,10 +45,12 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         spheres_ = upload(device_.context(), compiled.spheres);
         billboards_ = upload(device_.context(), compiled.billboards);
         texels_ = upload(device_.context(), compiled.texels);
-        bind_scene(render_kernel_, 1);
+        bind_scene(render_kernel_, 3);
+        max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
     } catch (const cl::Error& error) {
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
+    if (options.max_buffer_bytes) max_buffer_bytes_ = std::min(max_buffer_bytes_, options.max_buffer_bytes);
 }
 
 void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
@@ -58,32 +60,69 @@ void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
     kernel.setArg(first + 3, info_);
 }
 
+static bool is_out_of_memory(const cl::Error& error) {
+    return error.err() == CL_MEM_OBJECT_ALLOCATION_FAILURE || error.err() == CL_OUT_OF_RESOURCES ||
+           error.err() == CL_OUT_OF_HOST_MEMORY || error.err() == CL_INVALID_BUFFER_SIZE;
+}
+
+void Renderer::reserve_pixels(std::size_t bytes) {
+    if (bytes <= pixels_capacity_) return;
+    pixels_ = cl::Buffer();  // free the old buffer before asking for a larger one
+    pixels_capacity_ = 0;
+    pixels_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY, bytes);
+    pixels_capacity_ = bytes;
+}
+
+double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, Image& image) {
+    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    reserve_pixels(rows * row_bytes);
+    render_kernel_.setArg(0, camera);
+    render_kernel_.setArg(1, static_cast<cl_int>(first_row));
+    render_kernel_.setArg(2, static_cast<cl_int>(rows));
+    render_kernel_.setArg(7, pixels_);
+    cl::NDRange global(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
+    cl::Event done;
+    device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, cl::NDRange(kGroupWidth, kGroupHeight),
+                                         nullptr, &done);
+    device_.queue().enqueueReadBuffer(pixels_, CL_TRUE, 0, rows * row_bytes, image.rgba.data() + first_row * row_bytes);
+    auto ns = done.getProfilingInfo<CL_PROFILING_COMMAND_END>() - done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
+    return static_cast<double>(ns) * 1e-6;
+}
+
+// A frame whose pixel buffer exceeds the device's allocation limit, or whose allocation
+// fails, renders in bands of rows, halving the band until it fits. Bands give the same bytes:
+// every pixel's computation is independent of the band it is in.
 Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
     auto start = std::chrono::steady_clock::now();
     Image image;
     image.width = camera.width;
     image.height = camera.height;
-    image.rgba.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
-    try {
-        if (image.rgba.size() > pixels_capacity_) {
-            pixels_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY, image.rgba.size());
-            pixels_capacity_ = image.rgba.size();
+    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    image.rgba.resize(row_bytes * camera.height);
+    if (row_bytes > max_buffer_bytes_)
+        throw DeviceError("a row of " + std::to_string(camera.width) + " pixels needs " + std::to_string(row_bytes) +
+                          " bytes of device memory, more than '" + device_.entry().device_name + "' allows (" +
+                          std::to_string(max_buffer_bytes_) + ")");
+    int band = static_cast<int>(std::min<std::size_t>(camera.height, max_buffer_bytes_ / row_bytes));
+    double kernel_ms = 0;
+    bands_ = 0;
+    for (int first_row = 0; first_row < camera.height;) {
+        int rows = std::min(band, camera.height - first_row);
+        try {
+            kernel_ms += render_band(camera, first_row, rows, image);
+        } catch (const cl::Error& error) {
+            if (!is_out_of_memory(error) || band == 1)
+                throw DeviceError(describe_cl_error(error, "rendering a frame on '" + device_.entry().device_name + "'"));
+            band = std::max(1, band / 2);
+            continue;  // the same rows again, in a smaller band
         }
-        render_kernel_.setArg(0, camera);
-        render_kernel_.setArg(5, pixels_);
-        cl::NDRange global(round_up(camera.width, kGroupWidth), round_up(camera.height, kGroupHeight));
-        cl::Event done;
-        device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global,
-                                             cl::NDRange(kGroupWidth, kGroupHeight), nullptr, &done);
-        device_.queue().enqueueReadBuffer(pixels_, CL_TRUE, 0, image.rgba.size(), image.rgba.data());
-        if (timing) {
-            auto ns = done.getProfilingInfo<CL_PROFILING_COMMAND_END>() - done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
-            timing->kernel_ms = static_cast<double>(ns) * 1e-6;
-        }
-    } catch (const cl::Error& error) {
-        throw DeviceError(describe_cl_error(error, "rendering a frame on '" + device_.entry().device_name + "'"));
+        first_row += rows;
+        ++bands_;
     }
-    if (timing) timing->total_ms = elapsed_ms(start);
+    if (timing) {
+        timing->kernel_ms = kernel_ms;
+        timing->total_ms = elapsed_ms(start);
+    }
     return image;
 }
 

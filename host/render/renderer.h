@@ -15,6 +15,9 @@ namespace clr {
 struct RendererOptions {
     std::string kernel_dir;                // read kernels from here instead of the embedded copies
     std::optional<FeatureSet> features;    // compile these instead of the scene's own (tests)
+    // Largest pixel buffer to allocate on the device, in bytes; 0: the device's own limit.
+    // A frame that does not fit renders in bands of rows.
+    std::size_t max_buffer_bytes = 0;
 };
 
 struct FrameTiming {
@@ -31,6 +34,7 @@ public:
     Image render_frame(const ClrCamera& camera, FrameTiming* timing = nullptr);
 
     const FeatureSet& features() const { return features_; }
+    int bands_of_last_frame() const { return bands_; }  // 1 when the frame fitted whole
     double build_ms() const { return build_ms_; }
 
     // For the stage tests: the built program and the scene's kernel arguments, bound from
@@ -39,6 +43,10 @@ public:
     void bind_scene(cl::Kernel& kernel, int first) const;
 
 private:
+    // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
+    double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
+    void reserve_pixels(std::size_t bytes);
+
     DeviceContext& device_;
     FeatureSet features_;
     ClrSceneInfo info_{};
@@ -48,6 +56,8 @@ private:
     cl::Buffer pixels_;
     std::size_t pixels_capacity_ = 0;
     double build_ms_ = 0;
+    std::size_t max_buffer_bytes_ = 0;
+    int bands_ = 1;
 };
 
 }  // namespace clr

@@ -86,7 +86,9 @@ void check_shading(const Scene& scene, std::uint32_t seed, int reflections) {
         bool has_mirror = false;
         for (const auto& s : scene.spheres) has_mirror |= s.is_mirror;
         for (const auto& b : scene.billboards) has_mirror |= b.is_mirror;
-        if (has_mirror) EXPECT_GT(bounced, 20);
+        if (has_mirror) {
+            EXPECT_GT(bounced, 20);
+        }
     }
 }
 

@@ -44,7 +44,9 @@ TEST(Mirrors, EveryMaxDepthFromZeroToSixMatchesTheReference) {
         Scene scene = mirror_corridor(depth);
         expect_matches_reference(scene, "MaxDepth " + std::to_string(depth));
         Image image = testing::render_with_kernels(scene);
-        if (depth > 0) EXPECT_NE(image.rgba, previous.rgba) << "MaxDepth " << depth << " changed nothing";
+        if (depth > 0) {
+            EXPECT_NE(image.rgba, previous.rgba) << "MaxDepth " << depth << " changed nothing";
+        }
         previous = image;
     }
 }

@@ -1,0 +1,58 @@
+// The benchmark's scenes, generated in code from fixed seeds so that every run on every
+// machine measures the same pictures.
+//
+// Every object shows a colour of its own that encodes its id (flat colour for spheres, the
+// opaque texels of a billboard's private image), and shading is flat, so the image clrender
+// renders is also a map of which object each pixel sees. That map is compared with the
+// Embree peer's hit ids without any extra kernel: the comparison checks the very image that
+// was timed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace clr::bench {
+
+struct BenchSceneSpec {
+    std::string name;  // as printed and as given to --scenes
+    int spheres = 0;
+    int billboards = 0;
+    // > 0: clrender times at most this many frames of this scene and warms up on a thumbnail,
+    // because the brute-force kernels need minutes for a full frame of it.
+    int clrender_repeat_cap = 0;
+};
+
+// course, 16+16, 256+256, 4096+4096, 100k spheres, in that order.
+const std::vector<BenchSceneSpec>& bench_scene_specs();
+
+// The spec named `name`; throws std::invalid_argument listing the names when none matches.
+const BenchSceneSpec& find_bench_scene(const std::string& name);
+
+// The scene of `spec` seen at width x height: black background, flat shading (no sun, no
+// mirrors), one still camera at the origin looking down -z. The object layout depends on the
+// aspect ratio only through the field of view, and not at all on anything but the arguments.
+Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height);
+
+// Object ids as both peers report them: 0 is the background, 1 + i sphere i, and
+// 1 + sphere_count + j billboard j.
+constexpr std::uint32_t kBackgroundId = 0;
+inline std::uint32_t sphere_id(int index) { return 1u + static_cast<std::uint32_t>(index); }
+inline std::uint32_t billboard_id(int sphere_count, int index) {
+    return 1u + static_cast<std::uint32_t>(sphere_count) + static_cast<std::uint32_t>(index);
+}
+
+// The colour that shows object `id` (ids below 2^24): its three display bytes are a
+// scrambled 24-bit code of the id, so neighbouring ids get visibly different colours.
+// The background id 0 is black.
+Color id_color(std::uint32_t id);
+
+// The id whose id_color() renders as these display bytes.
+std::uint32_t id_of_bytes(std::uint8_t r, std::uint8_t g, std::uint8_t b);
+
+// The id of every pixel of a rendered image, rows from the top.
+std::vector<std::uint32_t> object_ids(const Image& image);
+
+}  // namespace clr::bench
