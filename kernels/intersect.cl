@@ -104,6 +104,52 @@ ClrHit intersect_scene(float3 origin, float3 direction, float t_max, int skip_ki
     return hit;
 }
 
+/* Whether a hit at distance t on surface (kind, index) beats `best`: nearer, or as near and
+ * first in the order spheres then billboards, by index. That is the order intersect_scene()
+ * visits them in, so any visiting order gives intersect_scene()'s answer, ties included. */
+bool hit_beats(float t, int kind, int index, ClrHit best)
+{
+    if (t != best.t)
+        return t < best.t;
+    return t < INFINITY && (kind < best.kind || (kind == best.kind && index < best.index));
+}
+
+/* The nearest surface along a primary ray, among the objects binned to its screen tile
+ * (items[first] .. items[end - 1], nearest first; see host/render/screen_tiles.h). The
+ * loop ends once the best hit is nearer than every object left (item_nearest holds a lower
+ * bound on each object's hit distance). Gives the same hit as intersect_scene(). */
+ClrHit intersect_tile(float3 origin, float3 direction, __global const uint* items,
+                      __global const float* item_nearest, uint first, uint end, CLR_SCENE_PARAMS)
+{
+    ClrHit hit;
+    hit.t = INFINITY;
+    hit.kind = CLR_HIT_NONE;
+    hit.index = -1;
+    hit.pad0 = 0;
+    for (uint k = first; k < end; ++k) {
+        if (hit.t < item_nearest[k])
+            break;
+        uint item = items[k];
+        int index = (int)(item & ~CLR_TILE_BILLBOARD);
+        int kind = (item & CLR_TILE_BILLBOARD) ? CLR_HIT_BILLBOARD : CLR_HIT_SPHERE;
+        float t = INFINITY;
+#if CLR_FEATURE_BILLBOARDS
+        if (kind == CLR_HIT_BILLBOARD)
+            t = billboard_distance(&billboards[index], texels, origin, direction, INFINITY);
+#endif
+#if CLR_FEATURE_SPHERES
+        if (kind == CLR_HIT_SPHERE)
+            t = sphere_distance(spheres[index].center_radius, origin, direction);
+#endif
+        if (hit_beats(t, kind, index, hit)) {
+            hit.t = t;
+            hit.kind = kind;
+            hit.index = index;
+        }
+    }
+    return hit;
+}
+
 /* One work-item per ray: writes the nearest hit of rays[i] to hits[i], for i < ray_count. */
 __kernel void intersect(__global const ClrRay* rays, int ray_count, CLR_SCENE_PARAMS, __global ClrHit* hits)
 {

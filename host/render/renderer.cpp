@@ -5,6 +5,7 @@
 #include "core/errors.h"
 #include "device/cl_errors.h"
 #include "device/kernel_sources.h"
+#include "render/screen_tiles.h"
 
 namespace clr {
 namespace {
@@ -32,7 +33,8 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 
 }  // namespace
 
-Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options) : device_(device) {
+Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options)
+    : device_(device), scene_(scene), screen_tiles_(options.screen_tiles) {
     CompiledScene compiled = compile_scene(scene);
     features_ = options.features.value_or(compiled.features);
     info_ = compiled.info;
@@ -41,7 +43,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
     build_ms_ = elapsed_ms(start);
     try {
-        render_kernel_ = cl::Kernel(program_, "render");
+        render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_tiled" : "render");
         spheres_ = upload(device_.context(), compiled.spheres);
         billboards_ = upload(device_.context(), compiled.billboards);
         texels_ = upload(device_.context(), compiled.texels);
@@ -80,6 +82,12 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
     render_kernel_.setArg(1, static_cast<cl_int>(first_row));
     render_kernel_.setArg(2, static_cast<cl_int>(rows));
     render_kernel_.setArg(7, pixels_);
+    if (screen_tiles_) {
+        render_kernel_.setArg(8, tile_offsets_);
+        render_kernel_.setArg(9, tile_items_);
+        render_kernel_.setArg(10, tile_nearest_);
+        render_kernel_.setArg(11, static_cast<cl_int>(tiles_x_));
+    }
     cl::NDRange global(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
     cl::Event done;
     device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, cl::NDRange(kGroupWidth, kGroupHeight),
@@ -87,6 +95,14 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
     device_.queue().enqueueReadBuffer(pixels_, CL_TRUE, 0, rows * row_bytes, image.rgba.data() + first_row * row_bytes);
     auto ns = done.getProfilingInfo<CL_PROFILING_COMMAND_END>() - done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
     return static_cast<double>(ns) * 1e-6;
+}
+
+void Renderer::upload_screen_tiles(const ClrCamera& camera) {
+    ScreenTiles tiles = bin_screen_tiles(scene_, camera);
+    tile_offsets_ = upload(device_.context(), tiles.offsets);
+    tile_items_ = upload(device_.context(), tiles.items);
+    tile_nearest_ = upload(device_.context(), tiles.nearest);
+    tiles_x_ = tiles.tiles_x;
 }
 
 // A frame whose pixel buffer exceeds the device's allocation limit, or whose allocation
@@ -106,6 +122,13 @@ Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
     int band = static_cast<int>(std::min<std::size_t>(camera.height, max_buffer_bytes_ / row_bytes));
     double kernel_ms = 0;
     bands_ = 0;
+    if (screen_tiles_) {
+        try {
+            upload_screen_tiles(camera);
+        } catch (const cl::Error& error) {
+            throw DeviceError(describe_cl_error(error, "uploading screen tiles to '" + device_.entry().device_name + "'"));
+        }
+    }
     for (int first_row = 0; first_row < camera.height;) {
         int rows = std::min(band, camera.height - first_row);
         try {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 #include <string>
 
 #include "device/device_context.h"
@@ -18,6 +19,9 @@ struct RendererOptions {
     // Largest pixel buffer to allocate on the device, in bytes; 0: the device's own limit.
     // A frame that does not fit renders in bands of rows.
     std::size_t max_buffer_bytes = 0;
+    // Cull primary rays by screen tiles (render_tiled); off: every pixel tests every object
+    // (the brute-force kernel, which the tests use as the general reference).
+    bool screen_tiles = true;
 };
 
 struct FrameTiming {
@@ -46,12 +50,17 @@ private:
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
     double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
     void reserve_pixels(std::size_t bytes);
+    void upload_screen_tiles(const ClrCamera& camera);
 
     DeviceContext& device_;
+    Scene scene_;  // the geometry, for binning each frame's screen tiles (images are shared)
+    bool screen_tiles_ = true;
     FeatureSet features_;
     ClrSceneInfo info_{};
     cl::Program program_;
-    cl::Kernel render_kernel_;
+    cl::Kernel render_kernel_;  // render_tiled or render
+    cl::Buffer tile_offsets_, tile_items_, tile_nearest_;
+    int tiles_x_ = 0;
     cl::Buffer spheres_, billboards_, texels_;
     cl::Buffer pixels_;
     std::size_t pixels_capacity_ = 0;

@@ -25,6 +25,15 @@ typedef cl_uint clr_uint;
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
 
+/* Screen tiles for primary rays (host/render/screen_tiles.h): a tile is
+ * kClrTileSize x kClrTileSize pixels, and a tile item is an object index, with this bit set
+ * for billboards. */
+#define CLR_TILE_BILLBOARD 0x80000000u
+#define CLR_TILE_SIZE 16
+#ifndef __OPENCL_VERSION__
+constexpr int kClrTileSize = CLR_TILE_SIZE;
+#endif
+
 /* What a ray hit (ClrHit.kind). */
 #define CLR_HIT_NONE 0
 #define CLR_HIT_SPHERE 1

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "render/feature_set.h"
+
+#include <random>
 #include "support/random_scene.h"
 #include "support/render_helpers.h"
 #include "support/scene_builder.h"
@@ -11,8 +13,9 @@ namespace clr {
 namespace {
 
 void expect_same_as_general(const Scene& scene) {
-    RendererOptions general;
+    RendererOptions general;  // every feature compiled in, no culling
     general.features = FeatureSet::all();
+    general.screen_tiles = false;
     Image specialised = testing::render_with_kernels(scene);
     Image reference = testing::render_with_kernels(scene, general);
     ASSERT_EQ(specialised.rgba.size(), reference.rgba.size());
@@ -79,6 +82,35 @@ TEST(FeatureSet, AnalysisFollowsTheScene) {
     features = FeatureSet::of(scene);
     EXPECT_TRUE(features.billboards && features.mirrors);
     EXPECT_FALSE(features.textures || features.alpha) << "a mirror ignores its image";
+}
+
+}  // namespace
+}  // namespace clr
+
+namespace clr {
+namespace {
+
+// Screen-tile culling must not change a single byte: random scenes seen from cameras inside
+// and around them (objects behind the eye, spheres around it, billboards crossing the eye's
+// plane), against the brute-force kernel.
+TEST(ScreenTiles, CulledRenderEqualsBruteForce) {
+    for (std::uint32_t seed = 200; seed < 212; ++seed) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        Scene scene = testing::make_random_scene(seed, 25, 25);
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> coordinate(-14, 14);
+        Vec3 eye{coordinate(random), coordinate(random), coordinate(random)};
+        scene.camera_path = {{eye, {coordinate(random) * 0.3, coordinate(random) * 0.3, coordinate(random) * 0.3}}};
+        scene.fov_degrees = 30 + (seed % 5) * 30;
+        scene.width = 77;
+        scene.height = 45 + (seed % 3) * 20;
+        if (seed % 4 == 0) scene.spheres[0].center = eye;  // the eye inside a sphere
+        RendererOptions brute_force;
+        brute_force.screen_tiles = false;
+        Image tiled = testing::render_with_kernels(scene);
+        Image reference = testing::render_with_kernels(scene, brute_force);
+        EXPECT_TRUE(tiled.rgba == reference.rgba);
+    }
 }
 
 }  // namespace

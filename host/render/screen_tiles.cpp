@@ -1,0 +1,145 @@
+#include "render/screen_tiles.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace clr {
+namespace {
+
+Vec3 to_vec3(const clr_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
+
+// The pixel rectangle an object may cover, in (fractional) pixel coordinates, or the
+// whole screen when the object reaches behind the eye (its projection is then unbounded).
+struct PixelBounds {
+    double col_min = std::numeric_limits<double>::infinity(), col_max = -col_min;
+    double row_min = col_min, row_max = -col_min;
+    bool whole_screen = false;
+};
+
+class Projector {
+public:
+    explicit Projector(const ClrCamera& camera)
+        : eye_(to_vec3(camera.eye)), forward_(to_vec3(camera.forward)), right_(to_vec3(camera.right)),
+          up_(to_vec3(camera.up)), width_(camera.width), height_(camera.height) {}
+
+    // Widens `bounds` by the projection of `point`. A point less than a small fraction of the
+    // scene's distance in front of the eye counts as behind it.
+    void add(const Vec3& point, PixelBounds& bounds) const {
+        Vec3 rel = point - eye_;
+        double depth = dot(rel, forward_);
+        if (!(depth > 1e-7 * length(rel))) {
+            bounds.whole_screen = true;
+            return;
+        }
+        // Inverse of the kernels' camera_ray: screen coordinates sx, sy in [-1, 1] across
+        // the image, then pixel coordinates of which pixel centres are the integers.
+        double sx = dot(rel, right_) / (dot(right_, right_) * depth);
+        double sy = dot(rel, up_) / (dot(up_, up_) * depth);
+        double col = (sx + 1) * width_ / 2 - 0.5;
+        double row = (1 - sy) * height_ / 2 - 0.5;
+        bounds.col_min = std::min(bounds.col_min, col);
+        bounds.col_max = std::max(bounds.col_max, col);
+        bounds.row_min = std::min(bounds.row_min, row);
+        bounds.row_max = std::max(bounds.row_max, row);
+    }
+
+    const Vec3& eye() const { return eye_; }
+
+private:
+    Vec3 eye_, forward_, right_, up_;
+    int width_, height_;
+};
+
+struct Candidate {
+    std::uint32_t item;
+    double nearest;
+    PixelBounds bounds;
+};
+
+// A sphere lies inside its axis-aligned box, whose projection bounds the sphere's.
+Candidate sphere_candidate(const Sphere& sphere, std::uint32_t index, const Projector& projector) {
+    Candidate candidate{index, std::max(0.0, length(sphere.center - projector.eye()) - sphere.radius), {}};
+    for (int corner = 0; corner < 8; ++corner) {
+        Vec3 offset{corner & 1 ? sphere.radius : -sphere.radius, corner & 2 ? sphere.radius : -sphere.radius,
+                    corner & 4 ? sphere.radius : -sphere.radius};
+        projector.add(sphere.center + offset, candidate.bounds);
+    }
+    return candidate;
+}
+
+// A parallelogram projects inside the hull of its corners; no hit is nearer than its plane.
+Candidate billboard_candidate(const Billboard& billboard, std::uint32_t index, const Projector& projector) {
+    Vec3 edge_a = billboard.upper_right - billboard.upper_left;
+    Vec3 edge_b = billboard.lower_left - billboard.upper_left;
+    Vec3 normal = normalize(cross(edge_a, edge_b));
+    double plane_distance = std::fabs(dot(projector.eye() - billboard.upper_left, normal));
+    Candidate candidate{index | CLR_TILE_BILLBOARD, plane_distance, {}};
+    for (const Vec3& corner : {billboard.upper_left, billboard.upper_right, billboard.lower_left,
+                               billboard.upper_right + edge_b})
+        projector.add(corner, candidate.bounds);
+    return candidate;
+}
+
+// The tiles a candidate may cover, widened by one pixel so that rounding in the kernels'
+// float rays can never put a pixel outside its object's tiles.
+bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range) {
+    const PixelBounds& b = candidate.bounds;
+    if (b.whole_screen) {
+        range = {0, tiles.tiles_x - 1, 0, tiles.tiles_y - 1};
+        return true;
+    }
+    double col_min = std::floor(b.col_min) - 1, col_max = std::ceil(b.col_max) + 1;
+    double row_min = std::floor(b.row_min) - 1, row_max = std::ceil(b.row_max) + 1;
+    if (col_max < 0 || row_max < 0 || col_min > width - 1 || row_min > height - 1) return false;
+    auto tile_of = [](double pixel, int count) {
+        return static_cast<int>(std::clamp(pixel, 0.0, double(count) - 1) / kClrTileSize);
+    };
+    range = {tile_of(col_min, width), tile_of(col_max, width), tile_of(row_min, height), tile_of(row_max, height)};
+    return true;
+}
+
+}  // namespace
+
+ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera) {
+    Projector projector(camera);
+    std::vector<Candidate> candidates;
+    candidates.reserve(scene.spheres.size() + scene.billboards.size());
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        candidates.push_back(sphere_candidate(scene.spheres[i], static_cast<std::uint32_t>(i), projector));
+    for (std::size_t i = 0; i < scene.billboards.size(); ++i)
+        candidates.push_back(billboard_candidate(scene.billboards[i], static_cast<std::uint32_t>(i), projector));
+    // Nearest first, ties by item, so every tile's list is in a deterministic near-to-far order.
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.nearest != b.nearest ? a.nearest < b.nearest : a.item < b.item;
+    });
+
+    ScreenTiles tiles;
+    tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
+    tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
+    std::vector<std::vector<std::uint32_t>> lists(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y);
+    std::vector<std::vector<float>> nearest(lists.size());
+    for (const Candidate& candidate : candidates) {
+        std::array<int, 4> range;
+        if (!tile_range(candidate, tiles, camera.width, camera.height, range)) continue;
+        // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
+        // one, and the kernel must never skip an object that its float ray does hit first.
+        float bound = static_cast<float>(candidate.nearest * (1 - 1e-5));
+        for (int ty = range[2]; ty <= range[3]; ++ty)
+            for (int tx = range[0]; tx <= range[1]; ++tx) {
+                lists[ty * tiles.tiles_x + tx].push_back(candidate.item);
+                nearest[ty * tiles.tiles_x + tx].push_back(bound);
+            }
+    }
+    tiles.offsets.reserve(lists.size() + 1);
+    tiles.offsets.push_back(0);
+    for (std::size_t t = 0; t < lists.size(); ++t) {
+        tiles.items.insert(tiles.items.end(), lists[t].begin(), lists[t].end());
+        tiles.nearest.insert(tiles.nearest.end(), nearest[t].begin(), nearest[t].end());
+        tiles.offsets.push_back(static_cast<std::uint32_t>(tiles.items.size()));
+    }
+    return tiles;
+}
+
+}  // namespace clr

@@ -1,0 +1,27 @@
+// Screen-space culling for primary rays. Each frame, every object's projection is bounded
+// conservatively and the object is listed in the 16x16-pixel tiles it may cover, nearest
+// first. A pixel then tests only its tile's objects, and stops as soon as its best hit is
+// nearer than every object left: empty screen regions cost almost nothing, and pixels test
+// only the objects that can cover them. Secondary rays (shadows, mirrors) do not use this.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shared/clr_types.h"
+
+namespace clr {
+
+struct ScreenTiles {
+    int tiles_x = 0, tiles_y = 0;
+    std::vector<std::uint32_t> offsets;  // tile t's items are items[offsets[t] .. offsets[t+1])
+    std::vector<std::uint32_t> items;    // object index, with CLR_TILE_BILLBOARD for billboards
+    std::vector<float> nearest;          // per item: a lower bound on any hit distance
+};
+
+// Bins the scene's objects for the frame seen by `camera` (the same ClrCamera the kernels
+// get, so that the projection matches their rays).
+ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera);
+
+}  // namespace clr
