@@ -17,12 +17,12 @@ float sphere_distance(float4 center_radius, float3 origin, float3 direction)
 {
     float radius = center_radius.w;
     float3 oc = origin - center_radius.xyz;
-    float b = -dot(oc, direction);              /* t of the closest approach */
+    float b = -dot3(oc, direction);              /* t of the closest approach */
     float3 closest_offset = oc + b * direction; /* centre -> closest point on the ray */
-    float discriminant = radius * radius - dot(closest_offset, closest_offset);
+    float discriminant = radius * radius - dot3(closest_offset, closest_offset);
     if (discriminant < 0.0f)
         return INFINITY;
-    float c = dot(oc, oc) - radius * radius;
+    float c = dot3(oc, oc) - radius * radius;
     float q = b + copysign(sqrt(discriminant), b);
     if (q == 0.0f) /* tangent exactly at the origin */
         return INFINITY;
@@ -40,7 +40,7 @@ float sphere_distance(float4 center_radius, float3 origin, float3 direction)
 float2 billboard_coords(__global const ClrBillboard* billboard, float3 origin, float3 direction, float t)
 {
     float3 from_corner = (origin - billboard->corner.xyz) + t * direction; /* P - UL */
-    return (float2)(dot(from_corner, billboard->dual_a.xyz), dot(from_corner, billboard->dual_b.xyz));
+    return (float2)(dot3(from_corner, billboard->dual_a.xyz), dot3(from_corner, billboard->dual_b.xyz));
 }
 
 /* Distance along the ray to the billboard's plane if the ray meets the parallelogram there
@@ -50,7 +50,7 @@ float billboard_distance(__global const ClrBillboard* billboard, __global const 
                          float3 direction, float t_max)
 {
     float3 normal = billboard->normal.xyz;
-    float t = dot(billboard->corner.xyz - origin, normal) / dot(direction, normal);
+    float t = dot3(billboard->corner.xyz - origin, normal) / dot3(direction, normal);
     if (!(t > 0.0f && t < t_max))
         return INFINITY;
     float2 ab = billboard_coords(billboard, origin, direction, t);
@@ -58,7 +58,7 @@ float billboard_distance(__global const ClrBillboard* billboard, __global const 
         return INFINITY;
 #if CLR_FEATURE_ALPHA
     /* A texel with alpha below 255 is a hole: the ray goes on as if nothing were here. */
-    if ((billboard->flags & CLR_SURFACE_TEXTURED) && billboard_texel(billboard, texels, ab.x, ab.y).w < 255)
+    if ((billboard->flags & CLR_SURFACE_HOLES) && billboard_texel(billboard, texels, ab.x, ab.y).w < 255)
         return INFINITY;
 #endif
     return t;
@@ -101,52 +101,6 @@ ClrHit intersect_scene(float3 origin, float3 direction, float t_max, int skip_ki
 #endif
     if (hit.kind == CLR_HIT_NONE)
         hit.t = INFINITY;
-    return hit;
-}
-
-/* Whether a hit at distance t on surface (kind, index) beats `best`: nearer, or as near and
- * first in the order spheres then billboards, by index. That is the order intersect_scene()
- * visits them in, so any visiting order gives intersect_scene()'s answer, ties included. */
-bool hit_beats(float t, int kind, int index, ClrHit best)
-{
-    if (t != best.t)
-        return t < best.t;
-    return t < INFINITY && (kind < best.kind || (kind == best.kind && index < best.index));
-}
-
-/* The nearest surface along a primary ray, among the objects binned to its screen tile
- * (items[first] .. items[end - 1], nearest first; see host/render/screen_tiles.h). The
- * loop ends once the best hit is nearer than every object left (item_nearest holds a lower
- * bound on each object's hit distance). Gives the same hit as intersect_scene(). */
-ClrHit intersect_tile(float3 origin, float3 direction, __global const uint* items,
-                      __global const float* item_nearest, uint first, uint end, CLR_SCENE_PARAMS)
-{
-    ClrHit hit;
-    hit.t = INFINITY;
-    hit.kind = CLR_HIT_NONE;
-    hit.index = -1;
-    hit.pad0 = 0;
-    for (uint k = first; k < end; ++k) {
-        if (hit.t < item_nearest[k])
-            break;
-        uint item = items[k];
-        int index = (int)(item & ~CLR_TILE_BILLBOARD);
-        int kind = (item & CLR_TILE_BILLBOARD) ? CLR_HIT_BILLBOARD : CLR_HIT_SPHERE;
-        float t = INFINITY;
-#if CLR_FEATURE_BILLBOARDS
-        if (kind == CLR_HIT_BILLBOARD)
-            t = billboard_distance(&billboards[index], texels, origin, direction, INFINITY);
-#endif
-#if CLR_FEATURE_SPHERES
-        if (kind == CLR_HIT_SPHERE)
-            t = sphere_distance(spheres[index].center_radius, origin, direction);
-#endif
-        if (hit_beats(t, kind, index, hit)) {
-            hit.t = t;
-            hit.kind = kind;
-            hit.index = index;
-        }
-    }
     return hit;
 }
 

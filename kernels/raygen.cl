@@ -9,7 +9,7 @@ ClrRay camera_ray(ClrCamera camera, int col, int row)
     float3 direction = camera.forward.xyz + sx * camera.right.xyz + sy * camera.up.xyz;
     ClrRay ray;
     ray.origin = (float4)(camera.eye.xyz, 0.0f);
-    ray.direction = (float4)(normalize(direction), 0.0f);
+    ray.direction = (float4)(unit3(direction), 0.0f);
     return ray;
 }
 

@@ -36,21 +36,58 @@ __kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_P
     pixels[band_row * camera.width + col] = display_pixel(color);
 }
 
-/* The same as render, with screen-tile culling for the primary rays: pixel (x, y) tests only
- * the objects binned to its tile (see intersect_tile). Identical output. */
-__kernel void render_tiled(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
-                           __global uchar4* pixels, __global const uint* tile_offsets,
-                           __global const uint* tile_items, __global const float* item_nearest, int tiles_x)
+/* The same as render, with screen-tile culling for the primary rays and 16 pixels per
+ * work-item: work-item (x, y) renders pixels 16x .. 16x + 15 of row first_row + y, which lie
+ * in one screen tile. Their primary rays are intersected together with the tile's objects
+ * only (intersect_packet.cl), then shaded one by one. Identical output to render. */
+__kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
+                             __global uchar4* pixels, __global const uint* tile_offsets,
+                             __global const uint* tile_items, __global const float* item_nearest, int tiles_x)
 {
-    int col = get_global_id(0);
+    int col0 = get_global_id(0) * 16;
     int band_row = get_global_id(1);
-    if (col >= camera.width || band_row >= row_count)
+    if (col0 >= camera.width || band_row >= row_count)
         return;
     int row = first_row + band_row;
-    int tile = (row / CLR_TILE_SIZE) * tiles_x + col / CLR_TILE_SIZE;
-    ClrRay ray = camera_ray(camera, col, row);
-    ClrHit hit = intersect_tile(ray.origin.xyz, ray.direction.xyz, tile_items, item_nearest, tile_offsets[tile],
-                                tile_offsets[tile + 1], CLR_SCENE_ARGS);
-    float3 color = trace_path(ray.origin.xyz, ray.direction.xyz, hit, CLR_SCENE_ARGS);
-    pixels[band_row * camera.width + col] = display_pixel(color);
+    int tile = (row / CLR_TILE_SIZE) * tiles_x + col0 / CLR_TILE_SIZE;
+    float3 eye = camera.eye.xyz;
+    Directions16 d = camera_rays16(camera, col0, row);
+    float16 best_t;
+    int16 best_kind, best_index;
+    intersect_tile16(eye, d, tile_items, item_nearest, tile_offsets[tile], tile_offsets[tile + 1], CLR_SCENE_ARGS,
+                     &best_t, &best_kind, &best_index);
+
+    float ts[16], xs[16], ys[16], zs[16];
+    int kinds[16], indices[16];
+    vstore16(best_t, 0, ts);
+    vstore16(best_kind, 0, kinds);
+    vstore16(best_index, 0, indices);
+    vstore16(d.x, 0, xs);
+    vstore16(d.y, 0, ys);
+    vstore16(d.z, 0, zs);
+    int lanes = min(16, camera.width - col0);
+    float rs[16], gs[16], bs[16];
+    for (int lane = 0; lane < 16; ++lane) {
+        ClrHit hit;
+        hit.t = ts[lane];
+        hit.kind = kinds[lane];
+        hit.index = indices[lane];
+        hit.pad0 = 0;
+        float3 direction = (float3)(xs[lane], ys[lane], zs[lane]);
+        float3 color = trace_path(eye, direction, hit, CLR_SCENE_ARGS);
+        rs[lane] = color.x;
+        gs[lane] = color.y;
+        bs[lane] = color.z;
+    }
+    /* color_to_byte() for 16 pixels at once */
+    uchar16 r = convert_uchar16(floor(clamp(vload16(0, rs), 0.0f, 1.0f) * 255.0f + 0.5f));
+    uchar16 g = convert_uchar16(floor(clamp(vload16(0, gs), 0.0f, 1.0f) * 255.0f + 0.5f));
+    uchar16 b = convert_uchar16(floor(clamp(vload16(0, bs), 0.0f, 1.0f) * 255.0f + 0.5f));
+    uchar rb[16], gb[16], bb[16];
+    vstore16(r, 0, rb);
+    vstore16(g, 0, gb);
+    vstore16(b, 0, bb);
+    __global uchar4* out = pixels + band_row * camera.width + col0;
+    for (int lane = 0; lane < lanes; ++lane)
+        out[lane] = (uchar4)(rb[lane], gb[lane], bb[lane], 255);
 }

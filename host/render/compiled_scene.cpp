@@ -56,6 +56,7 @@ ClrBillboard compile_billboard(const Billboard& billboard) {
         out.flags |= CLR_SURFACE_TEXTURED;
         out.texture_width = billboard.image->width;
         out.texture_height = billboard.image->height;
+        if (billboard.image->has_transparency()) out.flags |= CLR_SURFACE_HOLES;  // only these need alpha tests
     }
     return out;
 }

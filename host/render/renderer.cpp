@@ -14,6 +14,10 @@ namespace {
 // x) and warps on GPUs. An explicit size keeps every core busy on small images too.
 constexpr int kGroupWidth = 16;
 constexpr int kGroupHeight = 4;
+// render_packets: 16 pixels per work-item already fill the SIMD lanes, so a work-group is a
+// short column of packets (PoCL then has nothing left to vectorise across work-items).
+constexpr int kPacketWidth = 16;
+constexpr int kPacketGroupHeight = 4;
 
 std::size_t round_up(std::size_t value, std::size_t multiple) { return (value + multiple - 1) / multiple * multiple; }
 
@@ -43,7 +47,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
     build_ms_ = elapsed_ms(start);
     try {
-        render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_tiled" : "render");
+        render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
         spheres_ = upload(device_.context(), compiled.spheres);
         billboards_ = upload(device_.context(), compiled.billboards);
         texels_ = upload(device_.context(), compiled.texels);
@@ -88,10 +92,12 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
         render_kernel_.setArg(10, tile_nearest_);
         render_kernel_.setArg(11, static_cast<cl_int>(tiles_x_));
     }
-    cl::NDRange global(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
+    // render_packets: one work-item per 16 pixels of a row; render: one per pixel.
+    std::size_t columns = screen_tiles_ ? (camera.width + kPacketWidth - 1) / kPacketWidth : camera.width;
+    cl::NDRange local = screen_tiles_ ? cl::NDRange(1, kPacketGroupHeight) : cl::NDRange(kGroupWidth, kGroupHeight);
+    cl::NDRange global(round_up(columns, local[0]), round_up(rows, local[1]));
     cl::Event done;
-    device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, cl::NDRange(kGroupWidth, kGroupHeight),
-                                         nullptr, &done);
+    device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, local, nullptr, &done);
     device_.queue().enqueueReadBuffer(pixels_, CL_TRUE, 0, rows * row_bytes, image.rgba.data() + first_row * row_bytes);
     auto ns = done.getProfilingInfo<CL_PROFILING_COMMAND_END>() - done.getProfilingInfo<CL_PROFILING_COMMAND_START>();
     return static_cast<double>(ns) * 1e-6;

@@ -19,7 +19,7 @@ struct RendererOptions {
     // Largest pixel buffer to allocate on the device, in bytes; 0: the device's own limit.
     // A frame that does not fit renders in bands of rows.
     std::size_t max_buffer_bytes = 0;
-    // Cull primary rays by screen tiles (render_tiled); off: every pixel tests every object
+    // Cull primary rays by screen tiles, 16 rays at a time (render_packets); off: every pixel tests every object
     // (the brute-force kernel, which the tests use as the general reference).
     bool screen_tiles = true;
 };
@@ -58,7 +58,7 @@ private:
     FeatureSet features_;
     ClrSceneInfo info_{};
     cl::Program program_;
-    cl::Kernel render_kernel_;  // render_tiled or render
+    cl::Kernel render_kernel_;  // render_packets or render
     cl::Buffer tile_offsets_, tile_items_, tile_nearest_;
     int tiles_x_ = 0;
     cl::Buffer spheres_, billboards_, texels_;

@@ -24,6 +24,7 @@ typedef cl_uint clr_uint;
 /* Surface flags (ClrSphere.flags, ClrBillboard.flags). */
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
+#define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below 255 */
 
 /* Screen tiles for primary rays (host/render/screen_tiles.h): a tile is
  * kClrTileSize x kClrTileSize pixels, and a tile item is an object index, with this bit set
