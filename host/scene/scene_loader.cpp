@@ -3,13 +3,16 @@
 #include "scene/scene_loader.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "core/errors.h"
 #include "scene/image_loader.h"
@@ -297,6 +300,37 @@ public:
     ImageLibrary(const std::string& scene_path, bool placeholders)
         : scene_folder_(fs::path(scene_path).parent_path()), placeholders_(placeholders) {}
 
+    // Decodes every distinct image the billboards name, on all cores at once: decoding large
+    // PNGs is most of the time it takes to load a course scene.
+    void read_all(const std::vector<PendingImage>& pending_images) {
+        std::vector<std::string> paths;
+        for (const PendingImage& pending : pending_images) {
+            std::string path = resolve(pending.filename.string());
+            if (entries_.try_emplace(path).second) paths.push_back(path);
+        }
+        std::vector<Entry> results(paths.size());
+        std::vector<std::exception_ptr> errors(paths.size());
+        std::atomic<std::size_t> next{0};
+        auto worker = [&] {
+            for (std::size_t i; (i = next++) < paths.size();) {
+                try {
+                    results[i] = read(paths[i]);
+                } catch (...) {
+                    errors[i] = std::current_exception();  // e.g. out of memory: rethrown below
+                }
+            }
+        };
+        std::size_t thread_count = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), paths.size());
+        std::vector<std::thread> helpers;
+        for (std::size_t t = 1; t < thread_count; ++t) helpers.emplace_back(worker);
+        worker();
+        for (std::thread& helper : helpers) helper.join();
+        for (std::size_t i = 0; i < paths.size(); ++i) {
+            if (errors[i]) std::rethrow_exception(errors[i]);
+            entries_[paths[i]] = std::move(results[i]);
+        }
+    }
+
     std::shared_ptr<const Image> image_for(const Node& filename) {
         const std::string path = resolve(filename.string());
         auto [entry, is_new] = entries_.try_emplace(path);
@@ -339,6 +373,7 @@ private:
 
 void attach_images(Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
     ImageLibrary library(scene.path, options.placeholder_images);
+    library.read_all(pending_images);
     for (const PendingImage& pending : pending_images)
         scene.billboards[pending.billboard].image = library.image_for(pending.filename);
 }
