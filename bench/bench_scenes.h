@@ -20,9 +20,6 @@ struct BenchSceneSpec {
     std::string name;  // as printed and as given to --scenes
     int spheres = 0;
     int billboards = 0;
-    // > 0: clrender times at most this many frames of this scene and warms up on a thumbnail,
-    // because the brute-force kernels need minutes for a full frame of it.
-    int clrender_repeat_cap = 0;
 };
 
 // course, 16+16, 256+256, 4096+4096, 100k spheres, in that order.

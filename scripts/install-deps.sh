@@ -11,6 +11,12 @@ packages=(
   googletest libgtest-dev
   ffmpeg
   parallel
+  # clrender_bench's Embree peer (scripts/bench.sh, docs/benchmarks.md)
+  libembree-dev
+  # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and the libraries its
+  # seed generator writes PNGs and JPEGs with. (gcc's ASan and UBSan runtimes, which
+  # scripts/sanitize.sh uses, come with build-essential.)
+  clang libclang-rt-14-dev zlib1g-dev libjpeg62-turbo-dev
 )
 
 missing=()

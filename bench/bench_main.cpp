@@ -1,0 +1,182 @@
+// clrender_bench: clrender and an Embree peer side by side on the same generated scenes,
+// in one process, so that their ratio holds even on a noisy machine (issue 5,
+// docs/benchmarks.md).
+//
+//   clrender_bench [--size 1920x1080] [--repeat 5] [--device SEL] [--scenes a,b] [--json PATH]
+//                  [--images DIR]
+#include <CLI/CLI.hpp>
+
+#include <cctype>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench/bench_report.h"
+#include "bench/bench_scenes.h"
+#include "bench/bench_stats.h"
+#include "bench/clrender_side.h"
+#include "core/errors.h"
+#include "device/device_selection.h"
+#include "output/image_writer.h"
+#include "render/device_camera.h"
+
+#if CLRENDER_BENCH_HAVE_EMBREE
+#include "bench/embree_peer.h"
+#endif
+
+namespace clr::bench {
+namespace {
+
+struct Options {
+    RunSettings settings;
+    std::string device;
+    std::vector<std::string> scenes;  // empty: all
+    std::string json_path;
+    std::string images_dir;
+};
+
+void parse_size(const std::string& text, RunSettings& settings) {
+    char x = 0;
+    std::istringstream in(text);
+    if (!(in >> settings.width >> x >> settings.height) || x != 'x' || settings.width <= 0 || settings.height <= 0)
+        throw UsageError("--size wants WIDTHxHEIGHT, e.g. 1920x1080, not '" + text + "'");
+}
+
+// The options, or nothing when CLI11 has handled the command line (--help, an error) and
+// the process should end with `exit_code`.
+std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
+    Options options;
+    std::string size = "1920x1080";
+    CLI::App app{"clrender and Embree side by side: primary rays per second on generated scenes"};
+    app.add_option("--size", size, "image size WIDTHxHEIGHT")->capture_default_str();
+    app.add_option("--repeat", options.settings.repeat, "timed frames per scene and side (the median is reported)")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    app.add_option("--device", options.device, "OpenCL device: index, platform:device or name (default: first CPU)");
+    app.add_option("--scenes", options.scenes, "scenes to run, comma-separated (default: all)")->delimiter(',');
+    app.add_option("--json", options.json_path, "also write the results as JSON to this file");
+    app.add_option("--images", options.images_dir, "write clrender's image of each scene as PNG into this folder");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        exit_code = app.exit(error);
+        return std::nullopt;
+    }
+    parse_size(size, options.settings);
+#if CLRENDER_BENCH_HAVE_EMBREE
+    options.settings.with_embree = true;
+#endif
+    return options;
+}
+
+std::vector<BenchSceneSpec> chosen_specs(const Options& options) {
+    if (options.scenes.empty()) return bench_scene_specs();
+    std::vector<BenchSceneSpec> specs;
+    for (const std::string& name : options.scenes) {
+        try {
+            specs.push_back(find_bench_scene(name));
+        } catch (const std::invalid_argument& error) {
+            throw UsageError(error.what());
+        }
+    }
+    return specs;
+}
+
+std::string file_name_of(const std::string& scene_name) {
+    std::string name;
+    for (char c : scene_name) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+    return name;
+}
+
+// Fractions of pixels that show an object, and that differ between the two id maps.
+void compare_ids(const std::vector<std::uint32_t>& clr, const std::vector<std::uint32_t>* embree, SceneRow& row) {
+    std::size_t covered = 0, differing = 0;
+    for (std::size_t i = 0; i < clr.size(); ++i) {
+        covered += clr[i] != kBackgroundId;
+        if (embree) differing += clr[i] != (*embree)[i];
+    }
+    row.covered = static_cast<double>(covered) / clr.size();
+    row.differing = static_cast<double>(differing) / clr.size();
+}
+
+// A side's warm-up frame is kept as its only timed frame when slower than kSlowFrameMs.
+bool keep_if_slow(double ms, std::vector<double>& samples) {
+    if (ms <= kSlowFrameMs) return false;
+    samples.push_back(ms);
+    return true;
+}
+
+// Both sides warm up, then render their timed frames alternately, so that whatever else the
+// machine does meanwhile slows both alike and their ratio holds.
+SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Options& options) {
+    const RunSettings& settings = options.settings;
+    Scene scene = make_bench_scene(spec, settings.width, settings.height);
+    const CameraKey& key = scene.camera_path.front();
+    ClrCamera camera = make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, settings.width, settings.height);
+    SceneRow row;
+    row.spec = spec;
+
+    std::cerr << "bench: " << spec.name << ": setting up" << std::endl;
+    ClrenderSide clr(device, scene, camera);
+    row.clr_setup_ms = clr.setup_ms();
+    ClrenderFrame warmup = clr.render_frame();
+    bool clr_done = keep_if_slow(warmup.wall_ms, row.clr_wall_ms);
+    if (clr_done) row.clr_kernel_ms.push_back(warmup.kernel_ms);
+#if CLRENDER_BENCH_HAVE_EMBREE
+    EmbreePeer embree(scene, camera);
+    row.embree_build_ms = embree.build_ms();
+    bool embree_done = keep_if_slow(embree.trace_frame(), row.embree_wall_ms);
+#endif
+
+    std::cerr << "bench: " << spec.name << ": timing" << std::endl;
+    for (int i = 0; i < settings.repeat; ++i) {
+        if (!clr_done) {
+            ClrenderFrame frame = clr.render_frame();
+            row.clr_kernel_ms.push_back(frame.kernel_ms);
+            row.clr_wall_ms.push_back(frame.wall_ms);
+        }
+#if CLRENDER_BENCH_HAVE_EMBREE
+        if (!embree_done) row.embree_wall_ms.push_back(embree.trace_frame());
+#endif
+    }
+
+    if (!options.images_dir.empty())
+        write_image(options.images_dir + "/" + file_name_of(spec.name) + ".png", clr.image());
+#if CLRENDER_BENCH_HAVE_EMBREE
+    compare_ids(object_ids(clr.image()), &embree.ids(), row);
+#else
+    compare_ids(object_ids(clr.image()), nullptr, row);
+#endif
+    return row;
+}
+
+int run(const Options& options) {
+    std::vector<BenchSceneSpec> specs = chosen_specs(options);
+    DeviceEntry entry = select_device(list_devices(), options.device);
+    DeviceContext device(entry);
+    print_machine(std::cout, entry);
+    std::vector<SceneRow> rows;
+    for (const BenchSceneSpec& spec : specs) rows.push_back(run_scene(device, spec, options));
+    print_table(std::cout, rows, options.settings);
+    if (!options.json_path.empty()) write_json(options.json_path, rows, entry, options.settings);
+    return kExitOk;
+}
+
+}  // namespace
+}  // namespace clr::bench
+
+int main(int argc, char** argv) {
+    try {
+        int exit_code = 0;
+        std::optional<clr::bench::Options> options = clr::bench::parse_options(argc, argv, exit_code);
+        return options ? clr::bench::run(*options) : exit_code;
+    } catch (const clr::Error& error) {
+        std::cerr << "clrender_bench: error: " << error.what() << "\n";
+        return error.code();
+    } catch (const std::exception& error) {
+        std::cerr << "clrender_bench: error: " << error.what() << "\n";
+        return clr::kExitDevice;
+    }
+}

@@ -1,0 +1,40 @@
+// The benchmark's results: one row of measurements per scene, printed as a Markdown table
+// (it reads in a terminal and pastes into docs/benchmarks.md) and written as JSON.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bench/bench_scenes.h"
+#include "device/device_selection.h"
+
+namespace clr::bench {
+
+struct RunSettings {
+    int width = 1920, height = 1080;
+    int repeat = 5;  // timed frames per side and scene
+    bool with_embree = false;
+};
+
+// One scene's measurements from both sides.
+struct SceneRow {
+    BenchSceneSpec spec;
+    double clr_setup_ms = 0;                         // program build and scene upload
+    std::vector<double> clr_kernel_ms, clr_wall_ms;  // per timed frame
+    double embree_build_ms = 0;                      // device, geometry and BVH build
+    std::vector<double> embree_wall_ms;              // per timed frame
+    double covered = 0;    // fraction of pixels where clrender sees an object
+    double differing = 0;  // fraction of pixels where the two sides see different objects
+};
+
+// CPU, OpenCL device and peer, as a few lines.
+void print_machine(std::ostream& out, const DeviceEntry& device);
+
+void print_table(std::ostream& out, const std::vector<SceneRow>& rows, const RunSettings& settings);
+
+// Throws OutputError when the file cannot be written.
+void write_json(const std::string& path, const std::vector<SceneRow>& rows, const DeviceEntry& device,
+                const RunSettings& settings);
+
+}  // namespace clr::bench

@@ -1,0 +1,242 @@
+#include "bench/bench_scenes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <stdexcept>
+
+namespace clr::bench {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kFovDegrees = 60;
+const Vec3 kEye{0, 0, 0};
+const Vec3 kLookat{0, 0, -1};
+const Vec3 kUp{0, 1, 0};
+
+// Generated fields fill the view frustum between these distances from the eye.
+constexpr double kNearDepth = 6;
+constexpr double kFarDepth = 40;
+// Mean number of object discs a primary ray passes through (before clipping and alpha holes):
+// 2.5 covers about 90% of the pixels, so the picture is busy and objects overlap in depth.
+constexpr double kDepthComplexity = 2.5;
+
+// Odd, so multiplying by it permutes the 24-bit codes; kUnscramble is its inverse mod 2^24.
+constexpr std::uint32_t kCodeMask = 0xFFFFFF;
+constexpr std::uint32_t kScramble = 0x9E3779;
+
+constexpr std::uint32_t inverse_mod_2_24(std::uint32_t odd) {
+    std::uint32_t x = odd;  // Newton's iteration doubles the correct low bits each step
+    for (int i = 0; i < 5; ++i) x *= 2u - odd * x;
+    return x & kCodeMask;
+}
+constexpr std::uint32_t kUnscramble = inverse_mod_2_24(kScramble);
+static_assert(((kScramble * kUnscramble) & kCodeMask) == 1, "kUnscramble inverts kScramble");
+
+// Uniform doubles from the raw 64-bit stream of mt19937_64, whose sequence the C++ standard
+// fixes; the standard distributions are implementation-defined and would differ between
+// standard libraries.
+class Random {
+public:
+    explicit Random(std::uint64_t seed) : engine_(seed) {}
+    double uniform(double lo, double hi) { return lo + (hi - lo) * ((engine_() >> 11) * 0x1.0p-53); }
+
+private:
+    std::mt19937_64 engine_;
+};
+
+std::array<std::uint8_t, 4> id_texel(std::uint32_t id, std::uint8_t alpha) {
+    Color c = id_color(id);
+    auto byte = [](double v) { return static_cast<std::uint8_t>(std::lround(v * 255)); };
+    return {byte(c.x), byte(c.y), byte(c.z), alpha};
+}
+
+// A square image in the id's colour, whose texel (col, row) has the alpha alpha_at(col, row).
+template <typename AlphaAt>
+std::shared_ptr<Image> id_image(std::uint32_t id, int size, AlphaAt alpha_at) {
+    auto image = std::make_shared<Image>();
+    image->width = image->height = size;
+    image->path = "bench:billboard-" + std::to_string(id);
+    image->rgba.resize(static_cast<std::size_t>(size) * size * 4);
+    for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) {
+            auto texel = id_texel(id, alpha_at(col, row));
+            std::copy(texel.begin(), texel.end(), image->rgba.begin() + (static_cast<std::ptrdiff_t>(row) * size + col) * 4);
+        }
+    return image;
+}
+
+// A cut-out sprite, like the course's fig1.png: an opaque disc with transparent corners and
+// a ring of translucent texels (alpha 128), which the alpha test treats as holes too.
+std::shared_ptr<Image> sprite_image(std::uint32_t id, int size) {
+    return id_image(id, size, [size](int col, int row) -> std::uint8_t {
+        double dx = col + 0.5 - size / 2.0, dy = row + 0.5 - size / 2.0;
+        double r = std::sqrt(dx * dx + dy * dy) / (size / 2.0);  // 1 at the disc's edge
+        return r > 1 ? 0 : (r > 0.45 && r < 0.55) ? 128 : 255;
+    });
+}
+
+// A chessboard whose dark squares are transparent, like the course's fig2.png.
+std::shared_ptr<Image> chessboard_image(std::uint32_t id, int size, int square) {
+    return id_image(id, size, [square](int col, int row) -> std::uint8_t {
+        return (col / square + row / square) % 2 == 0 ? 255 : 0;
+    });
+}
+
+Sphere make_sphere(const Vec3& center, double radius, std::uint32_t id) {
+    Sphere sphere;
+    sphere.center = center;
+    sphere.radius = radius;
+    sphere.ambient = id_color(id);
+    return sphere;
+}
+
+Billboard make_billboard(const Vec3& upper_left, const Vec3& lower_left, const Vec3& upper_right,
+                         std::shared_ptr<const Image> image, std::uint32_t id) {
+    Billboard billboard;
+    billboard.upper_left = upper_left;
+    billboard.lower_left = lower_left;
+    billboard.upper_right = upper_right;
+    billboard.has_ambient = true;
+    billboard.ambient = id_color(id);
+    billboard.image = std::move(image);
+    return billboard;
+}
+
+Scene empty_scene(const BenchSceneSpec& spec, int width, int height) {
+    Scene scene;
+    scene.path = "bench:" + spec.name;
+    scene.name = spec.name;
+    scene.camera_path = {{kEye, kLookat}};
+    scene.up = kUp;
+    scene.fov_degrees = kFovDegrees;
+    scene.width = width;
+    scene.height = height;
+    scene.background = id_color(kBackgroundId);
+    scene.has_sun = false;  // flat shading: the benchmark measures primary rays only
+    scene.only_ambient = true;
+    return scene;
+}
+
+// Hand-placed like the course's scenes: three spheres in front of a large backdrop with
+// chessboard holes, and a tilted cut-out sprite.
+void add_course_objects(Scene& scene) {
+    scene.spheres = {
+        make_sphere({-1.9, -0.2, -8}, 1.5, sphere_id(0)),
+        make_sphere({1.6, 0.5, -11}, 2.3, sphere_id(1)),
+        make_sphere({0.1, -1.6, -6}, 0.8, sphere_id(2)),
+    };
+    std::uint32_t backdrop = billboard_id(3, 0), sprite = billboard_id(3, 1);
+    scene.billboards = {
+        make_billboard({-10, 6, -20}, {-10, -6, -20}, {10, 6, -20}, chessboard_image(backdrop, 32, 4), backdrop),
+        make_billboard({1.8, 2.2, -7}, {1.8, -1.6, -7}, {4.0, 2.2, -8}, sprite_image(sprite, 32), sprite),
+    };
+}
+
+// The half extents of the image plane at distance 1 from the eye (SPEC 2: the field of view
+// spans the larger image dimension).
+struct PlaneExtent {
+    double half_width, half_height;
+};
+
+PlaneExtent plane_extent(int width, int height) {
+    double tan_half = std::tan(kFovDegrees * kPi / 360.0);
+    double larger = std::max(width, height);
+    return {tan_half * width / larger, tan_half * height / larger};
+}
+
+// A field of objects filling the view frustum: uniform screen position, uniform depth, and an
+// angular radius that varies by a factor of 3, scaled with the object count so that every
+// field has the same depth complexity.
+void add_field_objects(Scene& scene, const BenchSceneSpec& spec, std::uint64_t seed) {
+    PlaneExtent plane = plane_extent(scene.width, scene.height);
+    double screen_area = 4 * plane.half_width * plane.half_height;
+    int count = spec.spheres + spec.billboards;
+    const double mean_square_factor = 13.0 / 12.0;  // E[f^2] for f uniform in [0.5, 1.5]
+    double mean_radius = std::sqrt(kDepthComplexity * screen_area / (count * kPi * mean_square_factor));
+
+    Random random(seed);
+    // A point in view at depth d, and the world radius of a disc of angular radius rho there.
+    auto place = [&](double& depth, double& radius) {
+        depth = random.uniform(kNearDepth, kFarDepth);
+        double sx = random.uniform(-1, 1), sy = random.uniform(-1, 1);
+        radius = mean_radius * random.uniform(0.5, 1.5) * depth;
+        return Vec3{sx * plane.half_width * depth, sy * plane.half_height * depth, -depth};
+    };
+    for (int i = 0; i < spec.spheres; ++i) {
+        double depth, radius;
+        Vec3 center = place(depth, radius);
+        scene.spheres.push_back(make_sphere(center, radius, sphere_id(i)));
+    }
+    for (int j = 0; j < spec.billboards; ++j) {
+        double depth, radius;
+        Vec3 center = place(depth, radius);
+        // Upright, turned by up to 45 degrees about the vertical; the sprite's disc has the
+        // angular radius drawn for it, like a sphere's silhouette.
+        double yaw = random.uniform(-kPi / 4, kPi / 4);
+        Vec3 right = Vec3{std::cos(yaw), 0, std::sin(yaw)} * radius;
+        Vec3 up = kUp * radius;
+        std::uint32_t id = billboard_id(spec.spheres, j);
+        scene.billboards.push_back(
+            make_billboard(center - right + up, center - right - up, center + right + up, sprite_image(id, 16), id));
+    }
+}
+
+std::vector<BenchSceneSpec> make_specs() {
+    return {
+        {"course", 3, 2},
+        {"16+16", 16, 16},
+        {"256+256", 256, 256},
+        {"4096+4096", 4096, 4096},
+        {"100k spheres", 100000, 0},
+    };
+}
+
+}  // namespace
+
+const std::vector<BenchSceneSpec>& bench_scene_specs() {
+    static const std::vector<BenchSceneSpec> specs = make_specs();
+    return specs;
+}
+
+const BenchSceneSpec& find_bench_scene(const std::string& name) {
+    std::string names;
+    for (const BenchSceneSpec& spec : bench_scene_specs()) {
+        if (spec.name == name) return spec;
+        names += (names.empty() ? "" : ", ") + ("'" + spec.name + "'");
+    }
+    throw std::invalid_argument("unknown benchmark scene '" + name + "' (scenes: " + names + ")");
+}
+
+Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
+    Scene scene = empty_scene(spec, width, height);
+    if (spec.name == "course") {
+        add_course_objects(scene);
+    } else {
+        // One fixed seed per object count, so that a scene never changes when others are added.
+        std::uint64_t seed = 0x5EEDB0A4D000ull + 1000003ull * spec.spheres + spec.billboards;
+        add_field_objects(scene, spec, seed);
+    }
+    return scene;
+}
+
+Color id_color(std::uint32_t id) {
+    std::uint32_t code = (id * kScramble) & kCodeMask;
+    return Color{(code >> 16) / 255.0, ((code >> 8) & 0xFF) / 255.0, (code & 0xFF) / 255.0};
+}
+
+std::uint32_t id_of_bytes(std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    std::uint32_t code = (std::uint32_t{r} << 16) | (std::uint32_t{g} << 8) | b;
+    return (code * kUnscramble) & kCodeMask;
+}
+
+std::vector<std::uint32_t> object_ids(const Image& image) {
+    std::vector<std::uint32_t> ids(static_cast<std::size_t>(image.width) * image.height);
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        ids[i] = id_of_bytes(image.rgba[i * 4], image.rgba[i * 4 + 1], image.rgba[i * 4 + 2]);
+    return ids;
+}
+
+}  // namespace clr::bench

@@ -1,0 +1,34 @@
+#include "bench/clrender_side.h"
+
+#include <chrono>
+
+#include "bench/bench_stats.h"
+#include "render/device_camera.h"
+
+namespace clr::bench {
+namespace {
+
+// The same view at 64x36: the same kernel and work-group size at almost no cost.
+ClrCamera thumbnail_of(const Scene& scene) {
+    const CameraKey& key = scene.camera_path.front();
+    return make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, 64, 36);
+}
+
+}  // namespace
+
+ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, const ClrCamera& camera)
+    : camera_(camera) {
+    auto start = std::chrono::steady_clock::now();
+    renderer_.emplace(device, scene);
+    setup_ms_ = ms_since(start);
+    renderer_->render_frame(thumbnail_of(scene));
+}
+
+ClrenderFrame ClrenderSide::render_frame() {
+    FrameTiming timing;
+    auto start = std::chrono::steady_clock::now();
+    image_ = renderer_->render_frame(camera_, &timing);
+    return {timing.kernel_ms, ms_since(start)};
+}
+
+}  // namespace clr::bench

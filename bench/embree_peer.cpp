@@ -1,0 +1,368 @@
+// The Embree peer. Choices that make it a strong, fair opponent (issue 5, "Facts measured"):
+// - user geometry for both spheres and billboards: Embree's built-in sphere type measured
+//   2.5-3x slower (issue 5; 3.5-6x on this benchmark's scenes), and a user quad applies the
+//   alpha test inside its own intersector instead of paying for an intersection-filter call;
+// - the same float data (compile_scene) and the same float arithmetic as clrender's kernels,
+//   so that both decide the same way everywhere but on silhouettes and edges;
+// - intersectors without branches, which the compiler vectorises over a packet's 16 lanes;
+// - RTC_BUILD_QUALITY_HIGH, coherent 16-wide packets of 4x4 pixels (rtcIntersect16), every
+//   hardware thread taking bands of rows from a shared counter;
+// - the output is one id per pixel, which costs less than clrender's flat shading.
+#include "bench/embree_peer.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <type_traits>
+
+#include "bench/bench_scenes.h"
+#include "bench/bench_stats.h"
+#include "render/compiled_scene.h"
+
+namespace clr::bench {
+namespace {
+
+constexpr unsigned kSphereGeometry = 0;
+constexpr unsigned kBillboardGeometry = 1;
+constexpr int kPacketSide = 4;  // 4x4 pixels: one rtcIntersect16 packet
+
+// What the callbacks read: the scene exactly as clrender's kernels see it, each texel's
+// alpha as a 32-bit word (so that 16 lanes fetch theirs with one gather), and the
+// billboards' boxes (their corners are not in ClrBillboard, which holds only what the
+// kernels need, so the boxes are computed once from the scene).
+struct PeerScene {
+    CompiledScene compiled;
+    std::vector<std::uint32_t> texel_alpha;
+    std::vector<RTCBounds> billboard_boxes;
+};
+
+struct Lane {
+    float ox, oy, oz, dx, dy, dz;
+};
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// kernels/intersect.cl sphere_distance() in the same float operations, written without
+// branches (selects instead of early returns) so that the 16 lanes of a packet vectorise.
+inline float sphere_distance(const ClrSphere& sphere, const Lane& ray) {
+    float cx = sphere.center_radius.s[0], cy = sphere.center_radius.s[1], cz = sphere.center_radius.s[2];
+    float radius = sphere.center_radius.s[3];
+    float ocx = ray.ox - cx, ocy = ray.oy - cy, ocz = ray.oz - cz;
+    float b = -(ocx * ray.dx + ocy * ray.dy + ocz * ray.dz);
+    float px = ocx + b * ray.dx, py = ocy + b * ray.dy, pz = ocz + b * ray.dz;
+    float discriminant = radius * radius - (px * px + py * py + pz * pz);
+    float c = (ocx * ocx + ocy * ocy + ocz * ocz) - radius * radius;
+    float root = std::sqrt(discriminant > 0.0f ? discriminant : 0.0f);
+    float q = b + std::copysign(root, b);
+    float t0 = c / q, t1 = q;
+    float t_near = t0 < t1 ? t0 : t1, t_far = t0 < t1 ? t1 : t0;
+    float t = t_near > 0.0f ? t_near : (t_far > 0.0f ? t_far : kInfinity);
+    return discriminant < 0.0f || q == 0.0f ? kInfinity : t;
+}
+
+// kernels/intersect.cl billboard_distance() and common/texture.cl billboard_texel(), also
+// branch-free: the plane distance, the parallelogram's (a, b) from the dual vectors, then a
+// hole wherever the texel's alpha is below 255. A lane that misses still reads a texel, at
+// clamped coordinates inside the image, so that the fetch is one gather for all lanes.
+template <bool kTextured>
+inline float billboard_distance(const ClrBillboard& bb, const std::uint32_t* texel_alpha, const Lane& ray) {
+    const float* n = bb.normal.s;
+    const float* ul = bb.corner.s;
+    float t = ((ul[0] - ray.ox) * n[0] + (ul[1] - ray.oy) * n[1] + (ul[2] - ray.oz) * n[2]) /
+              (ray.dx * n[0] + ray.dy * n[1] + ray.dz * n[2]);
+    float fx = (ray.ox - ul[0]) + t * ray.dx, fy = (ray.oy - ul[1]) + t * ray.dy, fz = (ray.oz - ul[2]) + t * ray.dz;
+    float a = fx * bb.dual_a.s[0] + fy * bb.dual_a.s[1] + fz * bb.dual_a.s[2];
+    float b = fx * bb.dual_b.s[0] + fy * bb.dual_b.s[1] + fz * bb.dual_b.s[2];
+    bool hit = t > 0.0f && a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f;
+    if (kTextured) {
+        // In [0, 1], floor() is truncation; a == 1 or b == 1 clamps to the last texel.
+        int col = static_cast<int>((hit ? a : 0.0f) * bb.texture_width);
+        int row = static_cast<int>((hit ? b : 0.0f) * bb.texture_height);
+        col = col < bb.texture_width ? col : bb.texture_width - 1;
+        row = row < bb.texture_height ? row : bb.texture_height - 1;
+        // A signed 32-bit index: what a vector gather takes.
+        int texel = static_cast<int>(bb.texel_offset) + row * bb.texture_width + col;
+        std::uint32_t alpha = texel_alpha[texel];
+        hit = hit && alpha == 255;
+    }
+    return hit ? t : kInfinity;
+}
+
+// The structure-of-arrays fields of an RTCRayHitN packet of width n.
+struct PacketView {
+    PacketView(RTCRayHitN* rayhit, unsigned n) {
+        RTCRayN* ray = RTCRayHitN_RayN(rayhit, n);
+        RTCHitN* hit = RTCRayHitN_HitN(rayhit, n);
+        org_x = &RTCRayN_org_x(ray, n, 0), org_y = &RTCRayN_org_y(ray, n, 0), org_z = &RTCRayN_org_z(ray, n, 0);
+        dir_x = &RTCRayN_dir_x(ray, n, 0), dir_y = &RTCRayN_dir_y(ray, n, 0), dir_z = &RTCRayN_dir_z(ray, n, 0);
+        tnear = &RTCRayN_tnear(ray, n, 0), tfar = &RTCRayN_tfar(ray, n, 0);
+        geom_ids = &RTCHitN_geomID(hit, n, 0), prim_ids = &RTCHitN_primID(hit, n, 0);
+        inst_ids = &RTCHitN_instID(hit, n, 0, 0);
+    }
+    const float *org_x, *org_y, *org_z, *dir_x, *dir_y, *dir_z, *tnear;
+    float* tfar;
+    unsigned *geom_ids, *prim_ids, *inst_ids;
+};
+
+constexpr unsigned kMaxLanes = 16;
+
+// Runs `distance` for lanes [first, first + count) of the packet and records a hit where the
+// lane is valid and the distance lies in the ray's (tnear, tfar). Two loops: the first only
+// reads (so that texel fetches may become gathers without aliasing checks against the hit
+// stores), the second updates with selects rather than branches. `Count` is
+// std::integral_constant for the usual packet widths, so both loops become vector code.
+template <typename Count, typename Distance>
+void intersect_lanes(const RTCIntersectFunctionNArguments* args, const PacketView& p, unsigned first, Count count,
+                     Distance distance) {
+    float t[kMaxLanes];
+    for (unsigned i = 0; i < count; ++i) {
+        unsigned l = first + i;
+        t[i] = distance(Lane{p.org_x[l], p.org_y[l], p.org_z[l], p.dir_x[l], p.dir_y[l], p.dir_z[l]});
+    }
+    const unsigned geom_id = args->geomID, prim_id = args->primID, inst_id = args->context->instID[0];
+    for (unsigned i = 0; i < count; ++i) {
+        unsigned l = first + i;
+        bool take = args->valid[l] == -1 && t[i] > p.tnear[l] && t[i] < p.tfar[l];
+        p.tfar[l] = take ? t[i] : p.tfar[l];
+        p.geom_ids[l] = take ? geom_id : p.geom_ids[l];
+        p.prim_ids[l] = take ? prim_id : p.prim_ids[l];
+        p.inst_ids[l] = take ? inst_id : p.inst_ids[l];
+    }
+}
+
+template <typename Distance>
+void dispatch_lanes(const RTCIntersectFunctionNArguments* args, Distance distance) {
+    PacketView packet(args->rayhit, args->N);
+    switch (args->N) {
+        case 16: intersect_lanes(args, packet, 0, std::integral_constant<unsigned, 16>{}, distance); break;
+        case 8: intersect_lanes(args, packet, 0, std::integral_constant<unsigned, 8>{}, distance); break;
+        case 4: intersect_lanes(args, packet, 0, std::integral_constant<unsigned, 4>{}, distance); break;
+        case 1: intersect_lanes(args, packet, 0, std::integral_constant<unsigned, 1>{}, distance); break;
+        default:  // other widths (streams), in groups of at most kMaxLanes
+            for (unsigned first = 0; first < args->N; first += kMaxLanes)
+                intersect_lanes(args, packet, first, std::min(kMaxLanes, args->N - first), distance);
+            break;
+    }
+}
+
+void intersect_sphere(const RTCIntersectFunctionNArguments* args) {
+    const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
+    const ClrSphere& sphere = peer->compiled.spheres[args->primID];
+    dispatch_lanes(args, [&](const Lane& ray) { return sphere_distance(sphere, ray); });
+}
+
+void intersect_billboard(const RTCIntersectFunctionNArguments* args) {
+    const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
+    const ClrBillboard& billboard = peer->compiled.billboards[args->primID];
+    const std::uint32_t* texel_alpha = peer->texel_alpha.data();
+    // Textured or not is the same for every lane: chosen once, outside the lane loop.
+    if (billboard.flags & CLR_SURFACE_TEXTURED)
+        dispatch_lanes(args, [&](const Lane& ray) { return billboard_distance<true>(billboard, texel_alpha, ray); });
+    else
+        dispatch_lanes(args, [&](const Lane& ray) { return billboard_distance<false>(billboard, texel_alpha, ray); });
+}
+
+// Boxes are padded by a relative 1e-5 so that float rounding in the box test never culls a
+// hit that the float intersector above would report.
+void set_padded(RTCBounds* box, const float lo[3], const float hi[3]) {
+    float pad = 1e-5f * std::fmax(hi[0] - lo[0], std::fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    box->lower_x = lo[0] - pad, box->lower_y = lo[1] - pad, box->lower_z = lo[2] - pad;
+    box->upper_x = hi[0] + pad, box->upper_y = hi[1] + pad, box->upper_z = hi[2] + pad;
+}
+
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
+    const float* cr = peer->compiled.spheres[args->primID].center_radius.s;
+    float lo[3] = {cr[0] - cr[3], cr[1] - cr[3], cr[2] - cr[3]};
+    float hi[3] = {cr[0] + cr[3], cr[1] + cr[3], cr[2] + cr[3]};
+    set_padded(args->bounds_o, lo, hi);
+}
+
+void billboard_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
+    *args->bounds_o = peer->billboard_boxes[args->primID];
+}
+
+std::vector<RTCBounds> compute_billboard_boxes(const Scene& scene) {
+    std::vector<RTCBounds> boxes;
+    for (const Billboard& bb : scene.billboards) {
+        Vec3 corners[4] = {bb.upper_left, bb.lower_left, bb.upper_right,
+                           bb.lower_left + (bb.upper_right - bb.upper_left)};
+        float lo[3], hi[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            double l = corners[0][axis], h = l;
+            for (const Vec3& c : corners) l = std::fmin(l, c[axis]), h = std::fmax(h, c[axis]);
+            lo[axis] = static_cast<float>(l), hi[axis] = static_cast<float>(h);
+        }
+        RTCBounds box;
+        set_padded(&box, lo, hi);
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+struct DeviceDeleter {
+    void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
+};
+struct SceneDeleter {
+    void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
+};
+using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceDeleter>;
+using ScenePtr = std::unique_ptr<RTCSceneTy, SceneDeleter>;
+
+void throw_on_error(RTCDevice device, const char* what) {
+    RTCError error = rtcGetDeviceError(device);
+    if (error != RTC_ERROR_NONE)
+        throw std::runtime_error(std::string("Embree: ") + what + " failed (RTCError " + std::to_string(error) + ")");
+}
+
+void attach_user_geometry(RTCDevice device, RTCScene scene, unsigned id, unsigned count, void* user,
+                          RTCBoundsFunction bounds, RTCIntersectFunctionN intersect) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, count);
+    rtcSetGeometryUserData(geometry, user);
+    rtcSetGeometryBoundsFunction(geometry, bounds, user);
+    rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, id);
+    rtcReleaseGeometry(geometry);  // the scene holds it now
+}
+
+// One frame: the object id seen through every pixel, written to ids (width * height).
+class FrameTracer {
+public:
+    FrameTracer(RTCScene scene, const ClrCamera& camera, int sphere_count)
+        : scene_(scene), camera_(camera), sphere_count_(sphere_count) {}
+
+    void trace(std::vector<std::uint32_t>& ids) const {
+        ids.resize(static_cast<std::size_t>(camera_.width) * camera_.height);
+        std::atomic<int> next_band{0};
+        auto worker = [&] {
+            for (int band = next_band++; band * kPacketSide < camera_.height; band = next_band++)
+                trace_band(band * kPacketSide, ids.data());
+        };
+        unsigned count = std::max(1u, std::thread::hardware_concurrency());
+        std::vector<std::thread> threads;
+        for (unsigned i = 1; i < count; ++i) threads.emplace_back(worker);
+        worker();  // this thread is one of the workers
+        for (std::thread& thread : threads) thread.join();
+    }
+
+private:
+    // One row of 4x4 packets, starting at image row `top`.
+    void trace_band(int top, std::uint32_t* ids) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // neighbouring primary rays
+        for (int left = 0; left < camera_.width; left += kPacketSide) {
+            RTCRayHit16 packet;
+            alignas(64) int valid[16];
+            fill_packet(left, top, packet, valid);
+            rtcIntersect16(valid, scene_, &context, &packet);
+            store_ids(left, top, packet, valid, ids);
+        }
+    }
+
+    // The rays of kernels/raygen.cl camera_ray(), in the same float operations.
+    void fill_packet(int left, int top, RTCRayHit16& packet, int* valid) const {
+        const float* f = camera_.forward.s;
+        const float* r = camera_.right.s;
+        const float* u = camera_.up.s;
+        for (int lane = 0; lane < 16; ++lane) {
+            int col = left + lane % kPacketSide, row = top + lane / kPacketSide;
+            valid[lane] = col < camera_.width && row < camera_.height ? -1 : 0;
+            float sx = 2.0f * (static_cast<float>(col) + 0.5f) / static_cast<float>(camera_.width) - 1.0f;
+            float sy = 1.0f - 2.0f * (static_cast<float>(row) + 0.5f) / static_cast<float>(camera_.height);
+            float dx = f[0] + sx * r[0] + sy * u[0], dy = f[1] + sx * r[1] + sy * u[1], dz = f[2] + sx * r[2] + sy * u[2];
+            float inv_length = 1.0f / std::sqrt(dx * dx + dy * dy + dz * dz);
+            packet.ray.org_x[lane] = camera_.eye.s[0];
+            packet.ray.org_y[lane] = camera_.eye.s[1];
+            packet.ray.org_z[lane] = camera_.eye.s[2];
+            packet.ray.dir_x[lane] = dx * inv_length;
+            packet.ray.dir_y[lane] = dy * inv_length;
+            packet.ray.dir_z[lane] = dz * inv_length;
+            packet.ray.tnear[lane] = 0.0f;
+            packet.ray.tfar[lane] = std::numeric_limits<float>::infinity();
+            packet.ray.time[lane] = 0.0f;
+            packet.ray.mask[lane] = ~0u;
+            packet.ray.id[lane] = 0;
+            packet.ray.flags[lane] = 0;
+            packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        }
+    }
+
+    void store_ids(int left, int top, const RTCRayHit16& packet, const int* valid, std::uint32_t* ids) const {
+        for (int lane = 0; lane < 16; ++lane) {
+            if (!valid[lane]) continue;
+            int col = left + lane % kPacketSide, row = top + lane / kPacketSide;
+            unsigned geom = packet.hit.geomID[lane], prim = packet.hit.primID[lane];
+            std::uint32_t id = geom == kSphereGeometry      ? sphere_id(static_cast<int>(prim))
+                               : geom == kBillboardGeometry ? billboard_id(sphere_count_, static_cast<int>(prim))
+                                                            : kBackgroundId;
+            ids[static_cast<std::size_t>(row) * camera_.width + col] = id;
+        }
+    }
+
+    RTCScene scene_;
+    ClrCamera camera_;
+    int sphere_count_;
+};
+
+}  // namespace
+
+// Declared in this order so that the scene goes before the device that made it, and the
+// callbacks' data outlives both.
+struct EmbreePeer::State {
+    PeerScene peer;
+    DevicePtr device;
+    ScenePtr scene;
+    std::optional<FrameTracer> tracer;
+};
+
+EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std::make_unique<State>()) {
+    auto start = std::chrono::steady_clock::now();
+    PeerScene& peer = state_->peer;
+    peer.compiled = compile_scene(scene);
+    peer.billboard_boxes = compute_billboard_boxes(scene);
+    for (std::size_t i = 3; i < peer.compiled.texels.size(); i += 4) peer.texel_alpha.push_back(peer.compiled.texels[i]);
+
+    state_->device.reset(rtcNewDevice(nullptr));
+    if (!state_->device) throw std::runtime_error("Embree: rtcNewDevice failed");
+    RTCDevice device = state_->device.get();
+    state_->scene.reset(rtcNewScene(device));
+    RTCScene rtc_scene = state_->scene.get();
+    rtcSetSceneBuildQuality(rtc_scene, RTC_BUILD_QUALITY_HIGH);
+    if (!peer.compiled.spheres.empty())
+        attach_user_geometry(device, rtc_scene, kSphereGeometry, static_cast<unsigned>(peer.compiled.spheres.size()),
+                             &peer, sphere_bounds, intersect_sphere);
+    if (!peer.compiled.billboards.empty())
+        attach_user_geometry(device, rtc_scene, kBillboardGeometry,
+                             static_cast<unsigned>(peer.compiled.billboards.size()), &peer, billboard_bounds,
+                             intersect_billboard);
+    rtcCommitScene(rtc_scene);
+    throw_on_error(device, "building the scene");
+    build_ms_ = ms_since(start);
+    state_->tracer.emplace(rtc_scene, camera, static_cast<int>(scene.spheres.size()));
+}
+
+EmbreePeer::~EmbreePeer() = default;
+
+double EmbreePeer::trace_frame() {
+    auto start = std::chrono::steady_clock::now();
+    state_->tracer->trace(ids_);
+    double ms = ms_since(start);
+    throw_on_error(state_->device.get(), "tracing");
+    return ms;
+}
+
+std::string embree_version() { return std::string("Embree ") + RTC_VERSION_STRING; }
+
+}  // namespace clr::bench

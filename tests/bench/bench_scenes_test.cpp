@@ -1,0 +1,138 @@
+// The benchmark's generated scenes: the advertised object counts, the same scene on every
+// generation, object ids that survive the trip through a rendered colour, and a busy picture.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "bench/bench_scenes.h"
+#include "reference/reference.h"
+#include "support/render_helpers.h"
+
+namespace clr::bench {
+namespace {
+
+bool same_billboard(const Billboard& a, const Billboard& b) {
+    return a.upper_left == b.upper_left && a.lower_left == b.lower_left && a.upper_right == b.upper_right &&
+           a.ambient == b.ambient && (a.image == nullptr) == (b.image == nullptr) &&
+           (!a.image || a.image->rgba == b.image->rgba);
+}
+
+// The object id seen through the centre of each pixel of a small frame, by the reference.
+std::vector<std::uint32_t> reference_ids(const Scene& scene, int width, int height) {
+    const CameraKey& key = scene.camera_path.front();
+    reference::CameraFrame camera = reference::make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, width, height);
+    std::vector<std::uint32_t> ids;
+    int sphere_count = static_cast<int>(scene.spheres.size());
+    for (int row = 0; row < height; ++row)
+        for (int col = 0; col < width; ++col) {
+            reference::Hit hit = reference::intersect(scene, reference::primary_ray(camera, col, row));
+            ids.push_back(hit.kind == reference::HitKind::Sphere      ? sphere_id(hit.index)
+                          : hit.kind == reference::HitKind::Billboard ? billboard_id(sphere_count, hit.index)
+                                                                      : kBackgroundId);
+        }
+    return ids;
+}
+
+double covered_fraction(const std::vector<std::uint32_t>& ids) {
+    std::size_t covered = 0;
+    for (std::uint32_t id : ids) covered += id != kBackgroundId;
+    return static_cast<double>(covered) / ids.size();
+}
+
+TEST(BenchScenes, AdvertisedCounts) {
+    const std::vector<std::pair<std::string, std::pair<int, int>>> advertised = {
+        {"course", {3, 2}}, {"16+16", {16, 16}}, {"256+256", {256, 256}},
+        {"4096+4096", {4096, 4096}}, {"100k spheres", {100000, 0}},
+    };
+    ASSERT_EQ(bench_scene_specs().size(), advertised.size());
+    for (std::size_t i = 0; i < advertised.size(); ++i) {
+        const BenchSceneSpec& spec = bench_scene_specs()[i];
+        EXPECT_EQ(spec.name, advertised[i].first);
+        Scene scene = make_bench_scene(spec, 192, 108);
+        EXPECT_EQ(static_cast<int>(scene.spheres.size()), advertised[i].second.first) << spec.name;
+        EXPECT_EQ(static_cast<int>(scene.billboards.size()), advertised[i].second.second) << spec.name;
+        EXPECT_FALSE(scene.lit()) << spec.name << ": the benchmark measures flat shading";
+        for (const Billboard& billboard : scene.billboards) {
+            EXPECT_FALSE(billboard.is_mirror);
+            ASSERT_TRUE(billboard.image) << spec.name << ": billboards are textured";
+            EXPECT_TRUE(billboard.image->has_transparency()) << spec.name << ": with alpha holes";
+        }
+        for (const Sphere& sphere : scene.spheres) EXPECT_FALSE(sphere.is_mirror);
+    }
+    EXPECT_THROW(find_bench_scene("no such scene"), std::invalid_argument);
+}
+
+TEST(BenchScenes, DeterministicFromFixedSeeds) {
+    for (const BenchSceneSpec& spec : bench_scene_specs()) {
+        Scene first = make_bench_scene(spec, 1920, 1080);
+        Scene second = make_bench_scene(spec, 1920, 1080);
+        ASSERT_EQ(first.spheres.size(), second.spheres.size());
+        for (std::size_t i = 0; i < first.spheres.size(); ++i) {
+            EXPECT_EQ(first.spheres[i].center, second.spheres[i].center) << spec.name << " sphere " << i;
+            EXPECT_EQ(first.spheres[i].radius, second.spheres[i].radius) << spec.name << " sphere " << i;
+            EXPECT_EQ(first.spheres[i].ambient, second.spheres[i].ambient) << spec.name << " sphere " << i;
+        }
+        ASSERT_EQ(first.billboards.size(), second.billboards.size());
+        for (std::size_t j = 0; j < first.billboards.size(); ++j)
+            EXPECT_TRUE(same_billboard(first.billboards[j], second.billboards[j])) << spec.name << " billboard " << j;
+    }
+    // A pinned value: the generator must not drift with the standard library or a refactoring.
+    Scene field = make_bench_scene(find_bench_scene("16+16"), 1920, 1080);
+    EXPECT_NEAR(field.spheres[0].center.x, 4.1857183230813577, 1e-9);
+    EXPECT_NEAR(field.spheres[0].center.y, -2.9919200278935265, 1e-9);
+    EXPECT_NEAR(field.spheres[0].center.z, -23.123776266171689, 1e-9);
+    EXPECT_NEAR(field.spheres[0].radius, 4.31201634237389, 1e-9);
+}
+
+TEST(BenchScenes, IdsRoundTripThroughDisplayBytes) {
+    std::set<std::uint32_t> codes;
+    for (std::uint32_t id = 0; id < 110000; ++id) {
+        Color c = id_color(id);
+        auto byte = [](double v) { return reference::to_byte(v); };
+        ASSERT_EQ(id_of_bytes(byte(c.x), byte(c.y), byte(c.z)), id);
+        codes.insert((byte(c.x) << 16) | (byte(c.y) << 8) | byte(c.z));
+    }
+    EXPECT_EQ(codes.size(), 110000u) << "every object has its own colour";
+    EXPECT_EQ(id_color(kBackgroundId), (Color{0, 0, 0}));
+}
+
+TEST(BenchScenes, OpaqueTexelsShowTheBillboardsId) {
+    Scene scene = make_bench_scene(find_bench_scene("16+16"), 192, 108);
+    for (std::size_t j = 0; j < scene.billboards.size(); ++j) {
+        const Image& image = *scene.billboards[j].image;
+        std::uint32_t id = billboard_id(static_cast<int>(scene.spheres.size()), static_cast<int>(j));
+        for (std::size_t t = 0; t < image.rgba.size(); t += 4)
+            if (image.rgba[t + 3] == 255) {
+                ASSERT_EQ(id_of_bytes(image.rgba[t], image.rgba[t + 1], image.rgba[t + 2]), id);
+            }
+    }
+}
+
+// Most pixels of a generated field see an object, and every scene shows a fair share.
+TEST(BenchScenes, BusyPictures) {
+    const std::vector<std::pair<std::string, double>> least_coverage = {
+        {"course", 0.5}, {"16+16", 0.75}, {"256+256", 0.8}, {"4096+4096", 0.8}, {"100k spheres", 0.8},
+    };
+    for (const auto& [name, least] : least_coverage) {
+        bool huge = name == "100k spheres";  // the double reference is brute force too
+        Scene scene = make_bench_scene(find_bench_scene(name), 1920, 1080);
+        double covered = covered_fraction(reference_ids(scene, huge ? 32 : 96, huge ? 18 : 54));
+        EXPECT_GE(covered, least) << name;
+    }
+}
+
+// The kernels' image of a scene decodes to the reference's object ids, but on silhouettes.
+TEST(BenchScenes, RenderedColoursDecodeToObjectIds) {
+    for (const std::string name : {"course", "16+16"}) {
+        Scene scene = make_bench_scene(find_bench_scene(name), 96, 54);
+        std::vector<std::uint32_t> kernel = object_ids(testing::render_with_kernels(scene));
+        std::vector<std::uint32_t> expected = reference_ids(scene, 96, 54);
+        ASSERT_EQ(kernel.size(), expected.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < kernel.size(); ++i) differing += kernel[i] != expected[i];
+        EXPECT_LE(differing, kernel.size() / 100) << name;
+    }
+}
+
+}  // namespace
+}  // namespace clr::bench
