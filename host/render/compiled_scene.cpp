@@ -7,9 +7,9 @@
 namespace clr {
 namespace {
 
-ClrSphere compile_sphere(const Sphere& sphere) {
+ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
     ClrSphere out{};
-    out.center_radius = to_float4(sphere.center, static_cast<float>(sphere.radius));
+    out.center_radius = to_float4(sphere.center - origin, static_cast<float>(sphere.radius));
     out.color = to_float4(sphere.ambient);
     out.flags = sphere.is_mirror ? CLR_SURFACE_MIRROR : 0u;
     return out;
@@ -36,7 +36,7 @@ private:
 
 }  // namespace
 
-ClrBillboard compile_billboard(const Billboard& billboard) {
+ClrBillboard compile_billboard(const Billboard& billboard, const Vec3& origin) {
     // P = UL + a*edge_a + b*edge_b. With m = edge_a x edge_b, the dual vectors
     // (edge_b x m)/|m|^2 and (m x edge_a)/|m|^2 pick a and b out of P - UL by one dot product
     // each, for any parallelogram, and are computed here in double once per billboard.
@@ -46,7 +46,7 @@ ClrBillboard compile_billboard(const Billboard& billboard) {
     double m2 = dot(m, m);
 
     ClrBillboard out{};
-    out.corner = to_float4(billboard.upper_left);
+    out.corner = to_float4(billboard.upper_left - origin);
     out.normal = to_float4(normalize(cross(edge_b, edge_a)));  // front: (LL-UL) x (UR-UL)
     out.dual_a = to_float4(cross(edge_b, m) / m2);
     out.dual_b = to_float4(cross(m, edge_a) / m2);
@@ -61,18 +61,18 @@ ClrBillboard compile_billboard(const Billboard& billboard) {
     return out;
 }
 
-CompiledScene compile_scene(const Scene& scene) {
+CompiledScene compile_scene(const Scene& scene, const Vec3& origin) {
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);
-    for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(compile_sphere(sphere));
+    for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(compile_sphere(sphere, origin));
     TexelPacker packer(compiled.texels);
     for (const Billboard& billboard : scene.billboards) {
-        ClrBillboard out = compile_billboard(billboard);
+        ClrBillboard out = compile_billboard(billboard, origin);
         if (out.flags & CLR_SURFACE_TEXTURED) out.texel_offset = packer.offset_of(billboard.image.get());
         compiled.billboards.push_back(out);
     }
     compiled.info.background = to_float4(scene.background);
-    compiled.info.sun = to_float4(scene.sun_location);
+    compiled.info.sun = to_float4(scene.sun_location - origin);
     compiled.info.sphere_count = static_cast<int>(scene.spheres.size());
     compiled.info.billboard_count = static_cast<int>(scene.billboards.size());
     compiled.info.max_depth = scene.max_depth;

@@ -19,9 +19,13 @@ struct CompiledScene {
     FeatureSet features;
 };
 
-CompiledScene compile_scene(const Scene& scene);
+// Positions are stored relative to `origin`: with the frame's eye as origin, float32 keeps
+// full precision near the camera however far from (0, 0, 0) the scene lies (a scene at 1e5
+// would otherwise lose 1/128 of a unit to rounding).
+CompiledScene compile_scene(const Scene& scene, const Vec3& origin = {});
 
-// The device form of one billboard; texel_offset is filled in by compile_scene.
-ClrBillboard compile_billboard(const Billboard& billboard);
+// The device form of one billboard, relative to `origin`; texel_offset is filled in by
+// compile_scene.
+ClrBillboard compile_billboard(const Billboard& billboard, const Vec3& origin = {});
 
 }  // namespace clr

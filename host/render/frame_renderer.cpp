@@ -14,8 +14,7 @@ public:
         : scene_(scene), device_(entry), renderer_(device_, scene, options) {}
 
     Image render(const CameraKey& key, FrameTiming* timing) override {
-        return renderer_.render_frame(
-            make_device_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, scene_.width, scene_.height), timing);
+        return renderer_.render_view(key, timing);
     }
     std::string device_name() const override { return device_.entry().device_name; }
     double build_ms() const override { return renderer_.build_ms(); }

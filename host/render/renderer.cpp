@@ -5,6 +5,7 @@
 #include "core/errors.h"
 #include "device/cl_errors.h"
 #include "device/kernel_sources.h"
+#include "render/device_camera.h"
 #include "render/screen_tiles.h"
 
 namespace clr {
@@ -41,22 +42,43 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     : device_(device), scene_(scene), screen_tiles_(options.screen_tiles) {
     CompiledScene compiled = compile_scene(scene);
     features_ = options.features.value_or(compiled.features);
-    info_ = compiled.info;
 
     auto start = std::chrono::steady_clock::now();
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
     build_ms_ = elapsed_ms(start);
     try {
         render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
-        spheres_ = upload(device_.context(), compiled.spheres);
-        billboards_ = upload(device_.context(), compiled.billboards);
         texels_ = upload(device_.context(), compiled.texels);
-        bind_scene(render_kernel_, 3);
+        upload_geometry(compiled);
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
     } catch (const cl::Error& error) {
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
     if (options.max_buffer_bytes) max_buffer_bytes_ = std::min(max_buffer_bytes_, options.max_buffer_bytes);
+}
+
+void Renderer::upload_geometry(const CompiledScene& compiled) {
+    spheres_ = upload(device_.context(), compiled.spheres);
+    billboards_ = upload(device_.context(), compiled.billboards);
+    info_ = compiled.info;
+    bind_scene(render_kernel_, 3);
+}
+
+void Renderer::set_origin(const Vec3& origin) {
+    if (origin == origin_) return;
+    try {
+        upload_geometry(compile_scene(scene_, origin));
+    } catch (const cl::Error& error) {
+        throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
+    }
+    origin_ = origin;
+}
+
+Image Renderer::render_view(const CameraKey& key, FrameTiming* timing) {
+    set_origin(key.eye);
+    return render_frame(make_device_camera(key.eye - origin_, key.lookat - origin_, scene_.up, scene_.fov_degrees,
+                                           scene_.width, scene_.height),
+                        timing);
 }
 
 void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
@@ -104,7 +126,7 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
 }
 
 void Renderer::upload_screen_tiles(const ClrCamera& camera) {
-    ScreenTiles tiles = bin_screen_tiles(scene_, camera);
+    ScreenTiles tiles = bin_screen_tiles(scene_, camera, origin_);
     tile_offsets_ = upload(device_.context(), tiles.offsets);
     tile_items_ = upload(device_.context(), tiles.items);
     tile_nearest_ = upload(device_.context(), tiles.nearest);

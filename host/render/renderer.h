@@ -34,8 +34,19 @@ public:
     // Throws DeviceError on a build or upload failure.
     Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options = {});
 
-    // Renders one frame seen by `camera` (its width and height set the image size).
+    // Renders the frame seen from camera key `key` with the scene's up vector, field of view
+    // and size. The scene's coordinates are first made relative to the key's eye (see
+    // compile_scene), so float32 precision does not depend on where the scene lies.
+    Image render_view(const CameraKey& key, FrameTiming* timing = nullptr);
+
+    // Renders one frame seen by `camera`, given in the renderer's current coordinates
+    // (origin() subtracted; (0, 0, 0) until render_view() moves it). Its width and height set
+    // the image size.
     Image render_frame(const ClrCamera& camera, FrameTiming* timing = nullptr);
+
+    // Makes device coordinates relative to `origin`, re-uploading the geometry if it moved.
+    void set_origin(const Vec3& origin);
+    const Vec3& origin() const { return origin_; }
 
     const FeatureSet& features() const { return features_; }
     int bands_of_last_frame() const { return bands_; }  // 1 when the frame fitted whole
@@ -51,10 +62,12 @@ private:
     double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
     void reserve_pixels(std::size_t bytes);
     void upload_screen_tiles(const ClrCamera& camera);
+    void upload_geometry(const CompiledScene& compiled);
 
     DeviceContext& device_;
     Scene scene_;  // the geometry, for binning each frame's screen tiles (images are shared)
     bool screen_tiles_ = true;
+    Vec3 origin_;
     FeatureSet features_;
     ClrSceneInfo info_{};
     cl::Program program_;

@@ -20,8 +20,8 @@ struct PixelBounds {
 
 class Projector {
 public:
-    explicit Projector(const ClrCamera& camera)
-        : eye_(to_vec3(camera.eye)), forward_(to_vec3(camera.forward)), right_(to_vec3(camera.right)),
+    Projector(const ClrCamera& camera, const Vec3& origin)
+        : eye_(to_vec3(camera.eye) + origin), forward_(to_vec3(camera.forward)), right_(to_vec3(camera.right)),
           up_(to_vec3(camera.up)), width_(camera.width), height_(camera.height) {}
 
     // Widens `bounds` by the projection of `point`. A point less than a small fraction of the
@@ -102,8 +102,8 @@ bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width,
 
 }  // namespace
 
-ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera) {
-    Projector projector(camera);
+ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const Vec3& origin) {
+    Projector projector(camera, origin);
     std::vector<Candidate> candidates;
     candidates.reserve(scene.spheres.size() + scene.billboards.size());
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)

@@ -21,7 +21,8 @@ struct ScreenTiles {
 };
 
 // Bins the scene's objects for the frame seen by `camera` (the same ClrCamera the kernels
-// get, so that the projection matches their rays).
-ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera);
+// get, so that the projection matches their rays), whose coordinates are relative to
+// `origin` (see compile_scene).
+ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const Vec3& origin = {});
 
 }  // namespace clr

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
-#include "render/device_camera.h"
 #include "render/renderer.h"
 #include "support/opencl_test_device.h"
 #include "support/random_scene.h"
@@ -19,22 +18,18 @@ Scene test_scene() {
     return scene;
 }
 
-ClrCamera camera_of(const Scene& scene) {
-    const CameraKey& key = scene.camera_path.front();
-    return make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
-}
 
 TEST(BandedRender, BandsGiveTheSameBytesAsAWholeFrame) {
     Scene scene = test_scene();
     Renderer whole(testing::test_device(), scene);
-    Image expected = whole.render_frame(camera_of(scene));
+    Image expected = whole.render_view(scene.camera_path.front());
     EXPECT_EQ(whole.bands_of_last_frame(), 1);
 
     RendererOptions small;
     small.max_buffer_bytes = 90 * 4 * 7;  // seven rows at a time
     Renderer banded(testing::test_device(), scene, small);
     FrameTiming timing;
-    Image image = banded.render_frame(camera_of(scene), &timing);
+    Image image = banded.render_view(scene.camera_path.front(), &timing);
     EXPECT_EQ(banded.bands_of_last_frame(), 9);  // 8 bands of 7 rows and one of 5
     EXPECT_TRUE(image.rgba == expected.rgba);
     EXPECT_GT(timing.kernel_ms, 0);
@@ -46,7 +41,7 @@ TEST(BandedRender, ARowThatDoesNotFitIsAClearDeviceError) {
     tiny.max_buffer_bytes = 100;
     Renderer renderer(testing::test_device(), scene, tiny);
     try {
-        renderer.render_frame(camera_of(scene));
+        renderer.render_view(scene.camera_path.front());
         FAIL() << "a 90-pixel row cannot fit in 100 bytes";
     } catch (const DeviceError& error) {
         EXPECT_NE(std::string(error.what()).find("a row of 90 pixels needs 360 bytes"), std::string::npos) << error.what();

@@ -9,7 +9,7 @@ namespace clr::testing {
 Image render_with_kernels(const Scene& scene, const RendererOptions& options) {
     Renderer renderer(test_device(), scene, options);
     const CameraKey& key = scene.camera_path.front();
-    return renderer.render_frame(make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height));
+    return renderer.render_view(key);
 }
 
 Image render_with_reference(const Scene& scene) {
