@@ -42,6 +42,8 @@ float16 sphere_distance16(float4 center_radius, float3 origin, Directions16 d)
     float16 b = -dot16(oc, d);
     float16 cx = oc.x + b * d.x, cy = oc.y + b * d.y, cz = oc.z + b * d.z;
     float16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
+    if (!any(discriminant >= 0.0f))
+        return (float16)(INFINITY); /* all 16 rays miss: skip the square root and division */
     float c = dot3(oc, oc) - radius * radius;
     float16 q = b + copysign(sqrt(discriminant), b);
     float16 t0 = c / q;
