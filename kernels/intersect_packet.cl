@@ -12,14 +12,14 @@ typedef struct {
 /* The 16 lanes' column offsets within the packet. */
 #define CLR_LANES ((int16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
 
-/* camera_ray() for pixels (col0 .. col0 + 15, row). */
-Directions16 camera_rays16(ClrCamera camera, int col0, int row)
+/* camera_ray_through() for pixels (col0 .. col0 + 15, row), at offsets (ox, oy) in them. */
+Directions16 camera_rays16(ClrCamera camera, int col0, int row, float16 ox, float16 oy)
 {
     float16 col = convert_float16((int16)(col0) + CLR_LANES);
-    float16 sx = 2.0f * (col + 0.5f) / (float)camera.width - 1.0f;
-    float sy = 1.0f - 2.0f * ((float)row + 0.5f) / (float)camera.height;
+    float16 sx = 2.0f * (col + ox) / (float)camera.width - 1.0f;
+    float16 sy = 1.0f - 2.0f * ((float)row + oy) / (float)camera.height;
     Directions16 d;
-    d.x = camera.forward.x + sx * camera.right.x + sy * camera.up.x;
+    d.x = camera.forward.x + sx * camera.right.x + sy * camera.up.x;  /* as camera_ray_through() */
     d.y = camera.forward.y + sx * camera.right.y + sy * camera.up.y;
     d.z = camera.forward.z + sx * camera.right.z + sy * camera.up.z;
     float16 length = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);

@@ -30,10 +30,17 @@ __kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_P
     int band_row = get_global_id(1);
     if (col >= camera.width || band_row >= row_count)
         return;
-    ClrRay ray = camera_ray(camera, col, first_row + band_row);
-    ClrHit hit = intersect_scene(ray.origin.xyz, ray.direction.xyz, INFINITY, CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
-    float3 color = trace_path(ray.origin.xyz, ray.direction.xyz, hit, CLR_SCENE_ARGS);
-    pixels[band_row * camera.width + col] = display_pixel(color);
+    int row = first_row + band_row;
+    /* The mean of the pixel's samples (clr_samples.h), in display values. */
+    float3 sum = (float3)(0.0f);
+    for (int sample = 0; sample < camera.samples; ++sample) {
+        float ox = clr_sample_offset_x(camera.frame_seed, col, row, sample, camera.samples);
+        float oy = clr_sample_offset_y(camera.frame_seed, col, row, sample, camera.samples);
+        ClrRay ray = camera_ray_through(camera, col, row, ox, oy);
+        ClrHit hit = intersect_scene(ray.origin.xyz, ray.direction.xyz, INFINITY, CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
+        sum += trace_path(ray.origin.xyz, ray.direction.xyz, hit, CLR_SCENE_ARGS);
+    }
+    pixels[band_row * camera.width + col] = display_pixel(sum / (float)camera.samples);
 }
 
 /* The same as render, with screen-tile culling for the primary rays and 16 pixels per
@@ -51,38 +58,48 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
     int row = first_row + band_row;
     int tile = (row / CLR_TILE_SIZE) * tiles_x + col0 / CLR_TILE_SIZE;
     float3 eye = camera.eye.xyz;
-    Directions16 d = camera_rays16(camera, col0, row);
-    float16 best_t;
-    int16 best_kind, best_index;
-    intersect_tile16(eye, d, tile_items, item_nearest, tile_offsets[tile], tile_offsets[tile + 1], CLR_SCENE_ARGS,
-                     &best_t, &best_kind, &best_index);
+    uint first = tile_offsets[tile], end = tile_offsets[tile + 1];
+    float rs[16], gs[16], bs[16];  /* per lane: the sum of its samples' colours */
+    for (int lane = 0; lane < 16; ++lane)
+        rs[lane] = gs[lane] = bs[lane] = 0.0f;
+    for (int sample = 0; sample < camera.samples; ++sample) {
+        float oxs[16], oys[16];
+        for (int lane = 0; lane < 16; ++lane) {
+            oxs[lane] = clr_sample_offset_x(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+            oys[lane] = clr_sample_offset_y(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+        }
+        Directions16 d = camera_rays16(camera, col0, row, vload16(0, oxs), vload16(0, oys));
+        float16 best_t;
+        int16 best_kind, best_index;
+        intersect_tile16(eye, d, tile_items, item_nearest, first, end, CLR_SCENE_ARGS, &best_t, &best_kind, &best_index);
 
-    float ts[16], xs[16], ys[16], zs[16];
-    int kinds[16], indices[16];
-    vstore16(best_t, 0, ts);
-    vstore16(best_kind, 0, kinds);
-    vstore16(best_index, 0, indices);
-    vstore16(d.x, 0, xs);
-    vstore16(d.y, 0, ys);
-    vstore16(d.z, 0, zs);
-    int lanes = min(16, camera.width - col0);
-    float rs[16], gs[16], bs[16];
-    for (int lane = 0; lane < 16; ++lane) {
-        ClrHit hit;
-        hit.t = ts[lane];
-        hit.kind = kinds[lane];
-        hit.index = indices[lane];
-        hit.pad0 = 0;
-        float3 direction = (float3)(xs[lane], ys[lane], zs[lane]);
-        float3 color = trace_path(eye, direction, hit, CLR_SCENE_ARGS);
-        rs[lane] = color.x;
-        gs[lane] = color.y;
-        bs[lane] = color.z;
+        float ts[16], xs[16], ys[16], zs[16];
+        int kinds[16], indices[16];
+        vstore16(best_t, 0, ts);
+        vstore16(best_kind, 0, kinds);
+        vstore16(best_index, 0, indices);
+        vstore16(d.x, 0, xs);
+        vstore16(d.y, 0, ys);
+        vstore16(d.z, 0, zs);
+        for (int lane = 0; lane < 16; ++lane) {
+            ClrHit hit;
+            hit.t = ts[lane];
+            hit.kind = kinds[lane];
+            hit.index = indices[lane];
+            hit.pad0 = 0;
+            float3 direction = (float3)(xs[lane], ys[lane], zs[lane]);
+            float3 color = trace_path(eye, direction, hit, CLR_SCENE_ARGS);
+            rs[lane] += color.x;
+            gs[lane] += color.y;
+            bs[lane] += color.z;
+        }
     }
+    int lanes = min(16, camera.width - col0);
     /* color_to_byte() for 16 pixels at once */
-    uchar16 r = convert_uchar16(floor(clamp(vload16(0, rs), 0.0f, 1.0f) * 255.0f + 0.5f));
-    uchar16 g = convert_uchar16(floor(clamp(vload16(0, gs), 0.0f, 1.0f) * 255.0f + 0.5f));
-    uchar16 b = convert_uchar16(floor(clamp(vload16(0, bs), 0.0f, 1.0f) * 255.0f + 0.5f));
+    float samples = (float)camera.samples;
+    uchar16 r = convert_uchar16(floor(clamp(vload16(0, rs) / samples, 0.0f, 1.0f) * 255.0f + 0.5f));
+    uchar16 g = convert_uchar16(floor(clamp(vload16(0, gs) / samples, 0.0f, 1.0f) * 255.0f + 0.5f));
+    uchar16 b = convert_uchar16(floor(clamp(vload16(0, bs) / samples, 0.0f, 1.0f) * 255.0f + 0.5f));
     uchar rb[16], gb[16], bb[16];
     vstore16(r, 0, rb);
     vstore16(g, 0, gb);

@@ -48,6 +48,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                    "default $CLRENDER_DEVICE, else the first CPU device");
     std::string size;
     app.add_option("--size", size, "Override the scene's resolution, e.g. 1920x1080");
+    app.add_option("--spp", options.samples_per_pixel,
+                   "Samples per pixel (anti-aliasing); overrides the scene's clrender.spp (default 1: pixel centres)")
+        ->check(CLI::Range(1, 4096));
     app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
     app.add_flag("--placeholders", options.placeholders,
                  "Render a magenta checkerboard for billboard images that are missing, instead of failing");

@@ -17,6 +17,7 @@ struct Options {
     std::string device;          // selector; empty: CLRENDER_DEVICE, else the first CPU device
     std::optional<int> width;    // --size
     std::optional<int> height;
+    std::optional<int> samples_per_pixel;  // --spp
     bool list_devices = false;
     bool print_frame_count = false;  // --frame-count: print the animation's frame count, exit
     bool reference = false;      // render with the double-precision host reference

@@ -66,6 +66,7 @@ Scene load(const Options& options) {
     load_options.placeholder_images = options.placeholders;
     load_options.width_override = options.width;
     load_options.height_override = options.height;
+    load_options.samples_override = options.samples_per_pixel;
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings) std::cerr << "clrender: warning: " << scene.path << ": " << warning << "\n";
     return scene;
@@ -113,7 +114,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
             continue;
         }
         FrameRecord record{frame, {}};
-        Image image = renderer->render(camera_at_frame(scene, frame), &record.timing);
+        Image image = renderer->render(camera_at_frame(scene, frame), frame, &record.timing);
         report.frames.push_back(record);
         sink.push(frame, std::move(image));
         progress.frame_done();

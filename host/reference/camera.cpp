@@ -33,10 +33,12 @@ CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, dou
     return camera;
 }
 
-Ray primary_ray(const CameraFrame& camera, int col, int row) {
-    // Pixel centres: (col + 0.5, row + 0.5) mapped to [-1, 1], row 0 at the top (+v).
-    const double x = 2.0 * (col + 0.5) / camera.width - 1.0;
-    const double y = 1.0 - 2.0 * (row + 0.5) / camera.height;
+Ray primary_ray(const CameraFrame& camera, int col, int row) { return primary_ray_through(camera, col, row, 0.5, 0.5); }
+
+Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, double oy) {
+    // Image points (col + ox, row + oy) mapped to [-1, 1], row 0 at the top (+v).
+    const double x = 2.0 * (col + ox) / camera.width - 1.0;
+    const double y = 1.0 - 2.0 * (row + oy) / camera.height;
     const Vec3 witness_direction = -camera.w + camera.u * (x * camera.half_width) + camera.v * (y * camera.half_height);
     return {camera.eye, normalize(witness_direction)};
 }

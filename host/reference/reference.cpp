@@ -1,9 +1,13 @@
-// Reference frames: one primary ray per pixel centre, traced in double, written as bytes.
+// Reference frames: each pixel's samples traced in double, averaged, written as bytes. The
+// sample positions are the one thing shared with the kernels (kernels/shared/clr_samples.h):
+// they define where a pixel is looked at, not how a ray is traced.
 #include "reference/reference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+
+#include "shared/clr_samples.h"
 
 namespace clr::reference {
 
@@ -15,14 +19,31 @@ std::uint8_t to_byte(double channel) {
     return static_cast<std::uint8_t>(std::floor(scaled + 0.5));  // round half up
 }
 
-Image render(const Scene& scene, const CameraFrame& camera) {
+namespace {
+
+// The mean colour of the pixel's samples, at the positions the kernels use.
+Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_seed, int col, int row) {
+    const int samples = scene.sampling.samples_per_pixel;
+    Color sum{0, 0, 0};
+    for (int sample = 0; sample < samples; ++sample) {
+        double ox = clr_sample_offset_x(frame_seed, col, row, sample, samples);
+        double oy = clr_sample_offset_y(frame_seed, col, row, sample, samples);
+        sum = sum + trace(scene, primary_ray_through(camera, col, row, ox, oy));
+    }
+    return sum / samples;
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const CameraFrame& camera, int frame) {
+    const unsigned frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
     Image image;
     image.width = camera.width;
     image.height = camera.height;
     image.rgba.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
     for (int row = 0; row < camera.height; ++row) {
         for (int col = 0; col < camera.width; ++col) {
-            const Color color = trace(scene, primary_ray(camera, col, row));
+            const Color color = pixel_color(scene, camera, frame_seed, col, row);
             std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(row) * camera.width + col) * 4];
             texel[0] = to_byte(color.x);
             texel[1] = to_byte(color.y);

@@ -34,6 +34,10 @@ CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, dou
 // The ray from the eye through the centre of pixel (col, row); row 0 is the top row.
 Ray primary_ray(const CameraFrame& camera, int col, int row);
 
+// The ray through point (col + ox, row + oy) of the image, ox and oy in [0, 1) inside pixel
+// (col, row): a sample of the pixel (anti-aliasing).
+Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, double oy);
+
 enum class HitKind { None, Sphere, Billboard };
 
 struct Hit {
@@ -66,7 +70,9 @@ Color trace(const Scene& scene, const Ray& ray);
 // Display byte for a colour channel: round(clamp(c, 0, 1) * 255).
 std::uint8_t to_byte(double channel);
 
-// Renders one frame: RGBA bytes, alpha 255, rows from the top.
-Image render(const Scene& scene, const CameraFrame& camera);
+// Renders one frame: RGBA bytes, alpha 255, rows from the top. Each pixel is the mean of
+// scene.sampling.samples_per_pixel samples placed as kernels/shared/clr_samples.h says for
+// this frame index (one sample: the pixel's centre).
+Image render(const Scene& scene, const CameraFrame& camera, int frame = 0);
 
 }  // namespace clr::reference

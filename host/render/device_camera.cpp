@@ -26,6 +26,8 @@ ClrCamera make_device_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up
     camera.up = to_float4(v * half_height);
     camera.width = width;
     camera.height = height;
+    camera.samples = 1;  // the pixel centre; the renderer sets the scene's sampling
+    camera.frame_seed = 0;
     return camera;
 }
 

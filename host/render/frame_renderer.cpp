@@ -13,8 +13,8 @@ public:
     OpenClFrameRenderer(const Scene& scene, const DeviceEntry& entry, const RendererOptions& options)
         : scene_(scene), device_(entry), renderer_(device_, scene, options) {}
 
-    Image render(const CameraKey& key, FrameTiming* timing) override {
-        return renderer_.render_view(key, timing);
+    Image render(const CameraKey& key, int frame, FrameTiming* timing) override {
+        return renderer_.render_view(key, timing, frame);
     }
     std::string device_name() const override { return device_.entry().device_name; }
     double build_ms() const override { return renderer_.build_ms(); }
@@ -29,10 +29,11 @@ class ReferenceFrameRenderer : public FrameRenderer {
 public:
     explicit ReferenceFrameRenderer(const Scene& scene) : scene_(scene) {}
 
-    Image render(const CameraKey& key, FrameTiming* timing) override {
+    Image render(const CameraKey& key, int frame, FrameTiming* timing) override {
         auto start = std::chrono::steady_clock::now();
         Image image = reference::render(
-            scene_, reference::make_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, scene_.width, scene_.height));
+            scene_, reference::make_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, scene_.width, scene_.height),
+            frame);
         if (timing) {
             timing->total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             timing->kernel_ms = timing->total_ms;  // all of it is "kernel" work, on the host

@@ -13,7 +13,8 @@ namespace clr {
 class FrameRenderer {
 public:
     virtual ~FrameRenderer() = default;
-    virtual Image render(const CameraKey& key, FrameTiming* timing) = 0;
+    // `frame` is the animation frame index, which seeds the sample pattern.
+    virtual Image render(const CameraKey& key, int frame, FrameTiming* timing) = 0;
     virtual std::string device_name() const = 0;
     virtual double build_ms() const = 0;  // program build time, 0 for the reference
 };

@@ -7,6 +7,7 @@
 #include "device/kernel_sources.h"
 #include "render/device_camera.h"
 #include "render/screen_tiles.h"
+#include "shared/clr_samples.h"
 
 namespace clr {
 namespace {
@@ -74,11 +75,13 @@ void Renderer::set_origin(const Vec3& origin) {
     origin_ = origin;
 }
 
-Image Renderer::render_view(const CameraKey& key, FrameTiming* timing) {
+Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame) {
     set_origin(key.eye);
-    return render_frame(make_device_camera(key.eye - origin_, key.lookat - origin_, scene_.up, scene_.fov_degrees,
-                                           scene_.width, scene_.height),
-                        timing);
+    ClrCamera camera = make_device_camera(key.eye - origin_, key.lookat - origin_, scene_.up, scene_.fov_degrees,
+                                          scene_.width, scene_.height);
+    camera.samples = scene_.sampling.samples_per_pixel;
+    camera.frame_seed = clr_frame_seed(scene_.sampling.seed, static_cast<unsigned>(frame));
+    return render_frame(camera, timing);
 }
 
 void Renderer::bind_scene(cl::Kernel& kernel, int first) const {

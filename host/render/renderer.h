@@ -37,7 +37,8 @@ public:
     // Renders the frame seen from camera key `key` with the scene's up vector, field of view
     // and size. The scene's coordinates are first made relative to the key's eye (see
     // compile_scene), so float32 precision does not depend on where the scene lies.
-    Image render_view(const CameraKey& key, FrameTiming* timing = nullptr);
+    // `frame` (the animation frame index) seeds the sample pattern with the scene's seed.
+    Image render_view(const CameraKey& key, FrameTiming* timing = nullptr, int frame = 0);
 
     // Renders one frame seen by `camera`, given in the renderer's current coordinates
     // (origin() subtracted; (0, 0, 0) until render_view() moves it). Its width and height set

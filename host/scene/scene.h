@@ -60,12 +60,19 @@ struct AnimationSettings {
     Interpolation interpolation = Interpolation::Linear;
 };
 
+// How pixels are sampled: clrender's extension keys under "clrender", or --spp.
+struct SamplingSettings {
+    int samples_per_pixel = 1;  // 1: the pixel's centre; more: anti-aliasing (kernels/shared/clr_samples.h)
+    unsigned seed = 0;          // varies the sample pattern; with the frame index it fixes it
+};
+
 struct Scene {
     std::string path;  // the scene file, for messages and default output names
     std::string name;  // file name without folder and extension
 
     std::vector<CameraKey> camera_path;  // at least one key
     AnimationSettings animation;
+    SamplingSettings sampling;
     Vec3 up;
     double fov_degrees = 60;  // full field of view across the larger image dimension
     int width = 0;

@@ -413,6 +413,8 @@ void read_extensions(ObjectReader& file, Scene& scene) {
         if (!(animation.fps > 0 && animation.fps <= 1000)) fps->fail("fps must be in (0, 1000] (got " + fps->shown() + ")");
     }
     if (auto interpolation = extensions.optional("interpolation")) animation.interpolation = read_interpolation(*interpolation);
+    if (auto spp = extensions.optional("spp")) scene.sampling.samples_per_pixel = static_cast<int>(spp->integer(1, kMaxSamplesPerPixel));
+    if (auto seed = extensions.optional("seed")) scene.sampling.seed = static_cast<unsigned>(seed->integer(0, 4294967295LL));
     std::vector<std::string> length_keys;
     if (auto per_segment = extensions.optional("frames_per_segment")) {
         animation.frames_per_segment = static_cast<int>(per_segment->integer(1, 100000));
@@ -465,6 +467,11 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     std::vector<PendingImage> pending_images;
     read_objects(file, scene, pending_images);
     read_extensions(file, scene);
+    if (options.samples_override) {
+        if (*options.samples_override < 1 || *options.samples_override > kMaxSamplesPerPixel)
+            throw SceneError(path, "", "--spp must be from 1 to " + std::to_string(kMaxSamplesPerPixel));
+        scene.sampling.samples_per_pixel = *options.samples_override;
+    }
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.

@@ -14,6 +14,9 @@ namespace clr {
 constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 8192LL * 8192LL;
 
+// Most samples per pixel (anti-aliasing) a scene or --spp may ask for.
+constexpr int kMaxSamplesPerPixel = 4096;
+
 struct LoadOptions {
     // Render a placeholder image (see make_placeholder_image) for a billboard image that is
     // missing or unreadable, with a warning, instead of failing.
@@ -22,6 +25,8 @@ struct LoadOptions {
     // may then be absent.
     std::optional<int> width_override;
     std::optional<int> height_override;
+    // Samples per pixel given on the command line (--spp); replaces the scene's.
+    std::optional<int> samples_override;
 };
 
 // Reads and validates the scene file at `path`. Relative image paths are resolved against

@@ -41,16 +41,17 @@ constexpr int kClrTileSize = CLR_TILE_SIZE;
 #define CLR_HIT_BILLBOARD 2
 
 /* The pinhole camera of one frame, flattened from SPEC 2 (Camera). The direction through
- * the centre of pixel (col, row) is
- *   forward + (2(col+0.5)/width - 1) * right + (1 - 2(row+0.5)/height) * up. */
+ * the point (col + ox, row + oy) of pixel (col, row) (the centre: ox = oy = 0.5) is
+ *   forward + (2(col+ox)/width - 1) * right + (1 - 2(row+oy)/height) * up. */
 typedef struct {
     clr_float4 eye;     /* xyz = eye position; w unused */
     clr_float4 forward; /* xyz = -w, the unit view direction (image plane at distance 1) */
     clr_float4 right;   /* xyz = halfW * u: from the plane's centre to its right edge */
     clr_float4 up;      /* xyz = halfH * v: from the plane's centre to its top edge */
-    clr_int width;      /* image width in pixels */
-    clr_int height;     /* image height in pixels */
-    clr_int pad0, pad1;
+    clr_int width;       /* image width in pixels */
+    clr_int height;      /* image height in pixels */
+    clr_int samples;     /* samples per pixel (anti-aliasing), >= 1 */
+    clr_uint frame_seed; /* seed of this frame's sample pattern (clr_samples.h) */
 } ClrCamera;
 
 typedef struct {

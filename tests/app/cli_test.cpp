@@ -195,3 +195,33 @@ TEST(Cli, KernelDirectoryGivesTheSameImageAsTheEmbeddedKernels) {
 
 }  // namespace
 }  // namespace clr
+
+namespace clr {
+namespace {
+
+TEST(Cli, SamplesPerPixelSmoothEdges) {
+    TempFolder folder;
+    folder.write("small.json", kSmallScene);
+    ASSERT_EQ(run_clrender("small.json -q -o one.png", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("small.json -q -o many.png --spp 16", folder.path()).exit_code, 0);
+    auto one = load_image(folder.file("one.png"));
+    auto many = load_image(folder.file("many.png"));
+    // With one sample the red sphere's silhouette is hard: only sphere or billboard colours.
+    // With 16, pixels on the silhouette mix them.
+    auto mixed = [](const Image& image) {
+        int count = 0;
+        for (int row = 0; row < image.height; ++row)
+            for (int col = 0; col < image.width; ++col) {
+                int r = image.at(col, row, 0), b = image.at(col, row, 2);
+                count += r > 10 && r < 245 && b > 10 && b < 245;
+            }
+        return count;
+    };
+    EXPECT_EQ(mixed(*one), 0);
+    EXPECT_GT(mixed(*many), 20);
+    EXPECT_EQ(run_clrender("small.json -q --spp 0", folder.path()).exit_code, 1);
+    EXPECT_EQ(run_clrender("small.json -q --spp 5000", folder.path()).exit_code, 1);
+}
+
+}  // namespace
+}  // namespace clr

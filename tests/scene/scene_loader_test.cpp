@@ -858,6 +858,22 @@ TEST(SceneLoader, RejectsBadAnimationExtensions) {
     EXPECT_TRUE(FailsAt(json, "/clrender", "object"));
 }
 
+TEST(SceneLoader, ReadsSamplingExtensionsAndTheOverride) {
+    Json json = minimal_scene();
+    EXPECT_EQ(parse(json).sampling.samples_per_pixel, 1);
+    json["clrender"] = {{"spp", 9}, {"seed", 42}};
+    Scene scene = parse(json);
+    EXPECT_EQ(scene.sampling.samples_per_pixel, 9);
+    EXPECT_EQ(scene.sampling.seed, 42u);
+    LoadOptions options;
+    options.samples_override = 3;
+    EXPECT_EQ(parse(json, options).sampling.samples_per_pixel, 3);
+    json["clrender"] = {{"spp", 0}};
+    EXPECT_TRUE(FailsAt(json, "/clrender/spp", "spp"));
+    json["clrender"] = {{"seed", -1}};
+    EXPECT_TRUE(FailsAt(json, "/clrender/seed", "seed"));
+}
+
 TEST(SceneLoader, UnknownExtensionKeysAreWarned) {
     Json json = minimal_scene();
     json["clrender"] = {{"fsp", 24}};
