@@ -3,19 +3,29 @@
 /* The unit-direction ray from the eye through point (col + ox, row + oy) of the image, with
  * ox, oy in [0, 1) inside pixel (col, row); row 0 is the top of the image, so the vertical
  * screen coordinate runs from +1 at the top to -1. */
-ClrRay camera_ray_through(ClrCamera camera, int col, int row, float ox, float oy)
+Ray camera_ray_through(ClrCamera camera, int col, int row, float ox, float oy)
 {
-    float sx = 2.0f * ((float)col + ox) / (float)camera.width - 1.0f;
-    float sy = 1.0f - 2.0f * ((float)row + oy) / (float)camera.height;
-    float3 direction = camera.forward.xyz + sx * camera.right.xyz + sy * camera.up.xyz;
-    ClrRay ray;
-    ray.origin = (float4)(camera.eye.xyz, 0.0f);
-    ray.direction = (float4)(unit3(direction), 0.0f);
+    real sx = 2.0f * ((real)col + ox) / (real)camera.width - 1.0f;
+    real sy = 1.0f - 2.0f * ((real)row + oy) / (real)camera.height;
+    real3 direction = convert_real3(camera.forward.xyz) + sx * convert_real3(camera.right.xyz) +
+                      sy * convert_real3(camera.up.xyz);
+    Ray ray;
+    ray.origin = convert_real3(camera.eye.xyz);
+    ray.direction = unit3(direction);
     return ray;
 }
 
+/* The float form of a ray, for buffers. */
+ClrRay device_ray(Ray ray)
+{
+    ClrRay out;
+    out.origin = (float4)(convert_float3(ray.origin), 0.0f);
+    out.direction = (float4)(convert_float3(ray.direction), 0.0f);
+    return out;
+}
+
 /* The ray through the centre of pixel (col, row). */
-ClrRay camera_ray(ClrCamera camera, int col, int row)
+Ray camera_ray(ClrCamera camera, int col, int row)
 {
     return camera_ray_through(camera, col, row, 0.5f, 0.5f);
 }
@@ -27,5 +37,5 @@ __kernel void raygen(ClrCamera camera, __global ClrRay* rays)
     int row = get_global_id(1);
     if (col >= camera.width || row >= camera.height)
         return;
-    rays[row * camera.width + col] = camera_ray(camera, col, row);
+    rays[row * camera.width + col] = device_ray(camera_ray(camera, col, row));
 }

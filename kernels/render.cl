@@ -3,7 +3,7 @@
  * same functions as the stage kernels, which the tests check one by one. */
 
 /* The colour seen along a primary ray whose nearest hit is `hit`. */
-float3 trace_path(float3 origin, float3 direction, ClrHit hit, CLR_SCENE_PARAMS)
+float3 trace_path(real3 origin, real3 direction, Hit hit, CLR_SCENE_PARAMS)
 {
     /* shade_hit() stops bouncing once `reflections` reaches info.max_depth. */
     for (int reflections = 0;; ++reflections) {
@@ -36,9 +36,9 @@ __kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_P
     for (int sample = 0; sample < camera.samples; ++sample) {
         float ox = clr_sample_offset_x(camera.frame_seed, col, row, sample, camera.samples);
         float oy = clr_sample_offset_y(camera.frame_seed, col, row, sample, camera.samples);
-        ClrRay ray = camera_ray_through(camera, col, row, ox, oy);
-        ClrHit hit = intersect_scene(ray.origin.xyz, ray.direction.xyz, INFINITY, CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
-        sum += trace_path(ray.origin.xyz, ray.direction.xyz, hit, CLR_SCENE_ARGS);
+        Ray ray = camera_ray_through(camera, col, row, ox, oy);
+        Hit hit = intersect_scene(ray.origin, ray.direction, INFINITY, CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
+        sum += trace_path(ray.origin, ray.direction, hit, CLR_SCENE_ARGS);
     }
     pixels[band_row * camera.width + col] = display_pixel(sum / (float)camera.samples);
 }
@@ -57,7 +57,7 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
         return;
     int row = first_row + band_row;
     int tile = (row / CLR_TILE_SIZE) * tiles_x + col0 / CLR_TILE_SIZE;
-    float3 eye = camera.eye.xyz;
+    real3 eye = convert_real3(camera.eye.xyz);
     uint first = tile_offsets[tile], end = tile_offsets[tile + 1];
     float rs[16], gs[16], bs[16];  /* per lane: the sum of its samples' colours */
     for (int lane = 0; lane < 16; ++lane)
@@ -69,11 +69,11 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
             oys[lane] = clr_sample_offset_y(camera.frame_seed, col0 + lane, row, sample, camera.samples);
         }
         Directions16 d = camera_rays16(camera, col0, row, vload16(0, oxs), vload16(0, oys));
-        float16 best_t;
+        real16 best_t;
         int16 best_kind, best_index;
         intersect_tile16(eye, d, tile_items, item_nearest, first, end, CLR_SCENE_ARGS, &best_t, &best_kind, &best_index);
 
-        float ts[16], xs[16], ys[16], zs[16];
+        real ts[16], xs[16], ys[16], zs[16];
         int kinds[16], indices[16];
         vstore16(best_t, 0, ts);
         vstore16(best_kind, 0, kinds);
@@ -82,12 +82,11 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
         vstore16(d.y, 0, ys);
         vstore16(d.z, 0, zs);
         for (int lane = 0; lane < 16; ++lane) {
-            ClrHit hit;
+            Hit hit;
             hit.t = ts[lane];
             hit.kind = kinds[lane];
             hit.index = indices[lane];
-            hit.pad0 = 0;
-            float3 direction = (float3)(xs[lane], ys[lane], zs[lane]);
+            real3 direction = (real3)(xs[lane], ys[lane], zs[lane]);
             float3 color = trace_path(eye, direction, hit, CLR_SCENE_ARGS);
             rs[lane] += color.x;
             gs[lane] += color.y;

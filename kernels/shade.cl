@@ -4,30 +4,30 @@
 typedef struct {
     float3 color;     /* the path's colour, when it ends here */
     int bounces;      /* 1: continue along (next_origin, next_direction) instead */
-    float3 next_origin;
-    float3 next_direction;
+    real3 next_origin;
+    real3 next_direction;
     int leaving_kind; /* the mirror the reflected ray leaves */
     int leaving_index;
 } ShadeResult;
 
 /* The colour a sphere shows at distance t along the ray: its ambient colour, scaled in sun
  * mode by max(0, n.l) and by 0 when an opaque surface lies between the point and the sun. */
-float3 sphere_color(int index, float3 origin, float3 direction, float t, CLR_SCENE_PARAMS)
+float3 sphere_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
 {
     float3 ambient = spheres[index].color.xyz;
 #if CLR_FEATURE_SUN
     if (!info.lit)
         return ambient;
-    float3 point = origin + t * direction;
-    float3 normal = normalize(point - spheres[index].center_radius.xyz);
-    float3 to_sun = info.sun.xyz - point;
-    float sun_distance = length(to_sun);
-    float3 light = to_sun / sun_distance;
-    float cosine = dot(normal, light);
+    real3 point = origin + t * direction;
+    real3 normal = normalize(point - convert_real3(spheres[index].center_radius.xyz));
+    real3 to_sun = convert_real3(info.sun.xyz) - point;
+    real sun_distance = length(to_sun);
+    real3 light = to_sun / sun_distance;
+    real cosine = dot(normal, light);
     if (cosine <= 0.0f)
         return (float3)(0.0f); /* facing away: no shadow ray needed */
-    ClrHit blocker = intersect_scene(point, light, sun_distance, CLR_HIT_SPHERE, index, CLR_SCENE_ARGS);
-    return blocker.kind == CLR_HIT_NONE ? ambient * cosine : (float3)(0.0f);
+    Hit blocker = intersect_scene(point, light, sun_distance, CLR_HIT_SPHERE, index, CLR_SCENE_ARGS);
+    return blocker.kind == CLR_HIT_NONE ? ambient * (float)cosine : (float3)(0.0f);
 #else
     return ambient;
 #endif
@@ -35,12 +35,12 @@ float3 sphere_color(int index, float3 origin, float3 direction, float t, CLR_SCE
 
 /* The colour a billboard shows at distance t: its texel (opaque, or the ray would have
  * passed through) or its flat colour. Billboards are pictures and stay unlit. */
-float3 billboard_color(int index, float3 origin, float3 direction, float t, CLR_SCENE_PARAMS)
+float3 billboard_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
 {
     __global const ClrBillboard* billboard = &billboards[index];
 #if CLR_FEATURE_TEXTURES
     if (billboard->flags & CLR_SURFACE_TEXTURED) {
-        float2 ab = billboard_coords(billboard, origin, direction, t);
+        real2 ab = billboard_coords(billboard, origin, direction, t);
         return texel_color(billboard_texel(billboard, texels, ab.x, ab.y));
     }
 #endif
@@ -48,7 +48,7 @@ float3 billboard_color(int index, float3 origin, float3 direction, float t, CLR_
 }
 
 /* Shades `hit` of the ray (origin, direction) after `reflections` mirror bounces. */
-ShadeResult shade_hit(ClrHit hit, float3 origin, float3 direction, int reflections, CLR_SCENE_PARAMS)
+ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, CLR_SCENE_PARAMS)
 {
     ShadeResult result;
     result.bounces = 0;
@@ -58,9 +58,9 @@ ShadeResult shade_hit(ClrHit hit, float3 origin, float3 direction, int reflectio
 #if CLR_FEATURE_MIRRORS
     uint flags = hit.kind == CLR_HIT_SPHERE ? spheres[hit.index].flags : billboards[hit.index].flags;
     if (flags & CLR_SURFACE_MIRROR) {
-        float3 point = origin + hit.t * direction;
-        float3 normal = hit.kind == CLR_HIT_SPHERE ? normalize(point - spheres[hit.index].center_radius.xyz)
-                                                   : billboards[hit.index].normal.xyz;
+        real3 point = origin + hit.t * direction;
+        real3 normal = hit.kind == CLR_HIT_SPHERE ? normalize(point - convert_real3(spheres[hit.index].center_radius.xyz))
+                                                  : convert_real3(billboards[hit.index].normal.xyz);
         if (dot(direction, normal) >= 0.0f) {
             result.color = (float3)(0.0f); /* the back of a mirror is black */
             return result;
@@ -91,11 +91,15 @@ __kernel void shade(__global const ClrRay* rays, __global const ClrHit* hits, in
     int i = get_global_id(0);
     if (i >= ray_count)
         return;
-    ShadeResult result = shade_hit(hits[i], rays[i].origin.xyz, rays[i].direction.xyz, reflections,
-                                   CLR_SCENE_ARGS);
+    Hit hit;
+    hit.t = hits[i].t;
+    hit.kind = hits[i].kind;
+    hit.index = hits[i].index;
+    ShadeResult result = shade_hit(hit, convert_real3(rays[i].origin.xyz), convert_real3(rays[i].direction.xyz),
+                                   reflections, CLR_SCENE_ARGS);
     colors[i] = result.bounces ? (float4)(0.0f) : (float4)(result.color, 1.0f);
     ClrRay next;
-    next.origin = (float4)(result.bounces ? result.next_origin : (float3)(0.0f), 0.0f);
-    next.direction = (float4)(result.bounces ? result.next_direction : (float3)(0.0f), 0.0f);
+    next.origin = (float4)(result.bounces ? convert_float3(result.next_origin) : (float3)(0.0f), 0.0f);
+    next.direction = (float4)(result.bounces ? convert_float3(result.next_direction) : (float3)(0.0f), 0.0f);
     next_rays[i] = next;
 }

@@ -51,6 +51,11 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--spp", options.samples_per_pixel,
                    "Samples per pixel (anti-aliasing); overrides the scene's clrender.spp (default 1: pixel centres)")
         ->check(CLI::Range(1, 4096));
+    std::string precision = "float";
+    app.add_option("--precision", precision,
+                   "Arithmetic of the kernels' geometry: float (default) or double (needs a device with "
+                   "cl_khr_fp64, as PoCL's CPU device has)")
+        ->check(CLI::IsMember({"float", "double"}));
     app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
     app.add_flag("--placeholders", options.placeholders,
                  "Render a magenta checkerboard for billboard images that are missing, instead of failing");
@@ -67,6 +72,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             options.width = width;
             options.height = height;
         }
+        options.double_precision = precision == "double";
         if (options.scene_path.empty() && !options.list_devices)
             throw CLI::RequiredError("a scene file");
     } catch (const CLI::ParseError& error) {

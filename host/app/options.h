@@ -18,6 +18,7 @@ struct Options {
     std::optional<int> width;    // --size
     std::optional<int> height;
     std::optional<int> samples_per_pixel;  // --spp
+    bool double_precision = false;         // --precision double
     bool list_devices = false;
     bool print_frame_count = false;  // --frame-count: print the animation's frame count, exit
     bool reference = false;      // render with the double-precision host reference

@@ -76,6 +76,7 @@ std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene
     if (options.reference) return make_reference_frame_renderer(scene);
     RendererOptions renderer_options;
     renderer_options.kernel_dir = options.kernel_dir;
+    renderer_options.double_precision = options.double_precision;
     return make_opencl_frame_renderer(scene, options.device, renderer_options);
 }
 

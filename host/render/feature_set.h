@@ -16,8 +16,10 @@ struct FeatureSet {
     bool alpha = false;        // a shown image has a texel with alpha below 255
     bool sun = false;          // sun lighting with shadow rays
     bool mirrors = false;      // a mirror surface
+    bool double_precision = false;  // geometry in double (--precision double), not a scene property
 
-    // Everything on: the general kernel that every specialised variant must match.
+    // Every scene feature on: the general kernel that every specialised variant must match
+    // (in the same precision).
     static FeatureSet all();
     static FeatureSet of(const Scene& scene);
 

@@ -43,6 +43,10 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     : device_(device), scene_(scene), screen_tiles_(options.screen_tiles) {
     CompiledScene compiled = compile_scene(scene);
     features_ = options.features.value_or(compiled.features);
+    features_.double_precision = options.double_precision;
+    if (options.double_precision && device_.device().getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() == 0)
+        throw DeviceError("'" + device_.entry().device_name +
+                          "' has no double precision (cl_khr_fp64); use --precision float or another device");
 
     auto start = std::chrono::steady_clock::now();
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());

@@ -22,6 +22,8 @@ struct RendererOptions {
     // Cull primary rays by screen tiles, 16 rays at a time (render_packets); off: every pixel tests every object
     // (the brute-force kernel, which the tests use as the general reference).
     bool screen_tiles = true;
+    // Intersect and shade in double (the device needs cl_khr_fp64; DeviceError otherwise).
+    bool double_precision = false;
 };
 
 struct FrameTiming {

@@ -4,15 +4,49 @@
  * path must compute bit-identical distances from the same formulas, on every device. */
 #pragma OPENCL FP_CONTRACT OFF
 
+/* Geometry runs in `real`: float by default, double with CLR_FEATURE_DOUBLE (--precision
+ * double, on devices with cl_khr_fp64). Colours stay float; the shared structs stay float4. */
+#if CLR_FEATURE_DOUBLE
+#pragma OPENCL EXTENSION cl_khr_fp64 : enable
+typedef double real;
+typedef double2 real2;
+typedef double3 real3;
+typedef double16 real16;
+typedef long16 mask16; /* what comparing two real16 gives */
+#define convert_real3 convert_double3
+#define convert_real16 convert_double16
+#else
+typedef float real;
+typedef float2 real2;
+typedef float3 real3;
+typedef float16 real16;
+typedef int16 mask16;
+#define convert_real3 convert_float3
+#define convert_real16 convert_float16
+#endif
+
+/* A ray inside the kernels, in `real`; ClrRay is its float form in buffers. */
+typedef struct {
+    real3 origin;
+    real3 direction; /* unit length */
+} Ray;
+
+/* A hit inside the kernels; ClrHit is its float form in buffers. */
+typedef struct {
+    real t;    /* distance along the unit direction; +inf when kind is CLR_HIT_NONE */
+    int kind;  /* CLR_HIT_* */
+    int index; /* sphere or billboard index; -1 when kind is CLR_HIT_NONE */
+} Hit;
+
 /* Dot product written out, in a fixed order. The built-in dot() may be computed in another
  * order or with FMAs, which would make the scalar and 16-lane paths differ in the last bit. */
-float dot3(float3 a, float3 b)
+real dot3(real3 a, real3 b)
 {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
 /* v / |v| with dot3, for the same reason. */
-float3 unit3(float3 v)
+real3 unit3(real3 v)
 {
     return v / sqrt(dot3(v, v));
 }
@@ -25,7 +59,7 @@ uchar color_to_byte(float c)
 }
 
 /* Mirror direction of d about the unit normal n. */
-float3 reflect_direction(float3 d, float3 n)
+real3 reflect_direction(real3 d, real3 n)
 {
     return d - 2.0f * dot(d, n) * n;
 }

@@ -3,12 +3,12 @@
 
 /* The texel shown at billboard coordinates (a, b) in [0, 1]: column floor(a*W), row
  * floor(b*H), clamped so that a == 1 or b == 1 stays on the image (SPEC 2, Billboards). */
-uchar4 billboard_texel(__global const ClrBillboard* billboard, __global const uchar4* texels, float a, float b)
+uchar4 billboard_texel(__global const ClrBillboard* billboard, __global const uchar4* texels, real a, real b)
 {
     int width = billboard->texture_width;
     int height = billboard->texture_height;
-    int col = clamp((int)floor(a * (float)width), 0, width - 1);
-    int row = clamp((int)floor(b * (float)height), 0, height - 1);
+    int col = clamp((int)floor(a * (real)width), 0, width - 1);
+    int row = clamp((int)floor(b * (real)height), 0, height - 1);
     return texels[billboard->texel_offset + (uint)row * (uint)width + (uint)col];
 }
 

@@ -225,3 +225,22 @@ TEST(Cli, SamplesPerPixelSmoothEdges) {
 
 }  // namespace
 }  // namespace clr
+
+namespace clr {
+namespace {
+
+TEST(Cli, PrecisionFloatOrDouble) {
+    TempFolder folder;
+    folder.write("small.json", kSmallScene);
+    ASSERT_EQ(run_clrender("small.json -q -o float.png --precision float", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("small.json -q -o double.png --precision double", folder.path()).exit_code, 0);
+    auto in_float = load_image(folder.file("float.png"));
+    auto in_double = load_image(folder.file("double.png"));
+    int differing = 0;
+    for (std::size_t i = 0; i < in_float->rgba.size(); ++i) differing += in_float->rgba[i] != in_double->rgba[i];
+    EXPECT_LE(differing, 12) << "the two precisions may differ on silhouettes only";
+    EXPECT_EQ(run_clrender("small.json -q --precision half", folder.path()).exit_code, 1);
+}
+
+}  // namespace
+}  // namespace clr

@@ -61,10 +61,12 @@ TEST(FeatureVariants, EmptyScene) { expect_same_as_general(camera_on(testing::ma
 TEST(FeatureSet, OptionsAreDeterministicAndComplete) {
     FeatureSet none;
     EXPECT_EQ(none.build_options(),
-              "-DCLR_FEATURE_ALPHA=0 -DCLR_FEATURE_BILLBOARDS=0 -DCLR_FEATURE_MIRRORS=0 -DCLR_FEATURE_SPHERES=0 "
+              "-DCLR_FEATURE_ALPHA=0 -DCLR_FEATURE_BILLBOARDS=0 -DCLR_FEATURE_DOUBLE=0 -DCLR_FEATURE_MIRRORS=0 "
+              "-DCLR_FEATURE_SPHERES=0 "
               "-DCLR_FEATURE_SUN=0 -DCLR_FEATURE_TEXTURES=0");
     EXPECT_EQ(FeatureSet::all().build_options(),
-              "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_MIRRORS=1 -DCLR_FEATURE_SPHERES=1 "
+              "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_DOUBLE=0 -DCLR_FEATURE_MIRRORS=1 "
+              "-DCLR_FEATURE_SPHERES=1 "
               "-DCLR_FEATURE_SUN=1 -DCLR_FEATURE_TEXTURES=1");
 }
 
@@ -110,6 +112,31 @@ TEST(ScreenTiles, CulledRenderEqualsBruteForce) {
         Image tiled = testing::render_with_kernels(scene);
         Image reference = testing::render_with_kernels(scene, brute_force);
         EXPECT_TRUE(tiled.rgba == reference.rgba);
+    }
+}
+
+}  // namespace
+}  // namespace clr
+
+namespace clr {
+namespace {
+
+// The double-precision kernels: their 16-lane path equals their scalar path, byte for byte.
+TEST(DoublePrecision, PacketsEqualBruteForceAndAntialiasingWorks) {
+    for (std::uint32_t seed : {220u, 221u}) {
+        Scene scene = testing::make_random_scene(seed, 20, 20);
+        scene.camera_path = {{{2, 3, 28}, {0, 0, 0}}};
+        scene.width = 70;
+        scene.height = 50;
+        scene.has_sun = true;
+        scene.sun_location = {15, 25, 20};
+        scene.spheres[2].is_mirror = true;
+        scene.sampling.samples_per_pixel = seed == 221u ? 3 : 1;
+        RendererOptions packets, brute_force;
+        packets.double_precision = brute_force.double_precision = true;
+        brute_force.screen_tiles = false;
+        EXPECT_TRUE(testing::render_with_kernels(scene, packets).rgba == testing::render_with_kernels(scene, brute_force).rgba)
+            << "seed " << seed;
     }
 }
 

@@ -11,9 +11,16 @@
 namespace clr {
 namespace {
 
+// Checks float and double kernels; double must be at least as close as float.
 void expect_close_to_reference(const Scene& scene, const std::string& what) {
-    testing::ImageComparison comparison =
-        testing::compare_images(testing::render_with_kernels(scene), testing::render_with_reference(scene));
+    Image reference = testing::render_with_reference(scene);
+    RendererOptions in_double;
+    in_double.double_precision = true;
+    testing::ImageComparison double_comparison = testing::compare_images(testing::render_with_kernels(scene, in_double), reference);
+    EXPECT_LE(double_comparison.differing_fraction(), 0.001) << what << " in double";
+    testing::ImageComparison comparison = testing::compare_images(testing::render_with_kernels(scene), reference);
+    std::cout << what << " (double): " << double_comparison.differing << " pixels differ by more than 1/255, largest "
+              << double_comparison.max_channel_difference << "/255\n";
     std::cout << what << ": " << comparison.differing << " of " << comparison.pixels << " pixels differ by more than 1/255 ("
               << 100 * comparison.differing_fraction() << "%), largest difference " << comparison.max_channel_difference
               << "/255\n";
