@@ -5,8 +5,9 @@
  * run-time values (ClrSceneInfo), so one compiled program serves every scene of a kind. */
 #define CLR_SCENE_PARAMS                                                                      \
     __global const ClrSphere *spheres, __global const ClrBillboard *billboards,              \
-        __global const uchar4 *texels, ClrSceneInfo info
-#define CLR_SCENE_ARGS spheres, billboards, texels, info
+        __global const uchar4 *texels, ClrSceneInfo info, __global const ClrBvhNode *bvh_nodes, \
+        __global const uint *bvh_items
+#define CLR_SCENE_ARGS spheres, billboards, texels, info, bvh_nodes, bvh_items
 
 /* Distance along the unit direction to the nearest intersection with t > 0, or +inf.
  * Float32-robust form (Ray Tracing Gems, ch. 7): the discriminant is computed from the
@@ -65,11 +66,94 @@ real billboard_distance(__global const ClrBillboard* billboard, __global const u
     return t;
 }
 
+/* Whether a hit at distance t on surface (kind, index) beats `best`: nearer, or as near and
+ * first in the order spheres, then billboards, by index (the brute-force loops' order), so
+ * that any visiting order finds the brute-force answer, ties included. */
+bool hit_beats(real t, int kind, int index, Hit best)
+{
+    if (t != best.t)
+        return t < best.t;
+    return t < INFINITY && (kind < best.kind || (kind == best.kind && index < best.index));
+}
+
+#if CLR_FEATURE_BVH
+/* Whether the ray can meet the box before t_max (slab test). A zero direction component is
+ * replaced by a tiny one, so that no 0 * inf makes a NaN; the exit distance gets a small
+ * allowance for rounding (the boxes themselves are rounded outwards on the host). */
+bool box_reachable(__global const ClrBvhNode* node, real3 origin, real3 inverse, real t_max)
+{
+    real3 t0 = (convert_real3(node->lower.xyz) - origin) * inverse;
+    real3 t1 = (convert_real3(node->upper.xyz) - origin) * inverse;
+    real3 near = fmin(t0, t1), far = fmax(t0, t1);
+    real enter = fmax(fmax(near.x, near.y), fmax(near.z, (real)0.0f));
+    real leave = fmin(fmin(far.x, far.y), far.z) * (real)1.000001f;
+    return enter <= leave && enter <= t_max;
+}
+
+real3 safe_inverse(real3 d)
+{
+    real3 tiny = copysign((real3)(1e-30f), d);
+    return (real3)(1.0f) / select(d, tiny, fabs(d) < (real3)(1e-30f));
+}
+
+/* intersect_scene() through the BVH: the same answer, visiting only the boxes the ray meets
+ * before its best hit so far. */
+Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
+{
+    Hit hit;
+    hit.t = t_max;
+    hit.kind = CLR_HIT_NONE;
+    hit.index = -1;
+    real3 inverse = safe_inverse(direction);
+    uint stack[CLR_BVH_STACK];
+    int top = 0;
+    if (info.sphere_count + info.billboard_count > 0)
+        stack[top++] = 0;
+    while (top > 0) {
+        __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
+        if (!box_reachable(node, origin, inverse, hit.t))
+            continue;
+        if (node->count == 0) {
+            stack[top++] = node->first + 1;
+            stack[top++] = node->first;
+            continue;
+        }
+        for (uint k = node->first; k < node->first + node->count; ++k) {
+            uint item = bvh_items[k];
+            int index = (int)(item & ~CLR_TILE_BILLBOARD);
+            int kind = (item & CLR_TILE_BILLBOARD) ? CLR_HIT_BILLBOARD : CLR_HIT_SPHERE;
+            if (kind == skip_kind && index == skip_index)
+                continue;
+            real t = INFINITY;
+#if CLR_FEATURE_BILLBOARDS
+            if (kind == CLR_HIT_BILLBOARD)
+                t = billboard_distance(&billboards[index], texels, origin, direction, INFINITY);
+#endif
+#if CLR_FEATURE_SPHERES
+            if (kind == CLR_HIT_SPHERE)
+                t = sphere_distance(spheres[index].center_radius, origin, direction);
+#endif
+            if (hit_beats(t, kind, index, hit)) {
+                hit.t = t;
+                hit.kind = kind;
+                hit.index = index;
+            }
+        }
+    }
+    if (hit.kind == CLR_HIT_NONE)
+        hit.t = INFINITY;
+    return hit;
+}
+#endif
+
 /* The nearest surface along the ray with 0 < t < t_max. The surface (skip_kind,
  * skip_index) is left out: a secondary ray leaves a convex surface on its outer side and
  * cannot meet it again, so excluding it is exact and needs no scale-dependent epsilon. */
 Hit intersect_scene(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
 {
+#if CLR_FEATURE_BVH
+    return intersect_bvh(origin, direction, t_max, skip_kind, skip_index, CLR_SCENE_ARGS);
+#else
     Hit hit;
     hit.t = t_max;
     hit.kind = CLR_HIT_NONE;
@@ -101,6 +185,7 @@ Hit intersect_scene(real3 origin, real3 direction, real t_max, int skip_kind, in
     if (hit.kind == CLR_HIT_NONE)
         hit.t = INFINITY;
     return hit;
+#endif
 }
 
 /* The float form of a hit, for buffers. */

@@ -8,6 +8,7 @@ FeatureSet FeatureSet::all() {
     FeatureSet features;
     features.spheres = features.billboards = features.textures = true;
     features.alpha = features.sun = features.mirrors = true;
+    features.bvh = true;
     return features;
 }
 
@@ -23,6 +24,9 @@ FeatureSet FeatureSet::of(const Scene& scene) {
         features.textures |= shows_image;
         features.alpha |= shows_image && billboard.image->has_transparency();
     }
+    // Primary rays are culled by screen tiles; shadow and mirror rays test every object
+    // unless a BVH is compiled in, which pays from a few dozen objects on.
+    features.bvh = (features.sun || features.mirrors) && scene.spheres.size() + scene.billboards.size() > kBvhMinObjects;
     return features;
 }
 
@@ -30,7 +34,7 @@ std::string FeatureSet::build_options() const {
     // std::map keeps the macros sorted by name.
     const std::map<std::string, bool> macros = {
         {"CLR_FEATURE_ALPHA", alpha},         {"CLR_FEATURE_BILLBOARDS", billboards},
-        {"CLR_FEATURE_DOUBLE", double_precision},
+        {"CLR_FEATURE_BVH", bvh},             {"CLR_FEATURE_DOUBLE", double_precision},
         {"CLR_FEATURE_MIRRORS", mirrors},     {"CLR_FEATURE_SPHERES", spheres},
         {"CLR_FEATURE_SUN", sun},             {"CLR_FEATURE_TEXTURES", textures},
     };

@@ -9,6 +9,9 @@
 
 namespace clr {
 
+// Scenes with secondary rays and more objects than this trace them through a BVH.
+constexpr std::size_t kBvhMinObjects = 16;
+
 struct FeatureSet {
     bool spheres = false;      // at least one sphere
     bool billboards = false;   // at least one billboard
@@ -17,6 +20,7 @@ struct FeatureSet {
     bool sun = false;          // sun lighting with shadow rays
     bool mirrors = false;      // a mirror surface
     bool double_precision = false;  // geometry in double (--precision double), not a scene property
+    bool bvh = false;          // secondary rays (shadows, mirrors) among enough objects to need a BVH
 
     // Every scene feature on: the general kernel that every specialised variant must match
     // (in the same precision).

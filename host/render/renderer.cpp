@@ -54,6 +54,8 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     try {
         render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
         texels_ = upload(device_.context(), compiled.texels);
+        if (features_.bvh) bvh_ = build_bvh(scene_);  // otherwise empty: never read
+        bvh_items_ = upload(device_.context(), bvh_.items);
         upload_geometry(compiled);
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
     } catch (const cl::Error& error) {
@@ -65,18 +67,21 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
 void Renderer::upload_geometry(const CompiledScene& compiled) {
     spheres_ = upload(device_.context(), compiled.spheres);
     billboards_ = upload(device_.context(), compiled.billboards);
+    bvh_nodes_ = upload(device_.context(), compile_bvh(bvh_, origin_));
     info_ = compiled.info;
     bind_scene(render_kernel_, 3);
 }
 
 void Renderer::set_origin(const Vec3& origin) {
     if (origin == origin_) return;
+    Vec3 previous = origin_;
+    origin_ = origin;
     try {
         upload_geometry(compile_scene(scene_, origin));
     } catch (const cl::Error& error) {
+        origin_ = previous;
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
-    origin_ = origin;
 }
 
 Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame) {
@@ -93,6 +98,8 @@ void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
     kernel.setArg(first + 1, billboards_);
     kernel.setArg(first + 2, texels_);
     kernel.setArg(first + 3, info_);
+    kernel.setArg(first + 4, bvh_nodes_);
+    kernel.setArg(first + 5, bvh_items_);
 }
 
 static bool is_out_of_memory(const cl::Error& error) {
@@ -114,12 +121,13 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
     render_kernel_.setArg(0, camera);
     render_kernel_.setArg(1, static_cast<cl_int>(first_row));
     render_kernel_.setArg(2, static_cast<cl_int>(rows));
-    render_kernel_.setArg(7, pixels_);
+    const int after_scene = 3 + kSceneArgs;
+    render_kernel_.setArg(after_scene, pixels_);
     if (screen_tiles_) {
-        render_kernel_.setArg(8, tile_offsets_);
-        render_kernel_.setArg(9, tile_items_);
-        render_kernel_.setArg(10, tile_nearest_);
-        render_kernel_.setArg(11, static_cast<cl_int>(tiles_x_));
+        render_kernel_.setArg(after_scene + 1, tile_offsets_);
+        render_kernel_.setArg(after_scene + 2, tile_items_);
+        render_kernel_.setArg(after_scene + 3, tile_nearest_);
+        render_kernel_.setArg(after_scene + 4, static_cast<cl_int>(tiles_x_));
     }
     // render_packets: one work-item per 16 pixels of a row; render: one per pixel.
     std::size_t columns = screen_tiles_ ? (camera.width + kPacketWidth - 1) / kPacketWidth : camera.width;

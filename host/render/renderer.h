@@ -8,6 +8,7 @@
 #include <string>
 
 #include "device/device_context.h"
+#include "render/bvh.h"
 #include "render/compiled_scene.h"
 #include "scene/scene.h"
 
@@ -59,6 +60,7 @@ public:
     // argument `first` on in the order of CLR_SCENE_PARAMS (spheres, billboards, texels, info).
     const cl::Program& program() const { return program_; }
     void bind_scene(cl::Kernel& kernel, int first) const;
+    static constexpr int kSceneArgs = 6;  // arguments bind_scene() sets
 
 private:
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
@@ -78,6 +80,8 @@ private:
     cl::Buffer tile_offsets_, tile_items_, tile_nearest_;
     int tiles_x_ = 0;
     cl::Buffer spheres_, billboards_, texels_;
+    Bvh bvh_;
+    cl::Buffer bvh_nodes_, bvh_items_;
     cl::Buffer pixels_;
     std::size_t pixels_capacity_ = 0;
     double build_ms_ = 0;

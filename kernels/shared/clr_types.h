@@ -86,6 +86,17 @@ typedef struct {
     clr_int pad0;
 } ClrHit;
 
+/* A node of the bounding volume hierarchy used by secondary rays (host/render/bvh.h). Trees
+ * are at most CLR_BVH_STACK - 1 levels deep, so a traversal stack of CLR_BVH_STACK suffices. */
+#define CLR_BVH_STACK 48
+typedef struct {
+    clr_float4 lower; /* xyz = lower corner of the bounds */
+    clr_float4 upper; /* xyz = upper corner */
+    clr_uint first;   /* inner node: left child (the right child is first + 1); leaf: first item */
+    clr_uint count;   /* leaf: number of items (object indices, CLR_TILE_BILLBOARD for billboards); 0: inner */
+    clr_uint pad0, pad1;
+} ClrBvhNode;
+
 /* Everything about the scene that is not per object and not per frame. */
 typedef struct {
     clr_float4 background; /* xyz = background colour */
@@ -103,6 +114,7 @@ static_assert(sizeof(ClrBillboard) == 96, "ClrBillboard layout");
 static_assert(sizeof(ClrRay) == 32, "ClrRay layout");
 static_assert(sizeof(ClrHit) == 16, "ClrHit layout");
 static_assert(sizeof(ClrSceneInfo) == 48, "ClrSceneInfo layout");
+static_assert(sizeof(ClrBvhNode) == 48, "ClrBvhNode layout");
 #endif
 
 #endif /* CLR_TYPES_H */

@@ -61,11 +61,13 @@ TEST(FeatureVariants, EmptyScene) { expect_same_as_general(camera_on(testing::ma
 TEST(FeatureSet, OptionsAreDeterministicAndComplete) {
     FeatureSet none;
     EXPECT_EQ(none.build_options(),
-              "-DCLR_FEATURE_ALPHA=0 -DCLR_FEATURE_BILLBOARDS=0 -DCLR_FEATURE_DOUBLE=0 -DCLR_FEATURE_MIRRORS=0 "
+              "-DCLR_FEATURE_ALPHA=0 -DCLR_FEATURE_BILLBOARDS=0 -DCLR_FEATURE_BVH=0 -DCLR_FEATURE_DOUBLE=0 "
+              "-DCLR_FEATURE_MIRRORS=0 "
               "-DCLR_FEATURE_SPHERES=0 "
               "-DCLR_FEATURE_SUN=0 -DCLR_FEATURE_TEXTURES=0");
     EXPECT_EQ(FeatureSet::all().build_options(),
-              "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_DOUBLE=0 -DCLR_FEATURE_MIRRORS=1 "
+              "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_BVH=1 -DCLR_FEATURE_DOUBLE=0 "
+              "-DCLR_FEATURE_MIRRORS=1 "
               "-DCLR_FEATURE_SPHERES=1 "
               "-DCLR_FEATURE_SUN=1 -DCLR_FEATURE_TEXTURES=1");
 }
@@ -138,6 +140,51 @@ TEST(DoublePrecision, PacketsEqualBruteForceAndAntialiasingWorks) {
         EXPECT_TRUE(testing::render_with_kernels(scene, packets).rgba == testing::render_with_kernels(scene, brute_force).rgba)
             << "seed " << seed;
     }
+}
+
+}  // namespace
+}  // namespace clr
+
+namespace clr {
+namespace {
+
+// Shadow and mirror rays through the BVH give exactly the brute-force image, in float and in
+// double, with hundreds of objects, mirrors bouncing between them, and the eye inside the
+// scene.
+TEST(Bvh, SecondaryRaysThroughTheBvhEqualBruteForce) {
+    for (std::uint32_t seed : {230u, 231u, 232u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        Scene scene = testing::make_random_scene(seed, 150, 150);
+        scene.camera_path = {{{seed == 232u ? 1.0 : 6.0, 4, seed == 232u ? 2.0 : 34.0}, {0, 0, 0}}};
+        scene.width = 64;
+        scene.height = 48;
+        scene.has_sun = true;
+        scene.sun_location = {25, 40, 30};
+        scene.max_depth = 4;
+        for (std::size_t i = 0; i < scene.spheres.size(); i += 5) scene.spheres[i].is_mirror = true;
+        for (std::size_t i = 0; i < scene.billboards.size(); i += 7) scene.billboards[i].is_mirror = true;
+        FeatureSet features = FeatureSet::of(scene);
+        ASSERT_TRUE(features.bvh);
+        for (bool in_double : {false, true}) {
+            RendererOptions with_bvh, brute_force;
+            with_bvh.double_precision = brute_force.double_precision = in_double;
+            brute_force.features = features;
+            brute_force.features->bvh = false;
+            EXPECT_TRUE(testing::render_with_kernels(scene, with_bvh).rgba ==
+                        testing::render_with_kernels(scene, brute_force).rgba)
+                << (in_double ? "double" : "float");
+        }
+    }
+}
+
+TEST(Bvh, OnlyScenesWithSecondaryRaysAndManyObjectsGetOne) {
+    Scene many = testing::make_random_scene(240, 30, 30);
+    EXPECT_FALSE(FeatureSet::of(many).bvh) << "flat shading: primary rays only, culled by screen tiles";
+    many.has_sun = true;
+    EXPECT_TRUE(FeatureSet::of(many).bvh);
+    Scene few = testing::make_random_scene(241, 5, 5);
+    few.has_sun = true;
+    EXPECT_FALSE(FeatureSet::of(few).bvh);
 }
 
 }  // namespace

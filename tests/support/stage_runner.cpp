@@ -45,7 +45,7 @@ std::vector<ClrHit> StageRunner::intersect(const std::vector<ClrRay>& rays) {
     kernel.setArg(0, ray_buffer);
     kernel.setArg(1, static_cast<cl_int>(rays.size()));
     renderer_.bind_scene(kernel, 2);
-    kernel.setArg(6, hits);
+    kernel.setArg(2 + Renderer::kSceneArgs, hits);
     run_1d(kernel, rays.size());
     return read_back<ClrHit>(hits, rays.size());
 }
@@ -61,8 +61,8 @@ ShadeOutput StageRunner::shade(const std::vector<ClrRay>& rays, const std::vecto
     kernel.setArg(2, static_cast<cl_int>(rays.size()));
     kernel.setArg(3, static_cast<cl_int>(reflections));
     renderer_.bind_scene(kernel, 4);
-    kernel.setArg(8, colors);
-    kernel.setArg(9, next_rays);
+    kernel.setArg(4 + Renderer::kSceneArgs, colors);
+    kernel.setArg(5 + Renderer::kSceneArgs, next_rays);
     run_1d(kernel, rays.size());
     return {read_back<cl_float4>(colors, rays.size()), read_back<ClrRay>(next_rays, rays.size())};
 }

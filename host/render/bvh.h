@@ -1,0 +1,36 @@
+// A bounding volume hierarchy over a scene's spheres and billboards, for the rays that screen
+// tiles cannot cull: shadow rays and mirror reflections. Built once per scene on the host
+// (binned surface-area heuristic); its bounds are re-expressed relative to each frame's
+// origin when uploaded, like the rest of the geometry (see compile_scene).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+#include "scene/scene.h"
+#include "shared/clr_types.h"
+
+namespace clr {
+
+// Deepest leaf; the kernels' traversal stack (CLR_BVH_STACK) holds one entry per level.
+constexpr int kMaxBvhDepth = CLR_BVH_STACK - 1;
+
+struct Bvh {
+    struct Node {
+        Vec3 lower, upper;        // bounds, in scene coordinates
+        std::uint32_t first = 0;  // inner: index of the left child (the right one follows it);
+                                  // leaf: first entry in `items`
+        std::uint32_t count = 0;  // leaf: number of items; 0 for an inner node
+    };
+    std::vector<Node> nodes;          // nodes[0] is the root (absent for an empty scene)
+    std::vector<std::uint32_t> items;  // object index, with CLR_TILE_BILLBOARD for billboards
+};
+
+Bvh build_bvh(const Scene& scene);
+
+// The device form, bounds relative to `origin` and rounded outwards to float so that they
+// still contain every object after rounding.
+std::vector<ClrBvhNode> compile_bvh(const Bvh& bvh, const Vec3& origin);
+
+}  // namespace clr
