@@ -2,17 +2,37 @@
 // at most 0.1% of pixels may differ by more than 1/255 (SPEC: accurate to the last pixel).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
 
 #include "support/image_compare.h"
 #include "support/render_helpers.h"
+#include "render/device_camera.h"
 #include "support/scene_builder.h"
+#include "support/stage_runner.h"
 
 namespace clr {
 namespace {
 
 // Checks float and double kernels; double must be at least as close as float.
+// No NaN or infinite colour anywhere, checked on the stage kernels' float outputs (a NaN
+// would be hidden by the conversion to bytes): primary rays, their hits, their shading.
+void expect_no_nan(const Scene& scene, const std::string& what) {
+    testing::StageRunner runner(scene);
+    const CameraKey& key = scene.camera_path.front();
+    std::vector<ClrRay> rays = runner.raygen(make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height));
+    std::vector<ClrHit> hits = runner.intersect(rays);
+    testing::ShadeOutput shaded = runner.shade(rays, hits, 0);
+    int bad = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        bad += std::isnan(hits[i].t);
+        for (int k = 0; k < 4; ++k) bad += !std::isfinite(shaded.colors[i].s[k]) || !std::isfinite(rays[i].direction.s[k]);
+    }
+    EXPECT_EQ(bad, 0) << what << ": NaN or infinite values";
+}
+
 void expect_close_to_reference(const Scene& scene, const std::string& what) {
+    expect_no_nan(scene, what);
     Image reference = testing::render_with_reference(scene);
     RendererOptions in_double;
     in_double.double_precision = true;
