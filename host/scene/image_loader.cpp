@@ -72,6 +72,39 @@ FileFormat detect_format(const Bytes& bytes) {
     throw ImageError("unsupported image format (PNG, JPEG, PPM P3 and P6 are read)");
 }
 
+// The largest image read, in pixels: as large as the largest frame clrender renders
+// (8192 x 8192, 256 MiB as RGBA), more than any billboard needs. A compressed file can claim
+// a huge raster in a few bytes (the image fuzzer found a 1.6 KB JPEG that decodes to
+// 49680 x 255 texels, and the decoders accept up to 2 GiB of pixels), so the size is checked
+// from the header, before anything is allocated or decoded. PPM needs no such limit: its
+// raster is stored uncompressed, so a header larger than the file is refused as truncated.
+constexpr long long kMaxPixels = 8192LL * 8192LL;
+
+void check_pixel_count(long long width, long long height, const char* format_name) {
+    if (width * height <= kMaxPixels) return;
+    throw ImageError(std::string(format_name) + " image of " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels is larger than the limit of " + std::to_string(kMaxPixels) + " pixels (8192 x 8192)");
+}
+
+// `text` with every byte that is not printable ASCII written as \xNN: stb's reasons can
+// quote bytes of the file (an unknown PNG chunk's type), and a message must stay one
+// printable line that a file cannot use to forge output or drive the terminal.
+std::string printable(const std::string& text) {
+    static const char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7F) {
+            out += c;
+        } else {
+            out += "\\x";
+            out += kHex[byte >> 4];
+            out += kHex[byte & 15];
+        }
+    }
+    return out;
+}
+
 // A sample in 0..maxval as a byte in 0..255, rounded to nearest (halves up).
 std::uint8_t scale_to_byte(std::uint32_t sample, std::uint32_t maxval) {
     return static_cast<std::uint8_t>((sample * 255 + maxval / 2) / maxval);
@@ -86,13 +119,17 @@ struct StbFree {
 
 ImageError stb_error(const char* format_name) {
     const char* reason = stbi_failure_reason();
-    return ImageError(std::string("corrupt ") + format_name + ": " + (reason ? reason : "unknown error"));
+    return ImageError(std::string("corrupt ") + format_name + ": " + printable(reason ? reason : "unknown error"));
 }
 
 // Decodes to 8-bit RGBA; stb fills in alpha 255 for images without alpha, and expands grey.
 void decode_with_stb(const Bytes& bytes, const char* format_name, Image& image) {
     const int length = static_cast<int>(bytes.size());
     int channels_in_file = 0;
+    // The header alone gives the size (stb reads no pixels for this).
+    int width = 0, height = 0;
+    if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels_in_file)) throw stb_error(format_name);
+    check_pixel_count(width, height, format_name);
     // 16-bit files are read at full depth and rounded here: stbi_load would truncate
     // (value >> 8), which is up to one step darker than round(value * 255 / 65535).
     if (stbi_is_16_bit_from_memory(bytes.data(), length)) {
@@ -109,6 +146,40 @@ void decode_with_stb(const Bytes& bytes, const char* format_name, Image& image) 
     if (!pixels) throw stb_error(format_name);
     const std::size_t count = static_cast<std::size_t>(image.width) * image.height * kRgba;
     image.rgba.assign(pixels.get(), pixels.get() + count);
+}
+
+// stb_image 2.27, the version Debian 12 packages, trusts the code counts of a JPEG Huffman
+// table: counts that add up to more than 256 make it write past its 256-entry tables, a
+// heap overflow with bytes taken from the file (nothings/stb issue #1289, fixed upstream
+// after 2.27; found here by fuzz/image_fuzzer.cpp). The JPEG standard allows at most 256
+// codes a table, so such a file is corrupt and is refused before stb sees it.
+//
+// Rather than follow the file's segments as stb does (and risk disagreeing with it on where
+// they are), every FF C4 (DHT) marker byte pair is taken as the start of a DHT segment: stb
+// reads a table only right after one, and in entropy-coded data an FF byte is always
+// followed by 00 or a marker, so real tables are never missed. Each table is the table
+// class/id byte, 16 code counts and the codes; the next one starts right after it, so a
+// position needs checking only once however many candidate segments reach it.
+void check_jpeg_huffman_tables(const Bytes& bytes) {
+    const auto byte_at = [&](std::size_t i) -> unsigned { return i < bytes.size() ? bytes[i] : 0; };  // as stb
+    std::vector<bool> checked(bytes.size(), false);
+    for (std::size_t marker = 0; marker + 1 < bytes.size(); ++marker) {
+        if (bytes[marker] != 0xFF || bytes[marker + 1] != 0xC4) continue;
+        // Tables follow the marker and the segment's 2-byte length. The length is ignored,
+        // which can only check more tables than stb reads, never fewer.
+        for (std::size_t table = marker + 4; table < bytes.size() && !checked[table];) {
+            checked[table] = true;
+            const unsigned class_and_id = bytes[table];
+            if ((class_and_id >> 4) > 1 || (class_and_id & 15) > 3) break;  // stb rejects the file here
+            unsigned codes = 0;
+            for (std::size_t length = 1; length <= 16; ++length) codes += byte_at(table + length);
+            if (codes > 256) {
+                throw ImageError("corrupt JPEG: a Huffman table declares " + std::to_string(codes) +
+                                 " codes, more than the 256 a table can hold");
+            }
+            table += 17 + codes;
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -246,7 +317,10 @@ std::shared_ptr<const Image> load_image(const std::string& path) {
     image->path = path;
     switch (detect_format(bytes)) {
         case FileFormat::Png: decode_with_stb(bytes, "PNG", *image); break;
-        case FileFormat::Jpeg: decode_with_stb(bytes, "JPEG", *image); break;
+        case FileFormat::Jpeg:
+            check_jpeg_huffman_tables(bytes);
+            decode_with_stb(bytes, "JPEG", *image);
+            break;
         case FileFormat::PpmAscii: read_ppm(bytes, true, *image); break;
         case FileFormat::PpmBinary: read_ppm(bytes, false, *image); break;
     }

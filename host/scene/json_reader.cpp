@@ -10,12 +10,37 @@
 
 namespace clr {
 
+namespace {
+
+// `text` with each control character (a byte below 0x20, or 0x7F) written as \xNN. Messages
+// quote the file: keys in locations (JSON escapes such as "\u001b" put any character in a
+// key) and the text around a syntax error. clrender prints each message as one line, and a
+// scene file must not be able to break that line, forge others or send escape sequences to
+// the terminal. Other bytes, UTF-8 included, stay as they are. Found by the scene fuzzer.
+std::string printable(const std::string& text) {
+    static const char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte == 0x7F) {
+            out += "\\x";
+            out += kHex[byte >> 4];
+            out += kHex[byte & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 void Diagnostics::fail(const std::string& location, const std::string& detail) const {
-    throw SceneError(file, location, detail);
+    throw SceneError(file, printable(location), printable(detail));
 }
 
 void Diagnostics::warn(const std::string& location, const std::string& message) const {
-    if (warnings) warnings->push_back(location + ": " + message);
+    if (warnings) warnings->push_back(printable(location) + ": " + printable(message));
 }
 
 std::string json_pointer_token(const std::string& key) {

@@ -1,0 +1,358 @@
+// The catalogue of bad input: every way a user (or a hostile file) can hand clrender something
+// wrong, each run through the real binary as a user would run it. For every case clrender
+// must exit with the documented code (1 usage, 2 scene or input, 3 device, 4 output), print
+// exactly one error naming the file, the JSON location where one applies and the problem,
+// and leave nothing behind: no image, no video, no temporary file.
+//
+// Adding a case: append it to catalogue() with the files it needs, the arguments and what
+// the error must say. docs/robustness.md lists the cases by kind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "support/command.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_bytes;
+using testing::run_clrender;
+using testing::TempFolder;
+
+struct File {
+    std::string name;
+    std::string bytes;
+};
+
+struct BadInput {
+    std::string name;                    // the test's name: what is wrong
+    std::vector<File> files;             // written into a fresh folder, where clrender runs
+    std::vector<std::string> folders;    // made there too (paths that must be folders)
+    std::string arguments;               // clrender's command line
+    int exit_code;                       // 1 usage, 2 scene or input, 3 device, 4 output
+    std::vector<std::string> fragments;  // each must appear in the error message
+    std::string environment = "";        // "NAME=value" before the command
+    // Errors found by the command-line parser (CLI11) are printed in its own format,
+    // "<problem>\nRun with --help for more information.", rather than "clrender: error:".
+    bool parser_error = false;
+};
+
+// ---------------------------------------------------------------------------------------
+// Scene text. Every case starts from a small valid scene and breaks one thing.
+
+const std::string kCamera = R"("eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60)";
+const std::string kSize = R"("width": 8, "height": 6)";
+const std::string kSquare = R"("UpperLeft": [-1, 1, 0], "LowerLeft": [-1, -1, 0], "UpperRight": [1, 1, 0])";
+
+// A valid scene with `extra` members added. A key given twice takes its last value (with a
+// warning), so `extra` can also replace one of the camera's or the size's members.
+std::string scene_with(const std::string& extra) {
+    return "{" + kCamera + ", " + kSize + (extra.empty() ? "" : ", " + extra) + "}";
+}
+
+// A scene without the top-level key `missing`, the others as in scene_with("").
+std::string scene_without(const std::string& missing) {
+    const std::vector<std::pair<std::string, std::string>> members = {
+        {"eye", "[0, 0, 6]"}, {"lookat", "[0, 0, 0]"}, {"up", "[0, 1, 0]"},
+        {"fov_angle", "60"},  {"width", "8"},          {"height", "6"},
+    };
+    std::string text = "{";
+    for (const auto& [key, value] : members) {
+        if (key == missing) continue;
+        text += (text.size() > 1 ? ", \"" : "\"") + key + "\": " + value;
+    }
+    return text + "}";
+}
+
+// A scene with the camera given by its members (eye or eyeLocations, lookat or
+// lookatLocations, up, fov_angle), written out in full.
+std::string camera_scene(const std::string& eye, const std::string& lookat, const std::string& up = "\"up\": [0, 1, 0]",
+                         const std::string& fov = "\"fov_angle\": 60") {
+    return "{" + eye + ", " + lookat + ", " + up + ", " + fov + ", " + kSize + "}";
+}
+
+// A scene with one sphere: centre and colour given, then `members`.
+std::string sphere_scene(const std::string& members) {
+    return scene_with(R"("spheres": [{"center": [0, 0, 0], "ambient": [1, 0, 0], )" + members + "}]");
+}
+
+// A scene with one billboard: its corners and an `extra` member.
+std::string billboard_scene(const std::string& corners, const std::string& extra = R"("ambient": [0, 1, 0])") {
+    return scene_with("\"billboards\": [{" + corners + ", " + extra + "}]");
+}
+
+std::string image_scene(const std::string& filename) { return billboard_scene(kSquare, "\"filename\": \"" + filename + "\""); }
+
+// A two-key camera path, which renders to a video by default.
+std::string animation_scene() {
+    return camera_scene(R"("eyeLocations": [[0, 0, 6], [1, 0, 6]])", R"("lookat": [0, 0, 0])");
+}
+
+std::string repeated(const std::string& text, int count) {
+    std::string out;
+    out.reserve(text.size() * count);
+    for (int i = 0; i < count; ++i) out += text;
+    return out;
+}
+
+// Bytes that are neither text nor any image format, the same on every run.
+std::string binary_garbage(std::size_t size) {
+    std::string bytes;
+    unsigned state = 12345;
+    for (std::size_t i = 0; i < size; ++i) {
+        state = state * 1103515245u + 12345u;
+        bytes += static_cast<char>((state >> 16) & 0xFF);
+    }
+    bytes[0] = '\x01';  // not '{', 'P', 0x89 or 0xFF: no format starts this way
+    return bytes;
+}
+
+std::string source_file(const std::string& relative) {
+    return read_bytes(fs::path(CLRENDER_SOURCE_DIR) / relative);
+}
+
+// The JPEG that fuzz/image_fuzzer.cpp found to overflow stb_image's Huffman tables, cut to
+// what matters: a start-of-image marker and one DHT segment whose table declares 16 x 255
+// codes. See tests/scene/fuzz_regressions_test.cpp for the whole finding.
+std::string jpeg_with_oversized_huffman_table() {
+    return std::string("\xFF\xD8\xFF\xC4\x01\x13\x00", 7) + std::string(16, '\xFF') + std::string(256, '\x01');
+}
+
+// The start of a JPEG whose frame header claims 20000 x 20000 pixels, 400 million: a few
+// bytes that would cost gigabytes to decode.
+std::string jpeg_claiming_20000_squared() {
+    return std::string("\xFF\xD8\xFF\xC0\x00\x11\x08\x4E\x20\x4E\x20\x03\x01\x22\x00\x02\x11\x01\x03\x11\x01", 21);
+}
+
+// The commonest kind of case: `clrender bad.json` with bad.json holding `text` (and `files`
+// beside it) must fail as a scene error whose message holds `fragments`.
+BadInput bad_scene(std::string name, std::string text, std::vector<std::string> fragments, std::vector<File> files = {}) {
+    files.insert(files.begin(), File{"bad.json", std::move(text)});
+    return {std::move(name), std::move(files), {}, "bad.json", 2, std::move(fragments)};
+}
+
+// A case for a bad billboard image named `name` holding `bytes`, whose message names the
+// image and says `problem`.
+BadInput bad_image(std::string case_name, const std::string& name, std::string bytes, const std::string& problem) {
+    return bad_scene(std::move(case_name), image_scene(name),
+                     {"bad.json: /billboards/0/filename: cannot read image", name + "': " + problem},
+                     {{name, std::move(bytes)}});
+}
+
+// ---------------------------------------------------------------------------------------
+
+std::vector<BadInput> catalogue() {
+    const std::string png = source_file("scenes/demo/checker.png");
+    const std::string ppm = source_file("scenes/demo/sign.ppm");
+    const std::string overflowing = scene_with(R"("SunLocation": [0, 1e999, 0])");
+    const std::string nesting = repeated("[", 100000) + repeated("]", 100000);
+    const std::string at_origin = R"("eye": [0, 0, 6])", look_at_origin = R"("lookat": [0, 0, 0])";
+    return {
+        // --- The file as JSON
+        bad_scene("SyntaxErrorGivesLineAndColumn", "{\n  \"eye\": [0, 0, 1],\n  \"lookat\": [0, 0, 0]\n  \"up\": [0, 1, 0]\n}",
+                  {"bad.json: line 4, column 6:", "syntax error", "unexpected string literal; expected '}'"}),
+        bad_scene("TrailingCommaIsExplained", "{\"eye\": [0, 0, 1],\n}",
+                  {"bad.json: line 2, column 1:", "JSON allows no comma before '}' or ']'"}),
+        bad_scene("EmptyFile", "", {"bad.json: the file is empty"}),
+        bad_scene("OnlyWhitespaceAndByteOrderMark", "\xEF\xBB\xBF \r\n\t\n", {"bad.json: the file is empty"}),
+        bad_scene("NotAnObject", "[1, 2, 3]", {"bad.json: scene must be a JSON object { ... }, got an array of 3 values"}),
+        bad_scene("BinaryGarbageSceneFile", binary_garbage(300), {"bad.json: line 1, column 1:", "syntax error"}),
+        bad_scene("UnclosedObjectAtEndOfFile", "{\"eye\": [0, 0, 1]",
+                  {"bad.json: line 1, column 18:", "unexpected end of input"}),
+        bad_scene("NanIsNotJson", scene_with(R"("MaxDepth": NaN)"), {"bad.json: line 1, column", "syntax error"}),
+        bad_scene("NumberOverflowingToInfinity", overflowing,
+                  {"bad.json: line 1, column " + std::to_string(overflowing.find("1e999") + 1) + ":",
+                   "number 1e999 is too large (numbers must be finite)"}),
+        // 100000 nested arrays: the parser must not recurse once per level (a stack overflow).
+        bad_scene("DeepNestingAsTheScene", nesting, {"bad.json: scene must be a JSON object"}),
+        bad_scene("DeepNestingInAValue", "{\"eye\": " + nesting + "}",
+                  {"bad.json: /eye: eye must be an array [x, y, z] of 3 numbers, got an array of 1 value"}),
+        bad_scene("DeepNestingNeverClosed", repeated("[", 100000),
+                  {"bad.json: line 1, column 100001:", "unexpected end of input"}),
+
+        // --- Missing required keys
+        bad_scene("MissingEye", scene_without("eye"), {"bad.json: scene needs 'eye' (a camera position) or 'eyeLocations'"}),
+        bad_scene("MissingLookat", scene_without("lookat"), {"bad.json: scene needs 'lookat'"}),
+        bad_scene("MissingUp", scene_without("up"), {"bad.json: scene is missing required key 'up'"}),
+        bad_scene("MissingFovAngle", scene_without("fov_angle"), {"bad.json: scene is missing required key 'fov_angle'"}),
+        bad_scene("MissingWidth", scene_without("width"), {"bad.json: scene is missing required key 'width'", "--size WxH"}),
+        bad_scene("MissingHeight", scene_without("height"), {"bad.json: scene is missing required key 'height'"}),
+        bad_scene("MissingSphereRadius", sphere_scene(R"("IsMirror": 0)"),
+                  {"bad.json: /spheres/0: sphere is missing required key 'radius'"}),
+
+        // --- Wrong types and values
+        bad_scene("RadiusAsString", sphere_scene(R"("radius": "2")"),
+                  {"bad.json: /spheres/0/radius: radius must be a number, got \"2\""}),
+        bad_scene("VectorOfTwoNumbers", scene_with(R"("SunLocation": [1, 2])"),
+                  {"bad.json: /SunLocation:", "3 numbers, got an array of 2 values"}),
+        bad_scene("ColourComponentNotANumber", scene_with(R"("DefaultColor": [0, null, 0])"),
+                  {"bad.json: /DefaultColor/1:", "must be a number, got null"}),
+        bad_scene("WidthAsString", scene_with(R"("width": "600")"),
+                  {"bad.json: /width: width must be a number, got \"600\""}),
+        bad_scene("SpheresNotAnArray", scene_with(R"("spheres": {"center": [0, 0, 0]})"),
+                  {"bad.json: /spheres: spheres must be an array"}),
+        bad_scene("FlagOtherThanZeroOrOne", scene_with(R"("OnlyAmbient": 2)"),
+                  {"bad.json: /OnlyAmbient: OnlyAmbient must be 0, 1, false or true (got 2)"}),
+        bad_scene("NegativeRadius", sphere_scene(R"("radius": -1)"),
+                  {"bad.json: /spheres/0/radius: radius must be > 0 (got -1)"}),
+        bad_scene("ZeroRadius", sphere_scene(R"("radius": 0)"), {"bad.json: /spheres/0/radius: radius must be > 0 (got 0)"}),
+        bad_scene("MaxDepthTooLarge", scene_with(R"("MaxDepth": 65)"),
+                  {"bad.json: /MaxDepth: MaxDepth must be a whole number from 0 to 64 (got 65)"}),
+        bad_scene("WrongObjectType", sphere_scene(R"("type": "cube", "radius": 1)"),
+                  {"bad.json: /spheres/0/type: type must be \"sphere\" here, got \"cube\""}),
+
+        // --- Degenerate geometry and camera
+        bad_scene("BillboardCollinearCorners",
+                  billboard_scene(R"("UpperLeft": [0, 0, 0], "LowerLeft": [1, 1, 1], "UpperRight": [2, 2, 2])"),
+                  {"bad.json: /billboards/0: billboard has no area:", "collinear"}),
+        bad_scene("BillboardCoincidentCorners",
+                  billboard_scene(R"("UpperLeft": [1, 2, 3], "LowerLeft": [0, 0, 0], "UpperRight": [1, 2, 3])"),
+                  {"bad.json: /billboards/0: billboard has no area: UpperRight is the same point as UpperLeft"}),
+        bad_scene("BillboardWithoutImageOrColour", billboard_scene(kSquare, R"("IsMirror": 0)"),
+                  {"bad.json: /billboards/0: billboard needs 'filename' (an image) or 'ambient'"}),
+        bad_scene("UpParallelToTheView", camera_scene(at_origin, look_at_origin, R"("up": [0, 0, -2])"),
+                  {"bad.json: /up: up [0, 0, -2] is parallel to the view direction"}),
+        bad_scene("ZeroUp", camera_scene(at_origin, look_at_origin, R"("up": [0, 0, 0])"),
+                  {"bad.json: /up: up must not be the zero vector"}),
+        bad_scene("EyeEqualsLookat", camera_scene(R"("eye": [1, 2, 3])", R"("lookat": [1, 2, 3])"),
+                  {"bad.json: /eye: eye and lookat are the same point [1, 2, 3]"}),
+        bad_scene("EyeEqualsLookatOnAPath", camera_scene(R"("eyeLocations": [[0, 0, 6], [0, 0, 0]])", look_at_origin),
+                  {"bad.json: /eyeLocations/1: eye and lookat are the same point", "at camera key 1"}),
+        bad_scene("FovZero", camera_scene(at_origin, look_at_origin, R"("up": [0, 1, 0])", R"("fov_angle": 0)"),
+                  {"bad.json: /fov_angle: fov_angle must be between 0 and 180 degrees, both excluded (got 0)"}),
+        bad_scene("Fov180", camera_scene(at_origin, look_at_origin, R"("up": [0, 1, 0])", R"("fov_angle": 180)"),
+                  {"bad.json: /fov_angle:", "(got 180)"}),
+        bad_scene("MismatchedEyeAndLookatLocations",
+                  camera_scene(R"("eyeLocations": [[0, 0, 6], [1, 0, 6]])",
+                               R"("lookatLocations": [[0, 0, 0], [0, 0, 1], [0, 0, 2]])"),
+                  {"bad.json: /lookatLocations: lookatLocations has 3 entries but eyeLocations has 2 entries"}),
+        bad_scene("EyeAndEyeLocationsBoth", scene_with(R"("eyeLocations": [[0, 0, 6]])"),
+                  {"bad.json: /eyeLocations: give either 'eye' or 'eyeLocations', not both"}),
+
+        // --- Resolution
+        bad_scene("ZeroWidth", scene_with(R"("width": 0)"),
+                  {"bad.json: /width: width must be a whole number from 1 to 16384 (got 0)"}),
+        bad_scene("NegativeHeight", scene_with(R"("height": -5)"),
+                  {"bad.json: /height: height must be a whole number from 1 to 16384 (got -5)"}),
+        bad_scene("FractionalWidth", scene_with(R"("width": 600.5)"), {"bad.json: /width:", "(got 600.5)"}),
+        bad_scene("AbsurdResolutionInTheScene", scene_with(R"("width": 100000, "height": 100000)"),
+                  {"bad.json: /width: width must be a whole number from 1 to 16384 (got 100000)"}),
+        bad_scene("ResolutionOverThePixelLimit", scene_with(R"("width": 16384, "height": 16384)"),
+                  {"bad.json: /height: the image has 16384 x 16384 = 268435456 pixels, more than the limit of 67108864"}),
+        {"AbsurdResolutionOnTheCommandLine", {{"scene.json", scene_with("")}}, {}, "scene.json --size 100000x100000", 2,
+         {"scene.json: image width 100000 given on the command line must be from 1 to 16384"}},
+
+        // --- Images
+        bad_scene("MissingImage", image_scene("nowhere.png"),
+                  {"bad.json: /billboards/0/filename: cannot read image", "nowhere.png': no such file"}),
+        bad_image("GarbageBytesNamedPng", "garbage.png", binary_garbage(200), "unsupported image format"),
+        bad_image("TruncatedPng", "cut.png", png.substr(0, png.size() / 2), "corrupt PNG"),
+        bad_image("TruncatedPpm", "cut.ppm", ppm.substr(0, ppm.size() / 2), "truncated PPM data"),
+        bad_image("EmptyImageFile", "empty.png", "", "empty file"),
+        bad_image("JpegWithOversizedHuffmanTable", "photo.jpg", jpeg_with_oversized_huffman_table(),
+                  "corrupt JPEG: a Huffman table declares 4080 codes"),
+        bad_image("ImageDimensionsOverTheLimit", "huge.jpg", jpeg_claiming_20000_squared(),
+                  "JPEG image of 20000 x 20000 pixels is larger than the limit"),
+        {"ImagePathIsAFolder", {{"bad.json", image_scene("textures")}}, {"textures"}, "bad.json", 2,
+         {"bad.json: /billboards/0/filename:", "textures': not a file"}},
+        bad_scene("EmptyImageFileName", image_scene(""), {"bad.json: /billboards/0/filename: filename must not be empty"}),
+
+        // --- The scene path
+        {"ScenePathIsAFolder", {}, {"scene.json"}, "scene.json", 2, {"scene.json: cannot read scene file: it is a folder"}},
+        {"MissingSceneFile", {}, {}, "nowhere.json", 2, {"nowhere.json: cannot read scene file: no such file"}},
+
+        // --- Device
+        {"UnknownDevice", {{"scene.json", scene_with("")}}, {}, "scene.json -d no-such-device", 3,
+         {"unknown OpenCL device 'no-such-device'"}},
+        {"UnknownDeviceFromTheEnvironment", {{"scene.json", scene_with("")}}, {}, "scene.json", 3,
+         {"unknown OpenCL device '42'"}, "CLRENDER_DEVICE=42"},
+
+        // --- Outputs
+        {"OutputInAMissingFolder", {{"scene.json", scene_with("")}}, {}, "scene.json -o missing/out.png -q", 4,
+         {"missing/out.png: cannot create a file in its folder: No such file or directory"}},
+        {"OutputUnderAFile", {{"scene.json", scene_with("")}}, {}, "scene.json -o scene.json/out.png -q", 4,
+         {"scene.json/out.png: cannot create a file in its folder: Not a directory"}},
+        {"OutputIsAFolder", {{"scene.json", scene_with("")}}, {"out.png"}, "scene.json -o out.png -q", 4,
+         {"out.png: cannot move the finished file into place: Is a directory"}},
+        {"UnsupportedOutputExtension", {{"scene.json", scene_with("")}}, {}, "scene.json -o out.bmp", 1,
+         {"out.bmp: unsupported extension '.bmp' for an image (supported: .png, .ppm)"}},
+        {"UnsupportedVideoExtension", {{"path.json", animation_scene()}}, {}, "path.json --video out.avi", 1,
+         {"'out.avi': unsupported video format; use a .mp4 or .gif file name"}},
+        {"MissingFfmpegForAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"video encoder '/nonexistent/ffmpeg' (from CLRENDER_FFMPEG) not found or not executable"},
+         "CLRENDER_FFMPEG=/nonexistent/ffmpeg"},
+        {"VideoOfAStill", {{"scene.json", scene_with("")}}, {}, "scene.json --video out.mp4", 1,
+         {"scene.json is a still (one camera key)"}},
+
+        // --- The command line itself
+        {"NoSceneArgument", {}, {}, "", 1, {"a scene file is required"}, "", true},
+        {"UnknownOption", {{"scene.json", scene_with("")}}, {}, "scene.json --no-such-option", 1, {"--no-such-option"}, "",
+         true},
+        {"MalformedSize", {{"scene.json", scene_with("")}}, {}, "scene.json --size 12by3", 1,
+         {"--size: expected WIDTHxHEIGHT", "'12by3'"}, "", true},
+    };
+}
+
+// ---------------------------------------------------------------------------------------
+
+std::set<std::string> entries_of(const std::string& folder) {
+    std::set<std::string> names;
+    for (const auto& entry : fs::recursive_directory_iterator(folder)) names.insert(entry.path().string());
+    return names;
+}
+
+int count_of(const std::string& text, const std::string& part) {
+    int count = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size())) ++count;
+    return count;
+}
+
+// Test names and failure messages show a case by its name rather than as raw bytes.
+void PrintTo(const BadInput& input, std::ostream* out) { *out << input.name; }
+
+class BadInputTest : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputTest, FailsWithOneClearErrorAndNoOutput) {
+    const BadInput& input = GetParam();
+    TempFolder folder;
+    for (const std::string& name : input.folders) fs::create_directories(folder.file(name));
+    for (const File& file : input.files) folder.write(file.name, file.bytes);
+    const std::set<std::string> before = entries_of(folder.path());
+
+    const auto result = run_clrender(input.arguments, folder.path(), input.environment);
+
+    EXPECT_EQ(result.exit_code, input.exit_code) << result.output;
+    if (input.parser_error) {
+        EXPECT_EQ(count_of(result.output, "Run with --help for more information."), 1) << result.output;
+    } else {
+        EXPECT_EQ(count_of(result.output, "clrender: error: "), 1) << result.output;
+        EXPECT_EQ(result.output.rfind("clrender: error: ", 0), 0) << "the error comes first:\n" << result.output;
+    }
+    for (const std::string& fragment : input.fragments)
+        EXPECT_NE(result.output.find(fragment), std::string::npos) << "missing '" << fragment << "' in:\n" << result.output;
+    // Sanitizer builds run this test too: their reports must not pass as an error message.
+    EXPECT_EQ(result.output.find("Sanitizer"), std::string::npos) << result.output;
+    EXPECT_EQ(entries_of(folder.path()), before) << "clrender left files behind";
+}
+
+std::string case_name(const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; }
+
+INSTANTIATE_TEST_SUITE_P(Catalogue, BadInputTest, ::testing::ValuesIn(catalogue()), case_name);
+
+TEST(BadInput, CatalogueCoversAtLeast25Cases) {
+    const std::vector<BadInput> cases = catalogue();
+    std::cout << "[ catalogue] " << cases.size() << " bad inputs\n";
+    ::testing::Test::RecordProperty("bad_inputs", static_cast<int>(cases.size()));
+    EXPECT_GE(cases.size(), 25u);
+    std::set<std::string> names;
+    for (const BadInput& input : cases) EXPECT_TRUE(names.insert(input.name).second) << "two cases named " << input.name;
+}
+
+}  // namespace
+}  // namespace clr
