@@ -61,6 +61,15 @@ ClrBillboard compile_billboard(const Billboard& billboard, const Vec3& origin) {
     return out;
 }
 
+void move_origin(CompiledScene& compiled, const Scene& scene, const Vec3& origin) {
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        compiled.spheres[i].center_radius =
+            to_float4(scene.spheres[i].center - origin, static_cast<float>(scene.spheres[i].radius));
+    for (std::size_t i = 0; i < scene.billboards.size(); ++i)
+        compiled.billboards[i].corner = to_float4(scene.billboards[i].upper_left - origin);
+    compiled.info.sun = to_float4(scene.sun_location - origin);
+}
+
 CompiledScene compile_scene(const Scene& scene, const Vec3& origin) {
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);

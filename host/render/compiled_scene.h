@@ -24,6 +24,11 @@ struct CompiledScene {
 // would otherwise lose 1/128 of a unit to rounding).
 CompiledScene compile_scene(const Scene& scene, const Vec3& origin = {});
 
+// Re-expresses the positions in `compiled` (made from `scene`) relative to `origin`, leaving
+// everything else (texels, flags, features) as it is: what each frame of an animation needs,
+// without repacking images.
+void move_origin(CompiledScene& compiled, const Scene& scene, const Vec3& origin);
+
 // The device form of one billboard, relative to `origin`; texel_offset is filled in by
 // compile_scene.
 ClrBillboard compile_billboard(const Billboard& billboard, const Vec3& origin = {});

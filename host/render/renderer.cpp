@@ -41,8 +41,8 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 
 Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options)
     : device_(device), scene_(scene), screen_tiles_(options.screen_tiles) {
-    CompiledScene compiled = compile_scene(scene);
-    features_ = options.features.value_or(compiled.features);
+    compiled_ = compile_scene(scene);
+    features_ = options.features.value_or(compiled_.features);
     features_.double_precision = options.double_precision;
     if (options.double_precision && device_.device().getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() == 0)
         throw DeviceError("'" + device_.entry().device_name +
@@ -53,10 +53,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     build_ms_ = elapsed_ms(start);
     try {
         render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
-        texels_ = upload(device_.context(), compiled.texels);
+        texels_ = upload(device_.context(), compiled_.texels);
+        compiled_.texels = {};  // on the device now; frames only move positions
         if (features_.bvh) bvh_ = build_bvh(scene_);  // otherwise empty: never read
         bvh_items_ = upload(device_.context(), bvh_.items);
-        upload_geometry(compiled);
+        upload_geometry();
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
     } catch (const cl::Error& error) {
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
@@ -64,11 +65,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     if (options.max_buffer_bytes) max_buffer_bytes_ = std::min(max_buffer_bytes_, options.max_buffer_bytes);
 }
 
-void Renderer::upload_geometry(const CompiledScene& compiled) {
-    spheres_ = upload(device_.context(), compiled.spheres);
-    billboards_ = upload(device_.context(), compiled.billboards);
+void Renderer::upload_geometry() {
+    spheres_ = upload(device_.context(), compiled_.spheres);
+    billboards_ = upload(device_.context(), compiled_.billboards);
     bvh_nodes_ = upload(device_.context(), compile_bvh(bvh_, origin_));
-    info_ = compiled.info;
+    info_ = compiled_.info;
     bind_scene(render_kernel_, 3);
 }
 
@@ -77,9 +78,11 @@ void Renderer::set_origin(const Vec3& origin) {
     Vec3 previous = origin_;
     origin_ = origin;
     try {
-        upload_geometry(compile_scene(scene_, origin));
+        move_origin(compiled_, scene_, origin);
+        upload_geometry();
     } catch (const cl::Error& error) {
         origin_ = previous;
+        move_origin(compiled_, scene_, previous);
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
 }

@@ -67,10 +67,11 @@ private:
     double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
     void reserve_pixels(std::size_t bytes);
     void upload_screen_tiles(const ClrCamera& camera);
-    void upload_geometry(const CompiledScene& compiled);
+    void upload_geometry();
 
     DeviceContext& device_;
     Scene scene_;  // the geometry, for binning each frame's screen tiles (images are shared)
+    CompiledScene compiled_;  // its device form, without texels once they are uploaded
     bool screen_tiles_ = true;
     Vec3 origin_;
     FeatureSet features_;
