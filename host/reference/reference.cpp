@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "reference/impostors.h"
 #include "shared/clr_samples.h"
 
 namespace clr::reference {
@@ -36,6 +37,9 @@ Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_
 }  // namespace
 
 Image render(const Scene& scene, const CameraFrame& camera, int frame) {
+    // Impostors face this frame's eye; once placed they are billboards like any other, which
+    // is all trace() knows about. The placed scene has no impostors, so this recurses once.
+    if (!scene.impostors.empty()) return render(with_impostors_placed(scene, camera), camera, frame);
     const unsigned frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
     Image image;
     image.width = camera.width;

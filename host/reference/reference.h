@@ -53,6 +53,10 @@ struct SurfaceId {
     int index = -1;
 };
 
+// intersect(), decision_margin() and trace() see spheres and billboards only: impostors face
+// a camera, so a scene with impostors must be placed for that camera first
+// (with_impostors_placed() in reference/impostors.h). render() does that itself.
+
 // Nearest surface with 0 < t < t_max, skipping `leaving`. Billboard texels whose alpha is
 // below 255 let the ray through.
 Hit intersect(const Scene& scene, const Ray& ray, double t_max = kInfinity, SurfaceId leaving = {});
@@ -72,7 +76,7 @@ std::uint8_t to_byte(double channel);
 
 // Renders one frame: RGBA bytes, alpha 255, rows from the top. Each pixel is the mean of
 // scene.sampling.samples_per_pixel samples placed as kernels/shared/clr_samples.h says for
-// this frame index (one sample: the pixel's centre).
+// this frame index (one sample: the pixel's centre). Impostors are placed for `camera` first.
 Image render(const Scene& scene, const CameraFrame& camera, int frame = 0);
 
 }  // namespace clr::reference

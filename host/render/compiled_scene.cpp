@@ -1,8 +1,7 @@
 #include "render/compiled_scene.h"
 
-#include <map>
-
 #include "render/device_structs.h"
+#include "render/impostor_placement.h"
 
 namespace clr {
 namespace {
@@ -15,28 +14,27 @@ ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
     return out;
 }
 
-// Texels of each distinct image, appended once however many billboards show it.
-class TexelPacker {
-public:
-    explicit TexelPacker(std::vector<std::uint8_t>& texels) : texels_(texels) {}
+// Appends each distinct image's texels once, however many billboards and views show it, and
+// scans it for transparency once.
+void pack_texture(const Image* image, CompiledScene& compiled) {
+    if (!image || compiled.textures.count(image)) return;
+    TextureSlot slot;
+    slot.offset = static_cast<std::uint32_t>(compiled.texels.size() / 4);
+    slot.width = image->width;
+    slot.height = image->height;
+    slot.holes = image->has_transparency();
+    compiled.texels.insert(compiled.texels.end(), image->rgba.begin(), image->rgba.end());
+    compiled.textures.emplace(image, slot);
+}
 
-    std::uint32_t offset_of(const Image* image) {
-        auto found = offsets_.find(image);
-        if (found != offsets_.end()) return found->second;
-        auto offset = static_cast<std::uint32_t>(texels_.size() / 4);
-        texels_.insert(texels_.end(), image->rgba.begin(), image->rgba.end());
-        offsets_.emplace(image, offset);
-        return offset;
-    }
-
-private:
-    std::vector<std::uint8_t>& texels_;
-    std::map<const Image*, std::uint32_t> offsets_;
-};
+const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& compiled) {
+    if (!billboard.image || billboard.is_mirror) return nullptr;  // a mirror ignores its image
+    return &compiled.textures.at(billboard.image.get());
+}
 
 }  // namespace
 
-ClrBillboard compile_billboard(const Billboard& billboard, const Vec3& origin) {
+ClrBillboard compile_billboard(const Billboard& billboard, const TextureSlot* texture, const Vec3& origin) {
     // P = UL + a*edge_a + b*edge_b. With m = edge_a x edge_b, the dual vectors
     // (edge_b x m)/|m|^2 and (m x edge_a)/|m|^2 pick a and b out of P - UL by one dot product
     // each, for any parallelogram, and are computed here in double once per billboard.
@@ -52,13 +50,24 @@ ClrBillboard compile_billboard(const Billboard& billboard, const Vec3& origin) {
     out.dual_b = to_float4(cross(m, edge_a) / m2);
     out.color = to_float4(billboard.ambient);
     out.flags = billboard.is_mirror ? CLR_SURFACE_MIRROR : 0u;
-    if (billboard.image && !billboard.is_mirror) {  // a mirror ignores its image
+    if (texture) {
         out.flags |= CLR_SURFACE_TEXTURED;
-        out.texture_width = billboard.image->width;
-        out.texture_height = billboard.image->height;
-        if (billboard.image->has_transparency()) out.flags |= CLR_SURFACE_HOLES;  // only these need alpha tests
+        out.texel_offset = texture->offset;
+        out.texture_width = texture->width;
+        out.texture_height = texture->height;
+        if (texture->holes) out.flags |= CLR_SURFACE_HOLES;  // only these need alpha tests
     }
     return out;
+}
+
+void place_impostors(CompiledScene& compiled, const Scene& scene, const CameraKey& key, const Vec3& origin) {
+    place_impostors(scene, PlacementCamera(key, scene.up), 0, compiled.placed_impostors);
+    std::size_t first = scene.billboards.size();
+    compiled.billboards.resize(first + compiled.placed_impostors.size());
+    for (std::size_t i = 0; i < compiled.placed_impostors.size(); ++i) {
+        const Billboard& billboard = compiled.placed_impostors[i];
+        compiled.billboards[first + i] = compile_billboard(billboard, texture_of(billboard, compiled), origin);
+    }
 }
 
 void move_origin(CompiledScene& compiled, const Scene& scene, const Vec3& origin) {
@@ -67,6 +76,8 @@ void move_origin(CompiledScene& compiled, const Scene& scene, const Vec3& origin
             to_float4(scene.spheres[i].center - origin, static_cast<float>(scene.spheres[i].radius));
     for (std::size_t i = 0; i < scene.billboards.size(); ++i)
         compiled.billboards[i].corner = to_float4(scene.billboards[i].upper_left - origin);
+    for (std::size_t i = 0; i < compiled.placed_impostors.size(); ++i)
+        compiled.billboards[scene.billboards.size() + i].corner = to_float4(compiled.placed_impostors[i].upper_left - origin);
     compiled.info.sun = to_float4(scene.sun_location - origin);
 }
 
@@ -74,19 +85,28 @@ CompiledScene compile_scene(const Scene& scene, const Vec3& origin) {
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);
     for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(compile_sphere(sphere, origin));
-    TexelPacker packer(compiled.texels);
     for (const Billboard& billboard : scene.billboards) {
-        ClrBillboard out = compile_billboard(billboard, origin);
-        if (out.flags & CLR_SURFACE_TEXTURED) out.texel_offset = packer.offset_of(billboard.image.get());
-        compiled.billboards.push_back(out);
+        if (!billboard.is_mirror) pack_texture(billboard.image.get(), compiled);
+        compiled.billboards.push_back(compile_billboard(billboard, texture_of(billboard, compiled), origin));
     }
+    for (const Impostor& impostor : scene.impostors) {
+        for (const ImpostorView& view : impostor.views) pack_texture(view.image.get(), compiled);
+    }
+    if (!scene.impostors.empty() && !scene.camera_path.empty()) place_impostors(compiled, scene, scene.camera_path.front(), origin);
     compiled.info.background = to_float4(scene.background);
     compiled.info.sun = to_float4(scene.sun_location - origin);
     compiled.info.sphere_count = static_cast<int>(scene.spheres.size());
-    compiled.info.billboard_count = static_cast<int>(scene.billboards.size());
+    compiled.info.billboard_count = static_cast<int>(compiled.billboards.size());
     compiled.info.max_depth = scene.max_depth;
     compiled.info.lit = scene.lit() ? 1 : 0;
     return compiled;
+}
+
+Scene placed_scene(const Scene& scene, const CompiledScene& compiled) {
+    Scene placed = scene;
+    placed.impostors.clear();
+    placed.billboards.insert(placed.billboards.end(), compiled.placed_impostors.begin(), compiled.placed_impostors.end());
+    return placed;
 }
 
 }  // namespace clr

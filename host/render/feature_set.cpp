@@ -1,6 +1,7 @@
 #include "render/feature_set.h"
 
 #include <map>
+#include <set>
 
 namespace clr {
 
@@ -18,15 +19,22 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     features.billboards = !scene.billboards.empty();
     features.sun = scene.lit() && features.spheres;  // only spheres are lit
     for (const Sphere& sphere : scene.spheres) features.mirrors |= sphere.is_mirror;
+    features.billboards |= !scene.impostors.empty();  // each impostor is a billboard in every frame
+    std::set<const Image*> shown;  // each image once: thousands of impostors share a few
     for (const Billboard& billboard : scene.billboards) {
         features.mirrors |= billboard.is_mirror;
-        bool shows_image = billboard.image && !billboard.is_mirror;
-        features.textures |= shows_image;
-        features.alpha |= shows_image && billboard.image->has_transparency();
+        if (billboard.image && !billboard.is_mirror) shown.insert(billboard.image.get());
     }
+    for (const Impostor& impostor : scene.impostors) {
+        for (const ImpostorView& view : impostor.views) shown.insert(view.image.get());
+    }
+    shown.erase(nullptr);
+    features.textures = !shown.empty();
+    for (const Image* image : shown) features.alpha |= image->has_transparency();
     // Primary rays are culled by screen tiles; shadow and mirror rays test every object
     // unless a BVH is compiled in, which pays from a few dozen objects on.
-    features.bvh = (features.sun || features.mirrors) && scene.spheres.size() + scene.billboards.size() > kBvhMinObjects;
+    std::size_t objects = scene.spheres.size() + scene.billboards.size() + scene.impostors.size();
+    features.bvh = (features.sun || features.mirrors) && objects > kBvhMinObjects;
     return features;
 }
 

@@ -55,8 +55,8 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
         texels_ = upload(device_.context(), compiled_.texels);
         compiled_.texels = {};  // on the device now; frames only move positions
-        if (features_.bvh) bvh_ = build_bvh(scene_);  // otherwise empty: never read
-        bvh_items_ = upload(device_.context(), bvh_.items);
+        if (!scene_.impostors.empty()) placed_ = placed_scene(scene_, compiled_);
+        if (features_.bvh) bvh_ = build_bvh(geometry());  // otherwise empty: never read
         upload_geometry();
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
     } catch (const cl::Error& error) {
@@ -69,6 +69,7 @@ void Renderer::upload_geometry() {
     spheres_ = upload(device_.context(), compiled_.spheres);
     billboards_ = upload(device_.context(), compiled_.billboards);
     bvh_nodes_ = upload(device_.context(), compile_bvh(bvh_, origin_));
+    bvh_items_ = upload(device_.context(), bvh_.items);
     info_ = compiled_.info;
     bind_scene(render_kernel_, 3);
 }
@@ -87,8 +88,27 @@ void Renderer::set_origin(const Vec3& origin) {
     }
 }
 
+// Impostors turn to each frame's eye: their billboards, and the BVH over them, are made anew.
+void Renderer::face_impostors(const CameraKey& key) {
+    Vec3 previous = origin_;
+    origin_ = key.eye;
+    move_origin(compiled_, scene_, origin_);
+    place_impostors(compiled_, scene_, key, origin_);
+    placed_ = placed_scene(scene_, compiled_);
+    if (features_.bvh) bvh_ = build_bvh(placed_);
+    try {
+        upload_geometry();
+    } catch (const cl::Error& error) {
+        origin_ = previous;
+        throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
+    }
+}
+
 Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame) {
-    set_origin(key.eye);
+    if (scene_.impostors.empty())
+        set_origin(key.eye);
+    else
+        face_impostors(key);
     ClrCamera camera = make_device_camera(key.eye - origin_, key.lookat - origin_, scene_.up, scene_.fov_degrees,
                                           scene_.width, scene_.height);
     camera.samples = scene_.sampling.samples_per_pixel;
@@ -144,7 +164,7 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
 }
 
 void Renderer::upload_screen_tiles(const ClrCamera& camera) {
-    ScreenTiles tiles = bin_screen_tiles(scene_, camera, origin_);
+    ScreenTiles tiles = bin_screen_tiles(geometry(), camera, origin_);
     tile_offsets_ = upload(device_.context(), tiles.offsets);
     tile_items_ = upload(device_.context(), tiles.items);
     tile_nearest_ = upload(device_.context(), tiles.nearest);

@@ -45,7 +45,8 @@ public:
 
     // Renders one frame seen by `camera`, given in the renderer's current coordinates
     // (origin() subtracted; (0, 0, 0) until render_view() moves it). Its width and height set
-    // the image size.
+    // the image size. Impostors stay placed as for the last render_view() (at first: for the
+    // scene's first camera key).
     Image render_frame(const ClrCamera& camera, FrameTiming* timing = nullptr);
 
     // Makes device coordinates relative to `origin`, re-uploading the geometry if it moved.
@@ -68,9 +69,13 @@ private:
     void reserve_pixels(std::size_t bytes);
     void upload_screen_tiles(const ClrCamera& camera);
     void upload_geometry();
+    void face_impostors(const CameraKey& key);
+    // What the screen tiles and the BVH see: the scene, with its impostors as placed billboards.
+    const Scene& geometry() const { return scene_.impostors.empty() ? scene_ : placed_; }
 
     DeviceContext& device_;
     Scene scene_;  // the geometry, for binning each frame's screen tiles (images are shared)
+    Scene placed_;  // scene_ with its impostors placed as billboards (unused without impostors)
     CompiledScene compiled_;  // its device form, without texels once they are uploaded
     bool screen_tiles_ = true;
     Vec3 origin_;

@@ -44,6 +44,31 @@ struct Billboard {
     bool is_mirror = false;
 };
 
+// Which way a camera-facing billboard may turn (docs/scene-format.md, Impostors).
+enum class Facing {
+    Upright,  // about the scene's up vector only, as a tree does: its vertical edges stay parallel to up
+    Free,     // towards the eye in every direction, its top edge towards the camera's up
+};
+
+// One picture of an impostor's object, and the direction from the object towards the point
+// it was seen from.
+struct ImpostorView {
+    Vec3 direction;  // unit length; zero for an impostor's single `filename` (always shown)
+    std::shared_ptr<const Image> image;
+};
+
+// A billboard that faces the camera (clrender extension): each frame, its corners are
+// recomputed from the eye, and with several views it shows the one whose direction is
+// closest to the direction from its centre to the eye.
+struct Impostor {
+    Vec3 center;
+    double width = 1;
+    double height = 1;
+    Facing facing = Facing::Upright;
+    std::vector<ImpostorView> views;  // empty: the flat colour `ambient`
+    Color ambient;
+};
+
 // One key of the camera path. A still scene has one key.
 struct CameraKey {
     Vec3 eye;
@@ -86,6 +111,7 @@ struct Scene {
 
     std::vector<Sphere> spheres;
     std::vector<Billboard> billboards;
+    std::vector<Impostor> impostors;  // "clrender"/"impostors"; shown after the billboards
 
     std::vector<std::string> warnings;  // unknown keys and similar, one line each
 

@@ -268,19 +268,23 @@ std::pair<Billboard, std::optional<Node>> read_billboard(const Node& node, bool 
     return {billboard, billboard.is_mirror ? std::nullopt : filename};
 }
 
-// A billboard's image still to be read, once every other part of the scene is valid.
+// An image still to be read, once every other part of the scene is valid, and where it goes.
+// The destinations are taken only after all objects are read, so that they stay valid.
 struct PendingImage {
-    std::size_t billboard;
     Node filename;
+    std::shared_ptr<const Image>* destination;
 };
 
-void read_objects(ObjectReader& file, Scene& scene, std::vector<PendingImage>& pending_images) {
+// A billboard's image still to be read: its index and its "filename" value.
+using PendingBillboardImages = std::vector<std::pair<std::size_t, Node>>;
+
+void read_objects(ObjectReader& file, Scene& scene, PendingBillboardImages& pending_images) {
     if (const auto spheres = file.optional("spheres")) {
         for (const Node& sphere : spheres->elements()) scene.spheres.push_back(read_sphere(sphere));
     }
     const auto add_billboard = [&](const Node& node, bool always_mirror) {
         auto [billboard, filename] = read_billboard(node, always_mirror);
-        if (filename) pending_images.push_back({scene.billboards.size(), *filename});
+        if (filename) pending_images.emplace_back(scene.billboards.size(), *filename);
         scene.billboards.push_back(std::move(billboard));
     };
     if (const auto billboards = file.optional("billboards")) {
@@ -371,11 +375,140 @@ private:
     std::map<std::string, Entry> entries_;
 };
 
-void attach_images(Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
+void attach_images(const Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
     ImageLibrary library(scene.path, options.placeholder_images);
     library.read_all(pending_images);
-    for (const PendingImage& pending : pending_images)
-        scene.billboards[pending.billboard].image = library.image_for(pending.filename);
+    for (const PendingImage& pending : pending_images) *pending.destination = library.image_for(pending.filename);
+}
+
+// --------------------------------------------------------------------------------------
+// Impostors: billboards that face the camera (clrender extension, under "clrender")
+
+// Views read from the file, with their "filename" values until the images are read.
+struct ViewList {
+    std::vector<ImpostorView> views;
+    std::vector<Node> filenames;
+    bool used = false;  // only the images of lists that some impostor shows are read
+};
+
+// What the impostors need once their images are read: named lists are read once and shared.
+struct ImpostorViews {
+    std::map<std::string, ViewList> sets;  // "view_sets"
+    std::vector<ViewList> own;             // per impostor: its own list (empty when it uses a set)
+    std::vector<std::string> set_of;       // per impostor: the set it shows, or ""
+};
+
+ViewList read_view_list(const Node& node) {
+    ViewList list;
+    for (const Node& entry : node.elements()) {
+        ObjectReader fields(entry, "view");
+        const Node filename = fields.required("filename");
+        if (filename.string().empty()) filename.fail("filename must not be empty");
+        const Node direction_node = fields.required("direction");
+        const Vec3 view_direction = direction_node.vec3();
+        if (view_direction == Vec3{}) direction_node.fail("direction must not be the zero vector");
+        fields.warn_about_unknown_keys();
+        list.views.push_back({direction(view_direction), nullptr});
+        list.filenames.push_back(filename);
+    }
+    if (list.views.empty()) node.fail("a list of views must hold at least one view");
+    return list;
+}
+
+std::map<std::string, ViewList> read_view_sets(ObjectReader& extensions) {
+    std::map<std::string, ViewList> sets;
+    const std::optional<Node> node = extensions.optional("view_sets");
+    if (!node) return sets;
+    if (!node->json().is_object()) node->fail("view_sets must be an object mapping names to lists of views");
+    for (const auto& [name, value] : node->json().items())
+        sets[name] = read_view_list(Node(value, node->location() + "/" + json_pointer_token(name), name, node->diagnostics()));
+    return sets;
+}
+
+Facing read_facing(const Node& node) {
+    const std::string name = node.string();
+    if (name == "upright") return Facing::Upright;
+    if (name == "free") return Facing::Free;
+    node.fail("facing must be \"upright\" or \"free\" (got " + node.shown() + ")");
+}
+
+double read_positive(const Node& node) {
+    const double value = node.number();
+    if (!(value > 0)) node.fail(node.label() + " must be > 0 (got " + node.shown() + ")");
+    return value;
+}
+
+// The views an impostor shows: a list of its own, the name of a set, or one picture.
+void read_impostor_views(ObjectReader& fields, ImpostorViews& views) {
+    const std::optional<Node> list = fields.optional("views");
+    const std::optional<Node> filename = fields.optional("filename");
+    if (list && filename) filename->fail("give either 'views' or 'filename', not both");
+    ViewList own;
+    std::string set_name;
+    if (list && list->json().is_string()) {
+        set_name = list->string();
+        auto set = views.sets.find(set_name);
+        if (set == views.sets.end()) list->fail("no view set named " + list->shown() + " under /clrender/view_sets");
+        set->second.used = true;
+    } else if (list) {
+        own = read_view_list(*list);
+    } else if (filename) {
+        if (filename->string().empty()) filename->fail("filename must not be empty");
+        own.views.push_back({Vec3{}, nullptr});  // one picture, whatever the direction
+        own.filenames.push_back(*filename);
+    }
+    views.own.push_back(std::move(own));
+    views.set_of.push_back(set_name);
+}
+
+Impostor read_impostor(const Node& node, ImpostorViews& views) {
+    ObjectReader fields(node, "impostor");
+    Impostor impostor;
+    impostor.center = fields.required("center").vec3();
+    impostor.width = read_positive(fields.required("width"));
+    impostor.height = read_positive(fields.required("height"));
+    if (const auto facing = fields.optional("facing")) impostor.facing = read_facing(*facing);
+    const std::optional<Node> ambient = fields.optional("ambient");
+    if (ambient) impostor.ambient = ambient->color();
+    read_impostor_views(fields, views);
+    if (views.own.back().views.empty() && views.set_of.back().empty() && !ambient)
+        node.fail("impostor needs 'views' (pictures), 'filename' (one picture) or 'ambient' (a flat colour)");
+    fields.warn_about_unknown_keys();
+    return impostor;
+}
+
+void read_impostors(ObjectReader& extensions, Scene& scene, ImpostorViews& views) {
+    views.sets = read_view_sets(extensions);
+    if (const auto list = extensions.optional("impostors")) {
+        for (const Node& node : list->elements()) scene.impostors.push_back(read_impostor(node, views));
+    }
+    for (const auto& [name, set] : views.sets) {
+        if (!set.used) extensions.node().warn("view set '" + name + "' is not used by any impostor (its images are not read)");
+    }
+}
+
+// Where every image goes: billboards, impostors' own views, and each view set in use once.
+std::vector<PendingImage> images_to_read(Scene& scene, const PendingBillboardImages& billboards, ImpostorViews& views) {
+    std::vector<PendingImage> pending;
+    for (const auto& [index, filename] : billboards) pending.push_back({filename, &scene.billboards[index].image});
+    const auto add_list = [&](ViewList& list, std::vector<ImpostorView>& destination) {
+        for (std::size_t i = 0; i < list.filenames.size(); ++i) pending.push_back({list.filenames[i], &destination[i].image});
+    };
+    for (auto& [name, set] : views.sets) {
+        if (set.used) add_list(set, set.views);
+    }
+    for (std::size_t i = 0; i < scene.impostors.size(); ++i) {
+        scene.impostors[i].views = views.own[i].views;
+        add_list(views.own[i], scene.impostors[i].views);
+    }
+    return pending;
+}
+
+// Impostors that show a set get its views, images included, once the images are read.
+void share_view_sets(Scene& scene, const ImpostorViews& views) {
+    for (std::size_t i = 0; i < scene.impostors.size(); ++i) {
+        if (!views.set_of[i].empty()) scene.impostors[i].views = views.sets.at(views.set_of[i]).views;
+    }
 }
 
 // --------------------------------------------------------------------------------------
@@ -403,7 +536,7 @@ Interpolation read_interpolation(const Node& node) {
 // clrender's own keys, all under "clrender" so they never clash with the course's. The
 // animation's length is given at most one way: frames per segment, total frames, or a
 // duration in seconds at the frame rate.
-void read_extensions(ObjectReader& file, Scene& scene) {
+void read_extensions(ObjectReader& file, Scene& scene, ImpostorViews& impostor_views) {
     std::optional<Node> node = file.optional("clrender");
     if (!node) return;
     ObjectReader extensions(*node, "clrender settings");
@@ -435,6 +568,7 @@ void read_extensions(ObjectReader& file, Scene& scene) {
     }
     if (length_keys.size() > 1)
         node->fail("give the animation's length one way only, not both '" + length_keys[0] + "' and '" + length_keys[1] + "'");
+    read_impostors(extensions, scene, impostor_views);
     extensions.warn_about_unknown_keys();
 }
 
@@ -464,9 +598,10 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     read_image_size(file, options, scene);
     read_background(file, scene);
     read_lighting(file, scene);
-    std::vector<PendingImage> pending_images;
-    read_objects(file, scene, pending_images);
-    read_extensions(file, scene);
+    PendingBillboardImages billboard_images;
+    read_objects(file, scene, billboard_images);
+    ImpostorViews impostor_views;
+    read_extensions(file, scene, impostor_views);
     if (options.samples_override) {
         if (*options.samples_override < 1 || *options.samples_override > kMaxSamplesPerPixel)
             throw SceneError(path, "", "--spp must be from 1 to " + std::to_string(kMaxSamplesPerPixel));
@@ -475,7 +610,8 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
-    attach_images(scene, pending_images, options);
+    attach_images(scene, images_to_read(scene, billboard_images, impostor_views), options);
+    share_view_sets(scene, impostor_views);
     return scene;
 }
 
