@@ -77,6 +77,7 @@ nlohmann::json row_json(const SceneRow& row, const RunSettings& settings) {
         {"scene", row.spec.name},
         {"spheres", row.spec.spheres},
         {"billboards", row.spec.billboards},
+        {"impostors", row.spec.impostors},
         {"covered_pixels", row.covered},
         {"clrender",
          {{"setup_ms", row.clr_setup_ms},
@@ -118,7 +119,7 @@ void print_table(std::ostream& out, const std::vector<SceneRow>& rows, const Run
         Figures f = figures_of(row, settings);
         any_single |= f.single_frame;
         auto peer = [&](const std::string& text) { return settings.with_embree ? text : std::string("n/a"); };
-        out << "| " << row.spec.name << (f.single_frame ? " *" : "") << " | " << row.spec.spheres + row.spec.billboards
+        out << "| " << row.spec.name << (f.single_frame ? " *" : "") << " | " << row.spec.objects()
             << " | " << rate(f.clr_kernel_mrays) << " | " << rate(f.clr_wall_mrays) << " | " << peer(rate(f.embree_mrays))
             << " | " << peer(fixed(f.clr_wall_mrays / f.embree_mrays, 2)) << " | " << peer(fixed(100 * row.differing, 4))
             << " | " << fixed(100 * row.covered, 1) << " |\n";

@@ -85,6 +85,22 @@ std::shared_ptr<Image> chessboard_image(std::uint32_t id, int size, int square) 
     });
 }
 
+// Three differently cut-out pictures of one impostor, seen from 25 degrees left, straight
+// ahead and 25 degrees right of the view axis: which one shows depends on where the impostor
+// stands, as a tree's view does in a forest.
+std::vector<ImpostorView> impostor_views(std::uint32_t id, int size) {
+    const double side = 25 * kPi / 180;
+    auto disc = sprite_image(id, size);
+    auto square = id_image(id, size, [size](int col, int row) -> std::uint8_t {
+        return col >= size / 8 && col < size - size / 8 && row >= size / 8 && row < size - size / 8 ? 255 : 0;
+    });
+    auto diamond = id_image(id, size, [size](int col, int row) -> std::uint8_t {
+        double dx = std::abs(col + 0.5 - size / 2.0), dy = std::abs(row + 0.5 - size / 2.0);
+        return dx + dy <= size / 2.0 ? 255 : 0;
+    });
+    return {{{-std::sin(side), 0, std::cos(side)}, disc}, {{0, 0, 1}, square}, {{std::sin(side), 0, std::cos(side)}, diamond}};
+}
+
 Sphere make_sphere(const Vec3& center, double radius, std::uint32_t id) {
     Sphere sphere;
     sphere.center = center;
@@ -153,7 +169,7 @@ PlaneExtent plane_extent(int width, int height) {
 void add_field_objects(Scene& scene, const BenchSceneSpec& spec, std::uint64_t seed) {
     PlaneExtent plane = plane_extent(scene.width, scene.height);
     double screen_area = 4 * plane.half_width * plane.half_height;
-    int count = spec.spheres + spec.billboards;
+    int count = spec.objects();
     const double mean_square_factor = 13.0 / 12.0;  // E[f^2] for f uniform in [0.5, 1.5]
     double mean_radius = std::sqrt(kDepthComplexity * screen_area / (count * kPi * mean_square_factor));
 
@@ -182,6 +198,14 @@ void add_field_objects(Scene& scene, const BenchSceneSpec& spec, std::uint64_t s
         scene.billboards.push_back(
             make_billboard(center - right + up, center - right - up, center + right + up, sprite_image(id, 16), id));
     }
+    for (int k = 0; k < spec.impostors; ++k) {
+        double depth, radius;
+        Impostor impostor;
+        impostor.center = place(depth, radius);
+        impostor.width = impostor.height = 2 * radius;
+        impostor.views = impostor_views(billboard_id(spec.spheres, spec.billboards + k), 16);
+        scene.impostors.push_back(std::move(impostor));
+    }
 }
 
 std::vector<BenchSceneSpec> make_specs() {
@@ -191,6 +215,7 @@ std::vector<BenchSceneSpec> make_specs() {
         {"256+256", 256, 256},
         {"4096+4096", 4096, 4096},
         {"100k spheres", 100000, 0},
+        {"10k impostors", 0, 0, 10000},
     };
 }
 
@@ -216,7 +241,7 @@ Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
         add_course_objects(scene);
     } else {
         // One fixed seed per object count, so that a scene never changes when others are added.
-        std::uint64_t seed = 0x5EEDB0A4D000ull + 1000003ull * spec.spheres + spec.billboards;
+        std::uint64_t seed = 0x5EEDB0A4D000ull + 1000003ull * spec.spheres + spec.billboards + 7919ull * spec.impostors;
         add_field_objects(scene, spec, seed);
     }
     return scene;

@@ -20,9 +20,12 @@ struct BenchSceneSpec {
     std::string name;  // as printed and as given to --scenes
     int spheres = 0;
     int billboards = 0;
+    int impostors = 0;  // upright, camera-facing, three views each (numbered after the billboards)
+
+    int objects() const { return spheres + billboards + impostors; }
 };
 
-// course, 16+16, 256+256, 4096+4096, 100k spheres, in that order.
+// course, 16+16, 256+256, 4096+4096, 100k spheres, 10k impostors, in that order.
 const std::vector<BenchSceneSpec>& bench_scene_specs();
 
 // The spec named `name`; throws std::invalid_argument listing the names when none matches.
@@ -34,7 +37,7 @@ const BenchSceneSpec& find_bench_scene(const std::string& name);
 Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height);
 
 // Object ids as both peers report them: 0 is the background, 1 + i sphere i, and
-// 1 + sphere_count + j billboard j.
+// 1 + sphere_count + j billboard j (impostors count as billboards, after the others).
 constexpr std::uint32_t kBackgroundId = 0;
 inline std::uint32_t sphere_id(int index) { return 1u + static_cast<std::uint32_t>(index); }
 inline std::uint32_t billboard_id(int sphere_count, int index) {

@@ -17,7 +17,7 @@ ClrCamera thumbnail_of(const Scene& scene) {
 }  // namespace
 
 ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, const ClrCamera& camera)
-    : camera_(camera) {
+    : camera_(camera), key_(scene.camera_path.front()), faces_camera_(!scene.impostors.empty()) {
     auto start = std::chrono::steady_clock::now();
     renderer_.emplace(device, scene);
     setup_ms_ = ms_since(start);
@@ -27,7 +27,9 @@ ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, const ClrC
 ClrenderFrame ClrenderSide::render_frame() {
     FrameTiming timing;
     auto start = std::chrono::steady_clock::now();
-    image_ = renderer_->render_frame(camera_, &timing);
+    // With impostors the frame's time includes placing them for the eye (and uploading them),
+    // which every frame of a moving camera pays; the scene's size is the benchmark's.
+    image_ = faces_camera_ ? renderer_->render_view(key_, &timing) : renderer_->render_frame(camera_, &timing);
     return {timing.kernel_ms, ms_since(start)};
 }
 

@@ -28,6 +28,8 @@ public:
 
 private:
     ClrCamera camera_;
+    CameraKey key_;
+    bool faces_camera_ = false;  // has impostors: each frame places them, as an animation must
     double setup_ms_ = 0;
     std::optional<Renderer> renderer_;  // constructed in the constructor's body, to time it
     Image image_;

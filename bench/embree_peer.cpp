@@ -331,7 +331,7 @@ EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std
     auto start = std::chrono::steady_clock::now();
     PeerScene& peer = state_->peer;
     peer.compiled = compile_scene(scene);
-    peer.billboard_boxes = compute_billboard_boxes(scene);
+    peer.billboard_boxes = compute_billboard_boxes(placed_scene(scene, peer.compiled));  // impostors as placed
     for (std::size_t i = 3; i < peer.compiled.texels.size(); i += 4) peer.texel_alpha.push_back(peer.compiled.texels[i]);
 
     state_->device.reset(rtcNewDevice(nullptr));

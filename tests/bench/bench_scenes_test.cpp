@@ -2,9 +2,11 @@
 // generation, object ids that survive the trip through a rendered colour, and a busy picture.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <set>
 
 #include "bench/bench_scenes.h"
+#include "reference/impostors.h"
 #include "reference/reference.h"
 #include "support/render_helpers.h"
 
@@ -17,10 +19,12 @@ bool same_billboard(const Billboard& a, const Billboard& b) {
            (!a.image || a.image->rgba == b.image->rgba);
 }
 
-// The object id seen through the centre of each pixel of a small frame, by the reference.
-std::vector<std::uint32_t> reference_ids(const Scene& scene, int width, int height) {
-    const CameraKey& key = scene.camera_path.front();
-    reference::CameraFrame camera = reference::make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, width, height);
+// The object id seen through the centre of each pixel of a small frame, by the reference
+// (impostors placed for that camera first: they count as billboards after the others).
+std::vector<std::uint32_t> reference_ids(const Scene& unplaced, int width, int height) {
+    const CameraKey& key = unplaced.camera_path.front();
+    reference::CameraFrame camera = reference::make_camera(key.eye, key.lookat, unplaced.up, unplaced.fov_degrees, width, height);
+    const Scene scene = reference::with_impostors_placed(unplaced, camera);
     std::vector<std::uint32_t> ids;
     int sphere_count = static_cast<int>(scene.spheres.size());
     for (int row = 0; row < height; ++row)
@@ -40,17 +44,22 @@ double covered_fraction(const std::vector<std::uint32_t>& ids) {
 }
 
 TEST(BenchScenes, AdvertisedCounts) {
-    const std::vector<std::pair<std::string, std::pair<int, int>>> advertised = {
-        {"course", {3, 2}}, {"16+16", {16, 16}}, {"256+256", {256, 256}},
-        {"4096+4096", {4096, 4096}}, {"100k spheres", {100000, 0}},
+    const std::vector<std::pair<std::string, std::array<int, 3>>> advertised = {
+        {"course", {3, 2, 0}},         {"16+16", {16, 16, 0}},         {"256+256", {256, 256, 0}},
+        {"4096+4096", {4096, 4096, 0}}, {"100k spheres", {100000, 0, 0}}, {"10k impostors", {0, 0, 10000}},
     };
     ASSERT_EQ(bench_scene_specs().size(), advertised.size());
     for (std::size_t i = 0; i < advertised.size(); ++i) {
         const BenchSceneSpec& spec = bench_scene_specs()[i];
         EXPECT_EQ(spec.name, advertised[i].first);
         Scene scene = make_bench_scene(spec, 192, 108);
-        EXPECT_EQ(static_cast<int>(scene.spheres.size()), advertised[i].second.first) << spec.name;
-        EXPECT_EQ(static_cast<int>(scene.billboards.size()), advertised[i].second.second) << spec.name;
+        EXPECT_EQ(static_cast<int>(scene.spheres.size()), advertised[i].second[0]) << spec.name;
+        EXPECT_EQ(static_cast<int>(scene.billboards.size()), advertised[i].second[1]) << spec.name;
+        EXPECT_EQ(static_cast<int>(scene.impostors.size()), advertised[i].second[2]) << spec.name;
+        for (const Impostor& impostor : scene.impostors) {
+            ASSERT_EQ(impostor.views.size(), 3u) << spec.name;
+            for (const ImpostorView& view : impostor.views) EXPECT_TRUE(view.image && view.image->has_transparency());
+        }
         EXPECT_FALSE(scene.lit()) << spec.name << ": the benchmark measures flat shading";
         for (const Billboard& billboard : scene.billboards) {
             EXPECT_FALSE(billboard.is_mirror);
@@ -71,6 +80,11 @@ TEST(BenchScenes, DeterministicFromFixedSeeds) {
             EXPECT_EQ(first.spheres[i].center, second.spheres[i].center) << spec.name << " sphere " << i;
             EXPECT_EQ(first.spheres[i].radius, second.spheres[i].radius) << spec.name << " sphere " << i;
             EXPECT_EQ(first.spheres[i].ambient, second.spheres[i].ambient) << spec.name << " sphere " << i;
+        }
+        ASSERT_EQ(first.impostors.size(), second.impostors.size());
+        for (std::size_t k = 0; k < first.impostors.size(); ++k) {
+            EXPECT_EQ(first.impostors[k].center, second.impostors[k].center) << spec.name << " impostor " << k;
+            EXPECT_EQ(first.impostors[k].width, second.impostors[k].width) << spec.name << " impostor " << k;
         }
         ASSERT_EQ(first.billboards.size(), second.billboards.size());
         for (std::size_t j = 0; j < first.billboards.size(); ++j)
@@ -112,9 +126,10 @@ TEST(BenchScenes, OpaqueTexelsShowTheBillboardsId) {
 TEST(BenchScenes, BusyPictures) {
     const std::vector<std::pair<std::string, double>> least_coverage = {
         {"course", 0.5}, {"16+16", 0.75}, {"256+256", 0.8}, {"4096+4096", 0.8}, {"100k spheres", 0.8},
+        {"10k impostors", 0.8},
     };
     for (const auto& [name, least] : least_coverage) {
-        bool huge = name == "100k spheres";  // the double reference is brute force too
+        bool huge = name == "100k spheres" || name == "10k impostors";  // the double reference is brute force too
         Scene scene = make_bench_scene(find_bench_scene(name), 1920, 1080);
         double covered = covered_fraction(reference_ids(scene, huge ? 32 : 96, huge ? 18 : 54));
         EXPECT_GE(covered, least) << name;
@@ -123,10 +138,12 @@ TEST(BenchScenes, BusyPictures) {
 
 // The kernels' image of a scene decodes to the reference's object ids, but on silhouettes.
 TEST(BenchScenes, RenderedColoursDecodeToObjectIds) {
-    for (const std::string name : {"course", "16+16"}) {
-        Scene scene = make_bench_scene(find_bench_scene(name), 96, 54);
+    for (const std::string name : {"course", "16+16", "10k impostors"}) {
+        bool huge = name == "10k impostors";
+        int width = huge ? 48 : 96, height = huge ? 27 : 54;
+        Scene scene = make_bench_scene(find_bench_scene(name), width, height);
         std::vector<std::uint32_t> kernel = object_ids(testing::render_with_kernels(scene));
-        std::vector<std::uint32_t> expected = reference_ids(scene, 96, 54);
+        std::vector<std::uint32_t> expected = reference_ids(scene, width, height);
         ASSERT_EQ(kernel.size(), expected.size());
         std::size_t differing = 0;
         for (std::size_t i = 0; i < kernel.size(); ++i) differing += kernel[i] != expected[i];
