@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "reference/impostors.h"
 #include "support/random_scene.h"
 #include "support/stage_runner.h"
 
@@ -49,11 +50,14 @@ struct Agreement {
     int rays = 0, hits = 0, disagreements = 0;
 };
 
-Agreement compare_with_reference(const Scene& scene, std::uint32_t seed, int ray_count) {
+// `device_scene` goes to the kernel; the reference sees `scene`, which is the same scene or,
+// when the device scene has impostors, the reference's own placement of them.
+Agreement compare_with_reference(const Scene& scene, std::uint32_t seed, int ray_count,
+                                 const Scene* device_scene = nullptr) {
     std::vector<reference::Ray> rays = testing::make_random_rays(scene, seed, ray_count);
     std::vector<ClrRay> device_rays;
     for (const auto& ray : rays) device_rays.push_back(testing::to_device_ray(ray));
-    testing::StageRunner runner(scene);
+    testing::StageRunner runner(device_scene ? *device_scene : scene);
     std::vector<ClrHit> hits = runner.intersect(device_rays);
 
     Agreement agreement;
@@ -104,6 +108,33 @@ TEST(Intersect, SpheresOnlyAndBillboardsOnlyScenes) {
         Agreement billboards = compare_with_reference(testing::make_random_scene(seed, 0, 20), seed, 2000);
         EXPECT_GT(spheres.hits, 200);
         EXPECT_GT(billboards.hits, 200);
+    }
+}
+
+// Impostors reach the kernel as billboards placed for the scene's camera; the reference
+// places them by itself. Their cut-out views must let rays through to what lies behind.
+TEST(Intersect, ImpostorsPlacedForTheCameraMatchTheReference) {
+    for (std::uint32_t seed : {201u, 202u, 203u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        Scene scene = testing::make_random_scene(seed, 4, 0);
+        Scene with_holes = testing::make_random_scene(seed + 50, 0, 12);  // billboards with cut-out images
+        for (std::size_t i = 0; i < with_holes.billboards.size(); ++i) {
+            const Billboard& shape = with_holes.billboards[i];
+            Impostor impostor;
+            impostor.center = (shape.upper_right + shape.lower_left) / 2.0;
+            impostor.width = length(shape.upper_right - shape.upper_left);
+            impostor.height = length(shape.lower_left - shape.upper_left);
+            impostor.facing = i % 2 ? Facing::Free : Facing::Upright;
+            impostor.ambient = shape.ambient;
+            if (shape.image) impostor.views = {{{0, 0, 1}, shape.image}, {{1, 0, 0}, shape.image}};
+            scene.impostors.push_back(impostor);
+        }
+        const CameraKey& key = scene.camera_path.front();
+        Scene placed = reference::with_impostors_placed(
+            scene, reference::make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height));
+        Agreement agreement = compare_with_reference(placed, seed, 3000, &scene);
+        EXPECT_GT(agreement.hits, 300);
+        EXPECT_LT(agreement.disagreements, agreement.rays / 200);
     }
 }
 
