@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The README's first command: install, build, and render the demo scene into out/: a still
-# image (demo.png) and the showcase animation as a video (showcase.mp4).
+# The README's first command: install, build, and render the demo into out/: a still image
+# (demo.png) and the showcase video (showcase.mp4), a flight through a generated forest of
+# camera-facing impostor trees (scripts/forest/, docs/forest.md).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${CLRENDER_BUILD_DIR:-$root/build}"
@@ -8,5 +9,6 @@ build="${CLRENDER_BUILD_DIR:-$root/build}"
 bash "$root/scripts/build.sh"
 mkdir -p "$root/out"
 "$build/clrender" "$root/scenes/demo/demo.json" -o "$root/out/demo.png"
-"$build/clrender" "$root/scenes/demo/showcase.json" --video "$root/out/showcase.mp4"
+"$build/clrender_make_forest" "$root/out/forest"
+"$build/clrender" "$root/out/forest/forest.json" --video "$root/out/showcase.mp4"
 echo "demo: wrote $root/out/demo.png and $root/out/showcase.mp4"

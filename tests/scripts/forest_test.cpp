@@ -1,0 +1,209 @@
+// The forest generator (scripts/forest): deterministic for a seed, trees that stand upright in
+// pictures that differ by view, every tree on the ground and clear of the camera, and a scene
+// that clrender reads without a warning.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "scene/scene_loader.h"
+#include "scripts/forest/camera_flight.h"
+#include "scripts/forest/forest_scene.h"
+#include "scripts/forest/tree_views.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using forest::Canvas;
+using testing::read_bytes;
+using testing::TempFolder;
+
+constexpr int kTrees = 400;
+constexpr int kFrames = 60;
+
+forest::ForestOptions small_forest(std::uint64_t seed) {
+    forest::ForestOptions options;
+    options.trees = kTrees;
+    options.seed = seed;
+    options.frames = kFrames;
+    options.width = 320;
+    options.height = 180;
+    return options;
+}
+
+// One forest written once and shared by the tests that only read it.
+class Forest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        folder_ = std::make_unique<TempFolder>();
+        forest::write_forest(small_forest(7), folder_->path());
+        scene_ = nlohmann::json::parse(read_bytes(folder_->file("forest.json")));
+    }
+    static void TearDownTestSuite() { folder_.reset(); }
+
+    static std::unique_ptr<TempFolder> folder_;
+    static nlohmann::json scene_;
+};
+
+std::unique_ptr<TempFolder> Forest::folder_;
+nlohmann::json Forest::scene_;
+
+Vec3 to_vec(const nlohmann::json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
+
+bool is_tree(const nlohmann::json& impostor) { return impostor.contains("views"); }
+
+TEST_F(Forest, SameSeedGivesTheSameBytesAndAnotherSeedAnotherLayout) {
+    TempFolder again, other;
+    forest::write_forest(small_forest(7), again.path());
+    forest::write_forest(small_forest(8), other.path());
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(folder_->path())) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_TRUE(read_bytes(entry.path()) == read_bytes(again.file(name))) << name << " differs between two runs";
+        ++files;
+    }
+    EXPECT_EQ(files, again.entry_count());
+    EXPECT_NE(read_bytes(folder_->file("forest.json")), read_bytes(other.file("forest.json")));
+}
+
+TEST_F(Forest, HasTheRequestedTreesEachStandingOnTheGround) {
+    int trees = 0;
+    std::set<std::string> kinds;
+    for (const nlohmann::json& impostor : scene_["clrender"]["impostors"]) {
+        if (!is_tree(impostor)) continue;
+        ++trees;
+        kinds.insert(impostor["views"].get<std::string>());
+        EXPECT_EQ(impostor.value("facing", "upright"), "upright");
+        EXPECT_NEAR(impostor["center"][1].get<double>(), impostor["height"].get<double>() / 2, 1e-9);
+    }
+    EXPECT_EQ(trees, kTrees);
+    EXPECT_EQ(kinds.size(), 3u);
+    for (const auto& [name, views] : scene_["clrender"]["view_sets"].items()) EXPECT_EQ(views.size(), 8u) << name;
+}
+
+TEST_F(Forest, CameraKeepsClearOfTreesAndAboveTheGround) {
+    std::vector<CameraKey> keys;
+    for (std::size_t i = 0; i < scene_["eyeLocations"].size(); ++i) {
+        keys.push_back({to_vec(scene_["eyeLocations"][i]), to_vec(scene_["lookatLocations"][i])});
+    }
+    const std::vector<Vec3> eyes = forest::sample_eyes(keys, 8 * kFrames);
+    double closest = 1e9;
+    for (const nlohmann::json& impostor : scene_["clrender"]["impostors"]) {
+        if (!is_tree(impostor)) continue;
+        const Vec3 centre = to_vec(impostor["center"]);
+        const double half_width = impostor["width"].get<double>() / 2, top = impostor["height"].get<double>();
+        for (const Vec3& eye : eyes) {
+            if (eye.y > top + 1) continue;
+            closest = std::min(closest, std::hypot(eye.x - centre.x, eye.z - centre.z) - half_width);
+        }
+    }
+    EXPECT_GE(closest, 1.0) << "the camera comes within a metre of a tree's picture";
+    for (const Vec3& eye : eyes) EXPECT_GT(eye.y, 1.5);
+}
+
+TEST_F(Forest, HasBoulders) {
+    EXPECT_GE(scene_["spheres"].size(), 24u);
+    for (const nlohmann::json& sphere : scene_["spheres"]) {
+        EXPECT_LT(sphere["center"][1].get<double>(), sphere["radius"].get<double>()) << "a boulder floats";
+    }
+}
+
+TEST_F(Forest, ClrenderReadsItWithoutWarnings) {
+    const Scene scene = load_scene(folder_->file("forest.json"));
+    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    EXPECT_EQ(scene.impostors.size(), static_cast<std::size_t>(kTrees) + 1);  // and the mountains
+    EXPECT_EQ(scene.camera_path.size(), scene_["eyeLocations"].size());
+    EXPECT_EQ(scene.spheres.size(), scene_["spheres"].size());
+}
+
+// ---------------------------------------------------------------------------------------
+// The tree pictures
+
+struct Opacity {
+    long transparent = 0, opaque = 0, partial = 0;
+};
+
+Opacity count_opacity(const Canvas& canvas) {
+    Opacity counts;
+    for (const forest::Rgba& t : canvas.texels) (t.a == 0 ? counts.transparent : t.a == 255 ? counts.opaque : counts.partial)++;
+    return counts;
+}
+
+// Mean column of the opaque texels in `row`, or -1 when there are none.
+double opaque_centre(const Canvas& canvas, int row) {
+    double sum = 0;
+    int count = 0;
+    for (int x = 0; x < canvas.width; ++x) {
+        if (canvas.at(x, row).a == 255) sum += x, ++count;
+    }
+    return count ? sum / count : -1;
+}
+
+bool same_texels(const Canvas& a, const Canvas& b) {
+    return std::equal(a.texels.begin(), a.texels.end(), b.texels.begin(), [](const forest::Rgba& p, const forest::Rgba& q) {
+        return p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a;
+    });
+}
+
+const Vec3 kLight = normalize(Vec3(-0.3, 1, 0.5));
+
+TEST(ForestTrees, PicturesAreCutOutsThatDifferByView) {
+    for (forest::TreeKind kind : forest::kTreeKinds) {
+        const forest::TreePictures pictures =
+            forest::render_tree_pictures(kind, forest::build_tree_model(kind, 3), kLight, 128);
+        ASSERT_EQ(pictures.views.size(), 8u);
+        for (std::size_t i = 0; i < pictures.views.size(); ++i) {
+            const Opacity counts = count_opacity(pictures.views[i]);
+            EXPECT_GT(counts.transparent, 0) << forest::kind_name(kind) << " view " << i;
+            EXPECT_GT(counts.opaque, 0) << forest::kind_name(kind) << " view " << i;
+            EXPECT_EQ(counts.partial, 0) << forest::kind_name(kind) << " view " << i;
+            for (std::size_t j = 0; j < i; ++j) {
+                EXPECT_FALSE(same_texels(pictures.views[i], pictures.views[j]))
+                    << forest::kind_name(kind) << " views " << i << " and " << j << " are the same";
+            }
+        }
+    }
+}
+
+TEST(ForestTrees, StandUprightOnTheBottomRow) {
+    for (forest::TreeKind kind : forest::kTreeKinds) {
+        const forest::TreePictures pictures =
+            forest::render_tree_pictures(kind, forest::build_tree_model(kind, 3), kLight, 128);
+        for (const Canvas& view : pictures.views) {
+            const int bottom = view.height - 1;
+            const double centre = opaque_centre(view, bottom);
+            ASSERT_GE(centre, 0) << forest::kind_name(kind) << ": the trunk does not reach the bottom row";
+            EXPECT_NEAR(centre, (view.width - 1) / 2.0, view.width * 0.05) << forest::kind_name(kind);
+            EXPECT_LT(count_opacity(view).opaque, static_cast<long>(view.width) * view.height);
+            // The top rows are the crown's tip: far narrower than the picture.
+            EXPECT_LT(opaque_centre(view, 0), 0) << forest::kind_name(kind) << ": the picture is cut at the top";
+        }
+    }
+}
+
+// A trunk with one ball on its +x side: the eye at +z sees the ball on its right, the eye at
+// -z on its left, as clrender's placement (right = up x towards-eye) shows them.
+TEST(ForestTrees, ViewsAreNotMirrored) {
+    forest::TreeModel model;
+    model.frusta.push_back({0, 0, -0.01, 1, 0.05, 0.05, {0.4, 0.3, 0.2}, forest::Surface::Bark});
+    model.balls.push_back({{0.3, 0.5, 0}, 0.1, {0.2, 0.6, 0.2}, forest::Surface::Leaves});
+    model.top = 1;
+    model.half_width = 0.4;
+    const Canvas from_front = forest::render_tree_view(model, {0, 0, 1}, kLight, 64, 80);
+    const Canvas from_back = forest::render_tree_view(model, {0, 0, -1}, kLight, 64, 80);
+    const Canvas from_side = forest::render_tree_view(model, {1, 0, 0}, kLight, 64, 80);
+    const int ball_row = 40;
+    EXPECT_GT(opaque_centre(from_front, ball_row), 40);
+    EXPECT_LT(opaque_centre(from_back, ball_row), 24);
+    EXPECT_NEAR(opaque_centre(from_side, ball_row), 31.5, 2);
+}
+
+}  // namespace
+}  // namespace clr
