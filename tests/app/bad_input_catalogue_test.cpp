@@ -263,6 +263,22 @@ std::vector<BadInput> catalogue() {
          {"bad.json: /billboards/0/filename:", "textures': not a file"}},
         bad_scene("EmptyImageFileName", image_scene(""), {"bad.json: /billboards/0/filename: filename must not be empty"}),
 
+        // --- Impostors (clrender extension)
+        bad_scene("ImpostorViewImageMissing",
+                  scene_with(R"("clrender": {"view_sets": {"pine": [{"filename": "pine_0.png", "direction": [0, 0, 1]}]},
+                                "impostors": [{"center": [0, 1, 0], "width": 1, "height": 2, "views": "pine"}]})"),
+                  {"bad.json: /clrender/view_sets/pine/0/filename: cannot read image", "pine_0.png': no such file"}),
+        bad_scene("ImpostorNamesAnUnknownViewSet",
+                  scene_with(R"("clrender": {"impostors": [{"center": [0, 1, 0], "width": 1, "height": 2, "views": "oak"}]})"),
+                  {"bad.json: /clrender/impostors/0/views: no view set named \"oak\""}),
+        bad_scene("ImpostorViewDirectionZero",
+                  scene_with(R"("clrender": {"impostors": [{"center": [0, 1, 0], "width": 1, "height": 2,
+                                "views": [{"filename": "a.png", "direction": [0, 0, 0]}]}]})"),
+                  {"bad.json: /clrender/impostors/0/views/0/direction: direction must not be the zero vector"}),
+        bad_scene("ImpostorWithoutWidth",
+                  scene_with(R"("clrender": {"impostors": [{"center": [0, 1, 0], "height": 2, "ambient": [1, 0, 0]}]})"),
+                  {"bad.json: /clrender/impostors/0: impostor is missing required key 'width'"}),
+
         // --- The scene path
         {"ScenePathIsAFolder", {}, {"scene.json"}, "scene.json", 2, {"scene.json: cannot read scene file: it is a folder"}},
         {"MissingSceneFile", {}, {}, "nowhere.json", 2, {"nowhere.json: cannot read scene file: no such file"}},
