@@ -16,10 +16,11 @@ namespace {
 // x) and warps on GPUs. An explicit size keeps every core busy on small images too.
 constexpr int kGroupWidth = 16;
 constexpr int kGroupHeight = 4;
-// render_packets: 16 pixels per work-item already fill the SIMD lanes, so a work-group is a
-// short column of packets (PoCL then has nothing left to vectorise across work-items).
-constexpr int kPacketWidth = 16;
-constexpr int kPacketGroupHeight = 4;
+// render_packets: one work-item per 16x16-pixel screen tile, whose rows of 16 pixels already
+// fill the SIMD lanes (PoCL has nothing left to vectorise across work-items). A work-group is
+// a short row of tiles: few enough work-groups that PoCL's cost per work-group stays small,
+// enough of them (over 500 at 1080p) to keep every core busy.
+constexpr int kTileGroupWidth = 4;
 
 std::size_t round_up(std::size_t value, std::size_t multiple) { return (value + multiple - 1) / multiple * multiple; }
 
@@ -132,10 +133,17 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
         render_kernel_.setArg(after_scene + 3, tile_nearest_);
         render_kernel_.setArg(after_scene + 4, static_cast<cl_int>(tiles_x_));
     }
-    // render_packets: one work-item per 16 pixels of a row; render: one per pixel.
-    std::size_t columns = screen_tiles_ ? (camera.width + kPacketWidth - 1) / kPacketWidth : camera.width;
-    cl::NDRange local = screen_tiles_ ? cl::NDRange(1, kPacketGroupHeight) : cl::NDRange(kGroupWidth, kGroupHeight);
-    cl::NDRange global(round_up(columns, local[0]), round_up(rows, local[1]));
+    // render_packets: one work-item per screen tile that the band's rows touch; render: one
+    // per pixel.
+    cl::NDRange local, global;
+    if (screen_tiles_) {
+        std::size_t tile_rows = (first_row + rows - 1) / kClrTileSize - first_row / kClrTileSize + 1;
+        local = cl::NDRange(kTileGroupWidth, 1);
+        global = cl::NDRange(round_up(tiles_x_, kTileGroupWidth), tile_rows);
+    } else {
+        local = cl::NDRange(kGroupWidth, kGroupHeight);
+        global = cl::NDRange(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
+    }
     cl::Event done;
     device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, local, nullptr, &done);
     device_.queue().enqueueReadBuffer(pixels_, CL_TRUE, 0, rows * row_bytes, image.rgba.data() + first_row * row_bytes);
