@@ -9,11 +9,15 @@ typedef struct {
     real16 x, y, z;
 } Directions16;
 
+/* The packet functions are inlined into render_packets: called, they pass their 16-lane
+ * vectors and results through the stack. */
+#define CLR_PACKET_INLINE __attribute__((always_inline))
+
 /* The 16 lanes' column offsets within the packet. */
 #define CLR_LANES ((int16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
 
 /* camera_ray_through() for pixels (col0 .. col0 + 15, row), at offsets (ox, oy) in them. */
-Directions16 camera_rays16(ClrCamera camera, int col0, int row, float16 ox, float16 oy)
+CLR_PACKET_INLINE Directions16 camera_rays16(ClrCamera camera, int col0, int row, float16 ox, float16 oy)
 {
     real16 col = convert_real16((int16)(col0) + CLR_LANES);
     real16 sx = 2.0f * (col + convert_real16(ox)) / (real)camera.width - 1.0f;
@@ -31,13 +35,13 @@ Directions16 camera_rays16(ClrCamera camera, int col0, int row, float16 ox, floa
     return d;
 }
 
-real16 dot16(real3 a, Directions16 d)
+CLR_PACKET_INLINE real16 dot16(real3 a, Directions16 d)
 {
     return a.x * d.x + a.y * d.y + a.z * d.z;
 }
 
 /* sphere_distance() for 16 rays from one origin. */
-real16 sphere_distance16(float4 center_radius, real3 origin, Directions16 d)
+CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, Directions16 d)
 {
     real radius = center_radius.w;
     real3 oc = origin - convert_real3(center_radius.xyz);
@@ -79,7 +83,7 @@ real16 sphere_distance16(float4 center_radius, real3 origin, Directions16 d)
 /* billboard_texel() for 16 points (a, b) of one billboard, as 32-bit words (RGBA bytes).
  * Lanes outside the billboard (`inside` false) read its first texel instead. The index is the
  * scalar formula in 16 lanes; the loads are a gather. */
-uint16 billboard_texels16(__global const ClrBillboard* billboard, __global const uchar4* texels, real16 a, real16 b,
+CLR_PACKET_INLINE uint16 billboard_texels16(__global const ClrBillboard* billboard, __global const uchar4* texels, real16 a, real16 b,
                           mask16 inside)
 {
     int width = billboard->texture_width;
@@ -98,7 +102,7 @@ uint16 billboard_texels16(__global const ClrBillboard* billboard, __global const
 /* billboard_distance() for 16 rays from one origin (t_max = infinity). When `want_texels`
  * and the billboard shows its image, *texel receives each hit lane's texel (for flat
  * shading), read at the same (a, b) as the alpha test and as billboard_color(). */
-real16 billboard_distance16(__global const ClrBillboard* billboard, __global const uchar4* texels, real3 origin,
+CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billboard, __global const uchar4* texels, real3 origin,
                             Directions16 d, int want_texels, uint16* texel)
 {
     real3 normal = convert_real3(billboard->normal.xyz);
@@ -139,7 +143,7 @@ real16 billboard_distance16(__global const ClrBillboard* billboard, __global con
  * visiting order does not matter and the answer is intersect_scene()'s, ties included.
  * With flat shading, *r, *g, *b receive each lane's colour as shade_hit() gives it: the
  * background, a sphere's or untextured billboard's colour, or texel_color() of its texel. */
-void intersect_tile16(real3 origin, Directions16 d, __global const uint* items, __global const float* item_nearest,
+CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, __global const uint* items, __global const float* item_nearest,
                       uint first, uint end, CLR_SCENE_PARAMS, real16* best_t, int16* best_kind, int16* best_index,
                       float16* r, float16* g, float16* b)
 {

@@ -45,7 +45,7 @@ __kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_P
 
 /* The display bytes of 16 pixels, packed as RGBA words (alpha 255): color_to_byte() of the
  * mean of their samples' colours (the sums r, g, b over `samples`). */
-uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
+CLR_PACKET_INLINE uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
 {
     float n = (float)samples;
     uint16 rb = convert_uint16(floor(clamp(r / n, 0.0f, 1.0f) * 255.0f + 0.5f));
@@ -59,7 +59,7 @@ uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
 }
 
 /* Writes the first `lanes` of 16 packed pixels to out[0 .. lanes - 1]. */
-void store_pixels16(__global uchar4* out, uint16 packed, int lanes)
+CLR_PACKET_INLINE void store_pixels16(__global uchar4* out, uint16 packed, int lanes)
 {
     __global uint* words = (__global uint*)out;
     if (lanes == 16) {
@@ -76,7 +76,7 @@ void store_pixels16(__global uchar4* out, uint16 packed, int lanes)
  * items[first] .. items[end - 1], as packed display words. The rays are intersected together
  * (intersect_packet.cl); with flat shading their colours come from the same loop, otherwise
  * each lane's path is shaded by trace_path(). */
-uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, __global const uint* tile_items,
+CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, __global const uint* tile_items,
                     __global const float* item_nearest, uint first, uint end, CLR_SCENE_PARAMS)
 {
     float16 rs = (float16)(0.0f), gs = (float16)(0.0f), bs = (float16)(0.0f); /* sums over samples */
