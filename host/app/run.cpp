@@ -37,6 +37,7 @@ struct RunReport {
     std::string device;
     double load_ms = 0;
     double build_ms = 0;
+    int cache_hits = 0;
     double render_ms = 0;
     double write_ms = 0;
     double total_ms = 0;
@@ -50,7 +51,7 @@ void write_stats(const std::string& path, const RunReport& report) {
     nlohmann::json stats = {
         {"device", report.device},
         {"build_ms", report.build_ms},
-        {"cache_hits", 0},  // programs are built on every run; PoCL's own cache makes rebuilds fast
+        {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
                        {"write", report.write_ms}, {"total", report.total_ms}}},
         {"frames", frames},
@@ -102,6 +103,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene);
     report.device = renderer->device_name();
     report.build_ms = renderer->build_ms();
+    report.cache_hits = renderer->cache_hits();
     if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
 
     FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality);

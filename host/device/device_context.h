@@ -21,12 +21,16 @@ public:
 
     // Builds `source` with `options`. A failure throws DeviceError carrying the build
     // options and the compiler's log.
+    // Builds from the program cache's binary when it has one (device/program_cache.h), and
+    // stores the binary of a build from source there.
     cl::Program build_program(const std::string& source, const std::string& options) const;
+    int cache_hits() const { return cache_hits_; }  // builds served by the program cache
 
 private:
     DeviceEntry entry_;
     cl::Context context_;
     cl::CommandQueue queue_;
+    mutable int cache_hits_ = 0;
 };
 
 }  // namespace clr

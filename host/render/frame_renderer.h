@@ -17,6 +17,7 @@ public:
     virtual Image render(const CameraKey& key, int frame, FrameTiming* timing) = 0;
     virtual std::string device_name() const = 0;
     virtual double build_ms() const = 0;  // program build time, 0 for the reference
+    virtual int cache_hits() const { return 0; }  // programs built from the program cache
 };
 
 // Opens the device chosen by `device_selector` (see select_device), builds the scene's
