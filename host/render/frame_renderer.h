@@ -4,7 +4,9 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "device/device_selection.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -24,6 +26,10 @@ public:
 // program and uploads its buffers, once. Throws DeviceError.
 std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::string& device_selector,
                                                           const RendererOptions& options = {});
+// The same, choosing among `devices` (list_devices(), e.g. listed while the scene loaded).
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::vector<DeviceEntry>& devices,
+                                                          const std::string& device_selector,
+                                                          const RendererOptions& options);
 
 std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene);
 
