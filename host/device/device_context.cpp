@@ -45,14 +45,20 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
         throw DeviceError(describe_cl_error(error, "building the OpenCL program for '" + entry_.device_name + "'") +
                           "\nbuild options: " + options + "\nbuild log:\n" + log);
     }
-    if (!key.empty()) {
+    // Asking PoCL for the binary compiles every kernel of the program (0.8 s cold): that is
+    // left to the end of the context's life, after the frames are written.
+    if (!key.empty()) to_store_.push_back({cache.folder(), key, program});
+    return program;
+}
+
+DeviceContext::~DeviceContext() {
+    for (const PendingEntry& entry : to_store_) {
         try {
-            std::vector<std::vector<unsigned char>> binaries = program.getInfo<CL_PROGRAM_BINARIES>();
-            if (binaries.size() == 1) cache.store(key, binaries.front());
-        } catch (const cl::Error&) {
+            std::vector<std::vector<unsigned char>> binaries = entry.program.getInfo<CL_PROGRAM_BINARIES>();
+            if (binaries.size() == 1) ProgramCache(entry.folder).store(entry.key, binaries.front());
+        } catch (...) {  // best effort: a destructor does not throw
         }
     }
-    return program;
 }
 
 }  // namespace clr

@@ -99,10 +99,13 @@ TEST(ProgramCache, ASecondBuildComesFromTheCacheAndACorruptEntryIsRebuilt) {
     const std::string options = features.build_options();
     const DeviceEntry& entry = testing::test_device().entry();
 
-    DeviceContext first(entry);
-    first.build_program(source, options);
-    EXPECT_EQ(first.cache_hits(), 0);
     const std::string path = ProgramCache(folder.path()).path(ProgramCache::key(entry.device, source, options));
+    {
+        DeviceContext first(entry);
+        first.build_program(source, options);
+        EXPECT_EQ(first.cache_hits(), 0);
+        EXPECT_FALSE(fs::exists(path)) << "stored when the context closes, after the frames";
+    }
     ASSERT_TRUE(fs::exists(path));
 
     DeviceContext second(entry);
