@@ -43,38 +43,68 @@ __kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_P
     pixels[band_row * camera.width + col] = display_pixel(sum / (float)camera.samples);
 }
 
-/* The same as render, with screen-tile culling for the primary rays and 16 pixels per
- * work-item: work-item (x, y) renders pixels 16x .. 16x + 15 of row first_row + y, which lie
- * in one screen tile. Their primary rays are intersected together with the tile's objects
- * only (intersect_packet.cl), then shaded one by one. Identical output to render. */
-__kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
-                             __global uchar4* pixels, __global const uint* tile_offsets,
-                             __global const uint* tile_items, __global const float* item_nearest, int tiles_x)
+/* The display bytes of 16 pixels, packed as RGBA words (alpha 255): color_to_byte() of the
+ * mean of their samples' colours (the sums r, g, b over `samples`). */
+CLR_PACKET_INLINE uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
 {
-    int col0 = get_global_id(0) * 16;
-    int band_row = get_global_id(1);
-    if (col0 >= camera.width || band_row >= row_count)
+    float n = (float)samples;
+    uint16 rb = convert_uint16(floor(clamp(r / n, 0.0f, 1.0f) * 255.0f + 0.5f));
+    uint16 gb = convert_uint16(floor(clamp(g / n, 0.0f, 1.0f) * 255.0f + 0.5f));
+    uint16 bb = convert_uint16(floor(clamp(b / n, 0.0f, 1.0f) * 255.0f + 0.5f));
+#if __ENDIAN_LITTLE__
+    return rb | (gb << 8) | (bb << 16) | (uint16)(0xff000000u);
+#else
+    return (rb << 24) | (gb << 16) | (bb << 8) | (uint16)(0xffu);
+#endif
+}
+
+/* Writes the first `lanes` of 16 packed pixels to out[0 .. lanes - 1]. */
+CLR_PACKET_INLINE void store_pixels16(__global uchar4* out, uint16 packed, int lanes)
+{
+    __global uint* words = (__global uint*)out;
+    if (lanes == 16) {
+        vstore16(packed, 0, words);
         return;
-    int row = first_row + band_row;
-    int tile = (row / CLR_TILE_SIZE) * tiles_x + col0 / CLR_TILE_SIZE;
-    real3 eye = convert_real3(camera.eye.xyz);
-    uint first = tile_offsets[tile], end = tile_offsets[tile + 1];
-    float rs[16], gs[16], bs[16];  /* per lane: the sum of its samples' colours */
-    for (int lane = 0; lane < 16; ++lane)
-        rs[lane] = gs[lane] = bs[lane] = 0.0f;
+    }
+    uint w[16];
+    vstore16(packed, 0, w);
+    for (int lane = 0; lane < lanes; ++lane)
+        words[lane] = w[lane];
+}
+
+/* Pixels col0 .. col0 + 15 of `row`, whose primary rays meet only objects of the tile list
+ * items[first] .. items[end - 1], as packed display words. The rays are intersected together
+ * (intersect_packet.cl); with flat shading their colours come from the same loop, otherwise
+ * each lane's path is shaded by trace_path(). */
+CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, __global const uint* tile_items,
+                    __global const float* item_nearest, uint first, uint end, CLR_SCENE_PARAMS)
+{
+    float16 rs = (float16)(0.0f), gs = (float16)(0.0f), bs = (float16)(0.0f); /* sums over samples */
     for (int sample = 0; sample < camera.samples; ++sample) {
-        float oxs[16], oys[16];
-        for (int lane = 0; lane < 16; ++lane) {
-            oxs[lane] = clr_sample_offset_x(camera.frame_seed, col0 + lane, row, sample, camera.samples);
-            oys[lane] = clr_sample_offset_y(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+        float16 ox = (float16)(0.5f), oy = (float16)(0.5f); /* one sample: the centre (clr_samples.h) */
+        if (camera.samples > 1) {
+            float oxs[16], oys[16];
+            for (int lane = 0; lane < 16; ++lane) {
+                oxs[lane] = clr_sample_offset_x(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+                oys[lane] = clr_sample_offset_y(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+            }
+            ox = vload16(0, oxs);
+            oy = vload16(0, oys);
         }
-        Directions16 d = camera_rays16(camera, col0, row, vload16(0, oxs), vload16(0, oys));
+        Directions16 d = camera_rays16(camera, col0, row, ox, oy);
         real16 best_t;
         int16 best_kind, best_index;
-        intersect_tile16(eye, d, tile_items, item_nearest, first, end, CLR_SCENE_ARGS, &best_t, &best_kind, &best_index);
-
+        float16 r, g, b;
+        intersect_tile16(eye, d, tile_items, item_nearest, first, end, CLR_SCENE_ARGS, &best_t, &best_kind, &best_index,
+                         &r, &g, &b);
+#if CLR_FLAT_SHADING
+        rs += r;
+        gs += g;
+        bs += b;
+#else
         real ts[16], xs[16], ys[16], zs[16];
         int kinds[16], indices[16];
+        float rl[16], gl[16], bl[16];
         vstore16(best_t, 0, ts);
         vstore16(best_kind, 0, kinds);
         vstore16(best_index, 0, indices);
@@ -88,22 +118,51 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
             hit.index = indices[lane];
             real3 direction = (real3)(xs[lane], ys[lane], zs[lane]);
             float3 color = trace_path(eye, direction, hit, CLR_SCENE_ARGS);
-            rs[lane] += color.x;
-            gs[lane] += color.y;
-            bs[lane] += color.z;
+            rl[lane] = color.x;
+            gl[lane] = color.y;
+            bl[lane] = color.z;
         }
+        rs += vload16(0, rl);
+        gs += vload16(0, gl);
+        bs += vload16(0, bl);
+#endif
     }
+    return display_pixels16(rs, gs, bs, camera.samples);
+}
+
+/* The same as render, with screen-tile culling for the primary rays: work-item (x, y)
+ * renders screen tile x of tile row first_row / CLR_TILE_SIZE + y, that is the rows of its
+ * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16). A tile
+ * that no object can reach is the background's colour throughout. Identical output to
+ * render. */
+__kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
+                             __global uchar4* pixels, __global const uint* tile_offsets,
+                             __global const uint* tile_items, __global const float* item_nearest, int tiles_x)
+{
+    int tile_x = get_global_id(0);
+    int tile_y = first_row / CLR_TILE_SIZE + (int)get_global_id(1);
+    int col0 = tile_x * CLR_TILE_SIZE;
+    int row_begin = max(first_row, tile_y * CLR_TILE_SIZE);
+    int row_end = min(first_row + row_count, (tile_y + 1) * CLR_TILE_SIZE);
+    if (col0 >= camera.width || row_begin >= row_end)
+        return;
     int lanes = min(16, camera.width - col0);
-    /* color_to_byte() for 16 pixels at once */
-    float samples = (float)camera.samples;
-    uchar16 r = convert_uchar16(floor(clamp(vload16(0, rs) / samples, 0.0f, 1.0f) * 255.0f + 0.5f));
-    uchar16 g = convert_uchar16(floor(clamp(vload16(0, gs) / samples, 0.0f, 1.0f) * 255.0f + 0.5f));
-    uchar16 b = convert_uchar16(floor(clamp(vload16(0, bs) / samples, 0.0f, 1.0f) * 255.0f + 0.5f));
-    uchar rb[16], gb[16], bb[16];
-    vstore16(r, 0, rb);
-    vstore16(g, 0, gb);
-    vstore16(b, 0, bb);
-    __global uchar4* out = pixels + band_row * camera.width + col0;
-    for (int lane = 0; lane < lanes; ++lane)
-        out[lane] = (uchar4)(rb[lane], gb[lane], bb[lane], 255);
+    int tile = tile_y * tiles_x + tile_x;
+    uint first = tile_offsets[tile], end = tile_offsets[tile + 1];
+    __global uchar4* out = pixels + (row_begin - first_row) * camera.width + col0;
+    if (first == end) {
+        /* Every sample sees the background: the mean as render computes it, once. */
+        float3 sum = (float3)(0.0f);
+        for (int sample = 0; sample < camera.samples; ++sample)
+            sum += info.background.xyz;
+        float3 mean = sum / (float)camera.samples;
+        uint16 packed = display_pixels16((float16)(mean.x), (float16)(mean.y), (float16)(mean.z), 1);
+        for (int row = row_begin; row < row_end; ++row, out += camera.width)
+            store_pixels16(out, packed, lanes);
+        return;
+    }
+    real3 eye = convert_real3(camera.eye.xyz);
+    for (int row = row_begin; row < row_end; ++row, out += camera.width)
+        store_pixels16(out, render_row16(camera, eye, col0, row, tile_items, item_nearest, first, end, CLR_SCENE_ARGS),
+                       lanes);
 }

@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   ocl-icd-opencl-dev opencl-clhpp-headers pocl-opencl-icd clinfo
-  nlohmann-json3-dev libstb-dev libcli11-dev
+  nlohmann-json3-dev libstb-dev libcli11-dev zlib1g-dev
   googletest libgtest-dev
   ffmpeg
   parallel
@@ -16,7 +16,7 @@ packages=(
   # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and the libraries its
   # seed generator writes PNGs and JPEGs with. (gcc's ASan and UBSan runtimes, which
   # scripts/sanitize.sh uses, come with build-essential.)
-  clang libclang-rt-14-dev zlib1g-dev libjpeg62-turbo-dev
+  clang libclang-rt-14-dev libjpeg62-turbo-dev
 )
 
 missing=()

@@ -2,6 +2,7 @@
 
 #include "core/errors.h"
 #include "device/cl_errors.h"
+#include "device/program_cache.h"
 
 namespace clr {
 
@@ -15,6 +16,22 @@ DeviceContext::DeviceContext(const DeviceEntry& device) : entry_(device) {
 }
 
 cl::Program DeviceContext::build_program(const std::string& source, const std::string& options) const {
+    // A binary from an earlier run first (device/program_cache.h); a binary the driver
+    // refuses is a miss like any other.
+    const ProgramCache cache = ProgramCache::from_environment();
+    std::string key;
+    if (cache.enabled()) {
+        try {
+            key = ProgramCache::key(entry_.device, source, options);
+            if (auto binary = cache.load(key)) {
+                cl::Program cached(context_, {entry_.device}, cl::Program::Binaries{*binary});
+                cached.build({entry_.device}, options.c_str());
+                ++cache_hits_;
+                return cached;
+            }
+        } catch (const cl::Error&) {
+        }
+    }
     cl::Program program(context_, source);
     try {
         program.build({entry_.device}, options.c_str());
@@ -28,7 +45,20 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
         throw DeviceError(describe_cl_error(error, "building the OpenCL program for '" + entry_.device_name + "'") +
                           "\nbuild options: " + options + "\nbuild log:\n" + log);
     }
+    // Asking PoCL for the binary compiles every kernel of the program (0.8 s cold): that is
+    // left to the end of the context's life, after the frames are written.
+    if (!key.empty()) to_store_.push_back({cache.folder(), key, program});
     return program;
+}
+
+DeviceContext::~DeviceContext() {
+    for (const PendingEntry& entry : to_store_) {
+        try {
+            std::vector<std::vector<unsigned char>> binaries = entry.program.getInfo<CL_PROGRAM_BINARIES>();
+            if (binaries.size() == 1) ProgramCache(entry.folder).store(entry.key, binaries.front());
+        } catch (...) {  // best effort: a destructor does not throw
+        }
+    }
 }
 
 }  // namespace clr

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "device/device_selection.h"
 #include "device/opencl.h"
@@ -13,6 +14,10 @@ class DeviceContext {
 public:
     // Throws DeviceError when the device cannot be opened.
     explicit DeviceContext(const DeviceEntry& device);
+    // Stores the binaries of the programs built from source in the program cache.
+    ~DeviceContext();
+    DeviceContext(const DeviceContext&) = delete;
+    DeviceContext& operator=(const DeviceContext&) = delete;
 
     const DeviceEntry& entry() const { return entry_; }
     const cl::Device& device() const { return entry_.device; }
@@ -21,12 +26,21 @@ public:
 
     // Builds `source` with `options`. A failure throws DeviceError carrying the build
     // options and the compiler's log.
+    // Builds from the program cache's binary when it has one (device/program_cache.h); the
+    // binary of a build from source goes there when the context closes.
     cl::Program build_program(const std::string& source, const std::string& options) const;
+    int cache_hits() const { return cache_hits_; }  // builds served by the program cache
 
 private:
     DeviceEntry entry_;
     cl::Context context_;
     cl::CommandQueue queue_;
+    mutable int cache_hits_ = 0;
+    struct PendingEntry {
+        std::string folder, key;
+        cl::Program program;
+    };
+    mutable std::vector<PendingEntry> to_store_;
 };
 
 }  // namespace clr

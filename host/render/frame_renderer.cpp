@@ -18,6 +18,7 @@ public:
     }
     std::string device_name() const override { return device_.entry().device_name; }
     double build_ms() const override { return renderer_.build_ms(); }
+    int cache_hits() const override { return device_.cache_hits(); }
 
 private:
     const Scene& scene_;
@@ -51,7 +52,13 @@ private:
 
 std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::string& device_selector,
                                                           const RendererOptions& options) {
-    return std::make_unique<OpenClFrameRenderer>(scene, select_device(list_devices(), device_selector), options);
+    return make_opencl_frame_renderer(scene, list_devices(), device_selector, options);
+}
+
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::vector<DeviceEntry>& devices,
+                                                          const std::string& device_selector,
+                                                          const RendererOptions& options) {
+    return std::make_unique<OpenClFrameRenderer>(scene, select_device(devices, device_selector), options);
 }
 
 std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene) {

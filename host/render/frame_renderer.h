@@ -4,7 +4,9 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "device/device_selection.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -17,12 +19,17 @@ public:
     virtual Image render(const CameraKey& key, int frame, FrameTiming* timing) = 0;
     virtual std::string device_name() const = 0;
     virtual double build_ms() const = 0;  // program build time, 0 for the reference
+    virtual int cache_hits() const { return 0; }  // programs built from the program cache
 };
 
 // Opens the device chosen by `device_selector` (see select_device), builds the scene's
 // program and uploads its buffers, once. Throws DeviceError.
 std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::string& device_selector,
                                                           const RendererOptions& options = {});
+// The same, choosing among `devices` (list_devices(), e.g. listed while the scene loaded).
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::vector<DeviceEntry>& devices,
+                                                          const std::string& device_selector,
+                                                          const RendererOptions& options);
 
 std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene);
 

@@ -118,27 +118,41 @@ ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const 
     ScreenTiles tiles;
     tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
     tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
-    std::vector<std::vector<std::uint32_t>> lists(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y);
-    std::vector<std::vector<float>> nearest(lists.size());
+    // Two passes over flat arrays (count per tile, then fill in candidate order), without a
+    // list per tile: a frame bins anew, and 8,000 small vectors at 1080p cost milliseconds.
+    struct Placed {
+        std::uint32_t item;
+        float bound;
+        std::array<int, 4> range;
+    };
+    std::vector<Placed> placed;
+    placed.reserve(candidates.size());
+    std::vector<std::uint32_t> counts(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y + 1, 0);
     for (const Candidate& candidate : candidates) {
         std::array<int, 4> range;
         if (!tile_range(candidate, tiles, camera.width, camera.height, range)) continue;
         // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
         // one, and the kernel must never skip an object that its float ray does hit first.
-        float bound = static_cast<float>(candidate.nearest * (1 - 1e-5));
+        placed.push_back({candidate.item, static_cast<float>(candidate.nearest * (1 - 1e-5)), range});
         for (int ty = range[2]; ty <= range[3]; ++ty)
-            for (int tx = range[0]; tx <= range[1]; ++tx) {
-                lists[ty * tiles.tiles_x + tx].push_back(candidate.item);
-                nearest[ty * tiles.tiles_x + tx].push_back(bound);
+            for (int tx = range[0]; tx <= range[1]; ++tx) ++counts[ty * tiles.tiles_x + tx];
+    }
+    tiles.offsets.resize(counts.size());
+    std::uint32_t total = 0;
+    for (std::size_t t = 0; t < counts.size(); ++t) {
+        tiles.offsets[t] = total;
+        total += counts[t];
+    }
+    tiles.items.resize(total);
+    tiles.nearest.resize(total);
+    std::vector<std::uint32_t> next(tiles.offsets.begin(), tiles.offsets.end() - 1);
+    for (const Placed& p : placed)
+        for (int ty = p.range[2]; ty <= p.range[3]; ++ty)
+            for (int tx = p.range[0]; tx <= p.range[1]; ++tx) {
+                std::uint32_t slot = next[ty * tiles.tiles_x + tx]++;
+                tiles.items[slot] = p.item;
+                tiles.nearest[slot] = p.bound;
             }
-    }
-    tiles.offsets.reserve(lists.size() + 1);
-    tiles.offsets.push_back(0);
-    for (std::size_t t = 0; t < lists.size(); ++t) {
-        tiles.items.insert(tiles.items.end(), lists[t].begin(), lists[t].end());
-        tiles.nearest.insert(tiles.nearest.end(), nearest[t].begin(), nearest[t].end());
-        tiles.offsets.push_back(static_cast<std::uint32_t>(tiles.items.size()));
-    }
     return tiles;
 }
 

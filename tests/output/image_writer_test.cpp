@@ -58,6 +58,30 @@ TEST(ImageWriter, PngDecodesToTheSameRgbWithoutAlpha) {
     EXPECT_EQ(decoded, rgb_of(image));
 }
 
+// Noise does not compress: more than 1 MiB of deflated data, split over several IDAT chunks.
+TEST(ImageWriter, LargePngSpansSeveralDataChunksAndDecodesExactly) {
+    TempFolder folder;
+    Image image;
+    image.width = 700;
+    image.height = 600;
+    std::uint32_t state = 12345;
+    for (int i = 0; i < image.width * image.height * 4; ++i) {
+        state = state * 1664525u + 1013904223u;
+        image.rgba.push_back(static_cast<std::uint8_t>(state >> 24));
+    }
+    write_image(folder.file("noise.png"), image);
+    const std::string bytes = read_bytes(folder.file("noise.png"));
+    EXPECT_GT(bytes.size(), std::size_t{1} << 20);
+    int width = 0, height = 0, channels_in_file = 0;
+    stbi_uc* pixels = stbi_load(folder.file("noise.png").c_str(), &width, &height, &channels_in_file, 3);
+    ASSERT_NE(pixels, nullptr) << stbi_failure_reason();
+    const std::vector<std::uint8_t> decoded(pixels, pixels + width * height * 3);
+    stbi_image_free(pixels);
+    EXPECT_EQ(width, 700);
+    EXPECT_EQ(height, 600);
+    EXPECT_EQ(decoded, rgb_of(image));
+}
+
 TEST(ImageWriter, PpmIsBinaryP6WithExactBytes) {
     TempFolder folder;
     const Image image = make_test_image();

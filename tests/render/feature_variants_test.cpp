@@ -189,3 +189,43 @@ TEST(Bvh, OnlyScenesWithSecondaryRaysAndManyObjectsGetOne) {
 
 }  // namespace
 }  // namespace clr
+
+namespace clr {
+namespace {
+
+// render_packets' fast paths for flat shading: tiles no object reaches (filled with the
+// background's mean over the samples at once) and colours taken from the intersection loop
+// (spheres, flat billboards, textured ones with and without holes), in float and double, with
+// one and several samples, against the fully general brute-force kernel.
+TEST(ScreenTiles, FlatShadingFastPathsEqualBruteForce) {
+    Scene scene = testing::make_random_scene(250, 6, 6);
+    for (Sphere& sphere : scene.spheres) sphere.radius *= 0.4;  // leave most tiles empty
+    auto opaque = testing::make_image(5, 3, [](int col, int row) {
+        return std::array<std::uint8_t, 4>{std::uint8_t(col * 50 + 3), std::uint8_t(row * 90 + 1), 77, 255};
+    });
+    scene.billboards.push_back(testing::make_billboard({-2, 3, 4}, {-2, 1, 4}, {1, 3, 3}, {0, 1, 0}, opaque));
+    scene.background = {0.1, 0.7, 0.3};  // not exactly representable: the mean over samples must round alike
+    scene.camera_path = {{{3, 4, 40}, {0, 0, 0}}};
+    scene.width = 101;
+    scene.height = 70;
+    FeatureSet features = FeatureSet::of(scene);
+    ASSERT_TRUE(features.textures && features.alpha && !features.sun && !features.mirrors);
+    for (bool in_double : {false, true})
+        for (int samples : {1, 3}) {
+            SCOPED_TRACE(std::string(in_double ? "double, " : "float, ") + std::to_string(samples) + " samples");
+            scene.sampling.samples_per_pixel = samples;
+            RendererOptions packets, general;
+            packets.double_precision = general.double_precision = in_double;
+            general.features = FeatureSet::all();
+            general.screen_tiles = false;
+            Image tiled = testing::render_with_kernels(scene, packets);
+            EXPECT_TRUE(tiled.rgba == testing::render_with_kernels(scene, general).rgba);
+            int background_pixels = 0;
+            for (std::size_t i = 0; i < tiled.rgba.size(); i += 4)
+                background_pixels += tiled.rgba[i] == 26 && tiled.rgba[i + 1] == 179 && tiled.rgba[i + 2] == 77;
+            EXPECT_GT(background_pixels, static_cast<int>(tiled.rgba.size() / 4 / 3)) << "mostly empty tiles";
+        }
+}
+
+}  // namespace
+}  // namespace clr
