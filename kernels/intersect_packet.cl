@@ -64,6 +64,10 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, D
  * colour, so render_packets takes it from the intersection loop, 16 lanes at a time, instead
  * of shading lane by lane (the same values as shade_hit(): see intersect_tile16). */
 #define CLR_FLAT_SHADING (!CLR_FEATURE_SUN && !CLR_FEATURE_MIRRORS)
+/* Without mirrors, every lane that does not end on a sphere shows a flat colour (the
+ * background, or a billboard's texel or colour: billboards are unlit), so the loop provides
+ * it even with a sun; only lanes on spheres are then shaded one by one. */
+#define CLR_LOOP_COLORS (!CLR_FEATURE_MIRRORS)
 
 /* A comparison of two int16 as a mask16 (what comparing two real16 gives). */
 #if CLR_FEATURE_DOUBLE
@@ -136,21 +140,23 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
 }
 
 /* The nearest hits of 16 primary rays among the objects binned to their screen tile
- * (items[first] .. items[end - 1], nearest first; see host/render/screen_tiles.h). The loop
+ * (items[first] .. items[end - 1], nearest first; see host/render/screen_tiles.h), skipping
+ * those whose pixel rows (item_rows) leave out this `row`. The loop
  * ends once every lane's hit is nearer than every object left (item_nearest holds a lower
  * bound on each object's hit distance). Hits are compared by (t, kind, index): nearer, or as
  * near and first in intersect_scene()'s order (spheres, then billboards, by index), so the
  * visiting order does not matter and the answer is intersect_scene()'s, ties included.
- * With flat shading, *r, *g, *b receive each lane's colour as shade_hit() gives it: the
- * background, a sphere's or untextured billboard's colour, or texel_color() of its texel. */
-CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, __global const uint* items, __global const float* item_nearest,
-                      uint first, uint end, CLR_SCENE_PARAMS, real16* best_t, int16* best_kind, int16* best_index,
+ * Without mirrors (CLR_LOOP_COLORS), *r, *g, *b receive each lane's colour as flat shading
+ * gives it: the background, a sphere's ambient or untextured billboard's colour, or
+ * texel_color() of its texel; with a sun, lanes on spheres still need shade_hit(). */
+CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, __global const uint* items,
+                      __global const float* item_nearest, __global const uint* item_rows, uint first, uint end, CLR_SCENE_PARAMS, real16* best_t, int16* best_kind, int16* best_index,
                       float16* r, float16* g, float16* b)
 {
     *best_t = (real16)(INFINITY);
     *best_kind = (int16)(CLR_HIT_NONE);
     *best_index = (int16)(-1);
-#if CLR_FLAT_SHADING
+#if CLR_LOOP_COLORS
     *r = (float16)(info.background.x);
     *g = (float16)(info.background.y);
     *b = (float16)(info.background.z);
@@ -158,6 +164,9 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, __global c
     for (uint k = first; k < end; ++k) {
         if (all(*best_t < item_nearest[k]))
             break;
+        uint rows = item_rows[k]; /* first << 16 | last pixel row the object may cover */
+        if ((uint)row < (rows >> 16) || (uint)row > (rows & 0xffffu))
+            continue;
         uint item = items[k];
         int index = (int)(item & ~CLR_TILE_BILLBOARD);
         int kind = (item & CLR_TILE_BILLBOARD) ? CLR_HIT_BILLBOARD : CLR_HIT_SPHERE;
@@ -167,7 +176,7 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, __global c
         int textured = 0;
 #if CLR_FEATURE_BILLBOARDS
         if (kind == CLR_HIT_BILLBOARD) {
-            t = billboard_distance16(&billboards[index], texels, origin, d, CLR_FLAT_SHADING, &texel);
+            t = billboard_distance16(&billboards[index], texels, origin, d, CLR_LOOP_COLORS, &texel);
             color = billboards[index].color.xyz;
 #if CLR_FEATURE_TEXTURES
             textured = (billboards[index].flags & CLR_SURFACE_TEXTURED) != 0;
@@ -186,7 +195,7 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, __global c
         *best_t = select(*best_t, t, beats);
         *best_kind = select(*best_kind, (int16)(kind), beats_int);
         *best_index = select(*best_index, (int16)(index), beats_int);
-#if CLR_FLAT_SHADING
+#if CLR_LOOP_COLORS
         float16 cr = (float16)(color.x), cg = (float16)(color.y), cb = (float16)(color.z);
         if (textured) { /* texel_color() */
             cr = convert_float16(CLR_TEXEL_CHANNEL(texel, 0u)) * (1.0f / 255.0f);

@@ -77,7 +77,8 @@ CLR_PACKET_INLINE void store_pixels16(__global uchar4* out, uint16 packed, int l
  * (intersect_packet.cl); with flat shading their colours come from the same loop, otherwise
  * each lane's path is shaded by trace_path(). */
 CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, __global const uint* tile_items,
-                    __global const float* item_nearest, uint first, uint end, CLR_SCENE_PARAMS)
+                    __global const float* item_nearest, __global const uint* item_rows, uint first, uint end,
+                    CLR_SCENE_PARAMS)
 {
     float16 rs = (float16)(0.0f), gs = (float16)(0.0f), bs = (float16)(0.0f); /* sums over samples */
     for (int sample = 0; sample < camera.samples; ++sample) {
@@ -95,16 +96,29 @@ CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int
         real16 best_t;
         int16 best_kind, best_index;
         float16 r, g, b;
-        intersect_tile16(eye, d, tile_items, item_nearest, first, end, CLR_SCENE_ARGS, &best_t, &best_kind, &best_index,
+        intersect_tile16(eye, d, row, tile_items, item_nearest, item_rows, first, end, CLR_SCENE_ARGS, &best_t, &best_kind, &best_index,
                          &r, &g, &b);
 #if CLR_FLAT_SHADING
         rs += r;
         gs += g;
         bs += b;
 #else
+#if CLR_LOOP_COLORS
+        if (!any(best_kind == (int16)(CLR_HIT_SPHERE))) { /* no lane needs the sun */
+            rs += r;
+            gs += g;
+            bs += b;
+            continue;
+        }
+#endif
         real ts[16], xs[16], ys[16], zs[16];
         int kinds[16], indices[16];
         float rl[16], gl[16], bl[16];
+#if CLR_LOOP_COLORS
+        vstore16(r, 0, rl);
+        vstore16(g, 0, gl);
+        vstore16(b, 0, bl);
+#endif
         vstore16(best_t, 0, ts);
         vstore16(best_kind, 0, kinds);
         vstore16(best_index, 0, indices);
@@ -112,6 +126,10 @@ CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int
         vstore16(d.y, 0, ys);
         vstore16(d.z, 0, zs);
         for (int lane = 0; lane < 16; ++lane) {
+#if CLR_LOOP_COLORS
+            if (kinds[lane] != CLR_HIT_SPHERE)
+                continue; /* its flat colour is in rl, gl, bl already */
+#endif
             Hit hit;
             hit.t = ts[lane];
             hit.kind = kinds[lane];
@@ -137,7 +155,8 @@ CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int
  * render. */
 __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
                              __global uchar4* pixels, __global const uint* tile_offsets,
-                             __global const uint* tile_items, __global const float* item_nearest, int tiles_x)
+                             __global const uint* tile_items, __global const float* item_nearest,
+                             __global const uint* item_rows, int tiles_x)
 {
     int tile_x = get_global_id(0);
     int tile_y = first_row / CLR_TILE_SIZE + (int)get_global_id(1);
@@ -163,6 +182,6 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
     }
     real3 eye = convert_real3(camera.eye.xyz);
     for (int row = row_begin; row < row_end; ++row, out += camera.width)
-        store_pixels16(out, render_row16(camera, eye, col0, row, tile_items, item_nearest, first, end, CLR_SCENE_ARGS),
+        store_pixels16(out, render_row16(camera, eye, col0, row, tile_items, item_nearest, item_rows, first, end, CLR_SCENE_ARGS),
                        lanes);
 }

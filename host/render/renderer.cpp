@@ -166,7 +166,8 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
         render_kernel_.setArg(after_scene + 1, tile_offsets_);
         render_kernel_.setArg(after_scene + 2, tile_items_);
         render_kernel_.setArg(after_scene + 3, tile_nearest_);
-        render_kernel_.setArg(after_scene + 4, static_cast<cl_int>(tiles_x_));
+        render_kernel_.setArg(after_scene + 4, tile_rows_);
+        render_kernel_.setArg(after_scene + 5, static_cast<cl_int>(tiles_x_));
     }
     // render_packets: one work-item per screen tile that the band's rows touch; render: one
     // per pixel.
@@ -202,6 +203,7 @@ void Renderer::upload_screen_tiles(const ClrCamera& camera) {
     tile_offsets_ = upload(device_.context(), tiles.offsets);
     tile_items_ = upload(device_.context(), tiles.items);
     tile_nearest_ = upload(device_.context(), tiles.nearest);
+    tile_rows_ = upload(device_.context(), tiles.rows);
     tiles_x_ = tiles.tiles_x;
 }
 

@@ -83,7 +83,7 @@ private:
     ClrSceneInfo info_{};
     cl::Program program_;
     cl::Kernel render_kernel_;  // render_packets or render
-    cl::Buffer tile_offsets_, tile_items_, tile_nearest_;
+    cl::Buffer tile_offsets_, tile_items_, tile_nearest_, tile_rows_;
     int tiles_x_ = 0;
     cl::Buffer spheres_, billboards_, texels_;
     Bvh bvh_;

@@ -82,21 +82,26 @@ Candidate billboard_candidate(const Billboard& billboard, std::uint32_t index, c
     return candidate;
 }
 
-// The tiles a candidate may cover, widened by one pixel so that rounding in the kernels'
-// float rays can never put a pixel outside its object's tiles.
-bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range) {
+// Pixel rows first..last, packed as the kernels read them (ScreenTiles::rows).
+std::uint32_t pack_rows(int first, int last) { return static_cast<std::uint32_t>(first) << 16 | static_cast<std::uint32_t>(last); }
+
+// The tiles a candidate may cover, and its pixel rows, widened by one pixel so that rounding
+// in the kernels' float rays can never put a pixel outside its object's tiles or rows.
+bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range,
+                std::uint32_t& rows) {
     const PixelBounds& b = candidate.bounds;
     if (b.whole_screen) {
         range = {0, tiles.tiles_x - 1, 0, tiles.tiles_y - 1};
+        rows = pack_rows(0, height - 1);
         return true;
     }
     double col_min = std::floor(b.col_min) - 1, col_max = std::ceil(b.col_max) + 1;
     double row_min = std::floor(b.row_min) - 1, row_max = std::ceil(b.row_max) + 1;
     if (col_max < 0 || row_max < 0 || col_min > width - 1 || row_min > height - 1) return false;
-    auto tile_of = [](double pixel, int count) {
-        return static_cast<int>(std::clamp(pixel, 0.0, double(count) - 1) / kClrTileSize);
-    };
-    range = {tile_of(col_min, width), tile_of(col_max, width), tile_of(row_min, height), tile_of(row_max, height)};
+    auto pixel_of = [](double pixel, int count) { return static_cast<int>(std::clamp(pixel, 0.0, double(count) - 1)); };
+    range = {pixel_of(col_min, width) / kClrTileSize, pixel_of(col_max, width) / kClrTileSize,
+             pixel_of(row_min, height) / kClrTileSize, pixel_of(row_max, height) / kClrTileSize};
+    rows = pack_rows(pixel_of(row_min, height), pixel_of(row_max, height));
     return true;
 }
 
@@ -124,16 +129,18 @@ ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const 
         std::uint32_t item;
         float bound;
         std::array<int, 4> range;
+        std::uint32_t rows;
     };
     std::vector<Placed> placed;
     placed.reserve(candidates.size());
     std::vector<std::uint32_t> counts(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y + 1, 0);
     for (const Candidate& candidate : candidates) {
         std::array<int, 4> range;
-        if (!tile_range(candidate, tiles, camera.width, camera.height, range)) continue;
+        std::uint32_t rows;
+        if (!tile_range(candidate, tiles, camera.width, camera.height, range, rows)) continue;
         // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
         // one, and the kernel must never skip an object that its float ray does hit first.
-        placed.push_back({candidate.item, static_cast<float>(candidate.nearest * (1 - 1e-5)), range});
+        placed.push_back({candidate.item, static_cast<float>(candidate.nearest * (1 - 1e-5)), range, rows});
         for (int ty = range[2]; ty <= range[3]; ++ty)
             for (int tx = range[0]; tx <= range[1]; ++tx) ++counts[ty * tiles.tiles_x + tx];
     }
@@ -145,6 +152,7 @@ ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const 
     }
     tiles.items.resize(total);
     tiles.nearest.resize(total);
+    tiles.rows.resize(total);
     std::vector<std::uint32_t> next(tiles.offsets.begin(), tiles.offsets.end() - 1);
     for (const Placed& p : placed)
         for (int ty = p.range[2]; ty <= p.range[3]; ++ty)
@@ -152,6 +160,7 @@ ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const 
                 std::uint32_t slot = next[ty * tiles.tiles_x + tx]++;
                 tiles.items[slot] = p.item;
                 tiles.nearest[slot] = p.bound;
+                tiles.rows[slot] = p.rows;
             }
     return tiles;
 }

@@ -18,6 +18,9 @@ struct ScreenTiles {
     std::vector<std::uint32_t> offsets;  // tile t's items are items[offsets[t] .. offsets[t+1])
     std::vector<std::uint32_t> items;    // object index, with CLR_TILE_BILLBOARD for billboards
     std::vector<float> nearest;          // per item: a lower bound on any hit distance
+    // Per item: the pixel rows it may cover, first << 16 | last. A row of a tile skips the
+    // tile's objects that cannot reach it: small distant objects cover few of its 16 rows.
+    std::vector<std::uint32_t> rows;
 };
 
 // Bins the scene's objects for the frame seen by `camera` (the same ClrCamera the kernels

@@ -56,6 +56,36 @@ TEST(FeatureVariants, SunAndMirrors) {
     expect_same_as_general(scene);
 }
 
+// A sun without mirrors: billboard and background lanes take their colour from the
+// intersection loop, sphere lanes are shaded one by one (shadows through cut-out texels too).
+TEST(FeatureVariants, SunWithoutMirrors) {
+    Scene scene = camera_on(testing::make_random_scene(17, 12, 12));
+    scene.has_sun = true;
+    scene.sun_location = {-20, 40, 30};
+    FeatureSet features = FeatureSet::of(scene);
+    EXPECT_TRUE(features.sun && features.alpha && !features.mirrors);
+    expect_same_as_general(scene);
+    scene.spheres.clear();  // a sun with nothing to light
+    expect_same_as_general(scene);
+}
+
+// Many objects a few pixels tall: each row of a tile tests only the objects whose pixel rows
+// include it.
+TEST(FeatureVariants, ManySmallObjectsSkippedByRow) {
+    Scene scene = camera_on(testing::make_random_scene(18, 0, 0));
+    scene.width = 160;
+    scene.height = 120;
+    Scene small = testing::make_random_scene(19, 300, 300);
+    for (Sphere& sphere : small.spheres) sphere.radius *= 0.1;
+    for (Billboard& billboard : small.billboards) {
+        billboard.upper_right = billboard.upper_left + (billboard.upper_right - billboard.upper_left) * 0.1;
+        billboard.lower_left = billboard.upper_left + (billboard.lower_left - billboard.upper_left) * 0.1;
+    }
+    scene.spheres = small.spheres;
+    scene.billboards = small.billboards;
+    expect_same_as_general(scene);
+}
+
 TEST(FeatureVariants, EmptyScene) { expect_same_as_general(camera_on(testing::make_random_scene(15, 0, 0))); }
 
 TEST(FeatureSet, OptionsAreDeterministicAndComplete) {
