@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   ocl-icd-opencl-dev opencl-clhpp-headers pocl-opencl-icd clinfo
-  nlohmann-json3-dev libstb-dev libcli11-dev zlib1g-dev
+  nlohmann-json3-dev libstb-dev libcli11-dev libpng-dev zlib1g-dev
   googletest libgtest-dev
   ffmpeg
   parallel
