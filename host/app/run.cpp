@@ -134,6 +134,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     progress.finish();
     report.render_ms = ms_since(start);
     report.write_ms = sink.write_ms();
+    renderer->store_built_programs();  // the outputs are complete: the next run starts faster
 }
 
 // --assemble: encodes frames rendered earlier (by this or other processes) into the video.

@@ -46,19 +46,20 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
                           "\nbuild options: " + options + "\nbuild log:\n" + log);
     }
     // Asking PoCL for the binary compiles every kernel of the program (0.8 s cold): that is
-    // left to the end of the context's life, after the frames are written.
+    // left to store_built_programs(), after the frames are written.
     if (!key.empty()) to_store_.push_back({cache.folder(), key, program});
     return program;
 }
 
-DeviceContext::~DeviceContext() {
+void DeviceContext::store_built_programs() {
     for (const PendingEntry& entry : to_store_) {
         try {
             std::vector<std::vector<unsigned char>> binaries = entry.program.getInfo<CL_PROGRAM_BINARIES>();
             if (binaries.size() == 1) ProgramCache(entry.folder).store(entry.key, binaries.front());
-        } catch (...) {  // best effort: a destructor does not throw
+        } catch (const cl::Error&) {  // best effort: the next run builds from source again
         }
     }
+    to_store_.clear();
 }
 
 }  // namespace clr

@@ -14,8 +14,6 @@ class DeviceContext {
 public:
     // Throws DeviceError when the device cannot be opened.
     explicit DeviceContext(const DeviceEntry& device);
-    // Stores the binaries of the programs built from source in the program cache.
-    ~DeviceContext();
     DeviceContext(const DeviceContext&) = delete;
     DeviceContext& operator=(const DeviceContext&) = delete;
 
@@ -27,8 +25,13 @@ public:
     // Builds `source` with `options`. A failure throws DeviceError carrying the build
     // options and the compiler's log.
     // Builds from the program cache's binary when it has one (device/program_cache.h); the
-    // binary of a build from source goes there when the context closes.
+    // binary of a build from source goes there on store_built_programs().
     cl::Program build_program(const std::string& source, const std::string& options) const;
+    // Stores the binaries of the programs built from source in the program cache (best effort).
+    // Asking PoCL for a binary compiles every kernel of the program (0.8 s cold), so the frame
+    // loop calls this once its outputs are written. Never from a destructor: at exit, static
+    // destruction may already have torn down the compiler inside the driver.
+    void store_built_programs();
     int cache_hits() const { return cache_hits_; }  // builds served by the program cache
 
 private:

@@ -19,6 +19,7 @@ public:
     std::string device_name() const override { return device_.entry().device_name; }
     double build_ms() const override { return renderer_.build_ms(); }
     int cache_hits() const override { return device_.cache_hits(); }
+    void store_built_programs() override { device_.store_built_programs(); }
 
 private:
     const Scene& scene_;

@@ -20,6 +20,9 @@ public:
     virtual std::string device_name() const = 0;
     virtual double build_ms() const = 0;  // program build time, 0 for the reference
     virtual int cache_hits() const { return 0; }  // programs built from the program cache
+    // Keeps the programs built for this run in the program cache for the next (slow the first
+    // time: call once the outputs are written).
+    virtual void store_built_programs() {}
 };
 
 // Opens the device chosen by `device_selector` (see select_device), builds the scene's
