@@ -9,6 +9,7 @@
 
 #include "scripts/forest/json_text.h"
 #include "scripts/forest/landscape_art.h"
+#include "scripts/forest/mountain_ring.h"
 #include "scripts/forest/random.h"
 #include "scripts/forest/tree_views.h"
 
@@ -21,11 +22,11 @@ namespace {
 
 constexpr int kTreePictureHeight = 640;
 constexpr int kFloorTexels = 2048;
-constexpr int kFarGroundTexels = 512;
-constexpr double kFarGroundHalfSize = 1800;
-constexpr double kMountainDistance = 1500;
-constexpr double kMountainWidth = 7000, kMountainHeightAboveGround = 380;
-constexpr int kMountainPictureWidth = 2048, kMountainPictureHeight = 512, kMountainGroundRow = 448;
+// The country around the forest in two pictures: finely drawn where single crowns still show,
+// coarsely out to just past the mountains' feet, which hide its edge (their pictures reach
+// below the ground).
+constexpr int kNearCountryTexels = 1024, kFarCountryTexels = 768;
+constexpr double kNearCountryHalfSize = 520, kFarCountryHalfSize = 1700;
 const Colour kSky{0.62, 0.77, 0.93};
 
 // The sun stands high in the south-west of the start: trees are lit from the camera's side.
@@ -63,30 +64,37 @@ Json ground_billboard(double half, double y, const std::string& file) {
             {"filename", file}};
 }
 
-Json draw_ground(const ForestOptions& options, const ForestLayout& layout, const std::filesystem::path& folder) {
+// The forest floor, and the country around it out to the mountains, which share its seed so
+// that the range's foot matches the ground in front of it.
+Json draw_ground(const ForestLayout& layout, std::uint32_t country_seed, std::uint64_t floor_seed,
+                 const std::filesystem::path& folder) {
     const double floor_half = layout.half_extent + 60;
     save_png((folder / "ground.png").string(),
-             draw_forest_floor(layout, floor_half, kFloorTexels, static_cast<std::uint32_t>(derive_seed(options.seed, 20)),
-                               towards_sun()),
+             draw_forest_floor(layout, floor_half, kFloorTexels, static_cast<std::uint32_t>(floor_seed), towards_sun()), false);
+    save_png((folder / "near_country.png").string(),
+             draw_country(kNearCountryHalfSize, kNearCountryTexels, country_seed), false);
+    save_png((folder / "far_country.png").string(), draw_country(kFarCountryHalfSize, kFarCountryTexels, country_seed),
              false);
-    save_png((folder / "far_ground.png").string(),
-             draw_far_ground(kFarGroundTexels, static_cast<std::uint32_t>(derive_seed(options.seed, 21))), false);
-    // The far ground lies a few centimetres lower, so the forest floor covers it wherever both are.
+    // Each lies a few centimetres below the finer one, which covers it wherever both are.
     return Json::array({ground_billboard(floor_half, 0, "ground.png"),
-                        ground_billboard(kFarGroundHalfSize, -0.05, "far_ground.png")});
+                        ground_billboard(kNearCountryHalfSize, -0.03, "near_country.png"),
+                        ground_billboard(kFarCountryHalfSize, -0.06, "far_country.png")});
 }
 
-Json draw_mountain_range(const ForestOptions& options, const std::filesystem::path& folder) {
-    save_png((folder / "mountains.png").string(),
-             draw_mountains(kMountainPictureWidth, kMountainPictureHeight, kMountainGroundRow,
-                            static_cast<std::uint32_t>(derive_seed(options.seed, 22))),
-             true);
-    const double height = kMountainHeightAboveGround * kMountainPictureHeight / kMountainGroundRow;
-    const double bottom = kMountainHeightAboveGround - height;  // below the ground: hides the far ground's edge
-    return {{"center", vec({0, bottom + height / 2, -kMountainDistance})},
-            {"width", kMountainWidth},
-            {"height", height},
-            {"filename", "mountains.png"}};
+// Upright pictures all around, far away: whichever way the camera turns, it sees mountains.
+Json draw_mountains(std::uint32_t country_seed, const std::filesystem::path& folder) {
+    const MountainRing ring;
+    const std::vector<Canvas> pictures = draw_mountain_ring(ring, country_seed, towards_sun());
+    const double height = ring.above_ground + ring.below_ground;
+    Json impostors = Json::array();
+    for (int i = 0; i < ring.count; ++i) {
+        const std::string file = "mountains_" + std::to_string(i) + ".png";
+        save_png((folder / file).string(), pictures[i], true);
+        const Vec3 centre = picture_direction(ring, i) * ring.distance + Vec3(0, ring.above_ground - height / 2, 0);
+        impostors.push_back({{"center", vec(centre)}, {"width", round_mm(picture_width(ring))}, {"height", height},
+                             {"filename", file}});
+    }
+    return impostors;
 }
 
 Json tree_impostor(const TreeInstance& tree) {
@@ -122,7 +130,8 @@ void write_forest(const ForestOptions& options, const std::filesystem::path& fol
     for (const TreePictures& p : pictures) aspect[static_cast<int>(p.kind)] = p.width_over_height;
     const ForestLayout layout = plan_forest(options, aspect);
 
-    Json impostors = Json::array({draw_mountain_range(options, folder)});
+    const auto country_seed = static_cast<std::uint32_t>(derive_seed(options.seed, 21));
+    Json impostors = draw_mountains(country_seed, folder);
     for (const TreeInstance& tree : layout.trees) impostors.push_back(tree_impostor(tree));
     Json spheres = Json::array();
     for (const Boulder& boulder : layout.boulders) spheres.push_back(boulder_sphere(boulder));
@@ -137,7 +146,7 @@ void write_forest(const ForestOptions& options, const std::filesystem::path& fol
     scene["DefaultColor"] = vec(kSky);
     scene["SunLocation"] = vec(towards_sun() * 5000.0);
     scene["spheres"] = spheres;
-    scene["billboards"] = draw_ground(options, layout, folder);
+    scene["billboards"] = draw_ground(layout, country_seed, derive_seed(options.seed, 20), folder);
     scene["clrender"] = {{"fps", 24},
                          {"frames", options.frames},
                          {"interpolation", "catmull-rom"},

@@ -1,5 +1,5 @@
-// The pictures around the trees: the forest floor under them, the coarser ground that runs
-// out to the horizon, and the mountain range in the distance.
+// The pictures of the ground: the forest floor under the trees, and the coarser country that
+// runs out to the mountains.
 #pragma once
 
 #include "scripts/forest/canvas.h"
@@ -13,13 +13,20 @@ namespace forest {
 Canvas draw_forest_floor(const ForestLayout& layout, double half_size, int texels, std::uint32_t seed,
                          const clr::Vec3& towards_sun);
 
-// The ground from the forest's edge to the horizon: broad patches of meadow and distant
-// woods that fade into haze at the edges.
-Canvas draw_far_ground(int texels, std::uint32_t seed);
+// The colour of the air far away, which everything distant fades into.
+constexpr Colour kHaze{0.66, 0.76, 0.86};
 
-// A snowy range with a wooded foothill ridge in front: opaque below the crest, transparent
-// above it so the sky shows. `ground_row` is the row at ground level; below it the foothills
-// go on, to hide the far ground's edge.
-Canvas draw_mountains(int width, int height, int ground_row, std::uint32_t seed);
+// How much of kHaze veils what lies `distance` metres from the forest's centre: none at the
+// forest, about a quarter at the mountains' foot, half on the far peaks.
+double haze_amount(double distance);
+
+// The open country around the forest at (x, z), before haze: woods (crowns lit on top, gaps
+// dark between them) and meadows. `detail` in [0, 1] scales the finest variation, which far
+// away would only flicker, one texel shown per pixel.
+Colour lowland_colour(double x, double z, double detail, std::uint32_t seed);
+
+// The country from the forest's edge to the mountains, over [-half_size, half_size] in x and z
+// (laid out like the forest floor): woods and meadows that fade into haze with distance.
+Canvas draw_country(double half_size, int texels, std::uint32_t seed);
 
 }  // namespace forest

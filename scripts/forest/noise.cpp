@@ -1,5 +1,6 @@
 #include "scripts/forest/noise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
@@ -38,6 +39,14 @@ double value_noise(double x, double y, double z, std::uint32_t seed) {
     return mix(near, far, tz);
 }
 
+double value_noise_2d(double x, double y, std::uint32_t seed) {
+    const double fx = std::floor(x), fy = std::floor(y);
+    const auto ix = static_cast<std::int32_t>(fx), iy = static_cast<std::int32_t>(fy);
+    const double tx = smooth(x - fx), ty = smooth(y - fy);
+    auto corner = [&](int dx, int dy) { return hash_unit(ix + dx, iy + dy, 0, seed); };
+    return mix(mix(corner(0, 0), corner(1, 0), tx), mix(corner(0, 1), corner(1, 1), tx), ty);
+}
+
 double fractal_noise(double x, double y, double z, int octaves, std::uint32_t seed) {
     double sum = 0, weight = 0, amplitude = 1, scale = 1;
     for (int octave = 0; octave < octaves; ++octave) {
@@ -47,6 +56,39 @@ double fractal_noise(double x, double y, double z, int octaves, std::uint32_t se
         scale *= 2.0;
     }
     return sum / weight;
+}
+
+double fractal_noise_2d(double x, double y, int octaves, std::uint32_t seed) {
+    double sum = 0, weight = 0, amplitude = 1, scale = 1;
+    for (int octave = 0; octave < octaves; ++octave) {
+        sum += amplitude * value_noise_2d(x * scale, y * scale, seed + 101u * octave);
+        weight += amplitude;
+        amplitude *= 0.5;
+        scale *= 2.0;
+    }
+    return sum / weight;
+}
+
+double ridged_noise(double x, double y, int octaves, std::uint32_t seed) {
+    double sum = 0, total = 0, amplitude = 1, weight = 1;
+    for (int octave = 0; octave < octaves; ++octave) {
+        const double crest = 1 - std::abs(2 * value_noise_2d(x, y, seed + 101u * octave) - 1);
+        const double layer = crest * crest * weight;
+        weight = std::clamp(2 * layer, 0.0, 1.0);
+        sum += amplitude * layer;
+        total += amplitude;
+        amplitude *= 0.5;
+        // Twice as fine, turned by about 37 degrees and shifted off the last layer's lattice.
+        const double turned_x = 2 * (0.8 * x - 0.6 * y), turned_y = 2 * (0.6 * x + 0.8 * y);
+        x = turned_x + 17.3;
+        y = turned_y - 9.1;
+    }
+    return sum / total;
+}
+
+double smoothstep(double edge0, double edge1, double x) {
+    const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+    return t * t * (3 - 2 * t);
 }
 
 }  // namespace forest

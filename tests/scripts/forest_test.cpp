@@ -14,6 +14,7 @@
 #include "scene/scene_loader.h"
 #include "scripts/forest/camera_flight.h"
 #include "scripts/forest/forest_scene.h"
+#include "scripts/forest/mountain_ring.h"
 #include "scripts/forest/tree_views.h"
 #include "support/temp_folder.h"
 
@@ -59,6 +60,15 @@ Vec3 to_vec(const nlohmann::json& v) { return {v[0].get<double>(), v[1].get<doub
 
 bool is_tree(const nlohmann::json& impostor) { return impostor.contains("views"); }
 
+// The eye at `samples` frames of the scene's flight.
+std::vector<Vec3> flight_eyes(const nlohmann::json& scene, int samples) {
+    std::vector<CameraKey> keys;
+    for (std::size_t i = 0; i < scene["eyeLocations"].size(); ++i) {
+        keys.push_back({to_vec(scene["eyeLocations"][i]), to_vec(scene["lookatLocations"][i])});
+    }
+    return forest::sample_eyes(keys, samples);
+}
+
 TEST_F(Forest, SameSeedGivesTheSameBytesAndAnotherSeedAnotherLayout) {
     TempFolder again, other;
     forest::write_forest(small_forest(7), again.path());
@@ -89,11 +99,7 @@ TEST_F(Forest, HasTheRequestedTreesEachStandingOnTheGround) {
 }
 
 TEST_F(Forest, CameraKeepsClearOfTreesAndAboveTheGround) {
-    std::vector<CameraKey> keys;
-    for (std::size_t i = 0; i < scene_["eyeLocations"].size(); ++i) {
-        keys.push_back({to_vec(scene_["eyeLocations"][i]), to_vec(scene_["lookatLocations"][i])});
-    }
-    const std::vector<Vec3> eyes = forest::sample_eyes(keys, 8 * kFrames);
+    const std::vector<Vec3> eyes = flight_eyes(scene_, 8 * kFrames);
     double closest = 1e9;
     for (const nlohmann::json& impostor : scene_["clrender"]["impostors"]) {
         if (!is_tree(impostor)) continue;
@@ -118,9 +124,98 @@ TEST_F(Forest, HasBoulders) {
 TEST_F(Forest, ClrenderReadsItWithoutWarnings) {
     const Scene scene = load_scene(folder_->file("forest.json"));
     EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
-    EXPECT_EQ(scene.impostors.size(), static_cast<std::size_t>(kTrees) + 1);  // and the mountains
+    EXPECT_EQ(scene.impostors.size(), static_cast<std::size_t>(kTrees + forest::MountainRing().count));
     EXPECT_EQ(scene.camera_path.size(), scene_["eyeLocations"].size());
     EXPECT_EQ(scene.spheres.size(), scene_["spheres"].size());
+}
+
+// Wherever the camera is and whichever way it turns, it looks at the full-height middle of a
+// mountain picture, never at a picture's end: the ends sink behind the neighbours.
+TEST_F(Forest, MountainsSurroundTheWholeFlight) {
+    const forest::MountainRing ring;
+    const double full_reach = ring.distance * std::tan(ring.full_half_angle * M_PI / 180);
+    std::vector<Vec3> centres;
+    for (const nlohmann::json& impostor : scene_["clrender"]["impostors"]) {
+        if (is_tree(impostor)) continue;
+        EXPECT_TRUE(impostor.contains("filename"));
+        EXPECT_EQ(impostor.value("facing", "upright"), "upright");
+        centres.push_back(to_vec(impostor["center"]));
+    }
+    ASSERT_EQ(centres.size(), static_cast<std::size_t>(ring.count));
+    const std::vector<Vec3> eyes = flight_eyes(scene_, 4 * kFrames);
+    for (const Vec3& eye : eyes) {
+        for (int degree = 0; degree < 360; ++degree) {
+            const double look = degree * M_PI / 180;
+            bool covered = false;
+            for (const Vec3& centre : centres) {
+                const double dx = centre.x - eye.x, dz = centre.z - eye.z, reach = std::hypot(dx, dz);
+                const double off = std::remainder(std::atan2(dx, -dz) - look, 2 * M_PI);
+                covered = covered || std::abs(off) < std::atan(full_reach / reach);
+            }
+            EXPECT_TRUE(covered) << "no mountains at " << degree << " degrees from eye " << eye.x << ", " << eye.z;
+            if (!covered) return;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The mountain pictures
+
+// Row of the highest opaque texel of a column, or the height when there is none.
+int skyline_row(const Canvas& canvas, int column) {
+    for (int row = 0; row < canvas.height; ++row) {
+        if (canvas.at(column, row).a == 255) return row;
+    }
+    return canvas.height;
+}
+
+class ForestMountains : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        ring_.texels_wide = 180;
+        ring_.texels_high = 90;
+        pictures_ = forest::draw_mountain_ring(ring_, 5, normalize(Vec3(-0.3, 1, 0.45)));
+    }
+    static int ground_row() {
+        return static_cast<int>(ring_.texels_high * ring_.above_ground / (ring_.above_ground + ring_.below_ground));
+    }
+    static forest::MountainRing ring_;
+    static std::vector<Canvas> pictures_;
+};
+
+forest::MountainRing ForestMountains::ring_;
+std::vector<Canvas> ForestMountains::pictures_;
+
+TEST_F(ForestMountains, StandOnTheGroundAndEndLowWithoutAFlatTop) {
+    ASSERT_EQ(pictures_.size(), static_cast<std::size_t>(ring_.count));
+    for (std::size_t i = 0; i < pictures_.size(); ++i) {
+        const Canvas& picture = pictures_[i];
+        const int last = picture.width - 1;
+        // The ends hold no peak that could show as a vertical cut against the sky.
+        EXPECT_GE(skyline_row(picture, 0), ground_row() - 1) << "picture " << i;
+        EXPECT_GE(skyline_row(picture, last), ground_row() - 1) << "picture " << i;
+        // The skirt under the horizon is opaque all along, and no peak reaches the top row.
+        for (int column = 0; column < picture.width; ++column) {
+            EXPECT_EQ(picture.at(column, picture.height - 1).a, 255) << "picture " << i << " column " << column;
+            EXPECT_EQ(picture.at(column, 0).a, 0) << "picture " << i << " column " << column;
+        }
+        EXPECT_LT(skyline_row(picture, picture.width / 2), ground_row() - 3) << "picture " << i << " has no mountains";
+    }
+}
+
+// Where two neighbours meet (half way between their middles, seen from the centre), both show
+// the same skyline: the range runs on from one picture into the next.
+TEST_F(ForestMountains, NeighboursShowTheSameSkylineWhereTheyMeet) {
+    const double seam = ring_.distance * std::tan(M_PI / ring_.count);
+    const double texels_per_metre = ring_.texels_wide / forest::picture_width(ring_);
+    const int right = static_cast<int>(std::lround(ring_.texels_wide / 2.0 + seam * texels_per_metre - 0.5));
+    const int left = ring_.texels_wide - 1 - right;
+    double difference = 0;
+    for (int i = 0; i < ring_.count; ++i) {
+        const Canvas& next = pictures_[(i + 1) % ring_.count];
+        difference += std::abs(skyline_row(pictures_[i], right) - skyline_row(next, left));
+    }
+    EXPECT_LT(difference / ring_.count, 1.5) << "the skylines jump where neighbours meet";
 }
 
 // ---------------------------------------------------------------------------------------
