@@ -37,6 +37,8 @@ targets=(
     "ppm_p6     clrender_fuzz_image_loader ppm_p6 ppm.dict"
 )
 
+# The fuzzers load scenes, whose images would otherwise go to the user's decoded-image cache.
+export CLRENDER_CACHE_DIR=off
 # The sanitizers stop at the first report; leaks count as findings too. libFuzzer's own
 # limits: 16 KiB inputs (larger than any seed, large enough for deep JSON nesting and
 # multi-chunk images); 30 s per input, a hang (the slowest valid input, a JPEG of the largest

@@ -3,12 +3,13 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <system_error>
 #include <unistd.h>
+
+#include "core/cache_folder.h"
 
 namespace clr {
 namespace {
@@ -36,13 +37,8 @@ bool get_size(const std::string& in, std::size_t& at, std::uint64_t& size) {
 
 }  // namespace
 
-ProgramCache ProgramCache::from_environment() {
-    if (const char* folder = std::getenv("CLRENDER_CACHE_DIR"))
-        return ProgramCache(std::string(folder) == "off" ? std::string() : std::string(folder));
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return ProgramCache(std::string(xdg) + "/clrender");
-    if (const char* home = std::getenv("HOME"); home && *home) return ProgramCache(std::string(home) + "/.cache/clrender");
-    return ProgramCache("");
-}
+// Programs live at the top of the cache folder; other caches use sub-folders of it.
+ProgramCache ProgramCache::from_environment() { return ProgramCache(cache_folder_from_environment()); }
 
 std::string ProgramCache::key(const cl::Device& device, const std::string& source, const std::string& options) {
     cl::Platform platform(device.getInfo<CL_DEVICE_PLATFORM>());

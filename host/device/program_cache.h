@@ -15,8 +15,8 @@ namespace clr {
 
 class ProgramCache {
 public:
-    // The folder from the environment: $CLRENDER_CACHE_DIR when set ("off" or empty: no
-    // cache), else $XDG_CACHE_HOME/clrender, else $HOME/.cache/clrender.
+    // The folder from the environment (core/cache_folder.h): $CLRENDER_CACHE_DIR when set
+    // ("off" or empty: no cache), else $XDG_CACHE_HOME/clrender, else $HOME/.cache/clrender.
     static ProgramCache from_environment();
 
     explicit ProgramCache(std::string folder) : folder_(std::move(folder)) {}

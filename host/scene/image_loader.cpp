@@ -311,8 +311,16 @@ void read_ppm(const Bytes& bytes, bool ascii, Image& image) {
 
 }  // namespace
 
+std::vector<unsigned char> read_image_file(const std::string& path) { return read_whole_file(path); }
+
 std::shared_ptr<const Image> load_image(const std::string& path) {
-    const Bytes bytes = read_whole_file(path);
+    return load_image_from_bytes(read_whole_file(path), path);
+}
+
+std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned char>& bytes, const std::string& path) {
+    // The checks read_whole_file makes on what it read, for bytes that came another way.
+    if (bytes.empty()) throw ImageError("empty file");
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw ImageError("file too large");
     auto image = std::make_shared<Image>();
     image->path = path;
     switch (detect_format(bytes)) {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -19,6 +20,13 @@ public:
 // Reads the image at `path`; the format is taken from the file's content, not its name.
 // Throws ImageError with a one-line reason (missing, unreadable, corrupt, unsupported).
 std::shared_ptr<const Image> load_image(const std::string& path);
+
+// load_image in two steps, for a caller that needs the file's bytes too (the image cache
+// hashes them): the whole file, with load_image's errors for a file that is missing,
+// unreadable, empty or too large; then the image those bytes hold, with its errors for
+// content. `path` only names the image.
+std::vector<unsigned char> read_image_file(const std::string& path);
+std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned char>& bytes, const std::string& path);
 
 // A stand-in for an image that cannot be read, used only when the user asks for
 // placeholders: an opaque 8x8 magenta and grey checkerboard, unmistakable in a render.

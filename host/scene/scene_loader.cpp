@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "core/errors.h"
+#include "scene/image_cache.h"
 #include "scene/image_loader.h"
 #include "scene/json_reader.h"
 
@@ -302,7 +303,9 @@ void read_objects(ObjectReader& file, Scene& scene, PendingBillboardImages& pend
 class ImageLibrary {
 public:
     ImageLibrary(const std::string& scene_path, bool placeholders)
-        : scene_folder_(fs::path(scene_path).parent_path()), placeholders_(placeholders) {}
+        : scene_folder_(fs::path(scene_path).parent_path()),
+          placeholders_(placeholders),
+          cache_(ImageCache::from_environment()) {}
 
     // Decodes every distinct image the billboards name, on all cores at once: decoding large
     // PNGs is most of the time it takes to load a course scene.
@@ -363,7 +366,7 @@ private:
 
     Entry read(const std::string& path) const {
         try {
-            return {load_image(path), ""};
+            return {load_image_through_cache(path, cache_), ""};
         } catch (const ImageError& error) {
             const std::string reason = *error.what() ? error.what() : "unknown error";
             return {placeholders_ ? make_placeholder_image(path) : nullptr, reason};
@@ -372,6 +375,7 @@ private:
 
     fs::path scene_folder_;
     bool placeholders_;
+    ImageCache cache_;  // decoded large images from earlier runs (a warm start skips decoding)
     std::map<std::string, Entry> entries_;
 };
 
