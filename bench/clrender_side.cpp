@@ -26,6 +26,7 @@ ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, const ClrC
 
 ClrenderFrame ClrenderSide::render_frame() {
     FrameTiming timing;
+    renderer_->recycle(std::move(image_));  // as an interactive viewer reuses its framebuffer
     auto start = std::chrono::steady_clock::now();
     // With impostors the frame's time includes placing them for the eye (and uploading them),
     // which every frame of a moving camera pays; the scene's size is the benchmark's.

@@ -118,6 +118,8 @@ Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame
     return render_frame(camera, timing);
 }
 
+void Renderer::recycle(Image&& image) { spare_pixels_ = std::move(image.rgba); }
+
 void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
     kernel.setArg(first, spheres_);
     kernel.setArg(first + 1, billboards_);
@@ -216,6 +218,10 @@ Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
     image.width = camera.width;
     image.height = camera.height;
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    // Every pixel is written below, so recycled storage of the right size needs no clearing;
+    // new storage costs a page fault and a zero fill per page (3.5 ms at 1080p).
+    if (spare_pixels_.size() == row_bytes * camera.height) image.rgba.swap(spare_pixels_);
+    spare_pixels_.clear();
     image.rgba.resize(row_bytes * camera.height);
     if (row_bytes > max_buffer_bytes_)
         throw DeviceError("a row of " + std::to_string(camera.width) + " pixels needs " + std::to_string(row_bytes) +

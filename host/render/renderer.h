@@ -49,6 +49,10 @@ public:
     // scene's first camera key).
     Image render_frame(const ClrCamera& camera, FrameTiming* timing = nullptr);
 
+    // Hands back a frame's image once the caller is done with it: the next frame of the same
+    // size renders into its storage instead of new memory.
+    void recycle(Image&& image);
+
     // Makes device coordinates relative to `origin`, re-uploading the geometry if it moved.
     void set_origin(const Vec3& origin);
     const Vec3& origin() const { return origin_; }
@@ -89,6 +93,7 @@ private:
     Bvh bvh_;
     cl::Buffer bvh_nodes_, bvh_items_;
     cl::Buffer pixels_;
+    std::vector<std::uint8_t> spare_pixels_;  // a recycled image's storage (see recycle())
     std::size_t pixels_capacity_ = 0;
     double build_ms_ = 0;
     std::size_t max_buffer_bytes_ = 0;
