@@ -30,10 +30,14 @@ cmake --build "$build" -j"$(nproc)" --target clrender_tests
 #         PoCL opens, and LSan's scan at exit then crashes ("Tracer caught signal 11"),
 #         failing tests that passed. LSan still scans each thread's static TLS and counts
 #         the loader's blocks (dynamic TLS among them) as reachable; docs/robustness.md.
+#         use_sigaltstack=0: clrender lists OpenCL devices on a short-lived thread while the
+#         scene loads, and LLVM inside PoCL replaces that thread's alternate signal stack with
+#         its own; ASan then fails to unmap "its" stack when the thread ends and aborts the
+#         process. Without its own alternate stacks ASan has nothing to unmap.
 #   UBSan: stop at the first report (the build also compiles it without recovery) with a
 #          stack trace.
 #   LSan: the suppressions file may name leaks of PoCL's, never clrender's (none so far).
-export ASAN_OPTIONS="exitcode=86:detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1:intercept_tls_get_addr=0"
+export ASAN_OPTIONS="exitcode=86:detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1:intercept_tls_get_addr=0:use_sigaltstack=0"
 export UBSAN_OPTIONS="exitcode=86:halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="exitcode=86:suppressions=$suppressions/lsan.supp:print_suppressions=0"
 
