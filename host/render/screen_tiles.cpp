@@ -11,11 +11,13 @@ namespace {
 Vec3 to_vec3(const clr_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
 
 // The pixel rectangle an object may cover, in (fractional) pixel coordinates, or the
-// whole screen when the object reaches behind the eye (its projection is then unbounded).
+// whole screen when the object reaches behind the eye (its projection is then unbounded), or
+// nothing when it lies wholly behind the eye.
 struct PixelBounds {
     double col_min = std::numeric_limits<double>::infinity(), col_max = -col_min;
     double row_min = col_min, row_max = -col_min;
     bool whole_screen = false;
+    bool in_front = false;  // some point is not clearly behind the eye
 };
 
 class Projector {
@@ -25,10 +27,14 @@ public:
           up_(to_vec3(camera.up)), width_(camera.width), height_(camera.height) {}
 
     // Widens `bounds` by the projection of `point`. A point less than a small fraction of the
-    // scene's distance in front of the eye counts as behind it.
+    // scene's distance in front of the eye counts as behind it. An object whose points are all
+    // clearly behind the eye plane (by more than float rounding could move them) is never met:
+    // every primary ray travels forwards, so every hit has a positive depth, and so would any
+    // point of the object's convex hull that a ray could reach.
     void add(const Vec3& point, PixelBounds& bounds) const {
         Vec3 rel = point - eye_;
         double depth = dot(rel, forward_);
+        if (!(depth < -1e-6 * length(rel))) bounds.in_front = true;
         if (!(depth > 1e-7 * length(rel))) {
             bounds.whole_screen = true;
             return;
@@ -90,6 +96,7 @@ std::uint32_t pack_rows(int first, int last) { return static_cast<std::uint32_t>
 bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range,
                 std::uint32_t& rows) {
     const PixelBounds& b = candidate.bounds;
+    if (!b.in_front) return false;  // wholly behind the eye: trees behind the camera in a forest
     if (b.whole_screen) {
         range = {0, tiles.tiles_x - 1, 0, tiles.tiles_y - 1};
         rows = pack_rows(0, height - 1);

@@ -2,7 +2,9 @@
 // what the fully general kernel renders for the same scene.
 #include <gtest/gtest.h>
 
+#include "render/device_camera.h"
 #include "render/feature_set.h"
+#include "render/screen_tiles.h"
 
 #include <random>
 #include "support/random_scene.h"
@@ -84,6 +86,25 @@ TEST(FeatureVariants, ManySmallObjectsSkippedByRow) {
     scene.spheres = small.spheres;
     scene.billboards = small.billboards;
     expect_same_as_general(scene);
+}
+
+// The camera in the middle of the objects, as in a forest: those wholly behind it are left
+// out of every tile, those reaching past its side into every tile, and the image is the
+// general kernel's.
+TEST(FeatureVariants, ObjectsAllAroundTheCamera) {
+    Scene scene = testing::make_random_scene(22, 40, 40);
+    for (const Vec3& lookat : {Vec3{0, 0, -1}, Vec3{1, 0.2, 0}, Vec3{0, -1, 0.3}}) {
+        scene.camera_path = {{{0.5, 0.2, 0.1}, lookat}};
+        scene.width = 96;
+        scene.height = 64;
+        expect_same_as_general(scene);
+    }
+    const CameraKey& key = scene.camera_path.front();
+    ScreenTiles tiles = bin_screen_tiles(scene, make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees,
+                                                                   scene.width, scene.height));
+    std::size_t tile_count = tiles.offsets.size() - 1;
+    EXPECT_LT(tiles.items.size(), tile_count * (scene.spheres.size() + scene.billboards.size()) / 2)
+        << "objects behind the camera must not be listed in every tile";
 }
 
 TEST(FeatureVariants, EmptyScene) { expect_same_as_general(camera_on(testing::make_random_scene(15, 0, 0))); }
