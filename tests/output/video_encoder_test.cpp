@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "support/scoped_env.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -26,22 +27,7 @@ namespace fs = std::filesystem;
 using testing::read_bytes;
 using testing::TempFolder;
 
-// Sets an environment variable for the scope of a test and restores the old value after.
-class ScopedEnvironment {
-public:
-    ScopedEnvironment(const char* name, const std::string& value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        ::setenv(name, value.c_str(), 1);
-    }
-    ~ScopedEnvironment() {
-        if (old_) ::setenv(name_, old_->c_str(), 1);
-        else ::unsetenv(name_);
-    }
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
+using testing::ScopedEnv;
 
 // The real encoder, or nullopt where ffmpeg is not installed.
 std::optional<std::string> real_encoder() {
@@ -141,15 +127,15 @@ TEST(VideoEncoder, FormatFromExtension) {
 
 TEST(VideoEncoder, MissingEncoderIsReportedUpFront) {
     {
-        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", "/nonexistent/ffmpeg");
+        ScopedEnv ffmpeg("CLRENDER_FFMPEG", "/nonexistent/ffmpeg");
         const std::string message = output_error_of([] { find_encoder(); });
         EXPECT_NE(message.find("/nonexistent/ffmpeg"), std::string::npos) << message;
         EXPECT_NE(message.find("CLRENDER_FFMPEG"), std::string::npos) << message;
     }
     {
         TempFolder empty;
-        ScopedEnvironment path("PATH", empty.path());
-        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", "");
+        ScopedEnv path("PATH", empty.path().c_str());
+        ScopedEnv ffmpeg("CLRENDER_FFMPEG", "");
         EXPECT_EQ(output_error_of([] { find_encoder(); }),
                   "video encoder 'ffmpeg' not found on PATH; install the ffmpeg package (apt-get install ffmpeg)");
     }
@@ -159,17 +145,19 @@ TEST(VideoEncoder, FindsTheEncoderOnPathOrFromTheEnvironment) {
     TempFolder bin;
     const std::string fake = write_script(bin, "ffmpeg", "exit 0");
     bin.write("not-executable", "#!/bin/sh\n");
-    ScopedEnvironment path("PATH", "/nonexistent:" + bin.path());
+    const std::string search_path = "/nonexistent:" + bin.path();
+    ScopedEnv path("PATH", search_path.c_str());
     {
-        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", "");
+        ScopedEnv ffmpeg("CLRENDER_FFMPEG", "");
         EXPECT_EQ(find_encoder(), fake);
     }
     {
-        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", fake);
+        ScopedEnv ffmpeg("CLRENDER_FFMPEG", fake.c_str());
         EXPECT_EQ(find_encoder(), fake);
     }
     {
-        ScopedEnvironment ffmpeg("CLRENDER_FFMPEG", bin.file("not-executable"));
+        const std::string not_executable = bin.file("not-executable");
+        ScopedEnv ffmpeg("CLRENDER_FFMPEG", not_executable.c_str());
         EXPECT_THROW(find_encoder(), OutputError);
     }
 }

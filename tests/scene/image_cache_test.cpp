@@ -15,6 +15,7 @@
 
 #include "scene/image_loader.h"
 #include "scene/scene_loader.h"
+#include "support/scoped_env.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -26,27 +27,7 @@ using testing::TempFolder;
 
 constexpr std::size_t kHeaderBytes = 40;
 
-// Sets an environment variable for one test and restores it afterwards.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        if (value)
-            ::setenv(name, value, 1);
-        else
-            ::unsetenv(name);
-    }
-    ~ScopedEnv() {
-        if (old_)
-            ::setenv(name_, old_->c_str(), 1);
-        else
-            ::unsetenv(name_);
-    }
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
+using testing::ScopedEnv;
 
 // A binary PPM of width x height whose samples depend on `seed`: 512 x 512 decodes to exactly
 // 1 MiB of RGBA, the smallest size the cache stores. PPM keeps the test free of an encoder.
