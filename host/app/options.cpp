@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <iostream>
 #include <regex>
 
 namespace clr {
@@ -76,8 +77,13 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
         if (options.scene_path.empty() && !options.list_devices)
             throw CLI::RequiredError("a scene file");
     } catch (const CLI::ParseError& error) {
-        int code = app.exit(error);  // prints help, version or the error with a usage hint
-        parsed.exit_code = code == 0 ? 0 : 1;
+        if (error.get_exit_code() == 0) {  // --help or --version: CLI11 prints them
+            parsed.exit_code = app.exit(error);
+            return parsed;
+        }
+        // A usage error, in the same form as every other error of clrender's, and a hint.
+        std::cerr << "clrender: error: " << error.what() << "\nRun with --help for more information.\n";
+        parsed.exit_code = 1;
         return parsed;
     }
     if (options.device.empty()) {

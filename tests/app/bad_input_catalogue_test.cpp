@@ -38,8 +38,8 @@ struct BadInput {
     int exit_code;                       // 1 usage, 2 scene or input, 3 device, 4 output
     std::vector<std::string> fragments;  // each must appear in the error message
     std::string environment = "";        // "NAME=value" before the command
-    // Errors found by the command-line parser (CLI11) are printed in its own format,
-    // "<problem>\nRun with --help for more information.", rather than "clrender: error:".
+    // Errors found by the command-line parser (CLI11) add the hint
+    // "Run with --help for more information." after the error line.
     bool parser_error = false;
 };
 
@@ -344,12 +344,10 @@ TEST_P(BadInputTest, FailsWithOneClearErrorAndNoOutput) {
     const auto result = run_clrender(input.arguments, folder.path(), input.environment);
 
     EXPECT_EQ(result.exit_code, input.exit_code) << result.output;
-    if (input.parser_error) {
+    EXPECT_EQ(count_of(result.output, "clrender: error: "), 1) << result.output;
+    EXPECT_EQ(result.output.rfind("clrender: error: ", 0), 0) << "the error comes first:\n" << result.output;
+    if (input.parser_error)
         EXPECT_EQ(count_of(result.output, "Run with --help for more information."), 1) << result.output;
-    } else {
-        EXPECT_EQ(count_of(result.output, "clrender: error: "), 1) << result.output;
-        EXPECT_EQ(result.output.rfind("clrender: error: ", 0), 0) << "the error comes first:\n" << result.output;
-    }
     for (const std::string& fragment : input.fragments)
         EXPECT_NE(result.output.find(fragment), std::string::npos) << "missing '" << fragment << "' in:\n" << result.output;
     // Sanitizer builds run this test too: their reports must not pass as an error message.
