@@ -71,6 +71,8 @@ void FrameSink::work() {
         changed_.notify_all();
         try {
             consume(item);
+            std::lock_guard<std::mutex> lock(mutex_);
+            finished_ = std::move(item.image);  // its storage can take a later frame
         } catch (...) {
             std::lock_guard<std::mutex> lock(mutex_);
             error_ = std::current_exception();
@@ -79,6 +81,13 @@ void FrameSink::work() {
             return;
         }
     }
+}
+
+std::optional<Image> FrameSink::take_finished() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<Image> image = std::move(finished_);
+    finished_.reset();
+    return image;
 }
 
 void FrameSink::consume(const QueuedFrame& item) {

@@ -7,6 +7,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <utility>
 
@@ -34,6 +35,10 @@ public:
 
     double write_ms() const { return write_ms_; }  // worker time spent writing and encoding
 
+    // A frame the worker has written and encoded, if one is done since the last call: its
+    // storage can be recycled for a later frame (a new 1080p image costs 3.5 ms of page faults).
+    std::optional<Image> take_finished();
+
 private:
     void work();
     struct QueuedFrame {
@@ -51,6 +56,7 @@ private:
     std::condition_variable changed_;
     bool closing_ = false;
     std::exception_ptr error_;
+    std::optional<Image> finished_;
     double write_ms_ = 0;
     std::thread worker_;
 };

@@ -124,6 +124,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
             continue;
         }
         FrameRecord record{frame, {}};
+        if (std::optional<Image> written = sink.take_finished()) renderer->recycle(std::move(*written));
         Image image = renderer->render(camera_at_frame(scene, frame), frame, &record.timing);
         report.frames.push_back(record);
         sink.push(frame, std::move(image));

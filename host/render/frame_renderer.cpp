@@ -20,6 +20,7 @@ public:
     double build_ms() const override { return renderer_.build_ms(); }
     int cache_hits() const override { return device_.cache_hits(); }
     void store_built_programs() override { device_.store_built_programs(); }
+    void recycle(Image&& image) override { renderer_.recycle(std::move(image)); }
 
 private:
     const Scene& scene_;

@@ -23,6 +23,8 @@ public:
     // Keeps the programs built for this run in the program cache for the next (slow the first
     // time: call once the outputs are written).
     virtual void store_built_programs() {}
+    // Hands back a finished frame whose storage a later frame may reuse.
+    virtual void recycle(Image&& /*image*/) {}
 };
 
 // Opens the device chosen by `device_selector` (see select_device), builds the scene's
