@@ -96,7 +96,10 @@ void Renderer::face_impostors(const CameraKey& key) {
     origin_ = key.eye;
     move_origin(compiled_, scene_, origin_);
     place_impostors(compiled_, scene_, key, origin_);
-    placed_ = placed_scene(scene_, compiled_);
+    // Only the placed impostors change; the rest of placed_ was copied once, at construction.
+    placed_.billboards.resize(scene_.billboards.size());
+    placed_.billboards.insert(placed_.billboards.end(), compiled_.placed_impostors.begin(),
+                              compiled_.placed_impostors.end());
     if (features_.bvh) bvh_ = build_bvh(placed_);
     try {
         upload_geometry();
