@@ -13,6 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::read_bytes;
+using testing::frame_name;
 using testing::run_clrender;
 using testing::TempFolder;
 
@@ -24,12 +25,6 @@ const char* kAnimatedScene = R"({
               {"center": [2, 0.5, -2], "radius": 1, "ambient": [0, 0, 0], "IsMirror": 1}],
   "billboards": [{"UpperLeft": [-5, 4, -4], "LowerLeft": [-5, -3, -4], "UpperRight": [5, 4, -4], "ambient": [0.2, 0.6, 0.3]}]
 })";
-
-std::string frame_name(int frame) {
-    char name[32];
-    std::snprintf(name, sizeof name, "f_%04d.png", frame);
-    return name;
-}
 
 bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
 

@@ -346,8 +346,9 @@ TEST_P(BadInputTest, FailsWithOneClearErrorAndNoOutput) {
     EXPECT_EQ(result.exit_code, input.exit_code) << result.output;
     EXPECT_EQ(count_of(result.output, "clrender: error: "), 1) << result.output;
     EXPECT_EQ(result.output.rfind("clrender: error: ", 0), 0) << "the error comes first:\n" << result.output;
-    if (input.parser_error)
+    if (input.parser_error) {
         EXPECT_EQ(count_of(result.output, "Run with --help for more information."), 1) << result.output;
+    }
     for (const std::string& fragment : input.fragments)
         EXPECT_NE(result.output.find(fragment), std::string::npos) << "missing '" << fragment << "' in:\n" << result.output;
     // Sanitizer builds run this test too: their reports must not pass as an error message.

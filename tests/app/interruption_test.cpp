@@ -14,6 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::read_bytes;
+using testing::frame_name;
 using testing::run_clrender;
 using testing::TempFolder;
 
@@ -24,12 +25,6 @@ const char* kLongAnimation = R"({
   "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0.3, 0.2]}],
   "billboards": [{"UpperLeft": [-5, 4, -4], "LowerLeft": [-5, -3, -4], "UpperRight": [5, 4, -4], "ambient": [0.2, 0.6, 0.3]}]
 })";
-
-std::string frame_name(int frame) {
-    char name[32];
-    std::snprintf(name, sizeof name, "f_%04d.png", frame);
-    return name;
-}
 
 // Starts clrender in the background, waits until frame 20 exists, sends `signal_name`, and
 // returns clrender's exit code.

@@ -21,4 +21,10 @@ CommandResult run_clrender(const std::string& arguments, const std::string& fold
     return result;
 }
 
+std::string frame_name(int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "f_%04d.png", frame);
+    return name;
+}
+
 }  // namespace clr::testing

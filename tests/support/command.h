@@ -16,4 +16,7 @@ struct CommandResult {
 // optional environment assignments placed before it ("CLRENDER_DEVICE=x").
 CommandResult run_clrender(const std::string& arguments, const std::string& folder = "", const std::string& environment = "");
 
+// The file of frame `frame` under the pattern the animation tests give clrender, "f_%04d.png".
+std::string frame_name(int frame);
+
 }  // namespace clr::testing
