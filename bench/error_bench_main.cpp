@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_program.h"
 #include "bench/bench_stats.h"
 #include "bench/error_metrics.h"
 #include "bench/error_report.h"
@@ -225,15 +226,5 @@ int run(const Options& options) {
 }  // namespace clr::bench
 
 int main(int argc, char** argv) {
-    try {
-        int exit_code = 0;
-        std::optional<clr::bench::Options> options = clr::bench::parse_options(argc, argv, exit_code);
-        return options ? clr::bench::run(*options) : exit_code;
-    } catch (const clr::Error& error) {
-        std::cerr << "clrender_error_bench: error: " << error.what() << "\n";
-        return error.code();
-    } catch (const std::exception& error) {
-        std::cerr << "clrender_error_bench: error: " << error.what() << "\n";
-        return clr::kExitDevice;
-    }
+    return clr::bench::run_bench_program("clrender_error_bench", argc, argv, clr::bench::parse_options, clr::bench::run);
 }
