@@ -47,10 +47,13 @@ double value_noise_2d(double x, double y, std::uint32_t seed) {
     return mix(mix(corner(0, 0), corner(1, 0), tx), mix(corner(0, 1), corner(1, 1), tx), ty);
 }
 
-double fractal_noise(double x, double y, double z, int octaves, std::uint32_t seed) {
+// Octaves of `layer(scale, octave_seed)`, each twice the frequency and half the weight of the
+// one before, normalised to the range of one layer.
+template <typename Layer>
+double octave_sum(int octaves, std::uint32_t seed, Layer layer) {
     double sum = 0, weight = 0, amplitude = 1, scale = 1;
     for (int octave = 0; octave < octaves; ++octave) {
-        sum += amplitude * value_noise(x * scale, y * scale, z * scale, seed + 101u * octave);
+        sum += amplitude * layer(scale, seed + 101u * octave);
         weight += amplitude;
         amplitude *= 0.5;
         scale *= 2.0;
@@ -58,15 +61,16 @@ double fractal_noise(double x, double y, double z, int octaves, std::uint32_t se
     return sum / weight;
 }
 
+double fractal_noise(double x, double y, double z, int octaves, std::uint32_t seed) {
+    return octave_sum(octaves, seed, [&](double scale, std::uint32_t octave_seed) {
+        return value_noise(x * scale, y * scale, z * scale, octave_seed);
+    });
+}
+
 double fractal_noise_2d(double x, double y, int octaves, std::uint32_t seed) {
-    double sum = 0, weight = 0, amplitude = 1, scale = 1;
-    for (int octave = 0; octave < octaves; ++octave) {
-        sum += amplitude * value_noise_2d(x * scale, y * scale, seed + 101u * octave);
-        weight += amplitude;
-        amplitude *= 0.5;
-        scale *= 2.0;
-    }
-    return sum / weight;
+    return octave_sum(octaves, seed, [&](double scale, std::uint32_t octave_seed) {
+        return value_noise_2d(x * scale, y * scale, octave_seed);
+    });
 }
 
 double ridged_noise(double x, double y, int octaves, std::uint32_t seed) {
