@@ -39,6 +39,13 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
+// Whether the device works in host memory (CPU devices such as PoCL's): then the kernel
+// writes into the image itself, through a buffer over its storage, instead of into a
+// device buffer that is then copied (8 MB a 1080p frame, 0.6-0.9 ms on the benchmark machine).
+bool shares_host_memory(const cl::Device& device) {
+    return device.getInfo<CL_DEVICE_TYPE>() == CL_DEVICE_TYPE_CPU && device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>();
+}
+
 }  // namespace
 
 Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options)
@@ -61,6 +68,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         if (features_.bvh) bvh_ = build_bvh(geometry());  // otherwise empty: never read
         upload_geometry();
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+        render_in_place_ = shares_host_memory(device_.device());
     } catch (const cl::Error& error) {
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
@@ -145,18 +153,12 @@ void Renderer::reserve_pixels(std::size_t bytes) {
     pixels_capacity_ = bytes;
 }
 
-// Whether the device works in host memory (CPU devices such as PoCL's): then the kernel
-// writes into the image itself, through a buffer over its storage, instead of into a
-// device buffer that is then copied (8 MB a 1080p frame, 0.6-0.9 ms on the benchmark machine).
-static bool shares_host_memory(const cl::Device& device) {
-    return device.getInfo<CL_DEVICE_TYPE>() == CL_DEVICE_TYPE_CPU && device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>();
-}
 
 double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, Image& image) {
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
     std::size_t band_bytes = rows * row_bytes;
     std::uint8_t* target = image.rgba.data() + first_row * row_bytes;
-    bool in_place = shares_host_memory(device_.device());
+    bool in_place = render_in_place_;
     if (in_place)
         pixels_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR | CL_MEM_HOST_READ_ONLY,
                              band_bytes, target);

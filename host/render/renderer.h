@@ -94,6 +94,7 @@ private:
     cl::Buffer bvh_nodes_, bvh_items_;
     cl::Buffer pixels_;
     std::vector<std::uint8_t> spare_pixels_;  // a recycled image's storage (see recycle())
+    bool render_in_place_ = false;  // the kernel writes into the image's own storage (CPU devices)
     std::size_t pixels_capacity_ = 0;
     double build_ms_ = 0;
     std::size_t max_buffer_bytes_ = 0;
