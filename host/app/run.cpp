@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/frame_sink.h"
-#include "app/interruption.h"
+#include "core/interruption.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
 #include "core/errors.h"

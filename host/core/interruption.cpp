@@ -1,14 +1,17 @@
-#include "app/interruption.h"
+#include "core/interruption.h"
 
+#include <atomic>
 #include <csignal>
 #include <cstring>
 
 namespace clr {
 namespace {
 
-volatile std::sig_atomic_t received_signal = 0;
+// Lock-free, so the handler may store it, and atomic, so other threads see the store.
+std::atomic<int> received_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free flag");
 
-extern "C" void record_signal(int signal_number) { received_signal = signal_number; }
+extern "C" void record_signal(int signal_number) { received_signal.store(signal_number); }
 
 }  // namespace
 
@@ -27,8 +30,10 @@ void install_interruption_handlers() {
     sigaction(SIGTERM, &action, nullptr);
 }
 
+bool interruption_requested() { return received_signal.load() != 0; }
+
 void throw_if_interrupted() {
-    if (received_signal != 0) throw Interrupted(received_signal);
+    if (const int signal_number = received_signal.load()) throw Interrupted(signal_number);
 }
 
 }  // namespace clr

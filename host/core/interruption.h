@@ -1,5 +1,6 @@
-// Ctrl-C (SIGINT) and SIGTERM in the middle of a render. The handler only records the
-// signal; the frame loop checks between frames and unwinds, so every output is either
+// Ctrl-C (SIGINT) and SIGTERM in the middle of a render. It lives in core/ because every layer
+// that waits (the frame loop, the renderer's bands, the video encoder) must be able to stop.
+// The handler only records the signal; the frame loop checks between frames and unwinds, so every output is either
 // complete under its final name or not there at all (temporary files are removed on the way
 // out), and frames already written stay for a rerun with --resume. A second signal ends the
 // process at once.
@@ -15,6 +16,10 @@ public:
 };
 
 void install_interruption_handlers();
+
+// Whether SIGINT or SIGTERM has arrived since install_interruption_handlers(). Safe to call
+// from any thread; long waits (a frame's bands, the video encoder's pipe) poll it.
+bool interruption_requested();
 
 // Throws Interrupted when a signal has arrived since install_interruption_handlers().
 void throw_if_interrupted();
