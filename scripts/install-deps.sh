@@ -8,6 +8,8 @@ packages=(
   build-essential cmake pkg-config
   ocl-icd-opencl-dev opencl-clhpp-headers pocl-opencl-icd clinfo
   nlohmann-json3-dev libstb-dev libcli11-dev libpng-dev zlib1g-dev
+  # SHA-256 (libcrypto) for the keys and checksums of the caches
+  libssl-dev
   googletest libgtest-dev
   ffmpeg
   parallel

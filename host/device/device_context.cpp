@@ -15,22 +15,42 @@ DeviceContext::DeviceContext(const DeviceEntry& device) : entry_(device) {
     }
 }
 
+std::optional<cl::Program> DeviceContext::build_from_cache(const ProgramCache& cache, const ProgramCache::Key& key,
+                                                          const std::string& options) const {
+    std::optional<std::vector<unsigned char>> binary;
+    std::string aside;
+    try {
+        binary = cache.borrow(key, ProgramCache::driver_magic(entry_.device), aside);
+    } catch (const std::exception&) {  // e.g. no memory for the entry: a miss
+    }
+    if (!binary) return std::nullopt;
+    try {
+        cl::Program cached(context_, {entry_.device}, cl::Program::Binaries{*binary});
+        cached.build({entry_.device}, options.c_str());
+        // Back under its name when this context ends, not now: the driver may still crash on it
+        // when the kernels are made or run, and then it must not be found again.
+        borrowed_.push_back({cache.cache_folder(), key, aside});
+        ++cache_hits_;
+        return cached;
+    } catch (const cl::Error&) {
+        cache.discard(aside);  // refused by the driver: replaced by the build from source
+        return std::nullopt;
+    }
+}
+
 cl::Program DeviceContext::build_program(const std::string& source, const std::string& options) const {
-    // A binary from an earlier run first (device/program_cache.h); a binary the driver
-    // refuses is a miss like any other.
+    // A binary from an earlier run first (device/program_cache.h). The cache hands out only
+    // entries that pass every check; one the driver still refuses is removed and rebuilt.
     const ProgramCache cache = ProgramCache::from_environment();
-    std::string key;
+    std::optional<ProgramCache::Key> key;
     if (cache.enabled()) {
         try {
             key = ProgramCache::key(entry_.device, source, options);
-            if (auto binary = cache.load(key)) {
-                cl::Program cached(context_, {entry_.device}, cl::Program::Binaries{*binary});
-                cached.build({entry_.device}, options.c_str());
-                ++cache_hits_;
-                return cached;
-            }
-        } catch (const cl::Error&) {
+        } catch (const std::exception&) {  // no key, no caching
         }
+    }
+    if (key) {
+        if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
     }
     cl::Program program(context_, source);
     try {
@@ -47,16 +67,24 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     }
     // Asking PoCL for the binary compiles every kernel of the program (0.8 s cold): that is
     // left to store_built_programs(), after the frames are written.
-    if (!key.empty()) to_store_.push_back({cache.folder(), key, program});
+    if (key) to_store_.push_back({cache.cache_folder(), *key, program});
     return program;
 }
 
+DeviceContext::~DeviceContext() { give_back_borrowed(); }
+
+void DeviceContext::give_back_borrowed() const {
+    for (const Borrowed& entry : borrowed_) ProgramCache(entry.cache_folder).give_back(entry.key, entry.aside);
+    borrowed_.clear();
+}
+
 void DeviceContext::store_built_programs() {
+    give_back_borrowed();
     for (const PendingEntry& entry : to_store_) {
         try {
             std::vector<std::vector<unsigned char>> binaries = entry.program.getInfo<CL_PROGRAM_BINARIES>();
-            if (binaries.size() == 1) ProgramCache(entry.folder).store(entry.key, binaries.front());
-        } catch (const cl::Error&) {  // best effort: the next run builds from source again
+            if (binaries.size() == 1) ProgramCache(entry.cache_folder).store(entry.key, binaries.front());
+        } catch (const std::exception&) {  // best effort: the next run builds from source again
         }
     }
     to_store_.clear();

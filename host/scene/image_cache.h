@@ -1,11 +1,13 @@
 // Decoded images kept across runs. Decoding the large PNGs of a course scene is most of the time
-// a warm start takes (about 80-100 ms of it for three photos); reading back the decoded RGBA is a
-// few milliseconds. Entries live in images/ under the cache folder (core/cache_folder.h), one
-// file per image, named by a hash of the source file's whole content and its size, so an edited
-// image is a new key and its old entry is never used. An entry that is missing, short, or has the
-// wrong magic, version or key is a miss, never an error; writing is best effort. Only images of
-// at least kSmallestStoredBytes decoded are stored, and the folder is kept under a size limit by
-// removing the least recently used entries (a hit refreshes its entry's modification time).
+// a warm start takes (about 80-100 ms of it for three photos); reading back and checking the
+// decoded RGBA is a fraction of that. Entries live in images/ under the cache folder
+// (core/cache_folder.h), one file per image (core/cache_entry_folder.h), named by the SHA-256 of
+// the source file's whole content and of everything else that decides the decoded pixels, so an
+// edited image is a new key and its old entry is never used, and no file can be forged to look
+// like another. An entry that is missing or fails a check (core/cache_entry.h) is a miss, never
+// an error; writing is best effort. Only images of at least kSmallestStoredBytes decoded are
+// stored, and the folder is kept under a size limit by removing the least recently used entries
+// (a hit refreshes its entry's modification time).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "core/cache_entry_folder.h"
+#include "core/sha256.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -24,26 +28,23 @@ public:
     static constexpr std::uint64_t kDefaultSizeLimit = std::uint64_t(1) << 30;
     // Part of every key and header: a change of the entry layout or of what decoding produces
     // (e.g. rounding of 16-bit samples) must bump it, so that old entries stop matching.
-    static constexpr std::uint32_t kFormatVersion = 1;
+    static constexpr std::uint32_t kFormatVersion = 2;
 
-    // The source file a decoded image came from, identified by its content.
-    struct Key {
-        std::uint64_t content_hash = 0;
-        std::uint64_t byte_size = 0;
-    };
+    // The SHA-256 of the source file's bytes and of what decodes them.
+    using Key = Sha256Digest;
 
     // images/ under cache_folder_from_environment(); disabled when that is "".
     static ImageCache from_environment();
 
-    // `folder` "" disables the cache. `size_limit`: most bytes of entries kept in the folder.
-    explicit ImageCache(std::string folder, std::uint64_t size_limit = kDefaultSizeLimit)
-        : folder_(std::move(folder)), size_limit_(size_limit) {}
-    bool enabled() const { return !folder_.empty(); }
-    const std::string& folder() const { return folder_; }
+    // Entries go in `cache_folder`/images; "" disables the cache. `size_limit`: most bytes of
+    // entries kept there.
+    explicit ImageCache(std::string cache_folder, std::uint64_t size_limit = kDefaultSizeLimit);
+    bool enabled() const { return entries_.enabled(); }
+    std::string folder() const { return entries_.folder(); }
 
     static Key key(const std::vector<unsigned char>& file_bytes);
     // The entry's file for `key`.
-    std::string path(const Key& key) const;
+    std::string path(const Key& key) const { return entries_.path(key); }
 
     // The image stored for `key`, its path set to `source_path`; nullptr on a miss. A hit
     // refreshes the entry's modification time, which is what eviction goes by.
@@ -53,10 +54,7 @@ public:
     void store(const Key& key, const Image& image) const;
 
 private:
-    void evict_least_recently_used() const;
-
-    std::string folder_;
-    std::uint64_t size_limit_;
+    CacheEntryFolder entries_;
 };
 
 // load_image(path) through `cache`: the same image, and the same ImageError for a file that
