@@ -325,8 +325,6 @@ std::vector<BadInput> catalogue() {
          {"out.png: the --stats report would replace the image (-o) 'out.png'"}},
         {"StatsReplacesAFrame", {{"path.json", animation_scene()}}, {}, "path.json -o f_%04d.png --stats f_0001.png -q", 4,
          {"f_0001.png: the --stats report would replace the frame 1 (-o)"}},
-        {"StatsToADevice", {{"scene.json", scene_with("")}}, {}, "scene.json -o out.png --stats /dev/null -q", 4,
-         {"/dev/null: is a device; clrender writes outputs only to regular files"}},
         {"StatsIsAFolder", {{"scene.json", scene_with("")}}, {"report"}, "scene.json -o out.png --stats report -q", 4,
          {"report: is a folder"}},
     };

@@ -6,9 +6,12 @@
 // earlier file as it was. Each test runs the real binary.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -204,15 +207,22 @@ TEST(OutputSafety, FifoIsRefusedWithoutHanging) {
     EXPECT_FALSE(fs::exists(scene.folder.file("image.png"))) << "refused before anything renders";
 }
 
+// Never the system's /dev/null itself: a clrender without this check, run as root, would
+// replace it with a regular file for the whole machine. A device node of the test's own, or
+// a link to /dev/null (whose replacement would only replace the link).
 TEST(OutputSafety, DevicesAreRefused) {
     SceneFolder scene;
-    auto result = scene.run("scene.json -o out.png --stats /dev/null");
-    EXPECT_EQ(result.exit_code, 4) << result.output;
-    EXPECT_TRUE(contains(result.output, "/dev/null: is a device")) << result.output;
     fs::create_symlink("/dev/null", scene.folder.file("null.png"));
-    result = scene.run("scene.json -o null.png");
+    auto result = scene.run("scene.json -o null.png");
     EXPECT_EQ(result.exit_code, 4) << result.output;
     EXPECT_TRUE(contains(result.output, "null.png: is a symbolic link to a device")) << result.output;
+    EXPECT_TRUE(fs::is_symlink(scene.folder.file("null.png")));
+    if (::mknod(scene.folder.file("null.json").c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0)
+        GTEST_SKIP() << "cannot make a device node here (needs root): " << std::strerror(errno);
+    result = scene.run("scene.json -o out.png --stats null.json");
+    EXPECT_EQ(result.exit_code, 4) << result.output;
+    EXPECT_TRUE(contains(result.output, "null.json: is a device")) << result.output;
+    EXPECT_TRUE(fs::is_character_file(scene.folder.file("null.json")));
     EXPECT_FALSE(fs::exists(scene.folder.file("out.png")));
 }
 
@@ -225,6 +235,30 @@ TEST(OutputSafety, LongestLegalFileNameWorks) {
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_EQ(load_image(scene.folder.file(name))->width, 16);
     EXPECT_EQ(names_in(scene.folder.path()).size(), 4u) << "scene, texture, image, stats and nothing else";
+}
+
+TEST(OutputSafety, LongestLegalVideoNameWorks) {
+    if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "no ffmpeg";
+    TempFolder folder;
+    folder.write("path.json", kAnimatedScene);
+    const std::string name = std::string(241, 'v') + ".gif";  // the encoder's temporary file and its log must fit too
+    const auto result = run_clrender("path.json --video " + name + " --reference -q", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_GT(fs::file_size(folder.file(name)), 0u);
+    EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"path.json", name}));
+}
+
+TEST(OutputSafety, VideoThroughASymbolicLinkKeepsTheLink) {
+    if (std::system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "no ffmpeg";
+    TempFolder folder;
+    folder.write("path.json", kAnimatedScene);
+    folder.write("real.gif", kOldImage);
+    fs::create_symlink("real.gif", folder.file("latest.gif"));
+    const auto result = run_clrender("path.json --video latest.gif --reference -q", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(fs::is_symlink(folder.file("latest.gif")));
+    EXPECT_EQ(read_bytes(folder.file("real.gif")).substr(0, 3), "GIF");
+    EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"latest.gif", "path.json", "real.gif"}));
 }
 
 // A process id that is certainly not alive: a child that has exited and been reaped.
