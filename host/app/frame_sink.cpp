@@ -11,7 +11,8 @@ constexpr std::size_t kMaxQueuedFrames = 2;  // bounds memory: a 4K frame is 33 
 
 }  // namespace
 
-FrameSink::FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality) : plan_(plan) {
+FrameSink::FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality, StagedOutputs& staged)
+    : plan_(plan), staged_(staged) {
     if (!plan_.video_path.empty()) {
         VideoSettings settings;
         settings.path = plan_.video_path;
@@ -92,7 +93,14 @@ std::optional<Image> FrameSink::take_finished() {
 
 void FrameSink::consume(const QueuedFrame& item) {
     auto start = std::chrono::steady_clock::now();
-    if (!plan_.image_target.empty() && !item.on_disk) write_image(plan_.image_path(item.frame), item.image);
+    if (!plan_.image_target.empty() && !item.on_disk) {
+        const std::string path = plan_.image_path(item.frame);
+        if (plan_.image_waits_for_stats()) {
+            staged_.add(write_image_uncommitted(path, item.image));
+        } else {
+            write_image(path, item.image);
+        }
+    }
     if (encoder_) encoder_->add_frame(item.image);
     write_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "app/output_plan.h"
+#include "output/staged_outputs.h"
 #include "output/video_encoder.h"
 #include "scene/scene.h"
 
@@ -19,8 +20,9 @@ namespace clr {
 
 class FrameSink {
 public:
-    // Starts the encoder (when the plan has a video) for frames of width x height.
-    FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality);
+    // Starts the encoder (when the plan has a video) for frames of width x height. A single
+    // image file (plan.image_waits_for_stats()) goes to `staged`, written but not yet renamed.
+    FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality, StagedOutputs& staged);
     // Stops the worker; an unfinished video is abandoned and leaves no file behind.
     ~FrameSink();
     FrameSink(const FrameSink&) = delete;
@@ -50,6 +52,7 @@ private:
     void rethrow_worker_error();
 
     const OutputPlan& plan_;
+    StagedOutputs& staged_;
     std::unique_ptr<VideoEncoder> encoder_;
     std::deque<QueuedFrame> queue_;
     std::mutex mutex_;

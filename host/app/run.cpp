@@ -13,6 +13,7 @@
 #include "core/errors.h"
 #include "device/device_selection.h"
 #include "output/atomic_file.h"
+#include "output/staged_outputs.h"
 #include "render/camera_path.h"
 #include "render/frame_renderer.h"
 #include "scene/image_loader.h"
@@ -45,7 +46,8 @@ struct RunReport {
     std::vector<FrameRecord> frames;
 };
 
-void write_stats(const std::string& path, const RunReport& report) {
+// Written under a temporary name; renamed into place with a still's image (staged_outputs.h).
+std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport& report) {
     nlohmann::json frames = nlohmann::json::array();
     for (const FrameRecord& frame : report.frames)
         frames.push_back({{"index", frame.index}, {"kernel_ms", frame.timing.kernel_ms}, {"total_ms", frame.timing.total_ms}});
@@ -58,9 +60,10 @@ void write_stats(const std::string& path, const RunReport& report) {
         {"frames", frames},
     };
     std::string text = stats.dump(2) + "\n";
-    AtomicFile file(path);
-    file.write(text.data(), text.size());
-    file.commit();
+    auto file = std::make_unique<AtomicFile>(path);
+    file->write(text.data(), text.size());
+    file->complete();
+    return file;
 }
 
 Scene load(const Options& options) {
@@ -106,14 +109,14 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
 // Renders the planned frames one after another; the sink writes and encodes each while the
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
-                   DeviceList& devices) {
+                   DeviceList& devices, StagedOutputs& staged) {
     std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices);
     report.device = renderer->device_name();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
     if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
 
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality);
+    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     auto start = Clock::now();
     for (int frame : plan.frames) {
@@ -139,9 +142,10 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 }
 
 // --assemble: encodes frames rendered earlier (by this or other processes) into the video.
-void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report) {
+void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
+                     StagedOutputs& staged) {
     report.device = "none (assembling frames)";
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality);
+    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     for (int frame : plan.frames) {
         throw_if_interrupted();
@@ -186,12 +190,18 @@ int run(const Options& options) {
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
     install_interruption_handlers();
 
+    // A still's image and the stats are renamed into place together, once both are written:
+    // a failure in either leaves the earlier files as they were. Frames of a pattern and the
+    // video are in place already (docs/animation.md).
+    StagedOutputs staged;
     if (plan.assemble)
-        assemble_frames(options, scene, plan, report);
+        assemble_frames(options, scene, plan, report, staged);
     else
-        render_frames(options, scene, plan, report, devices);
+        render_frames(options, scene, plan, report, devices, staged);
     report.total_ms = ms_since(start);
-    if (!options.stats_path.empty()) write_stats(options.stats_path, report);
+    if (!plan.stats_path.empty()) staged.add(write_stats(plan.stats_path, report));
+    throw_if_interrupted();
+    staged.commit_all();
     if (!options.quiet) print_summary(plan, report);
     return kExitOk;
 }

@@ -1,6 +1,14 @@
 // Writes a file so that it appears under its final name complete or not at all: data goes
-// to a temporary file in the same folder, and commit() renames it into place. A writer that
-// is destroyed without commit() (an error, an exception) removes the temporary file.
+// to a temporary file in the same folder (named by temp_files.h), and commit() renames it
+// into place. A writer that is destroyed without commit() (an error, an exception) removes
+// the temporary file.
+//
+// The final name is checked and resolved by resolve_output_target() (output_target.h): a
+// symbolic link is written through, a FIFO, socket, device or folder is refused.
+//
+// Several files that must change together (a still image and its --stats report) are each
+// complete()d first and only then committed: a failure before the renames leaves every
+// earlier file as it was.
 #pragma once
 
 #include <cstdio>
@@ -10,25 +18,32 @@ namespace clr {
 
 class AtomicFile {
 public:
-    // Creates the temporary file beside `final_path`. Throws OutputError if it cannot.
+    // Creates the temporary file beside the file `final_path` resolves to. Throws OutputError
+    // if it cannot or if `final_path` is not a place for an output.
     explicit AtomicFile(std::string final_path);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
 
     const std::string& temp_path() const { return temp_path_; }
-    const std::string& final_path() const { return final_path_; }
-    std::FILE* stream() { return stream_; }  // open for binary writing until commit()
+    const std::string& final_path() const { return final_path_; }  // as given, for messages
+    const std::string& target_path() const { return target_path_; }  // the entry that is replaced
+    std::FILE* stream() { return stream_; }  // open for binary writing until complete()
 
-    // Writes all bytes; throws OutputError on failure.
+    // Writes all bytes; throws OutputError on failure (a short write, ENOSPC).
     void write(const void* data, std::size_t size);
-    // Flushes, closes and renames the temporary file to the final name. Throws OutputError.
+    // Flushes, syncs and closes the temporary file: after it, the data is on disk and only
+    // the rename is left. Throws OutputError (ENOSPC and I/O errors often surface only here).
+    void complete();
+    // complete()s if that is not done yet, then renames the temporary file to the final name.
     void commit();
 
 private:
     std::string final_path_;
+    std::string target_path_;
     std::string temp_path_;
     std::FILE* stream_ = nullptr;
+    bool completed_ = false;
     bool committed_ = false;
 };
 

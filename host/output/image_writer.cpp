@@ -38,7 +38,9 @@ std::vector<std::uint8_t> rgb_without_alpha(const Image& image) {
 // about 4.5 ms, and rendered frames come out smaller than stb's level 8.
 //
 // libpng reports errors by longjmp, so encoding runs in a function with nothing to unwind
-// into memory, and the file is written afterwards (where an OutputError may be thrown).
+// into memory, and the file is written afterwards (where an OutputError may be thrown). libpng
+// never touches the disk itself: every short write, ENOSPC or failed fsync surfaces through
+// AtomicFile's checked write() and complete().
 struct PngOutput {
     std::vector<std::uint8_t> bytes;
     bool out_of_memory = false;
@@ -121,16 +123,19 @@ ImageFormat image_format_for(const std::string& path) {
     throw UsageError(path + ": " + problem + " for an image (supported: .png, .ppm)");
 }
 
-void write_image(const std::string& path, const Image& image) {
+std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image) {
     const ImageFormat format = image_format_for(path);
     check_image(path, image);
-    AtomicFile file(path);
+    auto file = std::make_unique<AtomicFile>(path);
     if (format == ImageFormat::Png) {
-        write_png(file, image);
+        write_png(*file, image);
     } else {
-        write_ppm(file, image);
+        write_ppm(*file, image);
     }
-    file.commit();
+    file->complete();
+    return file;
 }
+
+void write_image(const std::string& path, const Image& image) { write_image_uncommitted(path, image)->commit(); }
 
 }  // namespace clr

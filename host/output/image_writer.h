@@ -2,8 +2,10 @@
 // atomically (see atomic_file.h).
 #pragma once
 
+#include <memory>
 #include <string>
 
+#include "output/atomic_file.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -17,5 +19,9 @@ ImageFormat image_format_for(const std::string& path);
 // Writes the RGBA image (alpha is dropped: outputs are opaque RGB). Throws OutputError
 // naming the path when the file cannot be written; nothing is left under `path` then.
 void write_image(const std::string& path, const Image& image);
+
+// Writes the image completely under a temporary name and returns the file, not yet renamed
+// into place (see staged_outputs.h). Throws OutputError as write_image does.
+std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image);
 
 }  // namespace clr

@@ -27,6 +27,7 @@
 #include <stdexcept>
 
 #include "core/errors.h"
+#include "output/temp_files.h"
 
 extern char** environ;
 
@@ -130,15 +131,10 @@ void ignore_sigpipe() {
     (void)ignored;
 }
 
-// ".<name>.tmp-<pid>-video<n>" beside `final_path` (see atomic_file.cpp for why beside and
-// why hidden); "video" keeps these apart from AtomicFile's names in the same process.
-std::string temp_path_beside(const std::string& final_path) {
-    static std::atomic<unsigned> counter{0};
-    const std::filesystem::path path(final_path);
-    const std::string name = "." + path.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-video" +
-                             std::to_string(counter++);
-    return (path.parent_path() / name).string();
-}
+// A short temporary name in the folder of `final_path` (temp_files.h: it fits wherever the
+// final name fits, with the log's ".log" added, and a later run removes it if this one is
+// killed). The same counter as AtomicFile's keeps the two kinds of temporary file apart.
+std::string temp_path_beside(const std::string& final_path) { return temp_path_in_folder_of(final_path); }
 
 // Creates `path`, failing if it exists (O_EXCL: never reuse a file someone else made), and
 // returns the open descriptor.

@@ -295,7 +295,7 @@ std::vector<BadInput> catalogue() {
         {"OutputUnderAFile", {{"scene.json", scene_with("")}}, {}, "scene.json -o scene.json/out.png -q", 4,
          {"scene.json/out.png: cannot create a file in its folder: Not a directory"}},
         {"OutputIsAFolder", {{"scene.json", scene_with("")}}, {"out.png"}, "scene.json -o out.png -q", 4,
-         {"out.png: cannot move the finished file into place: Is a directory"}},
+         {"out.png: is a folder; clrender writes outputs only to regular files"}},
         {"UnsupportedOutputExtension", {{"scene.json", scene_with("")}}, {}, "scene.json -o out.bmp", 1,
          {"out.bmp: unsupported extension '.bmp' for an image (supported: .png, .ppm)"}},
         {"UnsupportedVideoExtension", {{"path.json", animation_scene()}}, {}, "path.json --video out.avi", 1,
@@ -312,6 +312,21 @@ std::vector<BadInput> catalogue() {
          true},
         {"MalformedSize", {{"scene.json", scene_with("")}}, {}, "scene.json --size 12by3", 1,
          {"--size: expected WIDTHxHEIGHT", "'12by3'"}, "", true},
+
+        // --- Output safety: no output replaces an input or another output, or a non-file
+        {"StatsReplacesTheScene", {{"scene.json", scene_with("")}}, {}, "scene.json -o out.png --stats scene.json -q", 4,
+         {"scene.json: the --stats report would replace the scene file 'scene.json'"}},
+        {"OutputReplacesATexture", {{"bad.json", image_scene("tex.png")}, {"tex.png", source_file("scenes/demo/checker.png")}},
+         {}, "bad.json -o tex.png -q", 4, {"tex.png: the image (-o) would replace the texture"}},
+        {"DefaultOutputReplacesATexture",
+         {{"tex.json", image_scene("tex.png")}, {"tex.png", source_file("scenes/demo/checker.png")}}, {}, "tex.json -q", 4,
+         {"tex.png: the image (the default output name) would replace the texture"}},
+        {"StatsReplacesTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json -o out.png --stats out.png -q", 4,
+         {"out.png: the --stats report would replace the image (-o) 'out.png'"}},
+        {"StatsReplacesAFrame", {{"path.json", animation_scene()}}, {}, "path.json -o f_%04d.png --stats f_0001.png -q", 4,
+         {"f_0001.png: the --stats report would replace the frame 1 (-o)"}},
+        {"StatsIsAFolder", {{"scene.json", scene_with("")}}, {"report"}, "scene.json -o out.png --stats report -q", 4,
+         {"report: is a folder"}},
     };
 }
 

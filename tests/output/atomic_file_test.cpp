@@ -3,6 +3,7 @@
 #include "output/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -30,9 +31,11 @@ TEST(AtomicFile, NothingUnderTheFinalNameBeforeCommit) {
     std::fflush(file.stream());
     EXPECT_FALSE(fs::exists(final_path));
     EXPECT_TRUE(fs::exists(file.temp_path()));
-    // Same folder, so that the rename is atomic; a hidden name, unlike the final one.
+    // Same folder, so that the rename is atomic; a short hidden name of clrender's own form,
+    // not derived from the final name (temp_files.h).
     EXPECT_EQ(fs::path(file.temp_path()).parent_path(), fs::path(folder.path()));
-    EXPECT_EQ(fs::path(file.temp_path()).filename().string().rfind(".out.png.tmp-", 0), 0u) << file.temp_path();
+    EXPECT_EQ(fs::path(file.temp_path()).filename().string().rfind(".clrender-", 0), 0u) << file.temp_path();
+    EXPECT_EQ(fs::path(file.temp_path()).filename().string().find("out.png"), std::string::npos) << file.temp_path();
 
     file.commit();
     EXPECT_EQ(read_bytes(final_path), "complete contents");
@@ -109,13 +112,55 @@ TEST(AtomicFile, ReadOnlyFolderIsAnOutputError) {
 
 TEST(AtomicFile, FailedRenameIsAnOutputErrorThatLeavesNoTemporaryFile) {
     TempFolder folder;
-    fs::create_directory(folder.file("out.png"));  // a folder where the file should go
     {
         AtomicFile file(folder.file("out.png"));
         write(file, "data");
+        fs::create_directories(folder.file("out.png/inside"));  // a folder appears where the file should go
         EXPECT_THROW(file.commit(), OutputError);
     }
     EXPECT_TRUE(fs::is_directory(folder.file("out.png")));
+    EXPECT_EQ(folder.entry_count(), 1);
+}
+
+TEST(AtomicFile, FolderFifoAndDeviceAreRefusedBeforeWriting) {
+    TempFolder folder;
+    fs::create_directory(folder.file("folder.png"));
+    ASSERT_EQ(::mkfifo(folder.file("fifo.png").c_str(), 0644), 0);
+    EXPECT_THROW(AtomicFile file(folder.file("folder.png")), OutputError);
+    EXPECT_THROW(AtomicFile file(folder.file("fifo.png")), OutputError);
+    fs::create_symlink("/dev/null", folder.file("null.png"));  // never /dev/null itself: see output_safety_test.cpp
+    EXPECT_THROW(AtomicFile file(folder.file("null.png")), OutputError);
+    EXPECT_TRUE(fs::is_fifo(folder.file("fifo.png")));
+    EXPECT_TRUE(fs::is_symlink(folder.file("null.png")));
+    EXPECT_EQ(folder.entry_count(), 3);
+}
+
+TEST(AtomicFile, SymbolicLinkIsWrittenThroughAndSurvives) {
+    TempFolder folder;
+    fs::create_directory(folder.file("real"));
+    std::ofstream(folder.file("real/out.png")) << "old";
+    fs::create_symlink("real/out.png", folder.file("link.png"));
+    AtomicFile file(folder.file("link.png"));
+    EXPECT_EQ(fs::path(file.temp_path()).parent_path(), fs::canonical(folder.file("real")))
+        << "beside the link's target, so that the rename stays in one file system";
+    write(file, "new");
+    file.commit();
+    EXPECT_TRUE(fs::is_symlink(folder.file("link.png")));
+    EXPECT_EQ(read_bytes(folder.file("real/out.png")), "new");
+    EXPECT_EQ(folder.entry_count(), 2);
+}
+
+TEST(AtomicFile, CompletedFileIsOnDiskButNotInPlaceUntilCommit) {
+    TempFolder folder;
+    std::ofstream(folder.file("out.png")) << "old";
+    {
+        AtomicFile file(folder.file("out.png"));
+        write(file, "new");
+        file.complete();
+        EXPECT_EQ(read_bytes(file.temp_path()), "new");
+        EXPECT_EQ(read_bytes(folder.file("out.png")), "old");
+    }  // never committed: a later step failed
+    EXPECT_EQ(read_bytes(folder.file("out.png")), "old");
     EXPECT_EQ(folder.entry_count(), 1);
 }
 

@@ -1,0 +1,67 @@
+#include "output/output_target.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+#include "core/errors.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What a file that is not a regular file is, for the refusal message.
+std::string kind_of(mode_t mode) {
+    if (S_ISDIR(mode)) return "a folder";
+    if (S_ISFIFO(mode)) return "a named pipe (FIFO)";
+    if (S_ISSOCK(mode)) return "a socket";
+    if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+    return "not a regular file";
+}
+
+OutputError refusal(const std::string& path, const std::string& what) {
+    return OutputError(path + ": " + what + "; clrender writes outputs only to regular files (or through symbolic links to them)");
+}
+
+}  // namespace
+
+std::string resolve_output_target(const std::string& path) {
+    struct stat link_info {};
+    if (::lstat(path.c_str(), &link_info) != 0) {
+        // Missing: a new file. Any other failure (a missing folder, no permission) surfaces
+        // as "cannot create a file in its folder" when the folder is prepared.
+        return path;
+    }
+    if (S_ISREG(link_info.st_mode)) return path;
+    if (!S_ISLNK(link_info.st_mode)) throw refusal(path, "is " + kind_of(link_info.st_mode));
+
+    struct stat target_info {};
+    if (::stat(path.c_str(), &target_info) != 0)
+        throw refusal(path, std::string("is a symbolic link that cannot be followed (") + std::strerror(errno) + ")");
+    if (!S_ISREG(target_info.st_mode)) throw refusal(path, "is a symbolic link to " + kind_of(target_info.st_mode));
+    std::error_code error;
+    const fs::path target = fs::canonical(path, error);
+    if (error) throw refusal(path, "is a symbolic link that cannot be resolved (" + error.message() + ")");
+    return target.string();
+}
+
+FileIdentity identify_file(const std::string& path) {
+    FileIdentity identity;
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0) {
+        identity.exists = true;
+        identity.device = info.st_dev;
+        identity.inode = info.st_ino;
+        return identity;
+    }
+    std::error_code error;
+    fs::path normal = fs::weakly_canonical(fs::absolute(path, error), error);
+    identity.path = error ? fs::absolute(path).lexically_normal().string() : normal.string();
+    return identity;
+}
+
+}  // namespace clr

@@ -1,0 +1,108 @@
+#include "output/temp_files.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "core/errors.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::uint32_t fnv1a(const std::string& text, std::uint32_t hash = 2166136261u) {
+    for (unsigned char c : text) hash = (hash ^ c) * 16777619u;
+    return hash;
+}
+
+std::string first_line_of(const char* path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    return line;
+}
+
+std::string host_name() {
+    char name[256] = {};
+    return ::gethostname(name, sizeof name - 1) == 0 ? name : "";
+}
+
+// The machine (machine id and host name) and the process-id namespace: two containers on
+// one machine share a folder but not their process ids, so they must not share a host id.
+std::string compute_host_id() {
+    std::error_code ignored;
+    const std::string pid_namespace = fs::read_symlink("/proc/self/ns/pid", ignored).string();
+    std::uint32_t hash = fnv1a(first_line_of("/etc/machine-id"));
+    hash = fnv1a("\n" + host_name() + "\n" + pid_namespace, hash);
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(hash));
+    return hex;
+}
+
+const std::regex& temp_name_form() {
+    static const std::regex form(R"(\.clrender-([0-9a-f]{8})-([0-9]{1,10})-[0-9]{1,10}\.tmp(\.log)?)");
+    return form;
+}
+
+bool process_is_gone(long pid) {
+    if (pid <= 0 || pid == static_cast<long>(::getpid())) return false;
+    return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;  // EPERM: alive, someone else's
+}
+
+}  // namespace
+
+const std::string& temp_host_id() {
+    static const std::string id = compute_host_id();
+    return id;
+}
+
+std::string temp_path_in_folder_of(const std::string& final_path) {
+    static std::atomic<unsigned> counter{0};
+    const std::string name = ".clrender-" + temp_host_id() + "-" + std::to_string(::getpid()) + "-" +
+                             std::to_string(counter++) + ".tmp";
+    return (fs::path(final_path).parent_path() / name).string();
+}
+
+bool is_stale_temp_name(const std::string& file_name) {
+    std::smatch match;
+    if (!std::regex_match(file_name, match, temp_name_form())) return false;
+    if (match[1].str() != temp_host_id()) return false;  // another machine's: its pid means nothing here
+    return process_is_gone(std::stol(match[2].str()));
+}
+
+int sweep_stale_temp_files(const std::string& folder) {
+    int removed = 0;
+    std::error_code error;
+    fs::directory_iterator entries(folder.empty() ? "." : folder, error);
+    for (; !error && entries != fs::directory_iterator(); entries.increment(error)) {
+        const fs::directory_entry& entry = *entries;
+        std::error_code ignored;
+        if (!entry.is_regular_file(ignored) || entry.is_symlink(ignored)) continue;
+        if (!is_stale_temp_name(entry.path().filename().string())) continue;
+        if (::unlink(entry.path().c_str()) == 0) ++removed;
+    }
+    return removed;
+}
+
+void prepare_output_folder(const std::string& final_path) {
+    sweep_stale_temp_files(fs::path(final_path).parent_path().string());
+    const std::string probe = temp_path_in_folder_of(final_path);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) throw OutputError(final_path + ": cannot create a file in its folder: " + std::strerror(errno));
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
+}  // namespace clr
