@@ -14,8 +14,10 @@ CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, dou
                         int height) {
     CameraFrame camera;
     camera.eye = eye;
-    camera.w = normalize(eye - lookat);         // points back, towards the viewer
-    camera.u = normalize(cross(up, camera.w));  // screen right
+    // Directions of any finite length (normalize() scales before squaring); `up` is made
+    // unit before the cross product, which could overflow for a 1e300-long `up`.
+    camera.w = normalize(eye - lookat);                    // points back, towards the viewer
+    camera.u = normalize(cross(normalize(up), camera.w));  // screen right
     camera.v = cross(camera.w, camera.u);       // screen up; unit because w and u are orthonormal
     camera.width = width;
     camera.height = height;

@@ -10,8 +10,10 @@ namespace clr {
 ClrCamera make_device_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, double fov_degrees, int width,
                              int height) {
     const double kPi = 3.14159265358979323846;
-    Vec3 w = normalize(eye - lookat);  // towards the viewer
-    Vec3 u = normalize(cross(up, w));  // screen right
+    // Unit vectors before any cross product: `up` and eye - lookat may have any finite length
+    // (normalize() copes), but a cross product of a 1e300-long `up` could overflow.
+    Vec3 w = normalize(eye - lookat);            // towards the viewer
+    Vec3 u = normalize(cross(normalize(up), w));  // screen right
     Vec3 v = cross(w, u);              // screen up
     // The field of view spans the larger dimension; pixels are square.
     double tan_half = std::tan(fov_degrees * kPi / 360.0);

@@ -34,7 +34,7 @@ Facing3 free_frame(const Vec3& to_eye, const PlacementCamera& camera) {
 
 PlacementCamera::PlacementCamera(const CameraKey& key, const Vec3& scene_up)
     : eye(key.eye), up(normalize(scene_up)), backward(normalize(key.eye - key.lookat)),
-      right(normalize(cross(scene_up, backward))) {}
+      right(normalize(cross(up, backward))) {}
 
 int choose_view(const Impostor& impostor, const PlacementCamera& camera) {
     Vec3 to_eye = camera.eye - impostor.center;

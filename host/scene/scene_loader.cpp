@@ -18,6 +18,7 @@
 #include "scene/image_cache.h"
 #include "scene/image_loader.h"
 #include "scene/json_reader.h"
+#include "scene/value_ranges.h"
 
 namespace clr {
 namespace {
@@ -31,8 +32,8 @@ constexpr int kMaxMaxDepth = 64;
 // Up is "parallel" to the view direction when the sine of the angle between them is below
 // this. Both are unit vectors first, so the test does not depend on the scene's scale.
 constexpr double kParallelSine = 1e-9;
-// Billboard corners are degenerate when the parallelogram's area is at most this fraction of
-// |UR-UL| * |LL-UL| (the sine of the corner angle), again independent of scale.
+// Billboard corners are degenerate when the sine of the angle between the two edges at UL is
+// at most this, computed from unit edges so that it does not depend on the billboard's size.
 constexpr double kDegenerateSine = 1e-12;
 
 std::string format_vec3(const Vec3& v) {
@@ -41,13 +42,9 @@ std::string format_vec3(const Vec3& v) {
     return text.str();
 }
 
-// Unit vector along `v`, scaled by its largest component first so that tiny or huge
-// vectors neither underflow nor overflow on the way. Zero stays zero.
-Vec3 direction(const Vec3& v) {
-    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    if (largest == 0) return v;
-    return normalize(v / largest);
-}
+// Unit vector along `v`, of any finite length (normalize() scales before squaring). Zero
+// stays zero.
+Vec3 direction(const Vec3& v) { return v == Vec3{} ? v : normalize(v); }
 
 // --------------------------------------------------------------------------------------
 // Camera
@@ -68,12 +65,12 @@ std::optional<PathPoints> read_path_points(ObjectReader& file, const std::string
     if (single && list) list->fail("give either '" + single_key + "' or '" + list_key + "', not both");
     PathPoints path;
     if (single) {
-        path.points.push_back(single->vec3());
+        path.points.push_back(read_position(*single));
         path.locations.push_back(single->location());
         path.location = single->location();
     } else if (list) {
         for (const Node& entry : list->elements()) {
-            path.points.push_back(entry.vec3());
+            path.points.push_back(read_position(entry));
             path.locations.push_back(entry.location());
         }
         if (path.points.empty()) list->fail(list_key + " must hold at least one [x, y, z] position");
@@ -194,7 +191,7 @@ void read_lighting(ObjectReader& file, Scene& scene) {
     if (const auto only_ambient = file.optional("OnlyAmbient")) scene.only_ambient = only_ambient->flag();
     if (const auto sun = file.optional("SunLocation")) {
         scene.has_sun = true;
-        scene.sun_location = sun->vec3();
+        scene.sun_location = read_position(*sun);
     }
     scene.max_depth = kDefaultMaxDepth;
     if (const auto depth = file.optional("MaxDepth"))
@@ -218,25 +215,33 @@ Sphere read_sphere(const Node& node) {
     ObjectReader fields(node, "sphere");
     check_type(fields, {"sphere"}, "\"sphere\"");
     Sphere sphere;
-    sphere.center = fields.required("center").vec3();
-    const Node radius = fields.required("radius");
-    sphere.radius = radius.number();
-    if (!(sphere.radius > 0)) radius.fail("radius must be > 0 (got " + radius.shown() + ")");
+    sphere.center = read_position(fields.required("center"));
+    sphere.radius = read_length(fields.required("radius"));
     sphere.ambient = fields.required("ambient").color();
     if (const auto mirror = fields.optional("IsMirror")) sphere.is_mirror = mirror->flag();
     fields.warn_about_unknown_keys();
     return sphere;
 }
 
+// An edge from UpperLeft to `corner` must be long enough for the kernels (value_ranges.h):
+// a 1e-200 edge is not a line, it is a billboard too small to render.
+void check_billboard_edge(const Vec3& edge, const std::string& corner, const Node& node) {
+    if (edge == Vec3{}) node.fail("billboard has no area: " + corner + " is the same point as UpperLeft");
+    const double edge_length = length(edge);
+    if (edge_length < kMinLength || edge_length > kMaxLength)
+        node.fail("billboard edge from UpperLeft to " + corner + " is " + number_text(edge_length) +
+                  " long, outside the range clrender renders exactly enough: " + length_range_text());
+}
+
 // Corners UL, LL, UR must span a parallelogram of non-zero area (SPEC 2, Billboards).
 void check_billboard_corners(const Billboard& billboard, const Node& node) {
     const Vec3 across = billboard.upper_right - billboard.upper_left;
     const Vec3 down = billboard.lower_left - billboard.upper_left;
-    const double area = length(cross(across, down));
-    if (area > kDegenerateSine * length(across) * length(down)) return;
-    if (across == Vec3{}) node.fail("billboard has no area: UpperRight is the same point as UpperLeft");
-    if (down == Vec3{}) node.fail("billboard has no area: LowerLeft is the same point as UpperLeft");
-    node.fail("billboard has no area: its corners UpperLeft, LowerLeft and UpperRight are collinear");
+    check_billboard_edge(across, "UpperRight", node);
+    check_billboard_edge(down, "LowerLeft", node);
+    const double sine = length(cross(normalize(across), normalize(down)));
+    if (!(sine > kDegenerateSine))
+        node.fail("billboard has no area: its corners UpperLeft, LowerLeft and UpperRight are collinear");
 }
 
 // A billboard and, when it shows an image, the "filename" value naming it. `always_mirror`
@@ -245,9 +250,9 @@ std::pair<Billboard, std::optional<Node>> read_billboard(const Node& node, bool 
     ObjectReader fields(node, "billboard");
     check_type(fields, {"billboard", "billboards"}, "\"billboard\" (or \"billboards\")");
     Billboard billboard;
-    billboard.upper_left = fields.required("UpperLeft").vec3();
-    billboard.lower_left = fields.required("LowerLeft").vec3();
-    billboard.upper_right = fields.required("UpperRight").vec3();
+    billboard.upper_left = read_position(fields.required("UpperLeft"));
+    billboard.lower_left = read_position(fields.required("LowerLeft"));
+    billboard.upper_right = read_position(fields.required("UpperRight"));
     if (const auto ambient = fields.optional("ambient")) {
         billboard.has_ambient = true;
         billboard.ambient = ambient->color();
@@ -436,12 +441,6 @@ Facing read_facing(const Node& node) {
     node.fail("facing must be \"upright\" or \"free\" (got " + node.shown() + ")");
 }
 
-double read_positive(const Node& node) {
-    const double value = node.number();
-    if (!(value > 0)) node.fail(node.label() + " must be > 0 (got " + node.shown() + ")");
-    return value;
-}
-
 // The views an impostor shows: a list of its own, the name of a set, or one picture.
 void read_impostor_views(ObjectReader& fields, ImpostorViews& views) {
     const std::optional<Node> list = fields.optional("views");
@@ -468,9 +467,9 @@ void read_impostor_views(ObjectReader& fields, ImpostorViews& views) {
 Impostor read_impostor(const Node& node, ImpostorViews& views) {
     ObjectReader fields(node, "impostor");
     Impostor impostor;
-    impostor.center = fields.required("center").vec3();
-    impostor.width = read_positive(fields.required("width"));
-    impostor.height = read_positive(fields.required("height"));
+    impostor.center = read_position(fields.required("center"));
+    impostor.width = read_length(fields.required("width"));
+    impostor.height = read_length(fields.required("height"));
     if (const auto facing = fields.optional("facing")) impostor.facing = read_facing(*facing);
     const std::optional<Node> ambient = fields.optional("ambient");
     if (ambient) impostor.ambient = ambient->color();

@@ -327,6 +327,34 @@ std::vector<BadInput> catalogue() {
          {"f_0001.png: the --stats report would replace the frame 1 (-o)"}},
         {"StatsIsAFolder", {{"scene.json", scene_with("")}}, {"report"}, "scene.json -o out.png --stats report -q", 4,
          {"report: is a folder"}},
+        // --- Numeric ranges: finite numbers beyond what the float kernels render right
+        // (docs/scene-format.md, Numeric ranges). Each message names the value and the range.
+        bad_scene("CoordinateNear1e38", sphere_scene(R"("radius": 1, "center": [0, 1e38, 0])"),
+                  {"bad.json: /spheres/0/center/1: center[1] is 1e38, outside the range clrender renders exactly "
+                   "enough: every coordinate must be from -1e15 to 1e15"}),
+        bad_scene("EyeCoordinateJustOutside", camera_scene(R"("eye": [0, 0, 1.000001e15])", look_at_origin),
+                  {"bad.json: /eye/2: eye[2] is 1.000001e15, outside the range", "from -1e15 to 1e15"}),
+        bad_scene("SunFarBeyondTheRange", scene_with(R"("SunLocation": [-1e20, 5, 5])"),
+                  {"bad.json: /SunLocation/0: SunLocation[0] is -1e20, outside the range", "from -1e15 to 1e15"}),
+        bad_scene("SphereOfRadius1e300", sphere_scene(R"("radius": 1e300)"),
+                  {"bad.json: /spheres/0/radius: radius 1e300 is outside the range clrender renders exactly enough: "
+                   "lengths must be from 1e-15 to 1e16"}),
+        bad_scene("SphereRadiusJustAboveTheRange", sphere_scene(R"("radius": 1.001e16)"),
+                  {"bad.json: /spheres/0/radius: radius 1.001e16 is outside", "from 1e-15 to 1e16"}),
+        bad_scene("SphereOfRadius1eMinus38", sphere_scene(R"("radius": 1e-38)"),
+                  {"bad.json: /spheres/0/radius: radius 1e-38 is outside", "from 1e-15 to 1e16"}),
+        bad_scene("SphereRadiusJustBelowTheRange", sphere_scene(R"("radius": 9.99e-16)"),
+                  {"bad.json: /spheres/0/radius: radius 9.99e-16 is outside", "from 1e-15 to 1e16"}),
+        bad_scene("BillboardEdgeOf1eMinus200",
+                  billboard_scene(R"("UpperLeft": [0, 0, 0], "LowerLeft": [0, -1, 0], "UpperRight": [1e-200, 0, 0])"),
+                  {"bad.json: /billboards/0: billboard edge from UpperLeft to UpperRight is 1e-200 long, outside the "
+                   "range clrender renders exactly enough: lengths must be from 1e-15 to 1e16"}),
+        bad_scene("BillboardCornerBeyondTheRange",
+                  billboard_scene(R"("UpperLeft": [-1, 1, 0], "LowerLeft": [-1, -1, 0], "UpperRight": [1e300, 1, 0])"),
+                  {"bad.json: /billboards/0/UpperRight/0: UpperRight[0] is 1e300, outside the range"}),
+        bad_scene("ImpostorWidthBelowTheRange",
+                  scene_with(R"("clrender": {"impostors": [{"center": [0, 1, 0], "width": 1e-20, "height": 2, "ambient": [1, 0, 0]}]})"),
+                  {"bad.json: /clrender/impostors/0/width: width 1e-20 is outside", "from 1e-15 to 1e16"}),
     };
 }
 

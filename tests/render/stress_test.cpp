@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <iostream>
+#include <set>
+#include <sstream>
 
 #include "support/image_compare.h"
 #include "support/render_helpers.h"
+#include "reference/reference.h"
 #include "render/device_camera.h"
 #include "support/scene_builder.h"
 #include "support/stage_runner.h"
@@ -55,16 +59,17 @@ std::shared_ptr<Image> checker(int size) {
 }
 
 // A small scene with a lit sphere, a shadow, a textured billboard and a mirror, placed at
-// `origin` and seen from `origin + (0, 1, 8)` (all sizes about 1).
-Scene small_world(const Vec3& origin) {
-    Scene scene = testing::make_scene(origin + Vec3{0.5, 1.2, 8}, origin, {0, 1, 0}, 50, 160, 120);
+// `origin` and seen from `origin + (0.5, 1.2, 8) scale` (all sizes about `scale`; the
+// smallest length is the radius 0.4 scale).
+Scene small_world(const Vec3& origin, double scale = 1) {
+    const auto at = [&](double x, double y, double z) { return origin + Vec3{x, y, z} * scale; };
+    Scene scene = testing::make_scene(at(0.5, 1.2, 8), origin, {0, 1, 0}, 50, 160, 120);
     scene.has_sun = true;
-    scene.sun_location = origin + Vec3{20, 30, 15};
-    scene.spheres.push_back(testing::make_sphere(origin, 1, {0.9, 0.4, 0.2}));
-    scene.spheres.push_back(testing::make_sphere(origin + Vec3{0.7, 1.6, 0.6}, 0.4, {0.2, 0.9, 0.4}));
-    scene.spheres.push_back(testing::make_sphere(origin + Vec3{-2.2, 0, 0.5}, 0.8, {0, 0, 0}, true));
-    scene.billboards.push_back(
-        testing::make_billboard(origin + Vec3{-4, 3, -3}, origin + Vec3{-4, -2, -3}, origin + Vec3{4, 3, -3}, {0, 0, 0}, checker(16)));
+    scene.sun_location = at(20, 30, 15);
+    scene.spheres.push_back(testing::make_sphere(origin, 1 * scale, {0.9, 0.4, 0.2}));
+    scene.spheres.push_back(testing::make_sphere(at(0.7, 1.6, 0.6), 0.4 * scale, {0.2, 0.9, 0.4}));
+    scene.spheres.push_back(testing::make_sphere(at(-2.2, 0, 0.5), 0.8 * scale, {0, 0, 0}, true));
+    scene.billboards.push_back(testing::make_billboard(at(-4, 3, -3), at(-4, -2, -3), at(4, 3, -3), {0, 0, 0}, checker(16)));
     return scene;
 }
 
@@ -147,6 +152,176 @@ TEST(Stress, SphereWhoseSurfaceTouchesTheEye) {
     scene.spheres.push_back(testing::make_sphere({1.2, 0, 0}, 1.2, {0.3, 0.5, 0.8}));   // eye on its surface, beside
     scene.billboards.push_back(testing::make_billboard({-5, 5, -6}, {-5, -5, -6}, {5, 5, -6}, {0.9, 0.9, 0.9}));
     expect_close_to_reference(scene, "spheres touching the eye");
+}
+
+// ---------------------------------------------------------------------------------------
+// Extreme but valid numbers (docs/scene-format.md, Numeric ranges): directions of any finite
+// length, and scenes at the smallest and largest supported lengths and coordinates. Each is
+// checked twice: the reference against an independent expectation (the same picture as an
+// ordinary scene, or the pixels geometry says a shape covers), and the kernels against the
+// reference.
+
+// Two renderings of the same picture: at most 0.1% of the pixels may differ (a direction
+// rounded one ulp differently can move a silhouette pixel), and the picture must not be
+// blank, so that two blank images cannot pass.
+void expect_same_picture(const Image& image, const Image& expected, const std::string& what) {
+    std::set<std::uint32_t> colours;
+    for (std::size_t i = 0; i < expected.rgba.size(); i += 4)
+        colours.insert(expected.rgba[i] << 16 | expected.rgba[i + 1] << 8 | expected.rgba[i + 2]);
+    ASSERT_GE(colours.size(), 3u) << what << ": the expected picture is nearly blank";
+    const testing::ImageComparison comparison = testing::compare_images(image, expected);
+    EXPECT_LE(comparison.differing_fraction(), 0.001)
+        << what << ": " << comparison.differing << " pixels differ from the expected picture";
+}
+
+std::string describe(const Vec3& v) {
+    std::ostringstream text;
+    text << "[" << v.x << ", " << v.y << ", " << v.z << "]";
+    return text.str();
+}
+
+Scene with_camera(Scene scene, const Vec3& eye, const Vec3& lookat, const Vec3& up) {
+    scene.camera_path = {{eye, lookat}};
+    scene.up = up;
+    return scene;
+}
+
+// small_world with two impostors, which turn about `up` (upright) or face the eye (free).
+Scene world_with_impostors(const Vec3& up) {
+    Scene scene = small_world({0, 0, 0});
+    scene.up = up;
+    Impostor upright;
+    upright.center = {2.4, 0.3, -0.5};
+    upright.width = 1;
+    upright.height = 2;
+    upright.ambient = {0.9, 0.9, 0.2};
+    scene.impostors.push_back(upright);
+    Impostor free = upright;
+    free.center = {-1, -1.6, 1};
+    free.facing = Facing::Free;
+    free.ambient = {0.3, 0.3, 0.9};
+    scene.impostors.push_back(free);
+    return scene;
+}
+
+// `up` may have any finite non-zero length; 1e-300 and 1e300 once drew a blank image, and an
+// up whose cross product with the view overflows drew nothing either.
+TEST(Stress, UpOfAnyFiniteLengthGivesTheSamePicture) {
+    const std::vector<std::pair<Vec3, Vec3>> cases = {
+        {{0, 1e-300, 0}, {0, 1, 0}},
+        {{0, 1e300, 0}, {0, 1, 0}},
+        {{0, 5e-324, 0}, {0, 1, 0}},  // the smallest subnormal double
+        {{1.5e308, 1.5e308, -1.5e308}, {1, 1, -1}},
+    };
+    for (const auto& [extreme, ordinary] : cases) {
+        const std::string what = "up " + describe(extreme);
+        const Scene scene = world_with_impostors(extreme);
+        expect_same_picture(testing::render_with_reference(scene),
+                            testing::render_with_reference(world_with_impostors(ordinary)), what + " (reference)");
+        expect_close_to_reference(scene, what);
+    }
+}
+
+// The eye 1e-300 from the look-at point: the view direction is still defined, and the picture
+// is the one seen from the same eye towards a far look-at point in the same direction.
+TEST(Stress, EyeATinyDistanceFromTheLookatPoint) {
+    const Scene world = small_world({0, -0.5, -8});
+    for (const Vec3& offset : {Vec3{0, 0, 1}, Vec3{0.05, 0.06, 1}}) {
+        const Vec3 eye = offset * 1e-300;
+        const Scene scene = with_camera(world, eye, {0, 0, 0}, {0, 1, 0});
+        const std::string what = "eye 1e-300 from lookat along " + describe(offset);
+        expect_same_picture(testing::render_with_reference(scene),
+                            testing::render_with_reference(with_camera(world, eye, -offset, {0, 1, 0})), what + " (reference)");
+        expect_close_to_reference(scene, what);
+    }
+}
+
+// The whole of small_world scaled down until its smallest radius is the smallest supported
+// length (1e-15), and scaled up and moved until it reaches the coordinate limit 1e15: the
+// same picture as at scale 1.
+TEST(Stress, SmallWorldAtTheSmallestAndLargestSupportedScales) {
+    const Image expected = testing::render_with_reference(small_world({0, 0, 0}));
+    const Scene tiny = small_world({0, 0, 0}, 2.5e-15);
+    EXPECT_NEAR(tiny.spheres[1].radius, 1e-15, 1e-30);
+    expect_same_picture(testing::render_with_reference(tiny), expected, "world of scale 2.5e-15 (reference)");
+    expect_close_to_reference(tiny, "world of scale 2.5e-15");
+
+    const Scene huge = small_world({4e14, 4e14, -4e14}, 2e13);
+    EXPECT_EQ(huge.sun_location.y, 1e15);  // at the coordinate limit
+    expect_same_picture(testing::render_with_reference(huge), expected, "world of scale 2e13 at 4e14 (reference)");
+    expect_close_to_reference(huge, "world of scale 2e13 at 4e14");
+}
+
+// Whether the ray through (x, y, -1) (camera looking along -z, up +y) clearly meets a shape:
+// 1 inside, 0 outside, -1 too close to its outline to say.
+using Coverage = std::function<int(double x, double y)>;
+
+// Every pixel whose centre is clearly inside shows `inside`, clearly outside shows `outside`:
+// computed from the field of view alone, independently of either renderer.
+void expect_coverage(const Image& image, const Scene& scene, const Coverage& covers, const Color& inside,
+                     const Color& outside, const std::string& what) {
+    const double half = std::tan(scene.fov_degrees * 3.14159265358979323846 / 360);
+    const double larger = std::max(scene.width, scene.height);
+    int wrong = 0, inside_count = 0;
+    for (int row = 0; row < image.height; ++row)
+        for (int col = 0; col < image.width; ++col) {
+            const double x = (2 * (col + 0.5) / image.width - 1) * half * image.width / larger;
+            const double y = (1 - 2 * (row + 0.5) / image.height) * half * image.height / larger;
+            const int verdict = covers(x, y);
+            if (verdict < 0) continue;
+            inside_count += verdict;
+            const Color& colour = verdict ? inside : outside;
+            for (int c = 0; c < 3; ++c) wrong += image.at(col, row, c) != reference::to_byte(colour[c]);
+        }
+    EXPECT_GT(inside_count, 100) << what << ": the shape should cover many pixels";
+    EXPECT_EQ(wrong, 0) << what << ": pixels of the wrong colour";
+}
+
+void expect_coverage_in_both(const Scene& scene, const Coverage& covers, const Color& inside, const Color& outside,
+                             const std::string& what) {
+    expect_coverage(testing::render_with_reference(scene), scene, covers, inside, outside, what + " (reference)");
+    expect_coverage(testing::render_with_kernels(scene), scene, covers, inside, outside, what + " (kernels)");
+    expect_close_to_reference(scene, what);
+}
+
+// A sphere of radius r centred on the axis at distance d covers the rays within the angle
+// asin(r / d) of it: x^2 + y^2 < r^2 / (d^2 - r^2). 1% either side of the outline is left out.
+Coverage sphere_on_axis(double r, double d) {
+    const double limit = r * r / (d * d - r * r);
+    return [limit](double x, double y) {
+        const double q = (x * x + y * y) / limit;
+        return q < 0.98 ? 1 : q > 1.02 ? 0 : -1;
+    };
+}
+
+TEST(Stress, SphereOfTheSmallestSupportedRadiusSeenHeadOn) {
+    Scene scene = testing::make_scene({0, 0, 4e-15}, {0, 0, 0}, {0, 1, 0}, 40, 120, 90);
+    scene.background = {0.1, 0.2, 0.3};
+    scene.spheres.push_back(testing::make_sphere({0, 0, 0}, 1e-15, {0.9, 0.6, 0.2}));
+    expect_coverage_in_both(scene, sphere_on_axis(1e-15, 4e-15), {0.9, 0.6, 0.2}, {0.1, 0.2, 0.3}, "sphere of radius 1e-15");
+}
+
+// The eye at the coordinate limit inside a sphere of the largest radius, looking at a sphere
+// of radius 1e14 at the opposite limit.
+TEST(Stress, SpheresAtTheLargestSupportedRadiusAndCoordinates) {
+    Scene scene = testing::make_scene({0, 0, 1e15}, {0, 0, 0}, {0, 1, 0}, 30, 120, 90);
+    scene.background = {1, 0, 1};  // never seen: everything lies inside the big sphere
+    scene.spheres.push_back(testing::make_sphere({0, 0, 0}, 1e16, {0.2, 0.4, 0.9}));
+    scene.spheres.push_back(testing::make_sphere({0, 0, -1e15}, 1e14, {0.9, 0.3, 0.1}));
+    expect_coverage_in_both(scene, sphere_on_axis(1e14, 2e15), {0.9, 0.3, 0.1}, {0.2, 0.4, 0.9}, "spheres of radius 1e16 and 1e14");
+}
+
+// A square billboard whose edges are the smallest supported length, 1e-15, seen head-on from
+// 3e-15: it covers |x|, |y| < 0.5e-15 / 3e-15.
+TEST(Stress, BillboardOfTheSmallestSupportedEdgeSeenHeadOn) {
+    Scene scene = testing::make_scene({0, 0, 3e-15}, {0, 0, 0}, {0, 1, 0}, 40, 120, 90);
+    const double h = 0.5e-15;
+    scene.billboards.push_back(testing::make_billboard({-h, h, 0}, {-h, -h, 0}, {h, h, 0}, {0.3, 0.9, 0.5}));
+    const Coverage square = [](double x, double y) {
+        const double q = std::max(std::fabs(x), std::fabs(y)) * 6;
+        return q < 0.98 ? 1 : q > 1.02 ? 0 : -1;
+    };
+    expect_coverage_in_both(scene, square, {0.3, 0.9, 0.5}, {0, 0, 0}, "billboard of edge 1e-15");
 }
 
 }  // namespace
