@@ -82,8 +82,10 @@ Scene load(const Options& options) {
 using DeviceList = std::future<std::vector<DeviceEntry>>;
 
 std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices) {
-    if (options.reference) return make_reference_frame_renderer(scene);
+    // A long frame stops within a band (or a reference row) of a signal, not at its end.
+    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted);
     RendererOptions renderer_options;
+    renderer_options.between_bands = throw_if_interrupted;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
     if (devices.valid()) return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options);

@@ -36,16 +36,17 @@ Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_
 
 }  // namespace
 
-Image render(const Scene& scene, const CameraFrame& camera, int frame) {
+Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows) {
     // Impostors face this frame's eye; once placed they are billboards like any other, which
     // is all trace() knows about. The placed scene has no impostors, so this recurses once.
-    if (!scene.impostors.empty()) return render(with_impostors_placed(scene, camera), camera, frame);
+    if (!scene.impostors.empty()) return render(with_impostors_placed(scene, camera), camera, frame, between_rows);
     const unsigned frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
     Image image;
     image.width = camera.width;
     image.height = camera.height;
     image.rgba.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
     for (int row = 0; row < camera.height; ++row) {
+        if (between_rows) between_rows();
         for (int col = 0; col < camera.width; ++col) {
             const Color color = pixel_color(scene, camera, frame_seed, col, row);
             std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(row) * camera.width + col) * 4];

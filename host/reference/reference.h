@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -77,6 +78,8 @@ std::uint8_t to_byte(double channel);
 // Renders one frame: RGBA bytes, alpha 255, rows from the top. Each pixel is the mean of
 // scene.sampling.samples_per_pixel samples placed as kernels/shared/clr_samples.h says for
 // this frame index (one sample: the pixel's centre). Impostors are placed for `camera` first.
-Image render(const Scene& scene, const CameraFrame& camera, int frame = 0);
+// `between_rows` runs before each row; it throws to abandon the frame (a stop request).
+Image render(const Scene& scene, const CameraFrame& camera, int frame = 0,
+             const std::function<void()>& between_rows = {});
 
 }  // namespace clr::reference

@@ -30,13 +30,14 @@ private:
 
 class ReferenceFrameRenderer : public FrameRenderer {
 public:
-    explicit ReferenceFrameRenderer(const Scene& scene) : scene_(scene) {}
+    ReferenceFrameRenderer(const Scene& scene, std::function<void()> between_rows)
+        : scene_(scene), between_rows_(std::move(between_rows)) {}
 
     Image render(const CameraKey& key, int frame, FrameTiming* timing) override {
         auto start = std::chrono::steady_clock::now();
         Image image = reference::render(
             scene_, reference::make_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, scene_.width, scene_.height),
-            frame);
+            frame, between_rows_);
         if (timing) {
             timing->total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             timing->kernel_ms = timing->total_ms;  // all of it is "kernel" work, on the host
@@ -48,6 +49,7 @@ public:
 
 private:
     const Scene& scene_;
+    std::function<void()> between_rows_;
 };
 
 }  // namespace
@@ -63,8 +65,8 @@ std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, co
     return std::make_unique<OpenClFrameRenderer>(scene, select_device(devices, device_selector), options);
 }
 
-std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene) {
-    return std::make_unique<ReferenceFrameRenderer>(scene);
+std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene, std::function<void()> between_rows) {
+    return std::make_unique<ReferenceFrameRenderer>(scene, std::move(between_rows));
 }
 
 }  // namespace clr

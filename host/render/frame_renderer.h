@@ -2,6 +2,7 @@
 // double-precision host reference (--reference). The frame loop does not care which.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,6 +37,8 @@ std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, co
                                                           const std::string& device_selector,
                                                           const RendererOptions& options);
 
-std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene);
+// `between_rows` runs before each row of a frame and throws to abandon it (a stop request).
+std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene,
+                                                             std::function<void()> between_rows = {});
 
 }  // namespace clr

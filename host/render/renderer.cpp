@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 
@@ -49,7 +50,12 @@ bool shares_host_memory(const cl::Device& device) {
 }  // namespace
 
 Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options)
-    : device_(device), scene_(scene), screen_tiles_(options.screen_tiles) {
+    : device_(device),
+      scene_(scene),
+      screen_tiles_(options.screen_tiles),
+      band_sizer_(options.band_seconds),
+      fixed_band_rows_(options.band_rows),
+      between_bands_(options.between_bands) {
     compiled_ = compile_scene(scene);
     features_ = options.features.value_or(compiled_.features);
     features_.double_precision = options.double_precision;
@@ -205,18 +211,20 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
     return static_cast<double>(ns) * 1e-6;
 }
 
-void Renderer::upload_screen_tiles(const ClrCamera& camera) {
+ScreenTiles Renderer::upload_screen_tiles(const ClrCamera& camera) {
     ScreenTiles tiles = bin_screen_tiles(geometry(), camera, origin_);
     tile_offsets_ = upload(device_.context(), tiles.offsets);
     tile_items_ = upload(device_.context(), tiles.items);
     tile_nearest_ = upload(device_.context(), tiles.nearest);
     tile_rows_ = upload(device_.context(), tiles.rows);
     tiles_x_ = tiles.tiles_x;
+    return tiles;
 }
 
-// A frame whose pixel buffer exceeds the device's allocation limit, or whose allocation
-// fails, renders in bands of rows, halving the band until it fits. Bands give the same bytes:
-// every pixel's computation is independent of the band it is in.
+// Every frame renders in bands of rows (BandSizer) so that between_bands_ runs several times a
+// second, and also when one band's pixel buffer exceeds the device's allocation limit, or its
+// allocation fails: then the limit halves until a band fits. Bands give the same bytes: every
+// pixel's samples depend on the pixel and the frame (clr_samples.h), not on its band.
 Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
     auto start = std::chrono::steady_clock::now();
     Image image;
@@ -232,34 +240,49 @@ Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
         throw DeviceError("a row of " + std::to_string(camera.width) + " pixels needs " + std::to_string(row_bytes) +
                           " bytes of device memory, more than '" + device_.entry().device_name + "' allows (" +
                           std::to_string(max_buffer_bytes_) + ")");
-    int band = static_cast<int>(std::min<std::size_t>(camera.height, max_buffer_bytes_ / row_bytes));
-    double kernel_ms = 0;
-    bands_ = 0;
+    std::vector<double> work;
     if (screen_tiles_) {
         try {
-            upload_screen_tiles(camera);
+            work = row_work(upload_screen_tiles(camera), camera.width, camera.height);
         } catch (const cl::Error& error) {
             throw DeviceError(describe_cl_error(error, "uploading screen tiles to '" + device_.entry().device_name + "'"));
         }
+    } else {
+        int objects = static_cast<int>(geometry().spheres.size() + geometry().billboards.size());
+        work = row_work(objects, camera.width, camera.height);
     }
-    for (int first_row = 0; first_row < camera.height;) {
-        int rows = std::min(band, camera.height - first_row);
-        try {
-            kernel_ms += render_band(camera, first_row, rows, image);
-        } catch (const cl::Error& error) {
-            if (!is_out_of_memory(error) || band == 1)
-                throw DeviceError(describe_cl_error(error, "rendering a frame on '" + device_.entry().device_name + "'"));
-            band = std::max(1, band / 2);
-            continue;  // the same rows again, in a smaller band
-        }
-        first_row += rows;
-        ++bands_;
-    }
+    band_sizer_.start_frame(std::move(work), camera.samples);
+    double kernel_ms = render_bands(camera, image);
     if (timing) {
         timing->kernel_ms = kernel_ms;
         timing->total_ms = elapsed_ms(start);
     }
     return image;
+}
+
+double Renderer::render_bands(const ClrCamera& camera, Image& image) {
+    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    int limit = static_cast<int>(std::min<std::size_t>(camera.height, max_buffer_bytes_ / row_bytes));
+    double kernel_ms = 0;
+    bands_ = 0;
+    for (int first_row = 0; first_row < camera.height;) {
+        if (between_bands_) between_bands_();
+        int rows = fixed_band_rows_ > 0 ? std::min({fixed_band_rows_, limit, camera.height - first_row})
+                                        : band_sizer_.next_rows(first_row, limit);
+        auto band_start = std::chrono::steady_clock::now();
+        try {
+            kernel_ms += render_band(camera, first_row, rows, image);
+        } catch (const cl::Error& error) {
+            if (!is_out_of_memory(error) || rows == 1)
+                throw DeviceError(describe_cl_error(error, "rendering a frame on '" + device_.entry().device_name + "'"));
+            limit = std::max(1, rows / 2);
+            continue;  // the same rows again, in a smaller band
+        }
+        band_sizer_.band_done(first_row, rows, elapsed_ms(band_start) / 1000);
+        first_row += rows;
+        ++bands_;
+    }
+    return kernel_ms;
 }
 
 }  // namespace clr

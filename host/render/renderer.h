@@ -3,11 +3,13 @@
 // camera.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 #include <string>
 
 #include "device/device_context.h"
+#include "render/band_sizer.h"
 #include "render/bvh.h"
 #include "render/compiled_scene.h"
 #include "scene/scene.h"
@@ -18,8 +20,16 @@ struct RendererOptions {
     std::string kernel_dir;                // read kernels from here instead of the embedded copies
     std::optional<FeatureSet> features;    // compile these instead of the scene's own (tests)
     // Largest pixel buffer to allocate on the device, in bytes; 0: the device's own limit.
-    // A frame that does not fit renders in bands of rows.
+    // No band is larger (see render_frame()).
     std::size_t max_buffer_bytes = 0;
+    // Every frame renders in bands of rows, each sized to take about band_seconds, so that
+    // between_bands runs several times a second however long the frame takes.
+    double band_seconds = 0.15;
+    // Rows per band instead (tests): 0 sizes bands by time.
+    int band_rows = 0;
+    // Runs before each band; throws to abandon the frame (clrender passes
+    // throw_if_interrupted, so that Ctrl-C stops a long still within a band's time).
+    std::function<void()> between_bands;
     // Cull primary rays by screen tiles, 16 rays at a time (render_packets); off: every pixel tests every object
     // (the brute-force kernel, which the tests use as the general reference).
     bool screen_tiles = true;
@@ -58,7 +68,7 @@ public:
     const Vec3& origin() const { return origin_; }
 
     const FeatureSet& features() const { return features_; }
-    int bands_of_last_frame() const { return bands_; }  // 1 when the frame fitted whole
+    int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
     // For the stage tests: the built program and the scene's kernel arguments, bound from
@@ -70,8 +80,11 @@ public:
 private:
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
     double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
+    // Renders every row of `image` in bands (band_sizer_ started for this frame); returns the
+    // summed kernel time in ms.
+    double render_bands(const ClrCamera& camera, Image& image);
     void reserve_pixels(std::size_t bytes);
-    void upload_screen_tiles(const ClrCamera& camera);
+    ScreenTiles upload_screen_tiles(const ClrCamera& camera);
     void upload_geometry();
     void face_impostors(const CameraKey& key);
     // What the screen tiles and the BVH see: the scene, with its impostors as placed billboards.
@@ -98,6 +111,9 @@ private:
     std::size_t pixels_capacity_ = 0;
     double build_ms_ = 0;
     std::size_t max_buffer_bytes_ = 0;
+    BandSizer band_sizer_;
+    int fixed_band_rows_ = 0;
+    std::function<void()> between_bands_;
     int bands_ = 1;
 };
 

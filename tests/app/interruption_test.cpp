@@ -1,10 +1,14 @@
 // Ctrl-C or SIGTERM in the middle of an animation: a clean exit with 128 + signal, complete
 // frames kept, nothing partial under a final name, and a rerun with --resume finishing the
-// job with the same frames as an uninterrupted run.
+// job with the same frames as an uninterrupted run. In the middle of one long still: the
+// same exit within a second (bands of rows, and the reference's rows, check for the signal),
+// no image, and an earlier image under the output name untouched.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 
 #include "support/command.h"
 #include "support/temp_folder.h"
@@ -85,6 +89,83 @@ TEST(Interruption, CtrlCExitsWith130) {
     int code = interrupt_run(folder, "anim.json -q -o 'f_%04d.png'", "INT");
     EXPECT_EQ(code, 128 + 2) << read_bytes(folder.file("stderr.txt"));
     expect_only_complete_outputs(folder);
+}
+
+// A still that takes minutes in one launch on two CPU cores (and seconds on a large GPU):
+// mirrors, sun and shadows, many samples per pixel.
+const char* kSlowStill = R"({
+  "eye": [0, 3, 14], "lookat": [0, 1, 0], "up": [0, 1, 0], "fov_angle": 60,
+  "width": 64, "height": 64, "SunLocation": [30, 50, 20], "MaxDepth": 8,
+  "spheres": [
+    {"center": [-3, 1, 0], "radius": 2, "ambient": [0.9, 0.3, 0.2], "IsMirror": 1},
+    {"center": [3, 1, 0], "radius": 2, "ambient": [0.2, 0.4, 0.9], "IsMirror": 1},
+    {"center": [0, 1, -4], "radius": 2, "ambient": [0.3, 0.8, 0.3], "IsMirror": 1},
+    {"center": [0, 4, 2], "radius": 1, "ambient": [0.9, 0.9, 0.2]}],
+  "billboards": [{"UpperLeft": [-20, -1, -20], "LowerLeft": [-20, -1, 20], "UpperRight": [20, -1, -20], "ambient": [0.5, 0.5, 0.5]}]
+})";
+const char* kEarlierImage = "an image written by an earlier run";
+
+struct StopResult {
+    int exit_code = -1;
+    double stop_seconds = -1;  // from the signal to clrender's exit
+};
+
+// Starts `clrender still.json -o still.png <arguments>`, waits until it has opened its device
+// (it is rendering then), sends `signal_name` and measures how long clrender takes to exit.
+StopResult interrupt_still(const TempFolder& folder, const std::string& arguments, const std::string& signal_name) {
+    folder.write("still.json", kSlowStill);
+    folder.write("still.png", kEarlierImage);
+    folder.write("interrupt.sh", "cd '" + folder.path() + "'\n'" + CLRENDER_BINARY + "' still.json -o still.png " +
+                                     arguments + " 2> stderr.txt &\n"
+                                     "pid=$!\n"
+                                     "i=0\n"
+                                     "until grep -q 'clrender: device' stderr.txt || [ $i -ge 1200 ]; do sleep 0.05; i=$((i+1)); done\n"
+                                     "sleep 1.5\n"  // bands at their full length by then
+                                     "start=$(date +%s%N)\n"
+                                     "kill -" + signal_name + " $pid\n"
+                                     "wait $pid\n"
+                                     "code=$?\n"
+                                     "end=$(date +%s%N)\n"
+                                     "echo $code $(( (end - start) / 1000000 )) > result.txt\n");
+    StopResult result;
+    if (std::system(("bash '" + folder.file("interrupt.sh") + "'").c_str()) != 0) return result;
+    std::istringstream(read_bytes(folder.file("result.txt"))) >> result.exit_code >> result.stop_seconds;
+    result.stop_seconds /= 1000;
+    // The real figure, for the record; the assertion below allows for a loaded machine.
+    std::cout << "clrender stopped " << result.stop_seconds << " s after SIG" << signal_name << "\n";
+    return result;
+}
+
+void expect_still_stopped(const TempFolder& folder, const StopResult& result, int signal_number) {
+    std::string stderr_text = read_bytes(folder.file("stderr.txt"));
+    EXPECT_EQ(result.exit_code, 128 + signal_number) << stderr_text;
+    EXPECT_LT(result.stop_seconds, 5.0) << "the promise is one second; this allows for a loaded machine";
+    EXPECT_NE(stderr_text.find("clrender: error:"), std::string::npos) << stderr_text;
+    EXPECT_TRUE(read_bytes(folder.file("still.png")) == kEarlierImage) << "the earlier image must stay";
+    for (const auto& entry : fs::directory_iterator(folder.path())) {
+        std::string name = entry.path().filename().string();
+        EXPECT_TRUE(name == "still.json" || name == "still.png" || name == "stderr.txt" || name == "interrupt.sh" ||
+                    name == "result.txt")
+            << "left behind: " << name;
+    }
+}
+
+TEST(Interruption, CtrlCStopsALongStillWithinASecond) {
+    TempFolder folder;
+    StopResult result = interrupt_still(folder, "--size 2048x2048 --spp 256", "INT");
+    expect_still_stopped(folder, result, 2);
+}
+
+TEST(Interruption, SigtermStopsALongStillWithinASecond) {
+    TempFolder folder;
+    StopResult result = interrupt_still(folder, "--size 2048x2048 --spp 256", "TERM");
+    expect_still_stopped(folder, result, 15);
+}
+
+TEST(Interruption, CtrlCStopsALongReferenceStillWithinASecond) {
+    TempFolder folder;
+    StopResult result = interrupt_still(folder, "--reference --size 1024x1024 --spp 64", "INT");
+    expect_still_stopped(folder, result, 2);
 }
 
 TEST(Interruption, ResumeNeedsAFramePattern) {
