@@ -262,6 +262,8 @@ TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
 TEST(VideoEncoder, SendsRawRgbFrames) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "for last; do :; done; cat >\"$last\"");
+    const std::string prober = write_script(scripts, "fake-ffprobe", "echo 2");  // raw bytes are no video
+    ScopedEnv checker("CLRENDER_FFPROBE", prober.c_str());
     const std::string video = folder.file("raw.mp4");
     encode({video, 5, 3}, fake, 2);
     std::string expected;
