@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <unistd.h>
 
 #include "support/command.h"
 #include "support/temp_folder.h"
@@ -204,6 +205,75 @@ TEST_F(EncoderFaults, CtrlCWhileWaitingForTheEncoderToExit) {
     EXPECT_NE(outcome.errors.find("interrupted by SIGINT"), std::string::npos) << outcome.errors;
     EXPECT_LT(outcome.seconds, 5) << "clrender must stop within about a second of the signal";
     expect_clean_failure(outcome);
+}
+
+// ---- A real ffmpeg on a full disk -------------------------------------------------------
+
+bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
+
+// A private mount namespace (as root, or as a user mapped to root) can mount a small tmpfs.
+bool can_mount_a_small_disk() { return std::system("unshare -rm sh -c 'mount -t tmpfs -o size=64k tmpfs /mnt' >/dev/null 2>&1") == 0; }
+
+struct DiskRun {
+    int exit_code = -1;
+    std::string errors;
+    std::string listing;  // the disk's files after the run
+    std::string video;    // anim.mp4 after the run
+};
+
+// Runs clrender on a tmpfs of `pages` pages holding the scene and an earlier anim.mp4, all
+// inside a private mount namespace: the disk vanishes with it, so what the checks need is
+// copied out to `work` first.
+DiskRun run_on_small_disk(const TempFolder& work, const std::string& scene, long pages) {
+    const long kib = pages * ::sysconf(_SC_PAGESIZE) / 1024;
+    work.write("scene.json", scene);
+    work.write("earlier.mp4", kEarlierVideo);
+    fs::create_directories(work.file("disk"));
+    work.write("disk.sh", "set -e\ncd '" + work.path() + "'\nmount -t tmpfs -o size=" + std::to_string(kib) +
+                              "k tmpfs disk\ncp scene.json disk/anim.json\ncp earlier.mp4 disk/anim.mp4\ncd disk\nset +e\n'" +
+                              CLRENDER_BINARY + "' anim.json -q --video anim.mp4 2> ../stderr.txt\necho $? > ../code.txt\n"
+                              "ls -A > ../listing.txt\ncp anim.mp4 ../after.mp4\n");
+    DiskRun run;
+    if (std::system(("unshare -rm sh '" + work.file("disk.sh") + "'").c_str()) != 0) return run;
+    run.exit_code = std::stoi(read_bytes(work.file("code.txt")));
+    run.errors = read_bytes(work.file("stderr.txt"));
+    run.listing = read_bytes(work.file("listing.txt"));
+    run.video = read_bytes(work.file("after.mp4"));
+    return run;
+}
+
+// ffmpeg exits 0 with a broken file when the disk fills while it moves the MP4 index to the
+// front (+faststart), and 1 when it fills earlier: neither may replace the earlier video.
+TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
+    if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+    if (!can_mount_a_small_disk()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
+    std::string scene = kAnimation;
+    const std::string small_size = R"("width": 64, "height": 48)";
+    scene.replace(scene.find(small_size), small_size.size(), R"("width": 320, "height": 240)");
+
+    // The video's size where space is plenty (the same frames give the same bytes).
+    TempFolder reference;
+    reference.write("anim.json", scene);
+    ASSERT_EQ(testing::run_clrender("anim.json -q --video anim.mp4", reference.path()).exit_code, 0);
+    const long page = ::sysconf(_SC_PAGESIZE);
+    const long video_pages = (static_cast<long>(fs::file_size(reference.file("anim.mp4"))) + page - 1) / page;
+    const long enough = video_pages + 2;  // the scene and the earlier video take a page each
+
+    {
+        TempFolder work;
+        const DiskRun control = run_on_small_disk(work, scene, enough);
+        ASSERT_EQ(control.exit_code, 0) << "with room for it, the video must be written:\n" << control.errors;
+        EXPECT_EQ(control.video, read_bytes(reference.file("anim.mp4")));
+    }
+    for (long pages : {enough - 1, 3L}) {
+        TempFolder work;
+        const DiskRun run = run_on_small_disk(work, scene, pages);
+        EXPECT_EQ(run.exit_code, 4) << pages << " pages:\n" << run.errors;
+        EXPECT_NE(run.errors.find("anim.mp4: video encoding failed: "), std::string::npos) << run.errors;
+        EXPECT_EQ(count_of(run.errors, "clrender: error: "), 1) << run.errors;
+        EXPECT_EQ(run.video, kEarlierVideo) << pages << " pages: the earlier video was replaced";
+        EXPECT_EQ(run.listing, "anim.json\nanim.mp4\n") << pages << " pages: files left behind";
+    }
 }
 
 }  // namespace
