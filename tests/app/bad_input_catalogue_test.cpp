@@ -312,6 +312,18 @@ std::vector<BadInput> catalogue() {
          true},
         {"MalformedSize", {{"scene.json", scene_with("")}}, {}, "scene.json --size 12by3", 1,
          {"--size: expected WIDTHxHEIGHT", "'12by3'"}, "", true},
+
+        // --- The video encoder (fake encoders chosen through CLRENDER_FFMPEG)
+        {"EncoderFailing", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"out.mp4: video encoding failed: ", "false' exited with status 1"}, "CLRENDER_FFMPEG=false"},
+        {"EncoderExitingZeroWithoutAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"out.mp4: video encoding failed: "}, "CLRENDER_FFMPEG=true"},
+        {"EncoderTimeoutNotANumber", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 1,
+         {"CLRENDER_ENCODER_TIMEOUT must be a number of seconds above 0 and at most 86400 (got 'soon')"},
+         "CLRENDER_ENCODER_TIMEOUT=soon"},
+        {"MissingFfprobeForAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"video checker '/nonexistent/ffprobe' (from CLRENDER_FFPROBE) not found or not executable"},
+         "CLRENDER_FFPROBE=/nonexistent/ffprobe"},
     };
 }
 
