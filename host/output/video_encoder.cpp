@@ -267,9 +267,9 @@ void VideoEncoder::send(const std::uint8_t* data, std::size_t size) {
             last_progress = Clock::now();
             continue;
         }
-        if (errno == EINTR) continue;
-        if (errno == EPIPE) fail_after_broken_pipe();
-        if (errno != EAGAIN) fail(std::string("cannot send a frame to the encoder: ") + std::strerror(errno));
+        if (written < 0 && errno == EINTR) continue;
+        if (written < 0 && errno == EPIPE) fail_after_broken_pipe();
+        if (written < 0 && errno != EAGAIN) fail(std::string("cannot send a frame to the encoder: ") + std::strerror(errno));
         check_stop();
         if (const std::optional<int> status = encoder_->poll_exit()) {
             fail("the encoder stopped reading frames: " + describe_exit(program_, *status));

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -84,7 +85,13 @@ ProbeResult check_frame_count(const std::string& prober, const std::string& vide
     FileDescriptor output{pipe_fds[0]}, output_end{pipe_fds[1]};
     ::fcntl(output.fd, F_SETFL, O_NONBLOCK);  // reads wait in poll(), where check_stop can run
     FileDescriptor log{::open(log_path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC)};
-    ChildProcess probe(prober_arguments(prober, video), -1, output_end.fd, log.fd);
+    std::unique_ptr<ChildProcess> started;
+    try {
+        started = std::make_unique<ChildProcess>(prober_arguments(prober, video), -1, output_end.fd, log.fd);
+    } catch (const OutputError& error) {
+        return {false, std::string("the check cannot run: ") + error.what()};
+    }
+    ChildProcess& probe = *started;
     output_end.close();  // else the read below never sees the end of the output
     log.close();
 
