@@ -2,12 +2,17 @@
 
 #include <chrono>
 
+#include "core/interruption.h"
 #include "output/image_writer.h"
 
 namespace clr {
 namespace {
 
 constexpr std::size_t kMaxQueuedFrames = 2;  // bounds memory: a 4K frame is 33 MB
+
+// How often a wait for the worker looks for a signal: a stalled encoder must not keep
+// Ctrl-C from stopping clrender.
+constexpr std::chrono::milliseconds kInterruptionCheck{100};
 
 }  // namespace
 
@@ -32,12 +37,16 @@ FrameSink::~FrameSink() {
         queue_.clear();
     }
     changed_.notify_all();
+    // A worker waiting on a stalled encoder gives up within a slice instead of at the stall
+    // timeout (nothing happens if the video is finished).
+    if (encoder_) encoder_->cancel();
     if (worker_.joinable()) worker_.join();
 }
 
 void FrameSink::push(int frame, Image image, bool on_disk) {
     std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [this] { return queue_.size() < kMaxQueuedFrames || error_; });
+    while (!changed_.wait_for(lock, kInterruptionCheck, [this] { return queue_.size() < kMaxQueuedFrames || error_; }))
+        throw_if_interrupted();
     if (error_) std::rethrow_exception(error_);
     queue_.push_back({frame, std::move(image), on_disk});
     changed_.notify_all();

@@ -29,10 +29,12 @@ public:
     FrameSink& operator=(const FrameSink&) = delete;
 
     // Hands a frame over; waits while the worker is still busy with two. Rethrows an error
-    // the worker met (the render then stops). `on_disk`: the frame's image file exists
-    // already (--resume, --assemble) and only goes to the video.
+    // the worker met (the render then stops), and throws Interrupted on a signal while it
+    // waits. `on_disk`: the frame's image file exists already (--resume, --assemble) and only
+    // goes to the video.
     void push(int frame, Image image, bool on_disk = false);
-    // Writes what is queued and completes the video under its final name. Rethrows errors.
+    // Writes what is queued and completes the video under its final name. Rethrows errors;
+    // every wait in it ends on a signal (the worker's and the encoder's waits check too).
     void finish();
 
     double write_ms() const { return write_ms_; }  // worker time spent writing and encoding

@@ -1,21 +1,23 @@
-// ffmpeg runs as a child process started with posix_spawn, never through a shell (a path
-// with spaces or quotes stays one argument). Its stdin is a pipe carrying raw rgb24 frames,
-// its stdout goes to /dev/null and its stderr to a log file whose last lines explain a
-// failure. It writes into a temporary file beside the final one, renamed into place only
-// after ffmpeg has exited successfully (rename is atomic within one file system).
+// ffmpeg runs as a child process (output/child_process.h: never through a shell, in its own
+// process group). Its stdin is a non-blocking pipe carrying raw rgb24 frames, its stdout goes
+// to /dev/null and its stderr to a log file whose last lines explain a failure. It writes into
+// a temporary file beside the final one; after ffmpeg has exited successfully, ffprobe must
+// read back exactly the frames sent (output/video_probe.h) before the file is renamed into
+// place (rename is atomic within one file system). Until then an earlier video under the
+// final name stays as it was.
 #include "output/video_encoder.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -27,42 +29,15 @@
 #include <stdexcept>
 
 #include "core/errors.h"
+#include "core/interruption.h"
+#include "output/program_lookup.h"
 #include "output/temp_files.h"
-
-extern char** environ;
+#include "output/video_probe.h"
 
 namespace clr {
 namespace {
 
-// ---- Finding the encoder -------------------------------------------------------------
-
-bool is_executable_file(const std::string& path) {
-    struct stat info {};
-    return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode) && ::access(path.c_str(), X_OK) == 0;
-}
-
-// The first executable `name` in the folders of $PATH, as a shell would find it. An empty
-// entry means the current folder (POSIX).
-std::optional<std::string> search_path(const std::string& name) {
-    const char* path_variable = std::getenv("PATH");
-    const std::string folders = path_variable ? path_variable : "/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= folders.size()) {
-        const std::size_t colon = std::min(folders.find(':', start), folders.size());
-        const std::string folder = folders.substr(start, colon - start);
-        const std::string candidate = (folder.empty() ? "." : folder) + "/" + name;
-        if (is_executable_file(candidate)) return candidate;
-        start = colon + 1;
-    }
-    return std::nullopt;
-}
-
-// A name with a '/' is a path; a bare name is looked up on $PATH.
-std::optional<std::string> resolve_program(const std::string& name) {
-    if (name.find('/') == std::string::npos) return search_path(name);
-    if (is_executable_file(name)) return name;
-    return std::nullopt;
-}
+using Clock = std::chrono::steady_clock;
 
 // ---- ffmpeg's command line -------------------------------------------------------------
 
@@ -144,65 +119,10 @@ int create_exclusive(const std::string& path, const std::string& final_path) {
     return fd;
 }
 
-// Starts `arguments[0]` with stdin, stdout and stderr connected to the given descriptors.
-pid_t spawn(const std::vector<std::string>& arguments, int stdin_fd, int stderr_fd) {
-    std::vector<char*> argv;
-    for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-    argv.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, stdin_fd, STDIN_FILENO);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, stderr_fd, STDERR_FILENO);
-
-    // The child starts with default signal handling and nothing blocked, whatever clrender
-    // (which ignores SIGPIPE) or its render threads have set.
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    sigset_t signals;
-    sigemptyset(&signals);
-    posix_spawnattr_setsigmask(&attributes, &signals);
-    sigaddset(&signals, SIGPIPE);
-    posix_spawnattr_setsigdefault(&attributes, &signals);
-    // Its own process group: Ctrl-C at the terminal then reaches clrender alone, which stops
-    // the encoder itself and removes its files, instead of ffmpeg dying first and the
-    // interruption looking like an encoder failure.
-    posix_spawnattr_setpgroup(&attributes, 0);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
-
-    pid_t pid = -1;
-    const int error = ::posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
-    posix_spawnattr_destroy(&attributes);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) {
-        throw OutputError("cannot start the video encoder '" + arguments[0] + "': " + std::strerror(error));
-    }
-    return pid;
-}
-
-// Writes all of `size` bytes, resuming after short writes and after signals interrupt the
-// write, so that a frame is never sent in part. Returns 0, or the errno that stopped it.
-int write_all(int fd, const std::uint8_t* data, std::size_t size) {
-    while (size > 0) {
-        const ssize_t written = ::write(fd, data, size);
-        if (written < 0) {
-            if (errno == EINTR) continue;
-            return errno;
-        }
-        data += written;
-        size -= static_cast<std::size_t>(written);
-    }
-    return 0;
-}
-
-std::string describe_exit(const std::string& program, int status) {
-    if (WIFEXITED(status)) return "'" + program + "' exited with status " + std::to_string(WEXITSTATUS(status));
-    if (WIFSIGNALED(status)) {
-        return "'" + program + "' was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
-               strsignal(WTERMSIG(status)) + ")";
-    }
-    return "'" + program + "' stopped with wait status " + std::to_string(status);
+// The size of the file at `path`, -1 if it cannot be read.
+long long file_size(const std::string& path) {
+    struct stat info {};
+    return ::stat(path.c_str(), &info) == 0 ? static_cast<long long>(info.st_size) : -1;
 }
 
 // The last `max_lines` non-empty lines of the log, read from its last 8 KiB only (a broken
@@ -237,6 +157,13 @@ bool sync_file(const std::string& path) {
     return synced;
 }
 
+// How long ffprobe may take to decode the video: the stall timeout, plus a second per ten
+// million pixels (decoding runs at hundreds of millions of pixels a second).
+Seconds probe_limit(const VideoSettings& settings, long frames, Seconds stall_timeout) {
+    const double pixels = static_cast<double>(settings.width) * settings.height * static_cast<double>(frames);
+    return stall_timeout + Seconds(pixels / 1e7);
+}
+
 }  // namespace
 
 VideoFormat video_format_for(const std::string& path) {
@@ -264,6 +191,8 @@ VideoEncoder::VideoEncoder(const VideoSettings& settings, const std::string& enc
     if (settings_.width <= 0 || settings_.height <= 0) throw std::invalid_argument("VideoEncoder: empty frame size");
     if (!(settings_.fps > 0) || !std::isfinite(settings_.fps)) throw std::invalid_argument("VideoEncoder: bad fps");
     if (settings_.quality < 0 || settings_.quality > 51) throw std::invalid_argument("VideoEncoder: CRF outside 0-51");
+    stall_timeout_ = encoder_stall_timeout();
+    prober_ = find_video_prober(program_);  // before the first frame: a missing checker must not waste a render
     ignore_sigpipe();
     rgb_.resize(static_cast<std::size_t>(settings_.width) * settings_.height * 3);
     try {
@@ -292,12 +221,17 @@ void VideoEncoder::start() {
         throw OutputError(settings_.path + ": cannot create a pipe to the video encoder: " + std::strerror(error));
     }
     stdin_fd_ = pipe_fds[1];
+    // Only clrender's end is non-blocking (each end of a pipe has its own flags): a write
+    // that would block returns at once, and the wait happens in poll(), where interruption
+    // and the stall timeout are checked.
+    ::fcntl(stdin_fd_, F_SETFL, O_NONBLOCK);
     try {
-        pid_ = spawn(encoder_arguments(program_, settings_, format_, temp_path_), pipe_fds[0], log_fd);
-    } catch (...) {
+        encoder_ = std::make_unique<ChildProcess>(encoder_arguments(program_, settings_, format_, temp_path_),
+                                                  pipe_fds[0], -1, log_fd);
+    } catch (const OutputError& error) {
         ::close(pipe_fds[0]);
         ::close(log_fd);
-        throw;
+        throw OutputError(settings_.path + ": video encoder: " + error.what());
     }
     ::close(pipe_fds[0]);
     ::close(log_fd);
@@ -312,35 +246,105 @@ void VideoEncoder::add_frame(const Image& rgba) {
                                     "x" + std::to_string(settings_.height) + " video");
     }
     for (std::size_t i = 0; i < pixels; ++i) std::memcpy(&rgb_[i * 3], &rgba.rgba[i * 4], 3);
-
-    if (const int error = write_all(stdin_fd_, rgb_.data(), rgb_.size())) {
-        // EPIPE: ffmpeg closed its input, which it does only when it gives up (or exits).
-        close_stdin();
-        if (error != EPIPE) ::kill(pid_, SIGKILL);
-        const int status = wait_for_encoder();
-        const std::string reason = error == EPIPE ? "the encoder stopped reading frames: " + describe_exit(program_, status)
-                                                  : std::string("cannot send a frame to the encoder: ") + std::strerror(error);
-        fail(reason);
-    }
+    send(rgb_.data(), rgb_.size());
     ++frames_added_;
+}
+
+// Writes all of `size` bytes (a frame is never sent in part). While the pipe is full it
+// waits in slices of 100 ms, so that a signal, cancel(), an encoder that has exited or one
+// that has read nothing for the stall timeout ends the wait.
+void VideoEncoder::send(const std::uint8_t* data, std::size_t size) {
+    auto last_progress = Clock::now();
+    while (size > 0) {
+        const ssize_t written = ::write(stdin_fd_, data, size);
+        if (written > 0) {
+            data += written;
+            size -= static_cast<std::size_t>(written);
+            last_progress = Clock::now();
+            continue;
+        }
+        if (written < 0 && errno == EINTR) continue;
+        if (written < 0 && errno == EPIPE) fail_after_broken_pipe();
+        if (written < 0 && errno != EAGAIN) fail(std::string("cannot send a frame to the encoder: ") + std::strerror(errno));
+        check_stop();
+        if (const std::optional<int> status = encoder_->poll_exit()) {
+            fail("the encoder stopped reading frames: " + describe_exit(program_, *status));
+        }
+        if (Clock::now() - last_progress > stall_timeout_) {
+            fail("the encoder stopped reading frames for " + seconds_text(stall_timeout_) + " s");
+        }
+        pollfd writable{stdin_fd_, POLLOUT, 0};
+        ::poll(&writable, 1, 100);
+    }
+}
+
+// EPIPE: ffmpeg closed its input, which it does only when it gives up (or exits). Its exit
+// status says why; it gets the stall timeout to exit.
+void VideoEncoder::fail_after_broken_pipe() {
+    close_stdin();
+    const auto give_up = Clock::now() + stall_timeout_;
+    for (int slice_ms = 1; Clock::now() < give_up; sleep_a_slice(slice_ms)) {
+        if (const std::optional<int> status = encoder_->poll_exit()) {
+            fail("the encoder stopped reading frames: " + describe_exit(program_, *status));
+        }
+        check_stop();
+    }
+    fail("the encoder stopped reading frames and did not exit within " + seconds_text(stall_timeout_) + " s");
 }
 
 void VideoEncoder::finish() {
     if (done_) throw std::logic_error("VideoEncoder::finish called twice or after a failure");
     close_stdin();  // end of stream: ffmpeg flushes and writes the file's index
-    const int status = wait_for_encoder();
+    const int status = wait_after_last_frame();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(describe_exit(program_, status));
     if (frames_added_ == 0) fail("no frames to encode");
+    if (file_size(temp_path_) <= 0) fail("'" + program_ + "' exited successfully but wrote no video");
+    check_video();
     move_into_place();
     ::unlink(log_path_.c_str());
     done_ = true;
 }
 
-void VideoEncoder::move_into_place() {
-    struct stat info {};
-    if (::stat(temp_path_.c_str(), &info) != 0 || info.st_size == 0) {
-        fail("'" + program_ + "' exited successfully but wrote no video");
+// Waits for ffmpeg to exit after the end of the stream. It is making progress while its
+// output grows (a GIF's palette is computed from all frames first, a short pause); an output
+// that stops growing for the stall timeout with ffmpeg still running is an error.
+int VideoEncoder::wait_after_last_frame() {
+    long long last_size = file_size(temp_path_);
+    auto last_progress = Clock::now();
+    for (int slice_ms = 1;; sleep_a_slice(slice_ms)) {
+        if (const std::optional<int> status = encoder_->poll_exit()) return *status;
+        check_stop();
+        const long long size = file_size(temp_path_);
+        if (size != last_size) {
+            last_size = size;
+            last_progress = Clock::now();
+        }
+        if (Clock::now() - last_progress > stall_timeout_) {
+            fail("the encoder did not finish: its output stopped growing for " + seconds_text(stall_timeout_) +
+                 " s after the last frame");
+        }
     }
+}
+
+void VideoEncoder::check_video() {
+    const ProbeResult result =
+        check_frame_count(prober_, temp_path_, frames_added_, log_path_,
+                          probe_limit(settings_, frames_added_, stall_timeout_), [this] { check_stop(); });
+    if (!result.ok) fail("the finished video is not valid: " + result.problem);
+}
+
+void VideoEncoder::check_stop() {
+    if (interruption_requested()) {
+        abandon();
+        throw_if_interrupted();
+    }
+    if (cancelled_) {
+        abandon();
+        throw OutputError(settings_.path + ": video encoding was abandoned");
+    }
+}
+
+void VideoEncoder::move_into_place() {
     if (!sync_file(temp_path_)) fail(std::string("cannot flush the video to disk: ") + std::strerror(errno));
     if (std::rename(temp_path_.c_str(), settings_.path.c_str()) != 0) {
         fail(std::string("cannot move the finished video into place: ") + std::strerror(errno));
@@ -352,21 +356,6 @@ void VideoEncoder::close_stdin() {
     stdin_fd_ = -1;
 }
 
-int VideoEncoder::wait_for_encoder() {
-    int status = 0;
-    if (pid_ <= 0) return status;  // never waitpid(-1, ...): that would reap someone else's child
-    while (::waitpid(pid_, &status, 0) < 0) {
-        if (errno != EINTR) {
-            // Reaped already (only if someone set SIGCHLD to SIG_IGN): the status is lost, and
-            // move_into_place's check for an empty file is what remains to catch a failure.
-            status = 0;
-            break;
-        }
-    }
-    pid_ = -1;
-    return status;
-}
-
 void VideoEncoder::remove_files() {
     if (!temp_path_.empty()) ::unlink(temp_path_.c_str());
     if (!log_path_.empty()) ::unlink(log_path_.c_str());
@@ -375,10 +364,7 @@ void VideoEncoder::remove_files() {
 void VideoEncoder::abandon() noexcept {
     if (done_) return;
     close_stdin();
-    if (pid_ > 0) {
-        ::kill(pid_, SIGKILL);  // its output is going to be deleted: no need to let it finish
-        wait_for_encoder();
-    }
+    if (encoder_) encoder_->stop();  // its output is going to be deleted: no need to let it finish
     remove_files();
     done_ = true;
 }

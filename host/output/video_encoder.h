@@ -3,12 +3,14 @@
 // name complete or not at all, as every output does (SPEC 4).
 #pragma once
 
-#include <sys/types.h>
-
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "output/child_process.h"
+#include "output/encoder_timeout.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -39,11 +41,16 @@ struct VideoSettings {
 // Without finish() (an exception while rendering), the destructor stops ffmpeg and removes
 // everything it wrote. Creating an encoder makes clrender ignore SIGPIPE process-wide, so
 // that an encoder that dies mid-stream is reported as an error instead of killing clrender.
+//
+// No call blocks for long: every wait on ffmpeg is made in slices of at most 100 ms that check
+// interruption_requested() (then ffmpeg is stopped, its files removed and Interrupted thrown)
+// and cancel(); an encoder that makes no progress for encoder_stall_timeout() is an error.
 class VideoEncoder {
 public:
     // Starts ffmpeg writing to a temporary file beside settings.path. Throws UsageError for an
-    // unsupported extension, std::invalid_argument for settings out of range, and OutputError
-    // when the temporary file cannot be created or the encoder cannot be started.
+    // unsupported extension or a bad $CLRENDER_ENCODER_TIMEOUT, std::invalid_argument for
+    // settings out of range, and OutputError when ffprobe is missing, the temporary file
+    // cannot be created or the encoder cannot be started.
     VideoEncoder(const VideoSettings& settings, const std::string& encoder_program);
     ~VideoEncoder();
     VideoEncoder(const VideoEncoder&) = delete;
@@ -54,15 +61,23 @@ public:
     // and its files removed; the encoder can take no more frames).
     void add_frame(const Image& rgba);
 
-    // Ends the stream, waits for ffmpeg and moves the video to its final name. Throws
-    // OutputError with the reason and the end of ffmpeg's log if encoding failed, leaving
-    // nothing under the final name.
+    // Ends the stream, waits for ffmpeg, checks the video with ffprobe (exactly the frames
+    // sent) and moves it to its final name. Throws OutputError with the reason and the end of
+    // ffmpeg's log if encoding failed, leaving nothing new under the final name.
     void finish();
+
+    // Thread-safe: makes a wait in add_frame or finish (on another thread) give up within
+    // about 100 ms, throwing OutputError, so that the encoder can be abandoned.
+    void cancel() noexcept { cancelled_ = true; }
 
 private:
     void start();
+    void send(const std::uint8_t* data, std::size_t size);
+    [[noreturn]] void fail_after_broken_pipe();
+    int wait_after_last_frame();                         // returns ffmpeg's wait status
+    void check_video();
+    void check_stop();                                   // interrupted or cancelled: abandon, throw
     void close_stdin();
-    int wait_for_encoder();                              // returns the wait status
     void move_into_place();
     void remove_files();
     void abandon() noexcept;                             // stop ffmpeg, remove its files
@@ -71,12 +86,15 @@ private:
     VideoSettings settings_;
     VideoFormat format_;
     std::string program_;
+    std::string prober_;     // ffprobe, which checks the finished video
+    Seconds stall_timeout_;  // the longest the encoder may make no progress
     std::string temp_path_;  // the video while it is written
     std::string log_path_;   // ffmpeg's stderr
-    pid_t pid_ = -1;         // ffmpeg while it runs
-    int stdin_fd_ = -1;      // write end of ffmpeg's stdin
+    std::unique_ptr<ChildProcess> encoder_;  // ffmpeg while it runs
+    int stdin_fd_ = -1;      // write end of ffmpeg's stdin, non-blocking
     int frames_added_ = 0;
     bool done_ = false;      // finished, or failed and cleaned up
+    std::atomic<bool> cancelled_{false};
     std::vector<std::uint8_t> rgb_;  // one frame, reused
 };
 

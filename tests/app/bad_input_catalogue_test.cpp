@@ -355,6 +355,17 @@ std::vector<BadInput> catalogue() {
         bad_scene("ImpostorWidthBelowTheRange",
                   scene_with(R"("clrender": {"impostors": [{"center": [0, 1, 0], "width": 1e-20, "height": 2, "ambient": [1, 0, 0]}]})"),
                   {"bad.json: /clrender/impostors/0/width: width 1e-20 is outside", "from 1e-15 to 1e16"}),
+        // --- The video encoder (fake encoders chosen through CLRENDER_FFMPEG)
+        {"EncoderFailing", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"out.mp4: video encoding failed: ", "false' exited with status 1"}, "CLRENDER_FFMPEG=false"},
+        {"EncoderExitingZeroWithoutAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"out.mp4: video encoding failed: "}, "CLRENDER_FFMPEG=true"},
+        {"EncoderTimeoutNotANumber", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 1,
+         {"CLRENDER_ENCODER_TIMEOUT must be a number of seconds above 0 and at most 86400 (got 'soon')"},
+         "CLRENDER_ENCODER_TIMEOUT=soon"},
+        {"MissingFfprobeForAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
+         {"video checker '/nonexistent/ffprobe' (from CLRENDER_FFPROBE) not found or not executable"},
+         "CLRENDER_FFPROBE=/nonexistent/ffprobe"},
     };
 }
 

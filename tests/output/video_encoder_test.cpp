@@ -9,6 +9,7 @@
 
 #include <array>
 #include <chrono>
+#include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -17,6 +18,8 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "output/encoder_timeout.h"
+#include "output/video_probe.h"
 #include "support/scoped_env.h"
 #include "support/temp_folder.h"
 
@@ -262,6 +265,8 @@ TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
 TEST(VideoEncoder, SendsRawRgbFrames) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "for last; do :; done; cat >\"$last\"");
+    const std::string prober = write_script(scripts, "fake-ffprobe", "echo 2");  // raw bytes are no video
+    ScopedEnv checker("CLRENDER_FFPROBE", prober.c_str());
     const std::string video = folder.file("raw.mp4");
     encode({video, 5, 3}, fake, 2);
     std::string expected;
@@ -281,6 +286,121 @@ TEST(VideoEncoder, DestructorStopsAStuckEncoder) {
         video.add_frame(test_frame(8, 8, 0));  // fits in the pipe's buffer
     }
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+// ffprobe's count is exact for both formats even when frames repeat (a still camera): x264
+// and the GIF muxer keep every frame, so a correct video is never rejected.
+TEST(VideoEncoder, IdenticalFramesPassTheFrameCountCheck) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    for (const char* name : {"still.mp4", "still.gif"}) {
+        const std::string video = folder.file(name);
+        VideoEncoder encoding({video, 24, 16, 30}, *encoder);
+        for (int i = 0; i < 6; ++i) encoding.add_frame(test_frame(24, 16, 0));
+        encoding.finish();
+        EXPECT_NE(probe(video).find("nb_read_frames=6"), std::string::npos) << name << ":\n" << probe(video);
+    }
+}
+
+// An encoder that exits 0 after writing something that is not the video asked for.
+TEST(VideoEncoder, VideoWithMissingFramesOrGarbageIsRejected) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder scripts, folder;
+    // Encodes only the first 2 frames it is given (2 x 16 x 16 x 3 bytes), then reads the rest.
+    const std::string short_video =
+        write_script(scripts, "two-frames", "head -c 1536 | '" + *encoder + "' \"$@\" && cat > /dev/null");
+    const std::string video = folder.file("out.mp4");
+    folder.write("out.mp4", "earlier");
+    std::string message = output_error_of([&] { encode({video, 16, 16}, short_video, 5); });
+    EXPECT_NE(message.find("the finished video is not valid: it holds 2 readable frame(s), 5 were sent"),
+              std::string::npos) << message;
+    EXPECT_EQ(read_bytes(video), "earlier");
+
+    const std::string garbage = write_script(scripts, "garbage", "cat >/dev/null; for last; do :; done; echo junk >\"$last\"");
+    message = output_error_of([&] { encode({video, 16, 16}, garbage, 3); });
+    EXPECT_NE(message.find("the finished video is not valid: the check cannot read it: '"), std::string::npos) << message;
+    EXPECT_EQ(read_bytes(video), "earlier");
+    EXPECT_EQ(entries(folder.path()), std::vector<std::string>({"out.mp4"}));
+}
+
+TEST(VideoEncoder, FfprobeIsFoundBesideTheEncoderOrFromTheEnvironment) {
+    TempFolder bin;
+    const std::string encoder = write_script(bin, "ffmpeg", "exit 0");
+    const std::string beside = write_script(bin, "ffprobe", "exit 0");
+    {
+        ScopedEnv prober("CLRENDER_FFPROBE", nullptr);
+        EXPECT_EQ(find_video_prober(encoder), beside);
+    }
+    {
+        ScopedEnv prober("CLRENDER_FFPROBE", "/nonexistent/ffprobe");
+        const std::string message = output_error_of([&] { find_video_prober(encoder); });
+        EXPECT_NE(message.find("'/nonexistent/ffprobe' (from CLRENDER_FFPROBE) not found"), std::string::npos) << message;
+        TempFolder folder;
+        EXPECT_THROW(VideoEncoder({folder.file("out.mp4"), 8, 8}, encoder), OutputError) << "checked before any frame";
+        EXPECT_TRUE(entries(folder.path()).empty());
+    }
+    {
+        TempFolder empty;
+        ScopedEnv path("PATH", empty.path().c_str());
+        ScopedEnv prober("CLRENDER_FFPROBE", nullptr);
+        const std::string message = output_error_of([] { find_video_prober("/nonexistent/ffmpeg"); });
+        EXPECT_NE(message.find("'ffprobe' not found"), std::string::npos) << message;
+    }
+}
+
+TEST(VideoEncoder, StallTimeoutComesFromTheEnvironment) {
+    {
+        ScopedEnv timeout("CLRENDER_ENCODER_TIMEOUT", nullptr);
+        EXPECT_EQ(encoder_stall_timeout().count(), 60);
+    }
+    {
+        ScopedEnv timeout("CLRENDER_ENCODER_TIMEOUT", "1.5");
+        EXPECT_EQ(encoder_stall_timeout().count(), 1.5);
+    }
+    for (const char* bad : {"0", "-1", "soon", "1s", "nan", "inf", "1e9"}) {
+        ScopedEnv timeout("CLRENDER_ENCODER_TIMEOUT", bad);
+        try {
+            encoder_stall_timeout();
+            ADD_FAILURE() << bad << " was accepted";
+        } catch (const UsageError& error) {
+            EXPECT_NE(std::string(error.what()).find(std::string("CLRENDER_ENCODER_TIMEOUT must be") ), std::string::npos);
+            EXPECT_NE(std::string(error.what()).find(bad), std::string::npos) << error.what();
+        }
+    }
+}
+
+// 64x64 frames (12 KiB): six fill a pipe's 64 KiB, so the seventh waits on the encoder.
+TEST(VideoEncoder, EncoderThatStopsReadingTimesOut) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "exec sleep 1000");
+    ScopedEnv timeout("CLRENDER_ENCODER_TIMEOUT", "0.5");
+    const auto start = std::chrono::steady_clock::now();
+    const std::string message = output_error_of([&] { encode({folder.file("out.mp4"), 64, 64}, fake, 20); });
+    EXPECT_NE(message.find("the encoder stopped reading frames for 0.5 s"), std::string::npos) << message;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
+// FrameSink cancels the encoder from another thread when the render fails: a write waiting
+// on a stalled encoder must give up at once, not at the stall timeout.
+TEST(VideoEncoder, CancelEndsAWaitFromAnotherThread) {
+    TempFolder scripts, folder;
+    const std::string fake = write_script(scripts, "fake-ffmpeg", "exec sleep 1000");
+    VideoEncoder video({folder.file("out.mp4"), 64, 64}, fake);
+    const auto start = std::chrono::steady_clock::now();
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        video.cancel();
+    });
+    const std::string message = output_error_of([&] {
+        for (int i = 0; i < 20; ++i) video.add_frame(test_frame(64, 64, i));
+    });
+    canceller.join();
+    EXPECT_NE(message.find("abandoned"), std::string::npos) << message;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "the default timeout is 60 s";
     EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
 }
 
