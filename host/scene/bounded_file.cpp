@@ -42,19 +42,25 @@ std::string too_large(std::uint64_t size, std::uint64_t max_bytes) {
 
 }  // namespace
 
+// Whole units where they are exact ("64 MiB"), two decimals at most otherwise ("2.25 GiB"),
+// and bytes for a small odd count, which a rounded "4.0 KiB" would misstate.
 std::string describe_bytes(std::uint64_t bytes) {
     static const char* const kUnits[] = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
-    if (bytes < 1024) return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
-    double value = static_cast<double>(bytes) / 1024;
+    const auto in_bytes = [&] { return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"); };
+    if (bytes < 1024) return in_bytes();
     int unit = 0;
-    while (value >= 1024 && unit < 5) {
-        value /= 1024;
+    std::uint64_t scale = 1024;
+    while (unit < 5 && bytes / scale >= 1024) {
+        scale *= 1024;
         ++unit;
     }
+    if (bytes % scale != 0 && bytes < (std::uint64_t(1) << 20)) return in_bytes();
     char text[32];
-    std::snprintf(text, sizeof text, value == static_cast<double>(static_cast<std::uint64_t>(value)) ? "%.0f %s" : "%.1f %s",
-                  value, kUnits[unit]);
-    return text;
+    std::snprintf(text, sizeof text, "%.2f", static_cast<double>(bytes) / static_cast<double>(scale));
+    std::string number = text;
+    number.erase(number.find_last_not_of('0') + 1);
+    if (number.back() == '.') number.pop_back();
+    return number + " " + kUnits[unit];
 }
 
 namespace {
