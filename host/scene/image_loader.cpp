@@ -319,6 +319,7 @@ std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
     const int length = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels_in_file = 0;
     if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels_in_file)) return std::nullopt;
+    if (static_cast<long long>(width) * height > kMaxPixels) return std::nullopt;  // refused as too large when decoded
     const bool sixteen_bit = stbi_is_16_bit_from_memory(bytes.data(), length) != 0;
     return header_of_size(width, height, sixteen_bit, kRgba * (sixteen_bit ? 2 : 1));
 }
@@ -327,6 +328,8 @@ std::optional<ImageHeader> read_ppm_header_only(const Bytes& bytes) {
     try {
         PpmNumberReader numbers(bytes, 2);
         const PpmHeader header = read_ppm_header(numbers);
+        // A raster larger than the file is refused as truncated when decoded.
+        if (header.sample_count() > bytes.size() - numbers.position()) return std::nullopt;
         return header_of_size(header.width, header.height, header.maxval > 255, 0);
     } catch (const ImageError&) {
         return std::nullopt;

@@ -45,7 +45,8 @@ struct ImageHeader {
 };
 
 // The header of the image in `bytes`, read without decoding anything; nullopt when the
-// header cannot be read (load_image_from_bytes then says why).
+// header cannot be read or claims more than one image may hold (load_image_from_bytes then
+// says why).
 std::optional<ImageHeader> read_image_header(const std::vector<unsigned char>& bytes);
 
 // A stand-in for an image that cannot be read, used only when the user asks for
