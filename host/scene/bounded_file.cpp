@@ -87,8 +87,9 @@ Bytes read_bounded(const std::string& path, std::uint64_t max_bytes) {
     bytes.reserve(static_cast<std::size_t>(size));
     char chunk[1 << 16];
     while (bytes.size() <= max_bytes) {
-        const std::uint64_t wanted = std::min<std::uint64_t>(sizeof chunk, max_bytes + 1 - bytes.size());
-        const ssize_t got = ::read(file.get(), chunk, static_cast<std::size_t>(wanted));
+        const std::uint64_t room = max_bytes - bytes.size();  // no overflow, even for a limit of 2^64 - 1
+        const std::size_t wanted = room >= sizeof chunk ? sizeof chunk : static_cast<std::size_t>(room) + 1;
+        const ssize_t got = ::read(file.get(), chunk, wanted);
         if (got < 0 && errno == EINTR) continue;
         if (got < 0) throw BoundedFileError(std::string("cannot read: ") + std::strerror(errno));
         if (got == 0) return bytes;
