@@ -27,10 +27,8 @@ std::uint64_t image_memory_limit_from_environment() {
 }
 
 bool ImageMemoryBudget::reserve(std::uint64_t bytes) {
-    std::uint64_t used = used_.load();
-    do {
-        if (bytes > limit_ || used > limit_ - bytes) return false;
-    } while (!used_.compare_exchange_weak(used, used + bytes));
+    if (bytes > limit_ - used_) return false;  // used_ <= limit_ always: no overflow
+    used_ += bytes;
     return true;
 }
 

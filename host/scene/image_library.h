@@ -2,7 +2,6 @@
 // and impostor views show it, all of them within one memory budget (scene/image_budget.h).
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -26,9 +25,10 @@ public:
     ImageLibrary(const std::string& scene_path, bool placeholders, std::uint64_t memory_limit);
 
     // Reads and decodes every distinct image the "filename" values name, on all cores at once:
-    // decoding large PNGs is most of the time it takes to load a course scene. Fails (a
-    // SceneError at the first value naming it) for the first image, in the order given, whose
-    // decoding cost takes the scene's images past the memory limit.
+    // decoding large PNGs is most of the time it takes to load a course scene. First every
+    // header is read and the decoding costs are summed in the order given: the first image
+    // that takes the sum past the memory limit fails (a SceneError at the first value naming
+    // it) before any image is decoded.
     void read_all(const std::vector<Node>& filenames);
 
     // The image a "filename" value names (read now if read_all did not), or its placeholder;
@@ -38,22 +38,19 @@ public:
 private:
     struct Entry {
         std::shared_ptr<const Image> image;
-        std::string failure;                 // empty when the image was read
-        std::optional<ImageHeader> header;   // absent when the file or its header is unreadable
-        bool over_budget = false;            // not decoded: the images together need too much memory
+        std::string failure;  // empty when the image was read
     };
 
     std::string path_of(const Node& filename) const;
-    Entry read(const std::string& path);
+    // Takes the image's decoding cost from the budget, or fails at `filename`.
+    void reserve_memory(const std::optional<ImageHeader>& header, const Node& filename);
+    Entry read(const std::string& path) const;
     std::shared_ptr<const Image> decode_through_cache(const std::vector<unsigned char>& bytes, const std::string& path) const;
-    void check_budget(const std::vector<Entry>& entries, const std::vector<const Node*>& named_by) const;
-    [[noreturn]] void fail_over_budget(const Node& filename, const Entry& entry, std::uint64_t total) const;
 
     std::filesystem::path scene_folder_;
     bool placeholders_;
     ImageCache cache_;  // decoded large images from earlier runs (a warm start skips decoding)
     ImageMemoryBudget budget_;
-    std::atomic<bool> budget_exceeded_{false};  // once it is, no further image is decoded
     std::map<std::string, Entry> entries_;
 };
 

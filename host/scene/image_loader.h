@@ -35,9 +35,9 @@ std::vector<unsigned char> read_image_file(const std::string& path);
 std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned char>& bytes, const std::string& path);
 
 // An image's size as its header gives it, and the bytes decoding it allocates at its peak:
-// the 8-bit RGBA result plus stb_image's own output buffer (16 bits a sample for a 16-bit
-// PNG, so three times the result's size in all), or the result alone for PPM, which is
-// decoded straight into it.
+// for PNG and JPEG, stb_image's two RGBA buffers (the raw samples and its output, of 16-bit
+// samples for a 16-bit PNG), 8 bytes a pixel or 16 for a 16-bit PNG; for PPM, which is
+// decoded straight into the 8-bit RGBA result, 4 bytes a pixel.
 struct ImageHeader {
     long long width = 0, height = 0;
     bool sixteen_bit = false;

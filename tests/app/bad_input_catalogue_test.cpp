@@ -395,7 +395,7 @@ std::vector<BadInput> catalogue() {
         bad_scene("DecodedImagesOverTheMemoryLimit",
                   scene_with("\"billboards\": [{" + kSquare + ", \"filename\": \"a.png\"}, {" + kSquare +
                              ", \"filename\": \"b.png\"}, {" + kSquare + ", \"filename\": \"c.png\"}]"),
-                  {"bad.json: /billboards/2/filename: image", "c.png' (8192 x 8192, 16-bit) needs 768 MiB to decode",
+                  {"bad.json: /billboards/2/filename: image", "c.png' (8192 x 8192, 16-bit) needs 1 GiB to decode",
                    "more than the limit of 2 GiB", "CLRENDER_IMAGE_MEMORY_MIB"},
                   {{"a.png", png_deep_and_huge}, {"b.png", png_deep_and_huge}, {"c.png", png_deep_and_huge}}),
         {"ImageMemoryLimitNotANumber", {{"scene.json", scene_with("")}}, {}, "scene.json", 1,

@@ -66,7 +66,7 @@ TEST(ImageBudget, SumOfDecodedSizesIsLimited) {
     TempFolder folder;
     write_png(folder, "a.png", 16);
     write_png(folder, "b.png", 16);
-    // Each costs 16 x 16 texels x (4 bytes of RGBA + 4 of the decoder's own buffer) = 2 KiB.
+    // Each costs 16 x 16 texels x 8 bytes (two 8-bit RGBA buffers in the decoder) = 2 KiB.
     const std::string text = scene_showing({"a.png", "b.png"});
     EXPECT_EQ(load_error(folder, text, with_limit(4096)).detail(), "");
     const SceneError error = load_error(folder, text, with_limit(4095));
@@ -82,24 +82,25 @@ TEST(ImageBudget, SixteenBitImagesCountTheDecodersWideBufferBeforeDecoding) {
     TempFolder folder;
     folder.write("deep.png", png_header_only(16, 16, 16));
     const std::string text = scene_showing({"deep.png"});
-    // 16 x 16 x (4 + 8) = 3072 bytes; the header has no pixels, so decoding would fail.
-    const SceneError over = load_error(folder, text, with_limit(3071));
+    // 16 x 16 x 16 bytes (two RGBA buffers of 16-bit samples) = 4096 bytes; the file holds
+    // no pixels, so decoding it would fail: a failure about memory means it was counted first.
+    const SceneError over = load_error(folder, text, with_limit(4095));
     EXPECT_EQ(over.location(), "/billboards/0/filename");
-    EXPECT_NE(over.detail().find("deep.png' (16 x 16, 16-bit) needs 3 KiB to decode, more than the limit"),
+    EXPECT_NE(over.detail().find("deep.png' (16 x 16, 16-bit) needs 4 KiB to decode, more than the limit"),
               std::string::npos)
         << over.detail();
-    EXPECT_NE(load_error(folder, text, with_limit(3072)).detail().find("corrupt PNG"), std::string::npos);
+    EXPECT_NE(load_error(folder, text, with_limit(4096)).detail().find("corrupt PNG"), std::string::npos);
 }
 
 TEST(ImageBudget, DefaultLimitRefusesThreeHuge16BitImagesWithoutDecodingAny) {
     TempFolder folder;
     for (const char* name : {"a.png", "b.png", "c.png"}) folder.write(name, png_header_only(8192, 8192, 16));
-    // 768 MiB each: two fit in 2 GiB, the third does not.
+    // 1 GiB each: two fit in 2 GiB, the third does not.
     ScopedEnv unset(kImageMemoryVariable, nullptr);
     const SceneError error = load_error(folder, scene_showing({"a.png", "b.png", "c.png"}), {});
     EXPECT_EQ(error.location(), "/billboards/2/filename");
-    EXPECT_NE(error.detail().find("(8192 x 8192, 16-bit) needs 768 MiB to decode, and the scene's images up to this one "
-                                  "need 2.25 GiB together, more than the limit of 2 GiB"),
+    EXPECT_NE(error.detail().find("(8192 x 8192, 16-bit) needs 1 GiB to decode, and the scene's images up to this one "
+                                  "need 3 GiB together, more than the limit of 2 GiB"),
               std::string::npos)
         << error.detail();
 }
@@ -117,7 +118,7 @@ TEST(ImageBudget, PpmIsDecodedInPlace) {
     EXPECT_EQ(load_error(folder, scene_showing({"a.ppm"}), with_limit(1023)).location(), "/billboards/0/filename");
 }
 
-TEST(ImageBudget, ReportedImageIsTheFirstInTheScenesOrderWhateverTheThreadsDid) {
+TEST(ImageBudget, ReportedImageIsTheFirstInTheScenesOrder) {
     TempFolder folder;
     std::vector<std::string> names;
     for (int i = 0; i < 12; ++i) {
