@@ -121,22 +121,11 @@ void ImageLibrary::reserve_memory(const std::optional<ImageHeader>& header, cons
 
 ImageLibrary::Entry ImageLibrary::read(const std::string& path) const {
     try {
-        return {decode_through_cache(read_image_file(path), path), ""};
+        return {load_image_through_cache(path, cache_), ""};
     } catch (const ImageError& error) {
         const std::string reason = *error.what() ? error.what() : "unknown error";
         return {placeholders_ ? make_placeholder_image(path) : nullptr, reason};
     }
-}
-
-// load_image_through_cache() for bytes already read.
-std::shared_ptr<const Image> ImageLibrary::decode_through_cache(const std::vector<unsigned char>& bytes,
-                                                                const std::string& path) const {
-    if (!cache_.enabled()) return load_image_from_bytes(bytes, path);
-    const ImageCache::Key key = ImageCache::key(bytes);
-    if (std::shared_ptr<const Image> cached = cache_.load(key, path)) return cached;
-    std::shared_ptr<const Image> image = load_image_from_bytes(bytes, path);
-    cache_.store(key, *image);
-    return image;
 }
 
 }  // namespace clr

@@ -45,7 +45,6 @@ private:
     // Takes the image's decoding cost from the budget, or fails at `filename`.
     void reserve_memory(const std::optional<ImageHeader>& header, const Node& filename);
     Entry read(const std::string& path) const;
-    std::shared_ptr<const Image> decode_through_cache(const std::vector<unsigned char>& bytes, const std::string& path) const;
 
     std::filesystem::path scene_folder_;
     bool placeholders_;
