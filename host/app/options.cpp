@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <iostream>
 #include <regex>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace clr {
 namespace {
@@ -16,6 +19,16 @@ bool parse_size(const std::string& text, int& width, int& height) {
     width = std::stoi(match[1]);
     height = std::stoi(match[2]);
     return width > 0 && height > 0;
+}
+
+// A value given as '' would read as the option left out (an empty --frames rendered every
+// frame, an empty -d fell back to CLRENDER_DEVICE): such a value is a mistake in a script,
+// e.g. an unset shell variable, and is refused.
+void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::string, const std::string*>>& values) {
+    for (const auto& [name, value] : values) {
+        if (app.count(name) > 0 && value->empty())
+            throw CLI::ValidationError(name, "the value is empty; give a value or leave the option out");
+    }
 }
 
 }  // namespace
@@ -66,6 +79,15 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
 
     try {
         app.parse(argc, argv);
+        if (app.count("scene") > 0 && options.scene_path.empty())
+            throw CLI::ValidationError("scene", "the scene file name is empty");
+        refuse_empty_values(app, {{"--output", &options.output_path},
+                                  {"--video", &options.video_path},
+                                  {"--frames", &options.frames},
+                                  {"--device", &options.device},
+                                  {"--size", &size},
+                                  {"--stats", &options.stats_path},
+                                  {"--kernel-dir", &options.kernel_dir}});
         if (!size.empty()) {
             int width = 0, height = 0;
             if (!parse_size(size, width, height))

@@ -1,8 +1,11 @@
 #include "device/device_context.h"
 
+#include <iostream>
+
 #include "core/errors.h"
 #include "device/cl_errors.h"
 #include "device/program_cache.h"
+#include "device/stderr_capture.h"
 
 namespace clr {
 
@@ -53,9 +56,13 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
         if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
     }
     cl::Program program(context_, source);
+    // The compiler's own output waits until clrender's error line, if any, is out.
+    StderrCapture compiler_output;
     try {
         program.build({entry_.device}, options.c_str());
+        std::cerr << compiler_output.finish();
     } catch (const cl::Error& error) {
+        const std::string printed = compiler_output.finish();
         std::string log;
         try {
             log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(entry_.device);
@@ -63,7 +70,8 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
             log = "(no build log available)";
         }
         throw DeviceError(describe_cl_error(error, "building the OpenCL program for '" + entry_.device_name + "'") +
-                          "\nbuild options: " + options + "\nbuild log:\n" + log);
+                          "\nbuild options: " + options + "\nbuild log:\n" + log +
+                          (printed.empty() ? "" : "\ncompiler output:\n" + printed));
     }
     // Asking PoCL for the binary compiles every kernel of the program (0.8 s cold): that is
     // left to store_built_programs(), after the frames are written.

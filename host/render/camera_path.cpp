@@ -106,7 +106,14 @@ int animation_frame_count(const Scene& scene) {
     const std::size_t keys = scene.camera_path.size();
     if (keys < 2) return 1;
     if (scene.animation.frame_count > 0) return scene.animation.frame_count;
-    return static_cast<int>(keys - 1) * scene.animation.frames_per_segment + 1;
+    // The scene loader refuses longer animations with the scene's location; a Scene built
+    // in code gets this check, so that the count can never wrap around.
+    const long long per_segment = scene.animation.frames_per_segment;
+    if (per_segment < 1 || static_cast<long long>(keys - 1) > (kMaxAnimationFrames - 1) / per_segment) {
+        throw std::length_error("animation of " + std::to_string(keys) + " camera keys at " + std::to_string(per_segment) +
+                                " frames per segment has more than " + std::to_string(kMaxAnimationFrames) + " frames");
+    }
+    return static_cast<int>((keys - 1) * per_segment + 1);
 }
 
 CameraKey camera_at_frame(const Scene& scene, int frame) {

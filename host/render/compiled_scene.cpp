@@ -1,10 +1,17 @@
 #include "render/compiled_scene.h"
 
+#include <cstdint>
+#include <string>
+
+#include "core/errors.h"
+
 #include "render/device_structs.h"
 #include "render/impostor_placement.h"
 
 namespace clr {
 namespace {
+
+constexpr std::uint64_t kMaxPackedTexels = 0xFFFFFFFFull;
 
 ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
     ClrSphere out{};
@@ -18,6 +25,15 @@ ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
 // scans it for transparency once.
 void pack_texture(const Image* image, CompiledScene& compiled) {
     if (!image || compiled.textures.count(image)) return;
+    // The kernels address texels with 32-bit offsets (ClrBillboard.texel_offset, and uint
+    // arithmetic in kernels/common/texture.cl): every texel of every image must have an index
+    // below 2^32, or the image would silently show another image's texels.
+    const std::uint64_t first_texel = compiled.texels.size() / 4;
+    const std::uint64_t texel_count = static_cast<std::uint64_t>(image->width) * static_cast<std::uint64_t>(image->height);
+    if (first_texel + texel_count > kMaxPackedTexels) {
+        throw SceneError(image->path, "", "the scene's images hold more than " + std::to_string(kMaxPackedTexels) +
+                                              " texels together, more than one texture buffer can address");
+    }
     TextureSlot slot;
     slot.offset = static_cast<std::uint32_t>(compiled.texels.size() / 4);
     slot.width = image->width;

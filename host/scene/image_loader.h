@@ -2,7 +2,9 @@
 // PPM P3 (ASCII, with '#' comments). Every image becomes 8-bit RGBA (SPEC 2, Images).
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,6 +19,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Largest image file read. stb_image takes a length as an int, and no sensible billboard
+// image comes near: an 8192 x 8192 PPM with 16-bit samples is 384 MiB.
+constexpr std::uint64_t kMaxImageFileBytes = std::uint64_t(1) << 30;
+
 // Reads the image at `path`; the format is taken from the file's content, not its name.
 // Throws ImageError with a one-line reason (missing, unreadable, corrupt, unsupported).
 std::shared_ptr<const Image> load_image(const std::string& path);
@@ -27,6 +33,21 @@ std::shared_ptr<const Image> load_image(const std::string& path);
 // content. `path` only names the image.
 std::vector<unsigned char> read_image_file(const std::string& path);
 std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned char>& bytes, const std::string& path);
+
+// An image's size as its header gives it, and the bytes decoding it allocates at its peak:
+// for PNG and JPEG, stb_image's two RGBA buffers (the raw samples and its output, of 16-bit
+// samples for a 16-bit PNG), 8 bytes a pixel or 16 for a 16-bit PNG; for PPM, which is
+// decoded straight into the 8-bit RGBA result, 4 bytes a pixel.
+struct ImageHeader {
+    long long width = 0, height = 0;
+    bool sixteen_bit = false;
+    std::uint64_t decoding_bytes = 0;
+};
+
+// The header of the image in `bytes`, read without decoding anything; nullopt when the
+// header cannot be read or claims more than one image may hold (load_image_from_bytes then
+// says why).
+std::optional<ImageHeader> read_image_header(const std::vector<unsigned char>& bytes);
 
 // A stand-in for an image that cannot be read, used only when the user asks for
 // placeholders: an opaque 8x8 magenta and grey checkerboard, unmistakable in a render.

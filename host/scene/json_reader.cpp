@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "scene/text_encoding.h"
 
 namespace clr {
 
@@ -40,7 +41,8 @@ void Diagnostics::fail(const std::string& location, const std::string& detail) c
 }
 
 void Diagnostics::warn(const std::string& location, const std::string& message) const {
-    if (warnings) warnings->push_back(printable(location) + ": " + printable(message));
+    if (!warnings) return;
+    warnings->push_back(location.empty() ? printable(message) : printable(location) + ": " + printable(message));
 }
 
 std::string json_pointer_token(const std::string& key) {
@@ -85,9 +87,15 @@ public:
     bool key(string_t& name) override {
         Frame& object = frames_.back();
         object.key = name;
-        if (!object.seen_keys.insert(name).second)
-            diagnostics_.warn(current_location(), "duplicate key (the last value is used)");
+        if (!object.seen_keys.insert(name).second) note_duplicate_key();
         return true;
+    }
+
+    // One warning for the repeats beyond the first few, once the whole text is read.
+    void summarise_duplicate_keys() const {
+        if (duplicate_keys_ <= kMostDuplicateKeyWarnings) return;
+        diagnostics_.warn("", std::to_string(duplicate_keys_ - kMostDuplicateKeyWarnings) +
+                                  " more duplicate keys (the last value of each is used)");
     }
 
     bool parse_error(std::size_t position, const std::string& last_token, const Json::exception& error) override {
@@ -128,6 +136,16 @@ private:
         return true;
     }
 
+    // A location is as long as the nesting is deep, so a warning for every repeated key of a
+    // deeply nested object would cost the depth times the repeats: gigabytes from a file of a
+    // few hundred kilobytes. The first few are named; the rest are only counted.
+    static constexpr std::size_t kMostDuplicateKeyWarnings = 10;
+
+    void note_duplicate_key() {
+        if (++duplicate_keys_ <= kMostDuplicateKeyWarnings)
+            diagnostics_.warn(current_location(), "duplicate key (the last value is used)");
+    }
+
     std::string current_location() const {
         std::string location;
         for (const Frame& frame : frames_) {
@@ -142,6 +160,7 @@ private:
     const Diagnostics& diagnostics_;
     std::vector<Frame> frames_;
     std::optional<Failure> failure_;
+    std::size_t duplicate_keys_ = 0;
 };
 
 // "line L, column C" of the byte at `offset`. Columns count characters, not bytes, as
@@ -196,6 +215,8 @@ bool is_trailing_comma(std::string_view text, std::size_t offset) {
 }  // namespace
 
 Json parse_json_text(const std::string& text, const Diagnostics& diagnostics) {
+    if (const auto encoding = wide_unicode_encoding(text))
+        diagnostics.fail("", "the file is " + *encoding + " text; save it as UTF-8 (clrender reads only UTF-8)");
     std::string_view body = text;
     constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
     if (body.substr(0, kUtf8Bom.size()) == kUtf8Bom) body.remove_prefix(kUtf8Bom.size());
@@ -210,6 +231,7 @@ Json parse_json_text(const std::string& text, const Diagnostics& diagnostics) {
         if (builder.failure()) fail_syntax(body, *builder.failure(), diagnostics);
         diagnostics.fail("", "the file is not valid JSON");
     }
+    builder.summarise_duplicate_keys();
     return root;
 }
 

@@ -28,9 +28,9 @@ struct Diagnostics {
 };
 
 // Parses UTF-8 JSON text (a leading BOM, CRLF line endings and // or /* */ comments are
-// accepted). A syntax error, or a number too large for a double, becomes a SceneError whose
+// accepted; UTF-16 and UTF-32 text is refused with a message that names the encoding). A syntax error, or a number too large for a double, becomes a SceneError whose
 // detail starts with "line L, column C:". A key repeated within one object is a warning
-// (the last value is used, as in most JSON readers).
+// (the last value is used, as in most JSON readers); past the first ten, one warning counts them.
 Json parse_json_text(const std::string& text, const Diagnostics& diagnostics);
 
 // One JSON value with its location and a short label for messages ("radius", "eye[1]").

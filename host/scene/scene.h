@@ -77,6 +77,11 @@ struct CameraKey {
 
 enum class Interpolation { Linear, CatmullRom };
 
+// Most frames an animation may have, however its length is given. Frame numbers are ints
+// throughout (file names, --frames, the kernels' sample seeds), and a million frames is
+// over a day of video at 10 fps: more is a typo, not an intent.
+constexpr int kMaxAnimationFrames = 1000000;
+
 // How a camera path becomes frames: clrender's extension keys under "clrender" in the scene.
 struct AnimationSettings {
     int frames_per_segment = 10;  // frames from one key to the next; the last key adds one

@@ -3,20 +3,16 @@
 #include "scene/scene_loader.h"
 
 #include <algorithm>
-#include <atomic>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <exception>
+#include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
-#include <thread>
 
 #include "core/errors.h"
-#include "scene/image_cache.h"
-#include "scene/image_loader.h"
+#include "scene/bounded_file.h"
+#include "scene/image_budget.h"
+#include "scene/image_library.h"
 #include "scene/json_reader.h"
 #include "scene/value_ranges.h"
 
@@ -304,89 +300,13 @@ void read_objects(ObjectReader& file, Scene& scene, PendingBillboardImages& pend
 // --------------------------------------------------------------------------------------
 // Images
 
-// Reads each distinct image file once, however many billboards show it.
-class ImageLibrary {
-public:
-    ImageLibrary(const std::string& scene_path, bool placeholders)
-        : scene_folder_(fs::path(scene_path).parent_path()),
-          placeholders_(placeholders),
-          cache_(ImageCache::from_environment()) {}
-
-    // Decodes every distinct image the billboards name, on all cores at once: decoding large
-    // PNGs is most of the time it takes to load a course scene.
-    void read_all(const std::vector<PendingImage>& pending_images) {
-        std::vector<std::string> paths;
-        for (const PendingImage& pending : pending_images) {
-            std::string path = resolve(pending.filename.string());
-            if (entries_.try_emplace(path).second) paths.push_back(path);
-        }
-        std::vector<Entry> results(paths.size());
-        std::vector<std::exception_ptr> errors(paths.size());
-        std::atomic<std::size_t> next{0};
-        auto worker = [&] {
-            for (std::size_t i; (i = next++) < paths.size();) {
-                try {
-                    results[i] = read(paths[i]);
-                } catch (...) {
-                    errors[i] = std::current_exception();  // e.g. out of memory: rethrown below
-                }
-            }
-        };
-        std::size_t thread_count = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), paths.size());
-        std::vector<std::thread> helpers;
-        for (std::size_t t = 1; t < thread_count; ++t) helpers.emplace_back(worker);
-        worker();
-        for (std::thread& helper : helpers) helper.join();
-        for (std::size_t i = 0; i < paths.size(); ++i) {
-            if (errors[i]) std::rethrow_exception(errors[i]);
-            entries_[paths[i]] = std::move(results[i]);
-        }
-    }
-
-    std::shared_ptr<const Image> image_for(const Node& filename) {
-        const std::string path = resolve(filename.string());
-        auto [entry, is_new] = entries_.try_emplace(path);
-        if (is_new) entry->second = read(path);
-        const Entry& image = entry->second;
-        if (!image.failure.empty()) {
-            const std::string problem = "cannot read image '" + path + "': " + image.failure;
-            if (!placeholders_) filename.fail(problem);
-            filename.warn(problem + "; rendering a placeholder instead");
-        }
-        return image.image;
-    }
-
-private:
-    struct Entry {
-        std::shared_ptr<const Image> image;
-        std::string failure;  // empty when the image was read
-    };
-
-    // Relative to the scene file's folder; lexically normal, so that "./a.png" and
-    // "a.png" are one file.
-    std::string resolve(const std::string& filename) const {
-        const fs::path path(filename);
-        return (path.is_absolute() ? path : scene_folder_ / path).lexically_normal().string();
-    }
-
-    Entry read(const std::string& path) const {
-        try {
-            return {load_image_through_cache(path, cache_), ""};
-        } catch (const ImageError& error) {
-            const std::string reason = *error.what() ? error.what() : "unknown error";
-            return {placeholders_ ? make_placeholder_image(path) : nullptr, reason};
-        }
-    }
-
-    fs::path scene_folder_;
-    bool placeholders_;
-    ImageCache cache_;  // decoded large images from earlier runs (a warm start skips decoding)
-    std::map<std::string, Entry> entries_;
-};
-
 void attach_images(const Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
-    ImageLibrary library(scene.path, options.placeholder_images);
-    library.read_all(pending_images);
+    const std::uint64_t memory_limit = options.image_memory_limit ? *options.image_memory_limit
+                                                                  : image_memory_limit_from_environment();
+    ImageLibrary library(scene.path, options.placeholder_images, memory_limit);
+    std::vector<Node> filenames;
+    for (const PendingImage& pending : pending_images) filenames.push_back(pending.filename);
+    library.read_all(filenames);
     for (const PendingImage& pending : pending_images) *pending.destination = library.image_for(pending.filename);
 }
 
@@ -557,14 +477,14 @@ void read_extensions(ObjectReader& file, Scene& scene, ImpostorViews& impostor_v
         length_keys.push_back("frames_per_segment");
     }
     if (auto frames = extensions.optional("frames")) {
-        animation.frame_count = static_cast<int>(frames->integer(2, 1000000));
+        animation.frame_count = static_cast<int>(frames->integer(2, kMaxAnimationFrames));
         length_keys.push_back("frames");
     }
     if (auto duration = extensions.optional("duration")) {
         double seconds = duration->number();
         double frames = std::round(seconds * animation.fps);
-        if (!(seconds > 0 && frames >= 2 && frames <= 1000000))
-            duration->fail("duration must give from 2 to 1000000 frames at " + std::to_string(animation.fps) + " fps (got " +
+        if (!(seconds > 0 && frames >= 2 && frames <= kMaxAnimationFrames))
+            duration->fail("duration must give from 2 to " + std::to_string(kMaxAnimationFrames) + " frames at " + std::to_string(animation.fps) + " fps (got " +
                            duration->shown() + " s)");
         animation.frame_count = static_cast<int>(frames);
         length_keys.push_back("duration");
@@ -575,16 +495,28 @@ void read_extensions(ObjectReader& file, Scene& scene, ImpostorViews& impostor_v
     extensions.warn_about_unknown_keys();
 }
 
+// Frames per segment times the number of segments can pass any limit (and int's range, which
+// once made the frame count negative or 1): the product is formed in 64 bits and checked.
+void check_animation_length(ObjectReader& file, const Scene& scene) {
+    const std::uint64_t keys = scene.camera_path.size();
+    if (keys < 2 || scene.animation.frame_count > 0) return;
+    const std::uint64_t per_segment = static_cast<std::uint64_t>(scene.animation.frames_per_segment);
+    const std::uint64_t frames = (keys - 1) * per_segment + 1;  // both factors are far below 2^32
+    if (frames <= static_cast<std::uint64_t>(kMaxAnimationFrames)) return;
+    const bool per_segment_given = file.has("clrender") && file.required("clrender").json().contains("frames_per_segment");
+    const std::string location = per_segment_given ? "/clrender/frames_per_segment" : "/eyeLocations";
+    file.node().diagnostics().fail(
+        location, "the animation would have (" + std::to_string(keys) + " keys - 1) x " + std::to_string(per_segment) +
+                      " frames per segment + 1 = " + std::to_string(frames) + " frames, more than the limit of " +
+                      std::to_string(kMaxAnimationFrames) + "; lower frames_per_segment, or give 'frames' or 'duration'");
+}
+
 std::string read_scene_text(const std::string& path) {
-    std::error_code error;
-    if (fs::is_directory(path, error)) throw SceneError(path, "", "cannot read scene file: it is a folder");
-    if (!fs::exists(path, error)) throw SceneError(path, "", "cannot read scene file: no such file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path, "", std::string("cannot read scene file: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw SceneError(path, "", "cannot read scene file: read error");
-    return text.str();
+    try {
+        return read_bounded_file(path, kMaxSceneFileBytes);
+    } catch (const BoundedFileError& error) {
+        throw SceneError(path, "", std::string("cannot read scene file: ") + error.what());
+    }
 }
 
 }  // namespace
@@ -605,6 +537,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     read_objects(file, scene, billboard_images);
     ImpostorViews impostor_views;
     read_extensions(file, scene, impostor_views);
+    check_animation_length(file, scene);
     if (options.samples_override) {
         if (*options.samples_override < 1 || *options.samples_override > kMaxSamplesPerPixel)
             throw SceneError(path, "", "--spp must be from 1 to " + std::to_string(kMaxSamplesPerPixel));

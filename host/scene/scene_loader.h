@@ -2,6 +2,7 @@
 // Every failure is a SceneError naming the file, the JSON location and what is wrong.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -13,6 +14,10 @@ namespace clr {
 // a hit record per pixel for the stage kernels) stays well inside memory.
 constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 8192LL * 8192LL;
+
+// Largest scene file read. The biggest generated scenes (scripts/forest) are a few MiB; a
+// parsed document takes several times its text in memory.
+constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(64) << 20;
 
 // Most samples per pixel (anti-aliasing) a scene or --spp may ask for.
 constexpr int kMaxSamplesPerPixel = 4096;
@@ -27,6 +32,9 @@ struct LoadOptions {
     std::optional<int> height_override;
     // Samples per pixel given on the command line (--spp); replaces the scene's.
     std::optional<int> samples_override;
+    // Most bytes all the scene's images may take while they are decoded (scene/image_budget.h);
+    // unset: CLRENDER_IMAGE_MEMORY_MIB, else kDefaultImageMemoryBytes.
+    std::optional<std::uint64_t> image_memory_limit;
 };
 
 // Reads and validates the scene file at `path`. Relative image paths are resolved against

@@ -8,13 +8,18 @@
 // the error must say. docs/robustness.md lists the cases by kind.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "support/command.h"
+#include "support/png_header.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -41,6 +46,8 @@ struct BadInput {
     // Errors found by the command-line parser (CLI11) add the hint
     // "Run with --help for more information." after the error line.
     bool parser_error = false;
+    // Makes what `files` cannot hold (FIFOs, sparse files) in the folder, before clrender runs.
+    std::function<void(const std::string& folder)> prepare = nullptr;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -145,6 +152,58 @@ BadInput bad_image(std::string case_name, const std::string& name, std::string b
                      {{name, std::move(bytes)}});
 }
 
+// --- Input limits: helpers for the cases of files that must be refused before reading them.
+
+// A folder preparation that makes a FIFO (named pipe) `name`, which no process writes to.
+std::function<void(const std::string&)> make_fifo(const std::string& name) {
+    return [name](const std::string& folder) { ::mkfifo((folder + "/" + name).c_str(), 0600); };
+}
+
+// A folder preparation that makes `name` a sparse file of `bytes` starting with `start`.
+std::function<void(const std::string&)> make_sparse(const std::string& name, const std::string& start, std::uint64_t bytes) {
+    return [=](const std::string& folder) {
+        const fs::path path = fs::path(folder) / name;
+        std::ofstream(path, std::ios::binary) << start;
+        fs::resize_file(path, bytes);
+    };
+}
+
+std::string as_utf16le(const std::string& ascii) {
+    std::string wide = "\xFF\xFE";
+    for (char c : ascii) wide += {c, '\0'};
+    return wide;
+}
+
+// A camera path of `keys` positions at `per_segment` frames a segment.
+std::string long_animation_scene(int keys, int per_segment) {
+    std::string eyes;
+    for (int i = 0; i < keys; ++i) eyes += (i ? ", [0, 0, " : "[0, 0, ") + std::to_string(6 + i) + "]";
+    return "{\"eyeLocations\": [" + eyes + "], \"lookat\": [0, 0, 0], \"up\": [0, 1, 0], \"fov_angle\": 60, " + kSize +
+           ", \"clrender\": {\"frames_per_segment\": " + std::to_string(per_segment) + "}}";
+}
+
+// The kernel sources with `broken` (a path under kernels/) ending in a line that is not C.
+std::vector<File> kernels_with_broken(const std::string& broken) {
+    std::vector<File> files = {{"scene.json", "{" + kCamera + ", " + kSize + "}"}};
+    const fs::path root = fs::path(CLRENDER_SOURCE_DIR) / "kernels";
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file()) continue;
+        const std::string relative = fs::relative(entry.path(), root).string();
+        files.push_back({"kd/" + relative, read_bytes(entry.path()) + (relative == broken ? "\nthis is not C;\n" : "")});
+    }
+    return files;
+}
+
+// Folders that kernels_with_broken()'s files need.
+std::vector<std::string> kernel_folders() {
+    std::vector<std::string> folders = {"kd"};
+    const fs::path root = fs::path(CLRENDER_SOURCE_DIR) / "kernels";
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (entry.is_directory()) folders.push_back("kd/" + fs::relative(entry.path(), root).string());
+    }
+    return folders;
+}
+
 // ---------------------------------------------------------------------------------------
 
 std::vector<BadInput> catalogue() {
@@ -153,6 +212,7 @@ std::vector<BadInput> catalogue() {
     const std::string overflowing = scene_with(R"("SunLocation": [0, 1e999, 0])");
     const std::string nesting = repeated("[", 100000) + repeated("]", 100000);
     const std::string at_origin = R"("eye": [0, 0, 6])", look_at_origin = R"("lookat": [0, 0, 0])";
+    const std::string png_deep_and_huge = testing::png_header_only(8192, 8192, 16);
     return {
         // --- The file as JSON
         bad_scene("SyntaxErrorGivesLineAndColumn", "{\n  \"eye\": [0, 0, 1],\n  \"lookat\": [0, 0, 0]\n  \"up\": [0, 1, 0]\n}",
@@ -366,6 +426,48 @@ std::vector<BadInput> catalogue() {
         {"MissingFfprobeForAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
          {"video checker '/nonexistent/ffprobe' (from CLRENDER_FFPROBE) not found or not executable"},
          "CLRENDER_FFPROBE=/nonexistent/ffprobe"},
+        // --- Input limits: files refused before they are read, sizes and counts checked,
+        // encodings and names that would be misread, empty option values
+        {"SceneIsAFifo", {}, {}, "scene.json", 2, {"scene.json: cannot read scene file: it is a FIFO (named pipe)"}, "",
+         false, make_fifo("scene.json")},
+        {"SceneIsADevice", {}, {}, "/dev/zero", 2,
+         {"/dev/zero: cannot read scene file: it is a character device, not a regular file"}},
+        {"SparseHugeScene", {}, {}, "scene.json", 2,
+         {"scene.json: cannot read scene file: the file is 5 GiB, more than the limit of 64 MiB"}, "", false,
+         make_sparse("scene.json", "{", std::uint64_t(5) << 30)},
+        {"SparseHugeImage", {{"bad.json", image_scene("huge.png")}}, {}, "bad.json", 2,
+         {"bad.json: /billboards/0/filename: cannot read image", "huge.png': the file is 3 GiB, more than the limit of 1 GiB"},
+         "", false, make_sparse("huge.png", "\x89PNG", std::uint64_t(3) << 30)},
+        bad_scene("Utf16Scene", as_utf16le(scene_with("")),
+                  {"bad.json: the file is UTF-16 (little-endian) text; save it as UTF-8"}),
+        bad_scene("NulInImageFileName", image_scene("checker.png\\u0000.txt"),
+                  {"bad.json: /billboards/0/filename: filename contains a NUL character (\\u0000)"},
+                  {{"checker.png", png}}),
+        {"AnimationFrameCountOverflow", {{"path.json", long_animation_scene(30000, 100000)}}, {}, "path.json --frame-count",
+         2, {"path.json: /clrender/frames_per_segment: the animation would have (30000 keys - 1) x 100000 frames per segment"}},
+        bad_scene("DecodedImagesOverTheMemoryLimit",
+                  scene_with("\"billboards\": [{" + kSquare + ", \"filename\": \"a.png\"}, {" + kSquare +
+                             ", \"filename\": \"b.png\"}, {" + kSquare + ", \"filename\": \"c.png\"}]"),
+                  {"bad.json: /billboards/2/filename: image", "c.png' (8192 x 8192, 16-bit) needs 1 GiB to decode",
+                   "more than the limit of 2 GiB", "CLRENDER_IMAGE_MEMORY_MIB"},
+                  {{"a.png", png_deep_and_huge}, {"b.png", png_deep_and_huge}, {"c.png", png_deep_and_huge}}),
+        {"ImageMemoryLimitNotANumber", {{"scene.json", scene_with("")}}, {}, "scene.json", 1,
+         {"CLRENDER_IMAGE_MEMORY_MIB='lots': expected the memory for decoded images in MiB"}, "CLRENDER_IMAGE_MEMORY_MIB=lots"},
+        {"EmptyFrameList", {{"path.json", animation_scene()}}, {}, "path.json --frames ''", 1,
+         {"--frames: the value is empty"}, "", true},
+        {"EmptyOutputPath", {{"scene.json", scene_with("")}}, {}, "scene.json -o ''", 1, {"--output: the value is empty"}, "",
+         true},
+        {"EmptyVideoPath", {{"path.json", animation_scene()}}, {}, "path.json --video ''", 1, {"--video: the value is empty"},
+         "", true},
+        {"EmptyStatsPath", {{"scene.json", scene_with("")}}, {}, "scene.json --stats ''", 1, {"--stats: the value is empty"},
+         "", true},
+        {"EmptyKernelDir", {{"scene.json", scene_with("")}}, {}, "scene.json --kernel-dir ''", 1,
+         {"--kernel-dir: the value is empty"}, "", true},
+        {"EmptyDevice", {{"scene.json", scene_with("")}}, {}, "scene.json -d ''", 1, {"--device: the value is empty"}, "",
+         true},
+        {"EmptySceneName", {}, {}, "''", 1, {"scene: the scene file name is empty"}, "", true},
+        {"KernelBuildErrorComesBeforeTheCompilersOutput", kernels_with_broken("intersect.cl"), kernel_folders(),
+         "scene.json -q --kernel-dir kd", 3, {"building the OpenCL program", "kernels/intersect.cl:", "this"}},
     };
 }
 
@@ -393,6 +495,7 @@ TEST_P(BadInputTest, FailsWithOneClearErrorAndNoOutput) {
     TempFolder folder;
     for (const std::string& name : input.folders) fs::create_directories(folder.file(name));
     for (const File& file : input.files) folder.write(file.name, file.bytes);
+    if (input.prepare) input.prepare(folder.path());
     const std::set<std::string> before = entries_of(folder.path());
 
     const auto result = run_clrender(input.arguments, folder.path(), input.environment);

@@ -1,0 +1,131 @@
+#include "scene/image_library.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <thread>
+
+#include "scene/bounded_file.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs work(0) .. work(count - 1) on all cores; rethrows the first exception (in index
+// order) once every thread is done, e.g. out of memory.
+void for_each_in_parallel(std::size_t count, const std::function<void(std::size_t)>& work) {
+    std::vector<std::exception_ptr> errors(count);
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i; (i = next++) < count;) {
+            try {
+                work(i);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    };
+    const std::size_t thread_count = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), count);
+    std::vector<std::thread> helpers;
+    for (std::size_t t = 1; t < thread_count; ++t) helpers.emplace_back(worker);
+    worker();
+    for (std::thread& helper : helpers) helper.join();
+    for (const std::exception_ptr& error : errors) {
+        if (error) std::rethrow_exception(error);
+    }
+}
+
+// The header of the image file at `path`; nullopt when the file or its header cannot be
+// read, which decoding reports later. The file is read whole (JPEG's size can come after
+// large metadata) and read again to decode: the operating system's cache makes the second
+// read cheap, and no file's bytes are held while the budget is checked.
+std::optional<ImageHeader> header_of_file(const std::string& path) {
+    try {
+        return read_image_header(read_image_file(path));
+    } catch (const ImageError&) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace
+
+ImageLibrary::ImageLibrary(const std::string& scene_path, bool placeholders, std::uint64_t memory_limit)
+    : scene_folder_(fs::path(scene_path).parent_path()),
+      placeholders_(placeholders),
+      cache_(ImageCache::from_environment()),
+      budget_(memory_limit) {}
+
+void ImageLibrary::read_all(const std::vector<Node>& filenames) {
+    std::vector<std::string> paths;
+    std::vector<const Node*> named_by;  // the first value naming each path, for messages
+    for (const Node& filename : filenames) {
+        std::string path = path_of(filename);
+        if (entries_.try_emplace(path).second) {
+            paths.push_back(std::move(path));
+            named_by.push_back(&filename);
+        }
+    }
+    std::vector<std::optional<ImageHeader>> headers(paths.size());
+    for_each_in_parallel(paths.size(), [&](std::size_t i) { headers[i] = header_of_file(paths[i]); });
+    for (std::size_t i = 0; i < paths.size(); ++i) reserve_memory(headers[i], *named_by[i]);
+
+    std::vector<Entry> results(paths.size());
+    for_each_in_parallel(paths.size(), [&](std::size_t i) { results[i] = read(paths[i]); });
+    for (std::size_t i = 0; i < paths.size(); ++i) entries_[paths[i]] = std::move(results[i]);
+}
+
+std::shared_ptr<const Image> ImageLibrary::image_for(const Node& filename) {
+    const std::string path = path_of(filename);
+    auto [entry, is_new] = entries_.try_emplace(path);
+    if (is_new) {
+        reserve_memory(header_of_file(path), filename);
+        entry->second = read(path);
+    }
+    const Entry& image = entry->second;
+    if (!image.failure.empty()) {
+        const std::string problem = "cannot read image '" + path + "': " + image.failure;
+        if (!placeholders_) filename.fail(problem);
+        filename.warn(problem + "; rendering a placeholder instead");
+    }
+    return image.image;
+}
+
+// Relative to the scene file's folder; lexically normal, so that "./a.png" and "a.png" are
+// one file. A NUL (JSON "\u0000") would end the name early for the file system, which would
+// then open another file than the one named.
+std::string ImageLibrary::path_of(const Node& filename) const {
+    const std::string name = filename.string();
+    if (name.find('\0') != std::string::npos)
+        filename.fail("filename contains a NUL character (\\u0000), which no file name can hold");
+    const fs::path path(name);
+    return (path.is_absolute() ? path : scene_folder_ / path).lexically_normal().string();
+}
+
+// The cost is taken whether or not the cache holds the image, so that whether a scene loads
+// never depends on what earlier runs left behind. Placeholders do not lift the limit: they
+// stand in for images that cannot be read, not for images too large to hold.
+void ImageLibrary::reserve_memory(const std::optional<ImageHeader>& header, const Node& filename) {
+    if (!header || budget_.reserve(header->decoding_bytes)) return;
+    const std::uint64_t total = budget_.used() + header->decoding_bytes;
+    const std::string size = std::to_string(header->width) + " x " + std::to_string(header->height) +
+                             (header->sixteen_bit ? ", 16-bit" : "");
+    const std::string together = total > header->decoding_bytes
+                                     ? ", and the scene's images up to this one need " + describe_bytes(total) + " together"
+                                     : "";
+    filename.fail("image '" + path_of(filename) + "' (" + size + ") needs " + describe_bytes(header->decoding_bytes) +
+                  " to decode" + together + ", more than the limit of " + describe_bytes(budget_.limit()) +
+                  " for a scene's decoded images (set " + kImageMemoryVariable + " to raise it)");
+}
+
+ImageLibrary::Entry ImageLibrary::read(const std::string& path) const {
+    try {
+        return {load_image_through_cache(path, cache_), ""};
+    } catch (const ImageError& error) {
+        const std::string reason = *error.what() ? error.what() : "unknown error";
+        return {placeholders_ ? make_placeholder_image(path) : nullptr, reason};
+    }
+}
+
+}  // namespace clr

@@ -1,0 +1,17 @@
+// Recognising scene text saved in an encoding clrender does not read. Editors on Windows
+// (Notepad's "Unicode", PowerShell's `>`) save UTF-16; JSON parsers then stop at the first
+// NUL byte with a message about that byte, which does not tell the user what to do.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace clr {
+
+// "UTF-16 (little-endian)", "UTF-32 (big-endian)", ... when `text` starts with that
+// encoding's byte order mark, or, without one, with the NUL bytes that ASCII characters
+// (every JSON text starts with one) have in it (RFC 4627, section 3). nullopt otherwise.
+std::optional<std::string> wide_unicode_encoding(std::string_view text);
+
+}  // namespace clr
