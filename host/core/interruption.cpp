@@ -17,7 +17,8 @@ extern "C" void record_signal(int signal_number) { received_signal.store(signal_
 
 Interrupted::Interrupted(int signal_number)
     : Error(std::string("interrupted by ") + (signal_number == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM") +
-                "; complete frames were kept, nothing partial was left (rerun with --resume to skip written frames)",
+                "; the unfinished frame was discarded and no partial file was left (frames of an animation "
+                "already written are kept: rerun with --resume to skip them)",
             static_cast<ExitCode>(128 + signal_number)) {}
 
 void install_interruption_handlers() {
