@@ -94,8 +94,11 @@ CLR_PACKET_INLINE uint16 billboard_texels16(__global const ClrBillboard* billboa
     int height = billboard->texture_height;
     a = select((real16)(0.0f), a, inside); /* no float-to-int conversion of NaN or inf */
     b = select((real16)(0.0f), b, inside);
-    int16 col = clamp(convert_int16(floor(a * (real)width)), 0, width - 1);
-    int16 row = clamp(convert_int16(floor(b * (real)height)), 0, height - 1);
+    /* Vector bounds, not the scalar-bound overload clamp(int16, int, int): both are standard,
+     * but Oclgrind 21.10 gives garbage in lanes 1-15 of the scalar-bound integer
+     * clamp/min/max, which then gathers far outside the texel buffer (docs/opencl-devices.md). */
+    int16 col = clamp(convert_int16(floor(a * (real)width)), (int16)(0), (int16)(width - 1));
+    int16 row = clamp(convert_int16(floor(b * (real)height)), (int16)(0), (int16)(height - 1));
     uint16 i = billboard->texel_offset + convert_uint16(row) * (uint)width + convert_uint16(col);
     __global const uint* w = (__global const uint*)texels;
     return (uint16)(w[i.s0], w[i.s1], w[i.s2], w[i.s3], w[i.s4], w[i.s5], w[i.s6], w[i.s7], w[i.s8], w[i.s9],

@@ -24,7 +24,13 @@ uchar4 display_pixel(float3 color)
 /* One work-item per pixel of a band of rows starting at `first_row` (the whole image when
  * it fits in one buffer): writes the display colour of pixel (x, first_row + y) to
  * pixels[y * width + x] as RGBA bytes (alpha 255). */
-__kernel void render(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS, __global uchar4* pixels)
+/* vec_type_hint (a standard hint, which PoCL ignores) keeps Intel's CPU runtime from
+ * vectorising this kernel across work-items: with AVX-512 its vectorised form of the double
+ * kernels with sun and mirrors gave a fifth of the pixels different colours from the same
+ * kernel unvectorised (or vectorised for AVX2), from PoCL and from render_packets
+ * (docs/opencl-devices.md). render is the tests' brute-force reference, not the CLI's path. */
+__kernel __attribute__((vec_type_hint(float4))) void render(ClrCamera camera, int first_row, int row_count,
+                                                             CLR_SCENE_PARAMS, __global uchar4* pixels)
 {
     int col = get_global_id(0);
     int band_row = get_global_id(1);

@@ -11,7 +11,10 @@ typedef struct {
 } ShadeResult;
 
 /* The colour a sphere shows at distance t along the ray: its ambient colour, scaled in sun
- * mode by max(0, n.l) and by 0 when an opaque surface lies between the point and the sun. */
+ * mode by max(0, n.l) and by 0 when an opaque surface lies between the point and the sun.
+ * Shading uses dot3() and unit3(), never the built-in dot(), length() or normalize(): their
+ * order, FMAs and scaling are the implementation's, and Intel's CPU runtime and PoCL gave
+ * pixels one display step apart; with + - * / and sqrt alone both give the same bytes. */
 float3 sphere_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
 {
     float3 ambient = spheres[index].color.xyz;
@@ -19,11 +22,11 @@ float3 sphere_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_
     if (!info.lit)
         return ambient;
     real3 point = origin + t * direction;
-    real3 normal = normalize(point - convert_real3(spheres[index].center_radius.xyz));
+    real3 normal = unit3(point - convert_real3(spheres[index].center_radius.xyz));
     real3 to_sun = convert_real3(info.sun.xyz) - point;
-    real sun_distance = length(to_sun);
+    real sun_distance = sqrt(dot3(to_sun, to_sun));
     real3 light = to_sun / sun_distance;
-    real cosine = dot(normal, light);
+    real cosine = dot3(normal, light);
     if (cosine <= 0.0f)
         return (float3)(0.0f); /* facing away: no shadow ray needed */
     Hit blocker = intersect_scene(point, light, sun_distance, CLR_HIT_SPHERE, index, CLR_SCENE_ARGS);
@@ -59,9 +62,9 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     uint flags = hit.kind == CLR_HIT_SPHERE ? spheres[hit.index].flags : billboards[hit.index].flags;
     if (flags & CLR_SURFACE_MIRROR) {
         real3 point = origin + hit.t * direction;
-        real3 normal = hit.kind == CLR_HIT_SPHERE ? normalize(point - convert_real3(spheres[hit.index].center_radius.xyz))
+        real3 normal = hit.kind == CLR_HIT_SPHERE ? unit3(point - convert_real3(spheres[hit.index].center_radius.xyz))
                                                   : convert_real3(billboards[hit.index].normal.xyz);
-        if (dot(direction, normal) >= 0.0f) {
+        if (dot3(direction, normal) >= 0.0f) {
             result.color = (float3)(0.0f); /* the back of a mirror is black */
             return result;
         }
@@ -69,7 +72,7 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
             return result; /* one reflection too many: background */
         result.bounces = 1;
         result.next_origin = point;
-        result.next_direction = normalize(reflect_direction(direction, normal));
+        result.next_direction = unit3(reflect_direction(direction, normal));
         result.leaving_kind = hit.kind;
         result.leaving_index = hit.index;
         return result;

@@ -61,5 +61,5 @@ uchar color_to_byte(float c)
 /* Mirror direction of d about the unit normal n. */
 real3 reflect_direction(real3 d, real3 n)
 {
-    return d - 2.0f * dot(d, n) * n;
+    return d - 2.0f * dot3(d, n) * n; /* dot3, not dot(): see sphere_color() */
 }

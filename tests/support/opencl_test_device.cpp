@@ -1,14 +1,16 @@
 #include "support/opencl_test_device.h"
 
 #include <cstdlib>
-#include <memory>
 
 namespace clr::testing {
 
+// Never released: a static destructor runs after the OpenCL implementation's own statics may
+// be gone (Oclgrind's clReleaseContext at exit aborts inside LLVM's torn-down state), and the
+// process is ending anyway.
 DeviceContext& test_device() {
-    static std::unique_ptr<DeviceContext> device = [] {
+    static DeviceContext* device = [] {
         const char* selector = std::getenv("CLRENDER_DEVICE");
-        return std::make_unique<DeviceContext>(select_device(list_devices(), selector ? selector : ""));
+        return new DeviceContext(select_device(list_devices(), selector ? selector : ""));
     }();
     return *device;
 }

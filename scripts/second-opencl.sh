@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# The kernels on a second OpenCL implementation: Intel's CPU runtime (installed from PyPI by
+# scripts/install-intel-opencl.sh into a user folder) beside PoCL (docs/opencl-devices.md).
+#   1. The kernel stage tests and the whole-frame tests (kernels against the host reference
+#      with the suite's tolerances, packet path against brute force byte for byte, course
+#      scenes, feature variants) run with Intel's device selected (CLRENDER_DEVICE=Intel).
+#   2. The generated scenes of scripts/oclgrind-scenes.sh and the demo scenes render on both
+#      implementations; their images must be byte-identical (the kernels use no contraction
+#      and no implementation-ordered built-ins on their geometry).
+# Any failure fails the run.
+#
+#   scripts/second-opencl.sh            $CLRENDER_BUILD_DIR overrides build/
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${CLRENDER_BUILD_DIR:-$root/build}"
+start=$SECONDS
+
+bash "$root/scripts/install-intel-opencl.sh" > /dev/null
+source "${CLRENDER_INTEL_OPENCL_DIR:-$HOME/.cache/clrender/intel-opencl}/env.sh"
+cmake --build "$build" -j2 --target clrender clrender_tests > /dev/null
+export CLRENDER_CACHE_DIR=off  # each implementation compiles the kernels itself
+
+devices="$("$build/clrender" --list-devices)"
+echo "$devices" | sed 's/^/second-opencl.sh: /'
+grep -q 'Intel(R) OpenCL' <<< "$devices" || { echo "second-opencl.sh: Intel's runtime is not listed" >&2; exit 1; }
+grep -q 'Portable Computing Language' <<< "$devices" || { echo "second-opencl.sh: PoCL is not listed" >&2; exit 1; }
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# Part 1: the tests on Intel's device.
+tests='Intersect*:Raygen*:Shade*:Seeds/*:Cameras/*:StructLayout*:AnalyticImage*:Antialiasing*:BandedRender*'
+tests+=':FeatureVariants*:ScreenTiles*:DoublePrecision*:Bvh.*:ImpostorFrames*:InstructorFrames*:Mirrors*'
+tests+=':RecycledFrames*:Course/*:Scale*'
+if ! CLRENDER_DEVICE=Intel "$build/clrender_tests" --gtest_filter="$tests" --gtest_brief=1 > "$work/tests.log" 2>&1; then
+    echo "second-opencl.sh: FAIL: tests on Intel's device" >&2
+    tail -n 60 "$work/tests.log" >&2
+    failures=$((failures + 1))
+fi
+grep -E '^\[ +PASSED|tests? ran' "$work/tests.log" | sed 's/^/second-opencl.sh: /' || true
+echo "second-opencl.sh: tests on Intel's device in $((SECONDS - start)) s"
+
+# Part 2: whole scenes on both implementations, byte for byte.
+renders_start=$SECONDS
+bash "$root/scripts/oclgrind-scenes.sh" "$work/scenes"
+compare() { # name scene [options...]
+    local name="$1" scene="$2"
+    shift 2
+    for device in PoCL Intel; do
+        local selector="Portable"
+        [ "$device" = Intel ] && selector="Intel"
+        if ! "$build/clrender" "$scene" -q -d "$selector" -o "$work/$name.$device.%04d.png" "$@" > "$work/$name.$device.log" 2>&1; then
+            echo "second-opencl.sh: FAIL: $name on $device: $(cat "$work/$name.$device.log")" >&2
+            failures=$((failures + 1))
+            return
+        fi
+    done
+    for frame in "$work/$name".PoCL.*.png; do
+        if ! cmp -s "$frame" "${frame/.PoCL./.Intel.}"; then
+            echo "second-opencl.sh: FAIL: $name: $(basename "$frame") differs between PoCL and Intel" >&2
+            failures=$((failures + 1))
+        fi
+    done
+}
+for scene in "$work/scenes"/*.json; do
+    name="$(basename "$scene" .json)"
+    compare "$name" "$scene" --size 160x100
+    compare "${name}_double_spp3" "$scene" --size 97x61 --precision double --spp 3
+done
+compare demo "$root/scenes/demo/demo.json" --size 320x180
+compare showcase "$root/scenes/demo/showcase.json" --size 320x180 --frames 0,40,95
+echo "second-opencl.sh: whole scenes on both implementations in $((SECONDS - renders_start)) s"
+
+if [ "$failures" -ne 0 ]; then
+    echo "second-opencl.sh: $failures failures" >&2
+    exit 1
+fi
+echo "second-opencl.sh: Intel's runtime agrees ($((SECONDS - start)) s)"
