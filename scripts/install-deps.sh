@@ -19,6 +19,11 @@ packages=(
   # seed generator writes PNGs and JPEGs with. (gcc's ASan and UBSan runtimes, which
   # scripts/sanitize.sh uses, come with build-essential.)
   clang libclang-rt-14-dev libjpeg62-turbo-dev
+  # scripts/oclgrind.sh: the OpenCL simulator that checks every memory access of the kernels
+  oclgrind
+  # scripts/install-intel-opencl.sh: pip downloads Intel's CPU OpenCL runtime (wheels from
+  # PyPI, the one thing Debian does not package) for scripts/second-opencl.sh
+  python3 python3-pip
 )
 
 missing=()

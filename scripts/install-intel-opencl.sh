@@ -5,14 +5,16 @@
 # changes. Idempotent: the wheels and the unpacked runtime are kept and reused.
 #
 #   scripts/install-intel-opencl.sh        folder: $CLRENDER_INTEL_OPENCL_DIR, else
-#                                          ~/.cache/clrender/intel-opencl
+#                                          ~/.cache/clrender-intel-opencl (beside, not inside,
+#                                          clrender's own cache folder, whose sub-folders
+#                                          clrender manages)
 # Then, to see Intel's device beside the system's (clrender --list-devices):
-#   source ~/.cache/clrender/intel-opencl/env.sh
+#   source ~/.cache/clrender-intel-opencl/env.sh
 # which sets OCL_ICD_VENDORS (a vendors folder holding the system's .icd files and Intel's)
 # and LD_LIBRARY_PATH (Intel's libraries, without its own libOpenCL.so, so that Debian's ICD
 # loader stays the one clrender uses).
 set -euo pipefail
-prefix="${CLRENDER_INTEL_OPENCL_DIR:-$HOME/.cache/clrender/intel-opencl}"
+prefix="${CLRENDER_INTEL_OPENCL_DIR:-$HOME/.cache/clrender-intel-opencl}"
 # Pinned, so that CI checks against one known runtime; raise them together.
 wheels=(intel-opencl-rt==2026.2.0 intel-cmplr-lib-rt==2026.2.0 tbb==2023.2.0)
 

@@ -16,7 +16,7 @@ build="${CLRENDER_BUILD_DIR:-$root/build}"
 start=$SECONDS
 
 bash "$root/scripts/install-intel-opencl.sh" > /dev/null
-source "${CLRENDER_INTEL_OPENCL_DIR:-$HOME/.cache/clrender/intel-opencl}/env.sh"
+source "${CLRENDER_INTEL_OPENCL_DIR:-$HOME/.cache/clrender-intel-opencl}/env.sh"
 cmake --build "$build" -j2 --target clrender clrender_tests > /dev/null
 export CLRENDER_CACHE_DIR=off  # each implementation compiles the kernels itself
 
