@@ -292,7 +292,7 @@ void VideoEncoder::fail_after_broken_pipe() {
     fail("the encoder stopped reading frames and did not exit within " + seconds_text(stall_timeout_) + " s");
 }
 
-void VideoEncoder::finish() {
+std::unique_ptr<AtomicFile> VideoEncoder::finish_uncommitted() {
     if (done_) throw std::logic_error("VideoEncoder::finish called twice or after a failure");
     close_stdin();  // end of stream: ffmpeg flushes and writes the file's index
     const int status = wait_after_last_frame();
@@ -300,10 +300,15 @@ void VideoEncoder::finish() {
     if (frames_added_ == 0) fail("no frames to encode");
     if (file_size(temp_path_) <= 0) fail("'" + program_ + "' exited successfully but wrote no video");
     check_video();
-    move_into_place();
+    if (!sync_file(temp_path_)) fail(std::string("cannot flush the video to disk: ") + std::strerror(errno));
+    std::unique_ptr<AtomicFile> video = AtomicFile::adopt(temp_path_, settings_.path);
+    temp_path_.clear();  // the AtomicFile owns it now
     ::unlink(log_path_.c_str());
     done_ = true;
+    return video;
 }
+
+void VideoEncoder::finish() { finish_uncommitted()->commit(); }
 
 // Waits for ffmpeg to exit after the end of the stream. It is making progress while its
 // output grows (a GIF's palette is computed from all frames first, a short pause); an output
@@ -341,13 +346,6 @@ void VideoEncoder::check_stop() {
     if (cancelled_) {
         abandon();
         throw OutputError(settings_.path + ": video encoding was abandoned");
-    }
-}
-
-void VideoEncoder::move_into_place() {
-    if (!sync_file(temp_path_)) fail(std::string("cannot flush the video to disk: ") + std::strerror(errno));
-    if (std::rename(temp_path_.c_str(), settings_.path.c_str()) != 0) {
-        fail(std::string("cannot move the finished video into place: ") + std::strerror(errno));
     }
 }
 
