@@ -178,6 +178,7 @@ int run(const Options& options) {
         std::cout << format_device_list(list_devices());
         return kExitOk;
     }
+    install_interruption_handlers();  // before anything is read or written (caches included)
     auto start = Clock::now();
     RunReport report;
     DeviceList devices;
@@ -189,12 +190,13 @@ int run(const Options& options) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;
     }
+    throw_if_interrupted();
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
-    install_interruption_handlers();
+    throw_if_interrupted();
 
-    // A still's image and the stats are renamed into place together, once both are written:
-    // a failure in either leaves the earlier files as they were. Frames of a pattern and the
-    // video are in place already (docs/animation.md).
+    // A still's image or an animation's video, and the stats, are renamed into place together,
+    // once all are written: a failure in any leaves the earlier files as they were. Frames of
+    // a pattern are in place already (docs/animation.md).
     StagedOutputs staged;
     if (plan.assemble)
         assemble_frames(options, scene, plan, report, staged);
