@@ -207,6 +207,16 @@ TEST_F(EncoderFaults, CtrlCWhileWaitingForTheEncoderToExit) {
     expect_clean_failure(outcome);
 }
 
+// A closed terminal: the encoder (in its own process group) must be stopped, its files removed.
+TEST_F(EncoderFaults, SighupWhileTheEncoderStopsReading) {
+    const std::string fake = fake_encoder("exec sleep 1000");
+    const Outcome outcome = run(encoder_env(fake), "anim.json -q --video anim.mp4", "HUP", scripts.file("group"));
+    EXPECT_EQ(outcome.exit_code, 129) << outcome.errors;
+    EXPECT_NE(outcome.errors.find("interrupted by SIGHUP"), std::string::npos) << outcome.errors;
+    EXPECT_LT(outcome.seconds, 5) << "clrender must stop within about a second of the signal";
+    expect_clean_failure(outcome);
+}
+
 // ---- A real ffmpeg on a full disk -------------------------------------------------------
 
 bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
