@@ -143,7 +143,8 @@ std::string log_tail(const std::string& path, std::size_t max_lines) {
     if (start > 0 && !lines.empty()) lines.erase(lines.begin());  // probably cut mid-line
     const std::size_t first = lines.size() > max_lines ? lines.size() - max_lines : 0;
     std::string tail;
-    for (std::size_t i = first; i < lines.size(); ++i) tail += "\n  " + lines[i];
+    // Joined on one line: clrender's error is one line (main escapes what else it holds).
+    for (std::size_t i = first; i < lines.size(); ++i) tail += (i == first ? " " : " | ") + lines[i];
     return tail;
 }
 
