@@ -207,6 +207,16 @@ TEST_F(EncoderFaults, CtrlCWhileWaitingForTheEncoderToExit) {
     expect_clean_failure(outcome);
 }
 
+// The log's tail is quoted in the error, which must stay one line and pass no escape
+// sequence from the encoder to the terminal.
+TEST_F(EncoderFaults, EncoderLogIsQuotedOnOneEscapedLine) {
+    const std::string fake = fake_encoder("printf 'first line\\n\\033[2Jsecond line\\n' >&2\nexit 1");
+    const Outcome outcome = run(kQuickTimeout + encoder_env(fake), "anim.json -q --video anim.mp4");
+    expect_exit_4(outcome, "");
+    EXPECT_NE(outcome.errors.find("its log ends: first line | \\x1B[2Jsecond line\n"), std::string::npos) << outcome.errors;
+    EXPECT_EQ(count_of(outcome.errors, "\n"), 1) << "one line: " << outcome.errors;
+}
+
 // A closed terminal: the encoder (in its own process group) must be stopped, its files removed.
 TEST_F(EncoderFaults, SighupWhileTheEncoderStopsReading) {
     const std::string fake = fake_encoder("exec sleep 1000");
