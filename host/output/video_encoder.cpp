@@ -39,6 +39,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// ffmpeg at -loglevel error writes a few lines; far more is a runaway encoder.
+constexpr long long kMaxLogBytes = 1 << 20;
+
 // ---- ffmpeg's command line -------------------------------------------------------------
 
 // Locale-independent, shortest exact-enough decimal ("10", "29.97"): a decimal comma would
@@ -247,6 +250,7 @@ void VideoEncoder::add_frame(const Image& rgba) {
                                     "x" + std::to_string(settings_.height) + " video");
     }
     for (std::size_t i = 0; i < pixels; ++i) std::memcpy(&rgb_[i * 3], &rgba.rgba[i * 4], 3);
+    check_stop();  // also when the encoder reads every frame at once and never makes send() wait
     send(rgb_.data(), rgb_.size());
     ++frames_added_;
 }
@@ -340,6 +344,11 @@ void VideoEncoder::check_video() {
 }
 
 void VideoEncoder::check_stop() {
+    // An encoder that floods its log (a broken build printing a warning per pixel) would fill
+    // the disk within the stall timeout: at a gigabyte a second, a 100 ms slice overshoots by
+    // about 100 MB at most.
+    if (file_size(log_path_) > kMaxLogBytes)
+        fail("the encoder wrote more than " + std::to_string(kMaxLogBytes >> 20) + " MiB of messages to its log");
     if (interruption_requested()) {
         abandon();
         throw_if_interrupted();

@@ -81,7 +81,7 @@ private:
     [[noreturn]] void fail_after_broken_pipe();
     int wait_after_last_frame();                         // returns ffmpeg's wait status
     void check_video();
-    void check_stop();                                   // interrupted or cancelled: abandon, throw
+    void check_stop();  // interrupted, cancelled or the log over its bound: abandon, throw
     void close_stdin();
     void remove_files();
     void abandon() noexcept;                             // stop ffmpeg, remove its files

@@ -217,6 +217,13 @@ TEST_F(EncoderFaults, EncoderLogIsQuotedOnOneEscapedLine) {
     EXPECT_EQ(count_of(outcome.errors, "\n"), 1) << "one line: " << outcome.errors;
 }
 
+// Under the default 60 s stall timeout such an encoder wrote about a gigabyte of log a second.
+TEST_F(EncoderFaults, EncoderFloodingItsLog) {
+    const std::string fake = fake_encoder("yes 'a warning, again' >&2 &\ncat > /dev/null\nwait");
+    const Outcome outcome = run(encoder_env(fake), "anim.json -q --video anim.mp4");
+    expect_exit_4(outcome, "the encoder wrote more than 1 MiB of messages to its log");
+}
+
 // A closed terminal: the encoder (in its own process group) must be stopped, its files removed.
 TEST_F(EncoderFaults, SighupWhileTheEncoderStopsReading) {
     const std::string fake = fake_encoder("exec sleep 1000");
