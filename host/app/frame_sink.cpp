@@ -60,7 +60,7 @@ void FrameSink::finish() {
     changed_.notify_all();
     worker_.join();
     rethrow_worker_error();
-    if (encoder_) encoder_->finish();
+    if (encoder_) staged_.add(encoder_->finish_uncommitted());  // renamed with the --stats report
 }
 
 void FrameSink::rethrow_worker_error() {

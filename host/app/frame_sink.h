@@ -33,7 +33,8 @@ public:
     // waits. `on_disk`: the frame's image file exists already (--resume, --assemble) and only
     // goes to the video.
     void push(int frame, Image image, bool on_disk = false);
-    // Writes what is queued and completes the video under its final name. Rethrows errors;
+    // Writes what is queued and completes and checks the video, which goes to `staged` (renamed
+    // into place with the --stats report, so a failed stats write leaves the earlier video). Rethrows errors;
     // every wait in it ends on a signal (the worker's and the encoder's waits check too).
     void finish();
 

@@ -7,6 +7,7 @@
 #include "app/options.h"
 #include "app/run.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 
 int main(int argc, char** argv) {
     clr::ParsedOptions parsed = clr::parse_options(argc, argv);
@@ -14,13 +15,14 @@ int main(int argc, char** argv) {
     try {
         return clr::run(parsed.options);
     } catch (const clr::Error& error) {
-        std::cerr << "clrender: error: " << error.what() << "\n";
+        // One line whatever the message quotes (a file name with a newline, an encoder's log).
+        std::cerr << "clrender: error: " << clr::escape_control_characters(error.what()) << "\n";
         return error.code();
     } catch (const std::bad_alloc&) {
         std::cerr << "clrender: error: out of memory\n";
         return clr::kExitDevice;
     } catch (const std::exception& error) {
-        std::cerr << "clrender: error: " << error.what() << "\n";
+        std::cerr << "clrender: error: " << clr::escape_control_characters(error.what()) << "\n";
         return clr::kExitDevice;
     }
 }

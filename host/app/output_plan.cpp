@@ -63,7 +63,7 @@ void add_images(const Options& options, const OutputPlan& plan, OutputRoles& rol
         const std::string name = "frame " + std::to_string(frame);
         if (plan.assemble) {
             roles.add_input(name + " (read by --assemble)", path);
-        } else if (options.resume && std::filesystem::exists(path)) {
+        } else if (options.resume && plan.frame_on_disk(frame)) {
             roles.add_input(name + " (read back by --resume)", path);
         } else {
             roles.add_output(name + " (-o)", path);
@@ -77,7 +77,7 @@ std::vector<std::string> written_files(const Options& options, const OutputPlan&
     if (!plan.image_target.empty() && !plan.assemble) {
         for (int frame : plan.frames) {
             const std::string path = plan.image_path(frame);
-            if (!(options.resume && std::filesystem::exists(path))) paths.push_back(path);
+            if (!(options.resume && plan.frame_on_disk(frame))) paths.push_back(path);
         }
     }
     if (!plan.video_path.empty()) paths.push_back(plan.video_path);
@@ -111,6 +111,11 @@ void check_targets(const Options& options, const Scene& scene, OutputPlan& plan)
 std::string OutputPlan::image_path(int frame) const {
     if (image_target.empty()) return "";
     return image_is_pattern ? frame_path(image_target, frame) : image_target;
+}
+
+bool OutputPlan::frame_on_disk(int frame) const {
+    std::error_code ignored;
+    return image_is_pattern && std::filesystem::is_regular_file(image_path(frame), ignored);
 }
 
 OutputPlan plan_outputs(const Options& options, const Scene& scene) {

@@ -28,6 +28,10 @@ struct OutputPlan {
     // report, once both are written; frames of a pattern each as soon as they are finished
     // (so that --resume finds them after an interruption).
     bool image_waits_for_stats() const { return !image_is_pattern; }
+    // --resume: whether `frame` was written already, i.e. its file is a regular file (or a
+    // link to one). A folder or FIFO under a frame's name is no frame: it is planned as an
+    // output, and refused as one, instead of being skipped and leaving the frame missing.
+    bool frame_on_disk(int frame) const;
 };
 
 // Throws UsageError for contradictory or incomplete requests, OutputError when a video is

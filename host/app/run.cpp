@@ -8,6 +8,7 @@
 
 #include "app/frame_sink.h"
 #include "core/interruption.h"
+#include "core/printable_text.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
 #include "core/errors.h"
@@ -73,7 +74,8 @@ Scene load(const Options& options) {
     load_options.height_override = options.height;
     load_options.samples_override = options.samples_per_pixel;
     Scene scene = load_scene(options.scene_path, load_options);
-    for (const std::string& warning : scene.warnings) std::cerr << "clrender: warning: " << scene.path << ": " << warning << "\n";
+    for (const std::string& warning : scene.warnings)
+        std::cerr << "clrender: warning: " << escape_control_characters(scene.path + ": " + warning) << "\n";
     return scene;
 }
 
@@ -123,7 +125,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     auto start = Clock::now();
     for (int frame : plan.frames) {
         throw_if_interrupted();
-        if (options.resume && plan.image_is_pattern && fs::exists(plan.image_path(frame))) {
+        if (options.resume && plan.frame_on_disk(frame)) {
             if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, scene, frame), true);
             progress.frame_done();
             continue;
@@ -161,10 +163,11 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
 
 void print_summary(const OutputPlan& plan, const RunReport& report) {
     if (!plan.image_target.empty() && !plan.assemble)
-        std::cerr << "clrender: wrote " << (plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
+        std::cerr << "clrender: wrote "
+                  << escape_control_characters(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
                   << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
     if (!plan.video_path.empty())
-        std::cerr << "clrender: wrote " << plan.video_path << " (" << plan.frames.size() << " frames)\n";
+        std::cerr << "clrender: wrote " << escape_control_characters(plan.video_path) << " (" << plan.frames.size() << " frames)\n";
     double kernel_ms = 0;
     for (const FrameRecord& frame : report.frames) kernel_ms += frame.timing.kernel_ms;
     std::cerr << "clrender: " << report.frames.size() << " frame(s), kernel " << kernel_ms << " ms, build "
@@ -178,6 +181,7 @@ int run(const Options& options) {
         std::cout << format_device_list(list_devices());
         return kExitOk;
     }
+    install_interruption_handlers();  // before anything is read or written (caches included)
     auto start = Clock::now();
     RunReport report;
     DeviceList devices;
@@ -189,12 +193,13 @@ int run(const Options& options) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;
     }
+    throw_if_interrupted();
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
-    install_interruption_handlers();
+    throw_if_interrupted();
 
-    // A still's image and the stats are renamed into place together, once both are written:
-    // a failure in either leaves the earlier files as they were. Frames of a pattern and the
-    // video are in place already (docs/animation.md).
+    // A still's image or an animation's video, and the stats, are renamed into place together,
+    // once all are written: a failure in any leaves the earlier files as they were. Frames of
+    // a pattern are in place already (docs/animation.md).
     StagedOutputs staged;
     if (plan.assemble)
         assemble_frames(options, scene, plan, report, staged);

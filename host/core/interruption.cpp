@@ -13,22 +13,40 @@ static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a
 
 extern "C" void record_signal(int signal_number) { received_signal.store(signal_number); }
 
+void set_action(int signal_number, void (*handler)(int), int flags) {
+    struct sigaction action;
+    std::memset(&action, 0, sizeof action);
+    action.sa_handler = handler;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = flags;
+    sigaction(signal_number, &action, nullptr);
+}
+
+std::string signal_name(int signal_number) {
+    switch (signal_number) {
+        case SIGINT: return "SIGINT (Ctrl-C)";
+        case SIGHUP: return "SIGHUP (terminal closed)";
+        default: return "SIGTERM";
+    }
+}
+
 }  // namespace
 
 Interrupted::Interrupted(int signal_number)
-    : Error(std::string("interrupted by ") + (signal_number == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM") +
+    : Error("interrupted by " + signal_name(signal_number) +
                 "; the unfinished frame was discarded and no partial file was left (frames of an animation "
                 "already written are kept: rerun with --resume to skip them)",
             static_cast<ExitCode>(128 + signal_number)) {}
 
 void install_interruption_handlers() {
-    struct sigaction action;
-    std::memset(&action, 0, sizeof action);
-    action.sa_handler = record_signal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;  // a second signal takes the default action: exit now
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    // A second signal takes the default action: exit now.
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) set_action(signal_number, record_signal, SA_RESETHAND);
+    // A write to a closed pipe (stderr piped into `head -1`, an encoder that quit) and a write
+    // beyond `ulimit -f` would kill clrender mid-write by default, leaving its temporary files
+    // and encoder behind. Ignored, the write fails instead (EPIPE, EFBIG): an output write
+    // becomes an output error (exit code 4), a message to a closed stderr is lost.
+    set_action(SIGPIPE, SIG_IGN, 0);
+    set_action(SIGXFSZ, SIG_IGN, 0);
 }
 
 bool interruption_requested() { return received_signal.load() != 0; }

@@ -1,4 +1,4 @@
-// Ctrl-C (SIGINT) and SIGTERM in the middle of a render. It lives in core/ because every layer
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP (the terminal closed) in the middle of a run. It lives in core/ because every layer
 // that waits (the frame loop, the renderer's bands, the video encoder) must be able to stop.
 // The handler only records the signal; the frame loop checks between frames and unwinds, so every output is either
 // complete under its final name or not there at all (temporary files are removed on the way
@@ -15,9 +15,12 @@ public:
     explicit Interrupted(int signal_number);
 };
 
+// Records SIGINT, SIGTERM and SIGHUP from now on, and ignores SIGPIPE and SIGXFSZ (so that
+// writes to a closed pipe or beyond the file size limit fail instead of killing clrender).
+// Called first thing in a run: a signal while the scene loads is acted upon at the next check.
 void install_interruption_handlers();
 
-// Whether SIGINT or SIGTERM has arrived since install_interruption_handlers(). Safe to call
+// Whether SIGINT, SIGTERM or SIGHUP has arrived since install_interruption_handlers(). Safe to call
 // from any thread; long waits (a frame's bands, the video encoder's pipe) poll it.
 bool interruption_requested();
 

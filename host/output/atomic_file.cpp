@@ -54,6 +54,15 @@ AtomicFile::AtomicFile(std::string final_path) : final_path_(std::move(final_pat
     }
 }
 
+std::unique_ptr<AtomicFile> AtomicFile::adopt(const std::string& finished_temp_path, std::string final_path) {
+    std::unique_ptr<AtomicFile> file(new AtomicFile());
+    file->final_path_ = std::move(final_path);
+    file->temp_path_ = finished_temp_path;  // owned from here on: removed unless committed
+    file->target_path_ = resolve_output_target(file->final_path_);
+    file->completed_ = true;
+    return file;
+}
+
 AtomicFile::~AtomicFile() {
     if (stream_) std::fclose(stream_);
     if (!committed_) ::unlink(temp_path_.c_str());

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace clr {
@@ -21,6 +22,10 @@ public:
     // Creates the temporary file beside the file `final_path` resolves to. Throws OutputError
     // if it cannot or if `final_path` is not a place for an output.
     explicit AtomicFile(std::string final_path);
+    // Takes over `finished_temp_path`, a complete file that another writer (the video
+    // encoder) made beside the file `final_path` resolves to and synced: it is renamed into
+    // place by commit() and removed if destroyed uncommitted.
+    static std::unique_ptr<AtomicFile> adopt(const std::string& finished_temp_path, std::string final_path);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
@@ -39,6 +44,8 @@ public:
     void commit();
 
 private:
+    AtomicFile() = default;
+
     std::string final_path_;
     std::string target_path_;
     std::string temp_path_;

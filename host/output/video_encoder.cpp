@@ -39,6 +39,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// ffmpeg at -loglevel error writes a few lines; far more is a runaway encoder.
+constexpr long long kMaxLogBytes = 1 << 20;
+
 // ---- ffmpeg's command line -------------------------------------------------------------
 
 // Locale-independent, shortest exact-enough decimal ("10", "29.97"): a decimal comma would
@@ -143,7 +146,8 @@ std::string log_tail(const std::string& path, std::size_t max_lines) {
     if (start > 0 && !lines.empty()) lines.erase(lines.begin());  // probably cut mid-line
     const std::size_t first = lines.size() > max_lines ? lines.size() - max_lines : 0;
     std::string tail;
-    for (std::size_t i = first; i < lines.size(); ++i) tail += "\n  " + lines[i];
+    // Joined on one line: clrender's error is one line (main escapes what else it holds).
+    for (std::size_t i = first; i < lines.size(); ++i) tail += (i == first ? " " : " | ") + lines[i];
     return tail;
 }
 
@@ -246,6 +250,7 @@ void VideoEncoder::add_frame(const Image& rgba) {
                                     "x" + std::to_string(settings_.height) + " video");
     }
     for (std::size_t i = 0; i < pixels; ++i) std::memcpy(&rgb_[i * 3], &rgba.rgba[i * 4], 3);
+    check_stop();  // also when the encoder reads every frame at once and never makes send() wait
     send(rgb_.data(), rgb_.size());
     ++frames_added_;
 }
@@ -292,7 +297,7 @@ void VideoEncoder::fail_after_broken_pipe() {
     fail("the encoder stopped reading frames and did not exit within " + seconds_text(stall_timeout_) + " s");
 }
 
-void VideoEncoder::finish() {
+std::unique_ptr<AtomicFile> VideoEncoder::finish_uncommitted() {
     if (done_) throw std::logic_error("VideoEncoder::finish called twice or after a failure");
     close_stdin();  // end of stream: ffmpeg flushes and writes the file's index
     const int status = wait_after_last_frame();
@@ -300,10 +305,15 @@ void VideoEncoder::finish() {
     if (frames_added_ == 0) fail("no frames to encode");
     if (file_size(temp_path_) <= 0) fail("'" + program_ + "' exited successfully but wrote no video");
     check_video();
-    move_into_place();
+    if (!sync_file(temp_path_)) fail(std::string("cannot flush the video to disk: ") + std::strerror(errno));
+    std::unique_ptr<AtomicFile> video = AtomicFile::adopt(temp_path_, settings_.path);
+    temp_path_.clear();  // the AtomicFile owns it now
     ::unlink(log_path_.c_str());
     done_ = true;
+    return video;
 }
+
+void VideoEncoder::finish() { finish_uncommitted()->commit(); }
 
 // Waits for ffmpeg to exit after the end of the stream. It is making progress while its
 // output grows (a GIF's palette is computed from all frames first, a short pause); an output
@@ -334,6 +344,11 @@ void VideoEncoder::check_video() {
 }
 
 void VideoEncoder::check_stop() {
+    // An encoder that floods its log (a broken build printing a warning per pixel) would fill
+    // the disk within the stall timeout: at a gigabyte a second, a 100 ms slice overshoots by
+    // about 100 MB at most.
+    if (file_size(log_path_) > kMaxLogBytes)
+        fail("the encoder wrote more than " + std::to_string(kMaxLogBytes >> 20) + " MiB of messages to its log");
     if (interruption_requested()) {
         abandon();
         throw_if_interrupted();
@@ -341,13 +356,6 @@ void VideoEncoder::check_stop() {
     if (cancelled_) {
         abandon();
         throw OutputError(settings_.path + ": video encoding was abandoned");
-    }
-}
-
-void VideoEncoder::move_into_place() {
-    if (!sync_file(temp_path_)) fail(std::string("cannot flush the video to disk: ") + std::strerror(errno));
-    if (std::rename(temp_path_.c_str(), settings_.path.c_str()) != 0) {
-        fail(std::string("cannot move the finished video into place: ") + std::strerror(errno));
     }
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "output/atomic_file.h"
 #include "output/child_process.h"
 #include "output/encoder_timeout.h"
 #include "scene/scene.h"
@@ -37,7 +38,7 @@ struct VideoSettings {
 // One running ffmpeg, fed a frame at a time. Typical use:
 //     VideoEncoder video(settings, find_encoder());
 //     for (...) video.add_frame(image);
-//     video.finish();
+//     video.finish();    // or finish_uncommitted(), to rename it later with other outputs
 // Without finish() (an exception while rendering), the destructor stops ffmpeg and removes
 // everything it wrote. Creating an encoder makes clrender ignore SIGPIPE process-wide, so
 // that an encoder that dies mid-stream is reported as an error instead of killing clrender.
@@ -62,8 +63,12 @@ public:
     void add_frame(const Image& rgba);
 
     // Ends the stream, waits for ffmpeg, checks the video with ffprobe (exactly the frames
-    // sent) and moves it to its final name. Throws OutputError with the reason and the end of
-    // ffmpeg's log if encoding failed, leaving nothing new under the final name.
+    // sent) and syncs it, but leaves it under its temporary name: the returned file renames it
+    // into place on commit() (together with the other outputs of the run, staged_outputs.h)
+    // and removes it if destroyed uncommitted. Throws OutputError with the reason and the end
+    // of ffmpeg's log if encoding failed, leaving nothing new under the final name.
+    std::unique_ptr<AtomicFile> finish_uncommitted();
+    // finish_uncommitted(), then the rename into place.
     void finish();
 
     // Thread-safe: makes a wait in add_frame or finish (on another thread) give up within
@@ -76,9 +81,8 @@ private:
     [[noreturn]] void fail_after_broken_pipe();
     int wait_after_last_frame();                         // returns ffmpeg's wait status
     void check_video();
-    void check_stop();                                   // interrupted or cancelled: abandon, throw
+    void check_stop();  // interrupted, cancelled or the log over its bound: abandon, throw
     void close_stdin();
-    void move_into_place();
     void remove_files();
     void abandon() noexcept;                             // stop ffmpeg, remove its files
     [[noreturn]] void fail(const std::string& reason);  // remove the files, throw OutputError

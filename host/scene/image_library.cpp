@@ -6,6 +6,7 @@
 #include <functional>
 #include <thread>
 
+#include "core/interruption.h"
 #include "scene/bounded_file.h"
 
 namespace clr {
@@ -21,6 +22,7 @@ void for_each_in_parallel(std::size_t count, const std::function<void(std::size_
     auto worker = [&] {
         for (std::size_t i; (i = next++) < count;) {
             try {
+                throw_if_interrupted();  // Ctrl-C while many images decode: stop after those under way
                 work(i);
             } catch (...) {
                 errors[i] = std::current_exception();

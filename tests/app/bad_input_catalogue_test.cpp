@@ -468,6 +468,17 @@ std::vector<BadInput> catalogue() {
         {"EmptySceneName", {}, {}, "''", 1, {"scene: the scene file name is empty"}, "", true},
         {"KernelBuildErrorComesBeforeTheCompilersOutput", kernels_with_broken("intersect.cl"), kernel_folders(),
          "scene.json -q --kernel-dir kd", 3, {"building the OpenCL program", "kernels/intersect.cl:", "this"}},
+        // --- Output names and files under odd names: control characters in a name are escaped
+        // (the message stays one line and sends no escape sequence), and --resume skips only
+        // frames that are regular files
+        {"OutputNameWithControlCharacters", {{"scene.json", scene_with("")}}, {},
+         R"cmd(scene.json -o "$(printf 'a\nb\033[31m.bmp')")cmd", 1, {"a\\x0Ab\\x1B[31m.bmp: unsupported extension"}},
+        {"ResumeOverAFolderNamedAsAFrame", {{"path.json", animation_scene()}}, {"f_0001.png"},
+         "path.json -q --reference --resume -o f_%04d.png", 4,
+         {"f_0001.png: is a folder; clrender writes outputs only to regular files"}},
+        {"ResumeOverAFifoNamedAsAFrame", {{"path.json", animation_scene()}}, {},
+         "path.json -q --reference --resume -o f_%04d.png --video v.mp4", 4,
+         {"f_0001.png: is a named pipe (FIFO)"}, "", false, make_fifo("f_0001.png")},
     };
 }
 

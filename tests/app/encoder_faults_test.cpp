@@ -207,6 +207,33 @@ TEST_F(EncoderFaults, CtrlCWhileWaitingForTheEncoderToExit) {
     expect_clean_failure(outcome);
 }
 
+// The log's tail is quoted in the error, which must stay one line and pass no escape
+// sequence from the encoder to the terminal.
+TEST_F(EncoderFaults, EncoderLogIsQuotedOnOneEscapedLine) {
+    const std::string fake = fake_encoder("printf 'first line\\n\\033[2Jsecond line\\n' >&2\nexit 1");
+    const Outcome outcome = run(kQuickTimeout + encoder_env(fake), "anim.json -q --video anim.mp4");
+    expect_exit_4(outcome, "");
+    EXPECT_NE(outcome.errors.find("its log ends: first line | \\x1B[2Jsecond line\n"), std::string::npos) << outcome.errors;
+    EXPECT_EQ(count_of(outcome.errors, "\n"), 1) << "one line: " << outcome.errors;
+}
+
+// Under the default 60 s stall timeout such an encoder wrote about a gigabyte of log a second.
+TEST_F(EncoderFaults, EncoderFloodingItsLog) {
+    const std::string fake = fake_encoder("yes 'a warning, again' >&2 &\ncat > /dev/null\nwait");
+    const Outcome outcome = run(encoder_env(fake), "anim.json -q --video anim.mp4");
+    expect_exit_4(outcome, "the encoder wrote more than 1 MiB of messages to its log");
+}
+
+// A closed terminal: the encoder (in its own process group) must be stopped, its files removed.
+TEST_F(EncoderFaults, SighupWhileTheEncoderStopsReading) {
+    const std::string fake = fake_encoder("exec sleep 1000");
+    const Outcome outcome = run(encoder_env(fake), "anim.json -q --video anim.mp4", "HUP", scripts.file("group"));
+    EXPECT_EQ(outcome.exit_code, 129) << outcome.errors;
+    EXPECT_NE(outcome.errors.find("interrupted by SIGHUP"), std::string::npos) << outcome.errors;
+    EXPECT_LT(outcome.seconds, 5) << "clrender must stop within about a second of the signal";
+    expect_clean_failure(outcome);
+}
+
 // ---- A real ffmpeg on a full disk -------------------------------------------------------
 
 bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }

@@ -168,6 +168,14 @@ TEST(Interruption, CtrlCStopsALongReferenceStillWithinASecond) {
     expect_still_stopped(folder, result, 2);
 }
 
+// A closed terminal (SIGHUP) stops clrender as SIGTERM does, instead of killing it mid-write.
+TEST(Interruption, SighupStopsALongReferenceStillCleanly) {
+    TempFolder folder;
+    StopResult result = interrupt_still(folder, "--reference --size 1024x1024 --spp 64", "HUP");
+    expect_still_stopped(folder, result, 1);
+    EXPECT_NE(read_bytes(folder.file("stderr.txt")).find("interrupted by SIGHUP"), std::string::npos);
+}
+
 TEST(Interruption, ResumeNeedsAFramePattern) {
     TempFolder folder;
     folder.write("anim.json", kLongAnimation);
