@@ -70,23 +70,34 @@ Vec3 centripetal_catmull_rom(const Vec3& p0, const Vec3& p1, const Vec3& p2, con
     return lerp_between_knots(b1, t1, b2, t2, t);
 }
 
+// One coordinate curve of the path (the eyes, or the look-at points), read in place from the
+// keys: camera_at_frame() runs once per frame, and copying a path of a million keys for
+// each frame would make a long animation quadratic.
+struct PathPoints {
+    const std::vector<CameraKey>& keys;
+    Vec3 CameraKey::*member;
+
+    const Vec3& operator[](std::size_t i) const { return keys[i].*member; }
+    std::size_t size() const { return keys.size(); }
+};
+
 // The neighbour before key i. Past the first key, and where the neighbour coincides with the
 // key (its knot interval would be zero), a phantom point mirrors the next key through key i,
 // which makes the curve leave key i heading straight at the next key.
-Vec3 previous_neighbour(const std::vector<Vec3>& points, std::size_t i) {
+Vec3 previous_neighbour(const PathPoints& points, std::size_t i) {
     const Vec3 mirrored = 2.0 * points[i] - points[i + 1];
     if (i == 0 || points[i - 1] == points[i]) return mirrored;
     return points[i - 1];
 }
 
 // The neighbour after key i + 1, mirrored in the same way at the end of the path.
-Vec3 next_neighbour(const std::vector<Vec3>& points, std::size_t i) {
+Vec3 next_neighbour(const PathPoints& points, std::size_t i) {
     const Vec3 mirrored = 2.0 * points[i + 1] - points[i];
     if (i + 2 >= points.size() || points[i + 2] == points[i + 1]) return mirrored;
     return points[i + 2];
 }
 
-Vec3 point_on_path(const std::vector<Vec3>& points, const PathPosition& at, Interpolation interpolation) {
+Vec3 point_on_path(const PathPoints& points, const PathPosition& at, Interpolation interpolation) {
     const std::size_t i = at.segment;
     if (at.numerator == 0) return points[i];  // exactly on a key
     const Vec3& from = points[i];
@@ -126,11 +137,7 @@ CameraKey camera_at_frame(const Scene& scene, int frame) {
     }
     if (keys.size() == 1) return keys.front();
 
-    std::vector<Vec3> eyes, lookats;
-    for (const CameraKey& key : keys) {
-        eyes.push_back(key.eye);
-        lookats.push_back(key.lookat);
-    }
+    const PathPoints eyes{keys, &CameraKey::eye}, lookats{keys, &CameraKey::lookat};
     const PathPosition at = position_of_frame(keys.size(), frame, frame_count);
     const Interpolation interpolation = scene.animation.interpolation;
     return {point_on_path(eyes, at, interpolation), point_on_path(lookats, at, interpolation)};

@@ -7,42 +7,36 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "scene/message_text.h"
 #include "scene/text_encoding.h"
 
 namespace clr {
 
-namespace {
 
-// `text` with each control character (a byte below 0x20, or 0x7F) written as \xNN. Messages
-// quote the file: keys in locations (JSON escapes such as "\u001b" put any character in a
-// key) and the text around a syntax error. clrender prints each message as one line, and a
-// scene file must not be able to break that line, forge others or send escape sequences to
-// the terminal. Other bytes, UTF-8 included, stay as they are. Found by the scene fuzzer.
-std::string printable(const std::string& text) {
-    static const char kHex[] = "0123456789ABCDEF";
-    std::string out;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7F) {
-            out += "\\x";
-            out += kHex[byte >> 4];
-            out += kHex[byte & 15];
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
-
-}  // namespace
-
+// Messages quote the file: keys in locations (JSON escapes such as "\u001b" put any
+// character in a key), values, and the text around a syntax error. Each is shortened, then
+// escaped (message_text.h), so that a file can neither break the line nor make it endless.
+// The file's own name comes from the command line and may hold a newline too.
 void Diagnostics::fail(const std::string& location, const std::string& detail) const {
-    throw SceneError(file, printable(location), printable(detail));
+    throw SceneError(printable(file), printable(shortened(location, kLongestLocation)),
+                     printable(shortened(detail, kLongestDetail)));
 }
 
 void Diagnostics::warn(const std::string& location, const std::string& message) const {
     if (!warnings) return;
-    warnings->push_back(location.empty() ? printable(message) : printable(location) + ": " + printable(message));
+    if (warnings->size() >= kMostWarnings) {
+        ++unshown_warnings;
+        return;
+    }
+    const std::string text = printable(shortened(message, kLongestDetail));
+    warnings->push_back(location.empty() ? text : printable(shortened(location, kLongestLocation)) + ": " + text);
+}
+
+void Diagnostics::summarise_warnings() const {
+    if (!warnings || unshown_warnings == 0) return;
+    warnings->push_back(std::to_string(unshown_warnings) + " more warnings not shown (only the first " +
+                        std::to_string(kMostWarnings) + " are)");
+    unshown_warnings = 0;
 }
 
 std::string json_pointer_token(const std::string& key) {
@@ -375,6 +369,10 @@ std::string ObjectReader::suggestion_for(const std::string& unknown_key) const {
     std::string best;
     std::size_t best_distance = tolerance + 1;
     for (const std::string& known : known_keys_) {
+        // The distance is at least the difference in length: a long key (a file may hold
+        // thousands of them, each megabytes long) is then never compared letter by letter.
+        const std::size_t shorter = std::min(unknown_key.size(), known.size());
+        if (std::max(unknown_key.size(), known.size()) - shorter > tolerance) continue;
         const std::size_t distance = edit_distance(lowercase(unknown_key), lowercase(known));
         if (distance < best_distance) {
             best = known;

@@ -18,13 +18,19 @@ namespace clr {
 using Json = nlohmann::json;
 
 // Where problems go: errors become SceneErrors naming `file`, warnings are appended to
-// `warnings` as "LOCATION: message".
+// `warnings` as "LOCATION: message". Past kMostWarnings, warnings are only counted (a file
+// of a million unknown keys would otherwise print a million lines and hold them all in
+// memory first); summarise_warnings() then adds one line that counts them.
 struct Diagnostics {
+    static constexpr std::size_t kMostWarnings = 100;
+
     std::string file;
     std::vector<std::string>* warnings = nullptr;
+    mutable std::size_t unshown_warnings = 0;
 
     [[noreturn]] void fail(const std::string& location, const std::string& detail) const;
     void warn(const std::string& location, const std::string& message) const;
+    void summarise_warnings() const;
 };
 
 // Parses UTF-8 JSON text (a leading BOM, CRLF line endings and // or /* */ comments are

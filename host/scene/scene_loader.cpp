@@ -5,15 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <sstream>
 
 #include "core/errors.h"
 #include "scene/bounded_file.h"
+#include "scene/camera_checks.h"
 #include "scene/image_budget.h"
 #include "scene/image_library.h"
 #include "scene/json_reader.h"
+#include "scene/message_text.h"
 #include "scene/value_ranges.h"
 
 namespace clr {
@@ -25,18 +28,9 @@ constexpr int kDefaultMaxDepth = 5;  // SPEC 1
 // More reflections than this change no visible pixel in any sensible scene, and each one
 // costs a full trace per pixel: a larger value is a typo, not an intent.
 constexpr int kMaxMaxDepth = 64;
-// Up is "parallel" to the view direction when the sine of the angle between them is below
-// this. Both are unit vectors first, so the test does not depend on the scene's scale.
-constexpr double kParallelSine = 1e-9;
 // Billboard corners are degenerate when the sine of the angle between the two edges at UL is
 // at most this, computed from unit edges so that it does not depend on the billboard's size.
 constexpr double kDegenerateSine = 1e-12;
-
-std::string format_vec3(const Vec3& v) {
-    std::ostringstream text;
-    text << "[" << v.x << ", " << v.y << ", " << v.z << "]";
-    return text.str();
-}
 
 // Unit vector along `v`, of any finite length (normalize() scales before squaring). Zero
 // stays zero.
@@ -95,21 +89,15 @@ void check_lookat_count(const PathPoints& eyes, const PathPoints& lookats, const
 // The view must have a direction and `up` must fix the camera's roll, at every path key.
 void check_camera_key(const Scene& scene, std::size_t key, const std::string& key_location,
                       const std::string& up_location, const Diagnostics& diagnostics) {
-    const CameraKey& camera = scene.camera_path[key];
     const std::string at_key = scene.is_animated() ? " at camera key " + std::to_string(key) : "";
-    if (camera.eye == camera.lookat) {
-        diagnostics.fail(key_location, "eye and lookat are the same point " + format_vec3(camera.eye) + at_key +
-                                           ", so the camera has no view direction");
-    }
-    const Vec3 view = direction(camera.lookat - camera.eye);
-    const double sine = length(cross(direction(scene.up), view));
-    if (!(sine >= kParallelSine)) {  // written so that NaN fails too
-        diagnostics.fail(up_location, "up " + format_vec3(scene.up) + " is parallel to the view direction " +
-                                          format_vec3(view) + at_key + ", so the camera's roll is undefined");
-    }
+    const std::optional<std::string> problem = camera_problem(scene.camera_path[key], scene.up, at_key);
+    if (!problem) return;
+    const bool no_view_direction = scene.camera_path[key].eye == scene.camera_path[key].lookat;
+    diagnostics.fail(no_view_direction ? key_location : up_location, *problem);
 }
 
-void read_camera(ObjectReader& file, Scene& scene, const Diagnostics& diagnostics) {
+// Returns the location of each camera key, for messages about the frames between keys.
+std::vector<std::string> read_camera(ObjectReader& file, Scene& scene, const Diagnostics& diagnostics) {
     const std::optional<PathPoints> eyes = read_path_points(file, "eye", "eyeLocations");
     if (!eyes) file.node().fail("scene needs 'eye' (a camera position) or 'eyeLocations' (a camera path)");
     const std::optional<PathPoints> lookats = read_path_points(file, "lookat", "lookatLocations");
@@ -135,6 +123,7 @@ void read_camera(ObjectReader& file, Scene& scene, const Diagnostics& diagnostic
     scene.fov_degrees = fov.number();
     if (!(scene.fov_degrees > 0 && scene.fov_degrees < 180))
         fov.fail("fov_angle must be between 0 and 180 degrees, both excluded (got " + fov.shown() + ")");
+    return per_key.locations;
 }
 
 // --------------------------------------------------------------------------------------
@@ -166,6 +155,33 @@ void read_image_size(ObjectReader& file, const LoadOptions& options, Scene& scen
                           std::to_string(pixels) + " pixels, more than the limit of " +
                           std::to_string(kMaxImagePixels) + " (8192 x 8192)");
     }
+}
+
+// `value` (> 0) rounded up to two significant digits: a suggested minimum that, written as
+// shown, still passes.
+double round_up_to_two_digits(double value) {
+    const double unit = std::pow(10.0, std::floor(std::log10(value)) - 1);
+    return std::ceil(value / unit) * unit;
+}
+
+// A narrow field of view over many pixels can ask for rays closer together than float32
+// directions resolve (value_ranges.h); the smallest fov_angle that works for this size is
+// the actionable part of the message.
+void check_pixel_span(ObjectReader& file, const Scene& scene) {
+    constexpr double kPi = 3.14159265358979323846;
+    const double larger_side = std::max(scene.width, scene.height);
+    const double span = 2 * std::tan(scene.fov_degrees * kPi / 360) / larger_side;
+    if (span >= kMinPixelSpan) return;
+    const double smallest_fov = std::atan(kMinPixelSpan * larger_side / 2) * 360 / kPi;
+    char smallest[32], shown_span[32];
+    std::snprintf(smallest, sizeof smallest, "%.2g", round_up_to_two_digits(smallest_fov * 1.0001));
+    std::snprintf(shown_span, sizeof shown_span, "%.2g", span);
+    file.required("fov_angle")
+        .fail("fov_angle " + number_text(scene.fov_degrees) + " is too narrow for a " + std::to_string(scene.width) +
+              " x " + std::to_string(scene.height) + " image: neighbouring pixels' rays would be " + number_text(std::strtod(shown_span, nullptr)) +
+              " apart, below the " + number_text(kMinPixelSpan) +
+              " that clrender renders exactly enough; use a fov_angle of at least " + smallest +
+              " degrees for this size, or a smaller image");
 }
 
 // --------------------------------------------------------------------------------------
@@ -515,7 +531,7 @@ std::string read_scene_text(const std::string& path) {
     try {
         return read_bounded_file(path, kMaxSceneFileBytes);
     } catch (const BoundedFileError& error) {
-        throw SceneError(path, "", std::string("cannot read scene file: ") + error.what());
+        throw SceneError(printable(path), "", std::string("cannot read scene file: ") + printable(error.what()));
     }
 }
 
@@ -529,8 +545,9 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     const Json document = parse_json_text(text, diagnostics);
 
     ObjectReader file(Node(document, "", "scene", diagnostics), "scene");
-    read_camera(file, scene, diagnostics);
+    const std::vector<std::string> camera_key_locations = read_camera(file, scene, diagnostics);
     read_image_size(file, options, scene);
+    check_pixel_span(file, scene);
     read_background(file, scene);
     read_lighting(file, scene);
     PendingBillboardImages billboard_images;
@@ -538,9 +555,10 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     ImpostorViews impostor_views;
     read_extensions(file, scene, impostor_views);
     check_animation_length(file, scene);
+    check_frames_between_keys(scene, camera_key_locations, diagnostics);
     if (options.samples_override) {
         if (*options.samples_override < 1 || *options.samples_override > kMaxSamplesPerPixel)
-            throw SceneError(path, "", "--spp must be from 1 to " + std::to_string(kMaxSamplesPerPixel));
+            throw SceneError(printable(path), "", "--spp must be from 1 to " + std::to_string(kMaxSamplesPerPixel));
         scene.sampling.samples_per_pixel = *options.samples_override;
     }
     note_unsupported_keys(file);
@@ -548,6 +566,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
     attach_images(scene, images_to_read(scene, billboard_images, impostor_views), options);
     share_view_sets(scene, impostor_views);
+    diagnostics.summarise_warnings();
     return scene;
 }
 

@@ -21,6 +21,12 @@ constexpr double kMaxCoordinate = 1e15;
 constexpr double kMinLength = 1e-15;
 constexpr double kMaxLength = 1e16;
 
+// Neighbouring pixels' rays must differ in direction by at least this much (2 tan(fov/2)
+// divided by the image's larger side): the kernels keep ray directions in float32, whose
+// components resolve about 6e-8, so at a narrower spacing neighbouring pixels get the same
+// ray (a blocky or blank image). 1e-6 leaves a margin of about 16.
+constexpr double kMinPixelSpan = 1e-6;
+
 // The text of the ranges, for messages.
 std::string position_range_text();
 std::string length_range_text();

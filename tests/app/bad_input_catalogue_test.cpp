@@ -479,6 +479,32 @@ std::vector<BadInput> catalogue() {
         {"ResumeOverAFifoNamedAsAFrame", {{"path.json", animation_scene()}}, {},
          "path.json -q --reference --resume -o f_%04d.png --video v.mp4", 4,
          {"f_0001.png: is a named pipe (FIFO)"}, "", false, make_fifo("f_0001.png")},
+        // --- Scene inputs, second round: cameras between path keys, the field of view against
+        // the image size, and messages quoting hostile text (escaped, shortened)
+        bad_scene("EyeMeetsTheLookatPointBetweenKeys",
+                  camera_scene(R"("eyeLocations": [[0, 0, 0], [2, 0, 0]])", R"("lookatLocations": [[2, 0, 0], [0, 0, 0]])"),
+                  {"bad.json: /eyeLocations/0: eye and lookat are the same point [1, 0, 0] at frame 5, between camera keys 0 and 1",
+                   "move key 0 or 1"}),
+        bad_scene("ViewTurnsParallelToUpBetweenKeys",
+                  camera_scene(R"("eyeLocations": [[-1, 0, 5], [1, 0, 5]])", R"("lookatLocations": [[1, -5, 5], [-1, -5, 5]])"),
+                  {"bad.json: /eyeLocations/0: up [0, 1, 0] is parallel to the view direction [0, -1, 0] at frame 5",
+                   "change 'up', or move key 0 or 1"}),
+        bad_scene("FovNarrowerThanFloatRaysResolve",
+                  camera_scene(at_origin, look_at_origin, R"("up": [0, 1, 0])", R"("fov_angle": 1e-300)"),
+                  {"bad.json: /fov_angle: fov_angle 1e-300 is too narrow for a 8 x 6 image",
+                   "use a fov_angle of at least 0.00046 degrees for this size"}),
+        {"FovTooNarrowForTheSizeOnTheCommandLine",
+         {{"scene.json", camera_scene(at_origin, look_at_origin, R"("up": [0, 1, 0])", R"("fov_angle": 0.5)")}}, {},
+         "scene.json --size 16384x4096", 2,
+         {"scene.json: /fov_angle: fov_angle 0.5 is too narrow for a 16384 x 4096 image", "at least 0.94 degrees"}},
+        bad_scene("TerminalControlsInAValueAreEscaped", sphere_scene(R"("radius": 1, "type": "\u009b31m\u202e")"),
+                  {"bad.json: /spheres/0/type: type must be \"sphere\" here, got \"\\xC2\\x9B31m\\xE2\\x80\\xAE\""}),
+        bad_scene("InvalidUtf8InAKeyIsEscaped", "{\"ty\xFF\xFEpe\": 1}",
+                  {"bad.json: line 1, column 5:", "ill-formed UTF-8 byte; last read: '\"ty\\xFF'"}),
+        bad_scene("MegabyteStringBeforeASyntaxError", "{\"eye\": \"" + std::string(1000000, 'a') + "\xFF\"}",
+                  {"bad.json: line 1, column 1000010:", "aaa ... aaa", "aaa\\xFF'"}),
+        {"ScenePathWithANewline", {}, {}, "'two\nlines.json'", 2,
+         {"two\\x0Alines.json: cannot read scene file: no such file"}},
     };
 }
 
