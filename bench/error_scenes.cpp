@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 #include "scene/scene_loader.h"
 
 namespace clr::bench {

@@ -16,13 +16,13 @@ int main(int argc, char** argv) {
         return clr::run(parsed.options);
     } catch (const clr::Error& error) {
         // One line whatever the message quotes (a file name with a newline, an encoder's log).
-        std::cerr << "clrender: error: " << clr::escape_control_characters(error.what()) << "\n";
+        std::cerr << "clrender: error: " << clr::printable(error.what()) << "\n";
         return error.code();
     } catch (const std::bad_alloc&) {
         std::cerr << "clrender: error: out of memory\n";
         return clr::kExitDevice;
     } catch (const std::exception& error) {
-        std::cerr << "clrender: error: " << clr::escape_control_characters(error.what()) << "\n";
+        std::cerr << "clrender: error: " << clr::printable(error.what()) << "\n";
         return clr::kExitDevice;
     }
 }

@@ -106,7 +106,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             return parsed;
         }
         // A usage error, in the same form as every other error of clrender's, and a hint.
-        std::cerr << "clrender: error: " << escape_control_characters(error.what()) << "\nRun with --help for more information.\n";
+        std::cerr << "clrender: error: " << printable(error.what()) << "\nRun with --help for more information.\n";
         parsed.exit_code = 1;
         return parsed;
     }

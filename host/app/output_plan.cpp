@@ -10,7 +10,7 @@
 #include "output/output_target.h"
 #include "output/temp_files.h"
 #include "output/video_encoder.h"
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 
 namespace clr {
 namespace {

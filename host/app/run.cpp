@@ -15,7 +15,7 @@
 #include "device/device_selection.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 #include "render/frame_renderer.h"
 #include "scene/image_loader.h"
 #include "scene/scene_loader.h"
@@ -75,7 +75,7 @@ Scene load(const Options& options) {
     load_options.samples_override = options.samples_per_pixel;
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
-        std::cerr << "clrender: warning: " << escape_control_characters(scene.path + ": " + warning) << "\n";
+        std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
     return scene;
 }
 
@@ -164,10 +164,10 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
 void print_summary(const OutputPlan& plan, const RunReport& report) {
     if (!plan.image_target.empty() && !plan.assemble)
         std::cerr << "clrender: wrote "
-                  << escape_control_characters(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
+                  << printable(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
                   << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
     if (!plan.video_path.empty())
-        std::cerr << "clrender: wrote " << escape_control_characters(plan.video_path) << " (" << plan.frames.size() << " frames)\n";
+        std::cerr << "clrender: wrote " << printable(plan.video_path) << " (" << plan.frames.size() << " frames)\n";
     double kernel_ms = 0;
     for (const FrameRecord& frame : report.frames) kernel_ms += frame.timing.kernel_ms;
     std::cerr << "clrender: " << report.frames.size() << " frame(s), kernel " << kernel_ms << " ms, build "

@@ -1,14 +1,28 @@
-// Text that clrender prints about files it was given: names and messages may hold any byte
-// (a file name with a newline, an encoder's log with terminal escape sequences), and must
-// neither break the one-line form of a message nor drive the terminal.
+// Text clrender did not write itself (a scene's keys and strings, the parser's quote of the
+// file, file names, an image decoder's reason, an encoder's log) made safe to print inside
+// clrender's one-line messages. The one escaper for every message and warning. A file must not be able to break the line, forge
+// other lines, drive the terminal (C0 and C1 control characters: ESC, CSI), reorder what the
+// reader sees (Unicode bidirectional overrides), put invalid UTF-8 on the terminal, or make
+// one message megabytes long (a 60 MB key, a 1 MB string before a syntax error).
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace clr {
 
-// `text` with every control character (bytes below 0x20, and 0x7F) written as \xNN; other
-// bytes, UTF-8 included, stay as they are. Escaping twice changes nothing more.
-std::string escape_control_characters(const std::string& text);
+// `text` with every byte of a control character (C0, DEL, C1 such as U+009B), a
+// bidirectional formatting character (U+200E-200F, U+202A-202E, U+2066-2069) or invalid
+// UTF-8 written as \xNN. Valid UTF-8 otherwise stays as it is.
+std::string printable(const std::string& text);
+
+// `text` itself when it has at most `most` characters (UTF-8 code points); otherwise its
+// first and last parts with " ... " between them, `most` characters in all, never cutting a
+// character in two. Both ends stay: the start says where, the end usually says what.
+std::string shortened(const std::string& text, std::size_t most);
+
+// Longest location and detail in a scene message: a few lines of a terminal.
+constexpr std::size_t kLongestLocation = 160;
+constexpr std::size_t kLongestDetail = 400;
 
 }  // namespace clr

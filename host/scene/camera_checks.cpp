@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "render/camera_path.h"  // the frames' cameras exactly as the renderer will compute them
+#include "scene/camera_path.h"  // the frames' cameras exactly as they will be rendered
 
 namespace clr {
 namespace {

@@ -4,8 +4,6 @@
 
 #include <stb_image.h>
 
-#include "scene/bounded_file.h"
-
 #include <algorithm>
 #include <cerrno>
 #include <climits>
@@ -17,6 +15,9 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "core/printable_text.h"
+#include "scene/bounded_file.h"
 
 namespace clr {
 namespace {
@@ -86,24 +87,6 @@ void check_pixel_count(long long width, long long height, const char* format_nam
                      " pixels is larger than the limit of " + std::to_string(kMaxPixels) + " pixels (8192 x 8192)");
 }
 
-// `text` with every byte that is not printable ASCII written as \xNN: stb's reasons can
-// quote bytes of the file (an unknown PNG chunk's type), and a message must stay one
-// printable line that a file cannot use to forge output or drive the terminal.
-std::string printable(const std::string& text) {
-    static const char kHex[] = "0123456789ABCDEF";
-    std::string out;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7F) {
-            out += c;
-        } else {
-            out += "\\x";
-            out += kHex[byte >> 4];
-            out += kHex[byte & 15];
-        }
-    }
-    return out;
-}
 
 // A sample in 0..maxval as a byte in 0..255, rounded to nearest (halves up).
 std::uint8_t scale_to_byte(std::uint32_t sample, std::uint32_t maxval) {

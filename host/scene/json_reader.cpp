@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "core/errors.h"
-#include "scene/message_text.h"
+#include "core/printable_text.h"
 #include "scene/text_encoding.h"
 
 namespace clr {
@@ -15,7 +15,7 @@ namespace clr {
 
 // Messages quote the file: keys in locations (JSON escapes such as "\u001b" put any
 // character in a key), values, and the text around a syntax error. Each is shortened, then
-// escaped (message_text.h), so that a file can neither break the line nor make it endless.
+// escaped (core/printable_text.h), so that a file can neither break the line nor make it endless.
 // The file's own name comes from the command line and may hold a newline too.
 void Diagnostics::fail(const std::string& location, const std::string& detail) const {
     throw SceneError(printable(file), printable(shortened(location, kLongestLocation)),

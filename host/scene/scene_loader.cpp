@@ -16,7 +16,7 @@
 #include "scene/image_budget.h"
 #include "scene/image_library.h"
 #include "scene/json_reader.h"
-#include "scene/message_text.h"
+#include "core/printable_text.h"
 #include "scene/value_ranges.h"
 
 namespace clr {

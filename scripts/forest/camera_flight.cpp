@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 
 namespace forest {
 

@@ -10,7 +10,7 @@
 
 #include "reference/impostors.h"
 #include "reference/reference.h"
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 #include "render/feature_set.h"
 #include "render/impostor_placement.h"
 #include "support/image_compare.h"

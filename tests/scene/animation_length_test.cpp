@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 #include "support/scene_json.h"
 
 namespace clr {

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 #include "scene/scene_loader.h"
 #include "support/scene_json.h"
 

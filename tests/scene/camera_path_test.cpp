@@ -2,7 +2,7 @@
 // positions are worked out by hand in the comments, or by an independent formula (the
 // uniform Catmull-Rom matrix form, which the centripetal spline equals when all keys are
 // evenly spaced).
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 
 #include <gtest/gtest.h>
 

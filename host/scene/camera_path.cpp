@@ -10,7 +10,7 @@
 //   evaluation itself is per component. Within each segment the knot parameter advances
 //   evenly with the frames, so the direction of motion is continuous at the keys while the
 //   speed may change there (as it does for the linear path).
-#include "render/camera_path.h"
+#include "scene/camera_path.h"
 
 #include <cmath>
 #include <cstddef>

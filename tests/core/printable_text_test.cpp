@@ -1,6 +1,6 @@
 // Text a scene file puts into a message: escaped so that it cannot drive the terminal or
 // break the line, and shortened so that one message stays a few lines long.
-#include "scene/message_text.h"
+#include "core/printable_text.h"
 
 #include <gtest/gtest.h>
 
