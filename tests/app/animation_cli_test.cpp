@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "support/command.h"
+#include "support/small_disk.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -26,7 +27,7 @@ const char* kAnimatedScene = R"({
   "billboards": [{"UpperLeft": [-5, 4, -4], "LowerLeft": [-5, -3, -4], "UpperRight": [5, 4, -4], "ambient": [0.2, 0.6, 0.3]}]
 })";
 
-bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
+using testing::have_program;
 
 // "codec_name=h264\nwidth=64\n..." from ffprobe, or empty without ffprobe.
 std::string probe(const std::string& video) {

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "support/command.h"
+#include "support/small_disk.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -236,10 +237,7 @@ TEST_F(EncoderFaults, SighupWhileTheEncoderStopsReading) {
 
 // ---- A real ffmpeg on a full disk -------------------------------------------------------
 
-bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
-
-// A private mount namespace (as root, or as a user mapped to root) can mount a small tmpfs.
-bool can_mount_a_small_disk() { return std::system("unshare -rm sh -c 'mount -t tmpfs -o size=64k tmpfs /mnt' >/dev/null 2>&1") == 0; }
+using testing::have_program;
 
 struct DiskRun {
     int exit_code = -1;
@@ -261,7 +259,7 @@ DiskRun run_on_small_disk(const TempFolder& work, const std::string& scene, long
                               CLRENDER_BINARY + "' anim.json -q --video anim.mp4 2> ../stderr.txt\necho $? > ../code.txt\n"
                               "ls -A > ../listing.txt\ncp anim.mp4 ../after.mp4\n");
     DiskRun run;
-    if (std::system(("unshare -rm sh '" + work.file("disk.sh") + "'").c_str()) != 0) return run;
+    if (testing::run_in_mount_namespace(work.path(), "sh disk.sh") != 0) return run;
     run.exit_code = std::stoi(read_bytes(work.file("code.txt")));
     run.errors = read_bytes(work.file("stderr.txt"));
     run.listing = read_bytes(work.file("listing.txt"));
@@ -273,7 +271,7 @@ DiskRun run_on_small_disk(const TempFolder& work, const std::string& scene, long
 // front (+faststart), and 1 when it fills earlier: neither may replace the earlier video.
 TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
     if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
-    if (!can_mount_a_small_disk()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
+    if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
     std::string scene = kAnimation;
     const std::string small_size = R"("width": 64, "height": 48)";
     scene.replace(scene.find(small_size), small_size.size(), R"("width": 320, "height": 240)");

@@ -19,6 +19,7 @@
 #include "output/temp_files.h"
 #include "scene/image_loader.h"
 #include "support/command.h"
+#include "support/small_disk.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -297,20 +298,6 @@ TEST(OutputSafety, NextRunRemovesTemporaryFilesOfDeadProcessesOnly) {
 
 // ---- A full disk ------------------------------------------------------------------------
 
-// Runs `script` with sh in a private mount namespace (as root, or as a user namespace's
-// root through unshare -rm), where it may mount a small tmpfs that vanishes with it.
-// Returns false when no such namespace can be had.
-bool mount_namespace_available() {
-    return std::system("unshare -rm sh -c 'mount -t tmpfs -o size=16k tmpfs /mnt' >/dev/null 2>&1") == 0;
-}
-
-int run_in_mount_namespace(const std::string& folder, const std::string& script) {
-    const std::string command = "cd '" + folder + "' && CLRENDER='" + CLRENDER_BINARY + "' timeout 120 unshare -rm sh -ec '" +
-                                script + "'";
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 // The script's preamble: "disk" becomes a 512 KiB tmpfs holding the scene, the texture and an
 // earlier image; then a file fills every free byte of it.
 const char* kFullDisk =
@@ -318,11 +305,11 @@ const char* kFullDisk =
     "(dd if=/dev/zero of=disk/filler bs=4096 2>/dev/null || true); ";
 
 TEST(OutputSafety, ImageWriteOnAFullDiskFailsAndKeepsTheEarlierImage) {
-    if (!mount_namespace_available()) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root or unshare -rm)";
+    if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root or unshare -rm)";
     SceneFolder scene;
     scene.folder.write("old.png", kOldImage);
     fs::create_directory(scene.folder.file("disk"));
-    const int status = run_in_mount_namespace(
+    const int status = testing::run_in_mount_namespace(
         scene.folder.path(), std::string(kFullDisk) +
                                  "cd disk; code=0; \"$CLRENDER\" scene.json -o old.png --reference -q >../output 2>&1 || code=$?; "
                                  "echo $code >../exit_code; ls -A >../listing; cp old.png ../after.png");
@@ -336,13 +323,13 @@ TEST(OutputSafety, ImageWriteOnAFullDiskFailsAndKeepsTheEarlierImage) {
 }
 
 TEST(OutputSafety, StatsWriteOnAFullDiskKeepsTheEarlierImage) {
-    if (!mount_namespace_available()) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root or unshare -rm)";
+    if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root or unshare -rm)";
     SceneFolder scene;
     scene.folder.write("old.png", kOldImage);
     fs::create_directory(scene.folder.file("disk"));
     // The image goes to a folder with room, the stats to the full one: the image is written
     // completely, then the stats fail, and the image must not have been moved into place.
-    const int status = run_in_mount_namespace(
+    const int status = testing::run_in_mount_namespace(
         scene.folder.path(), std::string(kFullDisk) +
                                  "code=0; \"$CLRENDER\" scene.json -o old.png --stats disk/stats.json --reference -q "
                                  ">output 2>&1 || code=$?; echo $code >exit_code; ls -A disk >listing");

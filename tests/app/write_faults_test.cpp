@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "support/command.h"
+#include "support/small_disk.h"
 #include "support/temp_folder.h"
 
 extern char** environ;
@@ -46,17 +47,13 @@ std::set<std::string> names_in(const std::string& folder) {
     return names;
 }
 
-bool have_program(const std::string& name) { return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0; }
-
-bool can_mount_a_small_disk() {
-    return std::system("unshare -rm sh -c 'mount -t tmpfs -o size=16k tmpfs /mnt' >/dev/null 2>&1") == 0;
-}
+using testing::have_program;
 
 // The video is finished and checked before the report is written; the report's folder is a
 // full tmpfs. The video must not be renamed into place before the report is written.
 TEST(WriteFaults, StatsFailingAfterTheVideoKeepsTheEarlierVideo) {
     if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
-    if (!can_mount_a_small_disk()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
+    if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
     TempFolder folder;
     folder.write("anim.json", kAnimation);
     folder.write("anim.mp4", kEarlier);
@@ -65,7 +62,7 @@ TEST(WriteFaults, StatsFailingAfterTheVideoKeepsTheEarlierVideo) {
                            "echo earlier > full/stats.json\n(dd if=/dev/zero of=full/filler bs=4096 2>/dev/null || true)\n"
                            "set +e\n'" + CLRENDER_BINARY + "' anim.json -q --reference --video anim.mp4 --stats full/stats.json"
                            " 2> stderr.txt\necho $? > code.txt\nls -A full > full-listing.txt\n");
-    ASSERT_EQ(std::system(("unshare -rm sh '" + folder.file("run.sh") + "'").c_str()), 0);
+    ASSERT_EQ(testing::run_in_mount_namespace(folder.path(), "sh run.sh"), 0);
     const std::string errors = read_bytes(folder.file("stderr.txt"));
     EXPECT_EQ(read_bytes(folder.file("code.txt")), "4\n") << errors;
     EXPECT_NE(errors.find("full/stats.json: write failed: No space left on device"), std::string::npos) << errors;
