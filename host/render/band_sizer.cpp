@@ -37,8 +37,9 @@ std::vector<double> row_work(int objects, int width, int height) {
 
 BandSizer::BandSizer(double target_seconds) : target_seconds_(target_seconds) {}
 
-void BandSizer::start_frame(std::vector<double> work, int samples) {
+void BandSizer::start_frame(std::vector<double> work, int samples, int width) {
     height_ = static_cast<int>(work.size());
+    width_ = std::max(1, width);
     work_before_.assign(work.size() + 1, 0);
     for (std::size_t row = 0; row < work.size(); ++row) work_before_[row + 1] = work_before_[row] + work[row];
     samples_ = std::max(1, samples);
@@ -66,6 +67,8 @@ int BandSizer::next_rows(int first_row, int limit) const {
         rows = rows_within(first_row, target_seconds_ / 2 / seconds_per_work_);
     else
         rows = std::min(rows_within(first_row, target_seconds_ / seconds_per_work_), kGrowth * previous_rows_);
+    const double most_rows = kMostSamplesPerBand / (static_cast<double>(width_) * samples_);
+    rows = static_cast<int>(std::min<double>(rows, std::max(1.0, most_rows)));
     // Bands that end on a screen tile's last row give the packet kernel whole tiles.
     if (rows >= kClrTileSize) rows = (first_row + rows) / kClrTileSize * kClrTileSize - first_row;
     // A last sliver of rows would cost a launch of its own: the band takes it along.

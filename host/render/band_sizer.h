@@ -6,6 +6,9 @@
 // Rows do not cost the same: sky is cheap, rows through many objects are not. Each row comes
 // with an estimate of its work (row_work()), and the sizer measures seconds per unit of work,
 // so that a band over cheap rows does not make the next one, over expensive rows, far too long.
+// The estimate cannot see everything (mirrors, shadows, texture lookups), so no band holds more
+// than kMostSamplesPerBand samples either: after a run of cheap rows (sky) the next band over
+// costly ones (a mirrored floor) could otherwise take many seconds.
 #pragma once
 
 #include <vector>
@@ -26,8 +29,12 @@ public:
     // `target_seconds`: the wall time a band aims at.
     explicit BandSizer(double target_seconds);
 
-    // Starts a frame: `work` per row (row_work()), `samples` per pixel.
-    void start_frame(std::vector<double> work, int samples);
+    // Samples a band holds at the most, whatever the estimate says: about 0.1 s on two CPU cores
+    // with PoCL, so even rows ten times costlier than average end a band within a second.
+    static constexpr double kMostSamplesPerBand = 1 << 23;
+
+    // Starts a frame of `width` pixels a row: `work` per row (row_work()), `samples` per pixel.
+    void start_frame(std::vector<double> work, int samples, int width);
 
     // Rows for the band starting at `first_row`, at most `limit` (what one buffer holds).
     int next_rows(int first_row, int limit) const;
@@ -44,6 +51,7 @@ private:
     double seconds_per_work_ = 0;  // one unit of row work, one sample; 0 until measured
     std::vector<double> work_before_;  // work of rows 0 .. r - 1, for r = 0 .. height
     int samples_ = 1;
+    int width_ = 1;
     int height_ = 0;
     int previous_rows_ = 0;  // the last band of this frame; 0 before its first
 };

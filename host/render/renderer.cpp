@@ -251,7 +251,7 @@ Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
         int objects = static_cast<int>(geometry().spheres.size() + geometry().billboards.size());
         work = row_work(objects, camera.width, camera.height);
     }
-    band_sizer_.start_frame(std::move(work), camera.samples);
+    band_sizer_.start_frame(std::move(work), camera.samples, camera.width);
     double kernel_ms = render_bands(camera, image);
     if (timing) {
         timing->kernel_ms = kernel_ms;

@@ -19,9 +19,9 @@ struct Band {
 };
 
 // Splits a frame the way Renderer::render_bands does, row `row` taking `row_seconds(row)`.
-std::vector<Band> split_frame(BandSizer& sizer, const std::vector<double>& work, int samples,
+std::vector<Band> split_frame(BandSizer& sizer, const std::vector<double>& work, int samples, int width,
                               const std::function<double(int)>& row_seconds) {
-    sizer.start_frame(work, samples);
+    sizer.start_frame(work, samples, width);
     const int height = static_cast<int>(work.size());
     std::vector<Band> bands;
     for (int first = 0; first < height;) {
@@ -41,14 +41,14 @@ TEST(BandSizer, BandsOfALongFrameTakeAboutTheTargetTime) {
     BandSizer sizer(kTarget);
     // 4096 rows of 10 ms each: 41 s in all.
     std::vector<double> work = row_work(10, 4096, 4096);
-    std::vector<Band> bands = split_frame(sizer, work, 64, [](int) { return 0.01; });
+    std::vector<Band> bands = split_frame(sizer, work, 64, 4096, [](int) { return 0.01; });
     EXPECT_LE(bands.front().seconds, 0.05) << "the first band, before any measurement, is short";
     for (const Band& band : bands) EXPECT_LE(band.seconds, kTarget * 1.3) << band.first;
     long near_target = std::count_if(bands.begin(), bands.end(), [](const Band& band) { return band.seconds >= kTarget * 0.5; });
     EXPECT_GE(near_target, static_cast<long>(bands.size()) - 4) << "after a short ramp, bands are not needlessly small";
 
     // The next frame starts from what this one measured.
-    std::vector<Band> next = split_frame(sizer, work, 64, [](int) { return 0.01; });
+    std::vector<Band> next = split_frame(sizer, work, 64, 4096, [](int) { return 0.01; });
     EXPECT_GE(next.front().seconds, kTarget * 0.3);
     EXPECT_LE(next.front().seconds, kTarget * 1.3);
 }
@@ -58,20 +58,33 @@ TEST(BandSizer, RowsThatCostMoreWorkGetSmallerBands) {
     // Sky above a dense scene whose rows the estimate says cost 40 times more, and do.
     std::vector<double> work(2048, 2048);
     for (int row = 1024; row < 2048; ++row) work[row] *= 40;
-    std::vector<Band> bands = split_frame(sizer, work, 16, [](int row) { return row < 1024 ? 0.0005 : 0.02; });
+    std::vector<Band> bands = split_frame(sizer, work, 16, 2048, [](int row) { return row < 1024 ? 0.0005 : 0.02; });
     for (const Band& band : bands) EXPECT_LE(band.seconds, kTarget * 1.3) << band.first << " +" << band.rows;
+}
+
+TEST(BandSizer, RowsCostlierThanTheEstimateSaysStillGiveShortBands) {
+    BandSizer sizer(kTarget);
+    // A 4096x4096 still at 128 samples: empty sky whose tiles the packet kernel skips (a
+    // microsecond a row), then a mirrored floor whose rows the estimate calls equal to the
+    // sky's but that cost 10 ms each. Bands grown over the sky (fourfold each time) would take
+    // many seconds over the floor: the demo scene at this size once took 14 s to stop.
+    std::vector<double> work = row_work(1, 4096, 4096);
+    std::vector<Band> bands = split_frame(sizer, work, 128, 4096, [](int row) { return row < 2048 ? 1e-6 : 0.01; });
+    for (const Band& band : bands) EXPECT_LE(band.seconds, 1.0) << band.first << " +" << band.rows;
+    for (const Band& band : bands)
+        EXPECT_LE(double(band.rows) * 4096 * 128, BandSizer::kMostSamplesPerBand) << band.first << " +" << band.rows;
 }
 
 TEST(BandSizer, AQuickFrameIsOneBand) {
     BandSizer sizer(kTarget);
     std::vector<double> work = row_work(5, 640, 360);
-    split_frame(sizer, work, 1, [](int) { return 1e-5; });  // measured once
-    EXPECT_EQ(split_frame(sizer, work, 1, [](int) { return 1e-5; }).size(), 1u);
+    split_frame(sizer, work, 1, 640, [](int) { return 1e-5; });  // measured once
+    EXPECT_EQ(split_frame(sizer, work, 1, 640, [](int) { return 1e-5; }).size(), 1u);
 }
 
 TEST(BandSizer, BandsEndOnScreenTileRows) {
     BandSizer sizer(kTarget);
-    std::vector<Band> bands = split_frame(sizer, row_work(3, 1920, 1080), 4, [](int) { return 0.004; });
+    std::vector<Band> bands = split_frame(sizer, row_work(3, 1920, 1080), 4, 1920, [](int) { return 0.004; });
     ASSERT_GT(bands.size(), 3u);
     for (std::size_t i = 0; i + 1 < bands.size(); ++i) {
         if (bands[i].rows >= 16) EXPECT_EQ((bands[i].first + bands[i].rows) % 16, 0) << "band " << i;
