@@ -27,8 +27,9 @@ public:
     static constexpr std::size_t kSmallestStoredBytes = 1u << 20;
     static constexpr std::uint64_t kDefaultSizeLimit = std::uint64_t(1) << 30;
     // Part of every key and header: a change of the entry layout or of what decoding produces
-    // (e.g. rounding of 16-bit samples) must bump it, so that old entries stop matching.
-    static constexpr std::uint32_t kFormatVersion = 2;
+    // (e.g. rounding of 16-bit samples) or of which files decode at all (3: JPEG scans using
+    // undefined Huffman tables are refused) must bump it, so that old entries stop matching.
+    static constexpr std::uint32_t kFormatVersion = 3;
 
     // The SHA-256 of the source file's bytes and of what decodes them.
     using Key = Sha256Digest;

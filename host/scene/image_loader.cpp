@@ -18,6 +18,7 @@
 
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
+#include "scene/jpeg_checks.h"
 
 namespace clr {
 namespace {
@@ -129,40 +130,6 @@ void decode_with_stb(const Bytes& bytes, const char* format_name, Image& image) 
     if (!pixels) throw stb_error(format_name);
     const std::size_t count = static_cast<std::size_t>(image.width) * image.height * kRgba;
     image.rgba.assign(pixels.get(), pixels.get() + count);
-}
-
-// stb_image 2.27, the version Debian 12 packages, trusts the code counts of a JPEG Huffman
-// table: counts that add up to more than 256 make it write past its 256-entry tables, a
-// heap overflow with bytes taken from the file (nothings/stb issue #1289, fixed upstream
-// after 2.27; found here by fuzz/image_fuzzer.cpp). The JPEG standard allows at most 256
-// codes a table, so such a file is corrupt and is refused before stb sees it.
-//
-// Rather than follow the file's segments as stb does (and risk disagreeing with it on where
-// they are), every FF C4 (DHT) marker byte pair is taken as the start of a DHT segment: stb
-// reads a table only right after one, and in entropy-coded data an FF byte is always
-// followed by 00 or a marker, so real tables are never missed. Each table is the table
-// class/id byte, 16 code counts and the codes; the next one starts right after it, so a
-// position needs checking only once however many candidate segments reach it.
-void check_jpeg_huffman_tables(const Bytes& bytes) {
-    const auto byte_at = [&](std::size_t i) -> unsigned { return i < bytes.size() ? bytes[i] : 0; };  // as stb
-    std::vector<bool> checked(bytes.size(), false);
-    for (std::size_t marker = 0; marker + 1 < bytes.size(); ++marker) {
-        if (bytes[marker] != 0xFF || bytes[marker + 1] != 0xC4) continue;
-        // Tables follow the marker and the segment's 2-byte length. The length is ignored,
-        // which can only check more tables than stb reads, never fewer.
-        for (std::size_t table = marker + 4; table < bytes.size() && !checked[table];) {
-            checked[table] = true;
-            const unsigned class_and_id = bytes[table];
-            if ((class_and_id >> 4) > 1 || (class_and_id & 15) > 3) break;  // stb rejects the file here
-            unsigned codes = 0;
-            for (std::size_t length = 1; length <= 16; ++length) codes += byte_at(table + length);
-            if (codes > 256) {
-                throw ImageError("corrupt JPEG: a Huffman table declares " + std::to_string(codes) +
-                                 " codes, more than the 256 a table can hold");
-            }
-            table += 17 + codes;
-        }
-    }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -353,6 +320,7 @@ std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned ch
         case FileFormat::Png: decode_with_stb(bytes, "PNG", *image); break;
         case FileFormat::Jpeg:
             check_jpeg_huffman_tables(bytes);
+            check_jpeg_scans_use_defined_tables(bytes);
             decode_with_stb(bytes, "JPEG", *image);
             break;
         case FileFormat::PpmAscii: read_ppm(bytes, true, *image); break;

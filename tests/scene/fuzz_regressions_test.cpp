@@ -91,6 +91,81 @@ TEST(FuzzRegression, HuffmanTableCheckLeavesValidJpegsAlone) {
     EXPECT_EQ(load_failure(jpeg.substr(0, 2) + segment + jpeg.substr(2)), "");
 }
 
+// Found by the image fuzzer (JPEG corpus) in a CI run: a progressive JPEG whose AC scan
+// decodes with AC table 0, which no DHT segment defines. stb_image 2.27 allocates its decoder
+// without clearing it and indexed the undefined table with garbage (UndefinedBehaviorSanitizer:
+// index out of bounds in stbi__jpeg_huff_decode). Its APP0 segment is one byte short, which
+// stb skips over and the check refuses, since past stray bytes it could not be sure where stb
+// finds its segments (the next test reaches the scan itself).
+TEST(FuzzRegression, JpegScanWithAnUndefinedHuffmanTableIsRefused) {
+    const char kFinding[] =
+        "\xFF\xD8\xFF\xE0\x00\x10\x4A\x46\x49\x46\x00\x01\x01\x21\x00\x00\x01\x00\x01\x00\x00\xFF\xDB\x00"
+        "\x43\x00\x08\x06\x06\x07\x06\x05\x08\x07\x07\x07\x09\x09\x08\x0A\x0C\x14\x0D\x0C\x0B\x0B\x0C\x19"
+        "\x12\x13\x0F\x14\x1D\x1A\x1F\x1E\x1D\x1A\x1C\x1C\x20\x24\x2E\x27\x20\x22\x2C\x23\x1C\x1C\x28\x33"
+        "\x29\x2C\x30\x31\xFF\x00\x34\x34\x34\x1F\x27\x39\x3D\x38\x32\x3C\x2E\x33\x34\x32\xFF\xC2\x00\x0B"
+        "\x08\x00\x11\x00\x18\x01\x01\x11\x00\xFF\xC4\x00\x16\x00\x01\x01\x01\x00\x00\x00\x00\x00\x00\x00"
+        "\x00\x00\x00\x00\x00\x00\x02\x04\x01\xFF\xDA\x00\x08\x01\x01\x00\x00\x00\x26\x10\x01\x00\x02\x02"
+        "\x02\x02\x03\x00\x00\x00\x00\x00\x00\x00\x00\x00\x01\xC7\x21\x00\x31\x41\x51\x91\xF0\x10\x61\x71"
+        "\xFF\xDA\x00\x08\x01\x01\x00\x01\x3F\x21\xB9\x32\x90\xAE\x40\x08\x8C\x32\x98\xCA\x36\x0A\x78\x48"
+        "\xF1\x92\xE9\xC7\x0D\x87\x93\x13\xAE\x70\x1E\x91\xAA\x70\x98\xAD\x8C\x3F\xBC\xB0\x03\x40\x8F\xB1"
+        "\x90\x37\x53\xB6\x6C\xCC\x71\x4B\x3D\xEF\x6C\xF7\x1D\x7C\x08\xFF\xDA\x00\x08\x01\x01\x00\x00\x00"
+        "\x10\xFF\xD8\xFF\xE0\x00\x10\x4A\x46\x49\x46\x00\x01\x01\x21\x00\x00\x01\x00\x01\x00\x00\xFF\xDB"
+        "\x00\x43\x00\x08\x06\x06\x07\x06\x05\x08\x07\x07\x07\x09\x09\x08\x0A\x0C\x14\x0D\x0C\x0B\x0B\x0C"
+        "\x19\x12\x13\x0F\x14\x1D\x1A\x1E\x1A\x1D\x1F\x1C\x1C\x20\x24\x2E\x27\x20\x22\x2C\x23\x1C\x1C\x28"
+        "\x37\x29\x2C\x30\x31\xFF\x00\x34\x34\x34\x1F\x27\x39\x3D\x38\x32\x3C\x2E\x33\x34\x32\xFF\xC2\x00"
+        "\x0B\x08\x00\x11\x00\x18\x01\x01\x11\x00\xFF\xC4\x00\x16\x00\x01\x01\x01\x00\x00\x00\x00\x00\x00"
+        "\x00\x00\x00\x00\x00\x00\x00\x02\x04\x01\xFF\x01\x11\x00\x01\x01\x00\x00\x00\x01\xA1\xEC\x8B\xDA"
+        "\xFF\xDA\xC4\x1E\x00\x10\x00\x02\x01\x03\x05\x00\x00\x00\x01\x13\x00\x00\x00\x00\x00\x00\x02\x03"
+        "\x01\x04\x13\x34\x00\x11\x24\x31\x93\x13\xAE\x70\xFB\xFE\xFE\x87\xFF\x00\xFF\xD9\x29\x2C\x30\x31"
+        "\xFF\x00\x34\x34\x34\x1F\x27\x39\x3D\x38\x32\x3C\x2E\x33\x34\x32\xFF\xC2\x00\x0B\x08\x00\x11\x00"
+        "\x18\x01\x01\x11\x00\xFF\xC4\x00\x16\x00\x01\x01\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00"
+        "\x00\x00\x02\x04\x01\xFF\xDA\x00\x08\x01\x01\x00\x00\x00\x01\xA1\xEC\x8B\xDA\xFF\xDA\xC4\x1E\x00"
+        "\x10\x00\x02\x01\x03\x05\x00";
+    EXPECT_EQ(load_failure(bytes_of(kFinding)), "corrupt JPEG: stray bytes between segments at byte 20");
+}
+
+// A valid baseline JPEG whose AC table 0 is renamed AC table 2: its scans still decode with
+// AC table 0, which is now never defined. stb would index the undefined table; the check
+// refuses the scan first.
+TEST(FuzzRegression, JpegScanUsingATableNeverDefinedIsRefused) {
+    std::string jpeg;
+    const std::vector<unsigned char> rgb(16 * 16 * 3, 90);
+    stbi_write_jpg_to_func([](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size); },
+                           &jpeg, 16, 16, 3, rgb.data(), 90);
+    ASSERT_EQ(load_failure(jpeg), "");
+    const std::size_t dht = jpeg.find("\xFF\xC4");
+    ASSERT_NE(dht, std::string::npos);
+    bool renamed = false;
+    for (std::size_t table = dht + 4; table < jpeg.size() && !renamed;) {  // the segment's tables
+        std::size_t codes = 0;
+        for (int length = 1; length <= 16; ++length) codes += static_cast<unsigned char>(jpeg[table + length]);
+        if (jpeg[table] == '\x10') {
+            jpeg[table] = '\x12';
+            renamed = true;
+        }
+        table += 17 + codes;
+    }
+    ASSERT_TRUE(renamed) << "stb's JPEG writer defines AC table 0 in its first DHT segment";
+    EXPECT_EQ(load_failure(jpeg),
+              "corrupt JPEG: a scan decodes with AC Huffman table 0, which no table definition (DHT) before it gives");
+}
+
+// Every JPEG that stb writes, baseline at several qualities and sizes, still loads: the check
+// follows the segments as stb does and finds every table the scans use.
+TEST(FuzzRegression, UndefinedTableCheckLeavesValidJpegsAlone) {
+    for (int quality : {10, 50, 90, 100}) {
+        for (int size : {1, 8, 17, 64}) {
+            std::string jpeg;
+            std::vector<unsigned char> rgb(size * size * 3);
+            for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<unsigned char>(i * 37);
+            stbi_write_jpg_to_func(
+                [](void* out, void* data, int length) { static_cast<std::string*>(out)->append(static_cast<char*>(data), length); },
+                &jpeg, size, size, 3, rgb.data(), quality);
+            EXPECT_EQ(load_failure(jpeg), "") << "quality " << quality << ", " << size << "x" << size;
+        }
+    }
+}
+
 // Found by the image fuzzer (PNG corpus): a 16-bit PNG whose first IDAT chunk is empty. stb
 // copies its zero bytes with memcpy from a null buffer, undefined behaviour by the letter of
 // C (UndefinedBehaviorSanitizer: null pointer passed as argument 1) though harmless on every
