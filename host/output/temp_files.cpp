@@ -16,16 +16,12 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/sha256.h"
 
 namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::uint32_t fnv1a(const std::string& text, std::uint32_t hash = 2166136261u) {
-    for (unsigned char c : text) hash = (hash ^ c) * 16777619u;
-    return hash;
-}
 
 std::string first_line_of(const char* path) {
     std::ifstream in(path);
@@ -44,11 +40,13 @@ std::string host_name() {
 std::string compute_host_id() {
     std::error_code ignored;
     const std::string pid_namespace = fs::read_symlink("/proc/self/ns/pid", ignored).string();
-    std::uint32_t hash = fnv1a(first_line_of("/etc/machine-id"));
-    hash = fnv1a("\n" + host_name() + "\n" + pid_namespace, hash);
-    char hex[9];
-    std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(hash));
-    return hex;
+    try {
+        Sha256 hash;
+        hash.add_field(first_line_of("/etc/machine-id")).add_field(host_name()).add_field(pid_namespace);
+        return to_hex(hash.finish()).substr(0, 8);  // eight hex digits: the name must stay short
+    } catch (const std::exception&) {  // libcrypto unusable: a fixed id still names our files
+        return "00000000";
+    }
 }
 
 const std::regex& temp_name_form() {
