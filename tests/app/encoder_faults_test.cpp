@@ -218,9 +218,12 @@ TEST_F(EncoderFaults, EncoderLogIsQuotedOnOneEscapedLine) {
     EXPECT_EQ(count_of(outcome.errors, "\n"), 1) << "one line: " << outcome.errors;
 }
 
-// Under the default 60 s stall timeout such an encoder wrote about a gigabyte of log a second.
+// An encoder that floods its log and never exits: under the default 60 s stall timeout one
+// writing a warning per pixel filled a gigabyte a second. This one writes 3 MB and then waits,
+// so that the test itself never loads the disk: without the 1 MiB bound clrender would wait
+// for the stall timeout, past the test's watchdog.
 TEST_F(EncoderFaults, EncoderFloodingItsLog) {
-    const std::string fake = fake_encoder("yes 'a warning, again' >&2 &\ncat > /dev/null\nwait");
+    const std::string fake = fake_encoder("yes 'a warning, again' | head -c 3000000 >&2\ncat > /dev/null\nexec sleep 1000");
     const Outcome outcome = run(encoder_env(fake), "anim.json -q --video anim.mp4");
     expect_exit_4(outcome, "the encoder wrote more than 1 MiB of messages to its log");
 }
