@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/printable_text.h"
+#include "scene/limits.h"
 
 namespace clr {
 namespace {
@@ -66,7 +67,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--size", size, "Override the scene's resolution, e.g. 1920x1080");
     app.add_option("--spp", options.samples_per_pixel,
                    "Samples per pixel (anti-aliasing); overrides the scene's clrender.spp (default 1: pixel centres)")
-        ->check(CLI::Range(1, 4096));
+        ->check(CLI::Range(1, kMaxSamplesPerPixel));
     std::string precision = "float";
     app.add_option("--precision", precision,
                    "Arithmetic of the kernels' geometry: float (default) or double (needs a device with "

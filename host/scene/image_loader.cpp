@@ -19,6 +19,7 @@
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/jpeg_checks.h"
+#include "scene/limits.h"
 
 namespace clr {
 namespace {
@@ -74,20 +75,19 @@ FileFormat detect_format(const Bytes& bytes) {
     throw ImageError("unsupported image format (PNG, JPEG, PPM P3 and P6 are read)");
 }
 
-// The largest image read, in pixels: as large as the largest frame clrender renders
-// (8192 x 8192, 256 MiB as RGBA), more than any billboard needs. A compressed file can claim
-// a huge raster in a few bytes (the image fuzzer found a 1.6 KB JPEG that decodes to
-// 49680 x 255 texels, and the decoders accept up to 2 GiB of pixels), so the size is checked
-// from the header, before anything is allocated or decoded. PPM needs no such limit: its
-// raster is stored uncompressed, so a header larger than the file is refused as truncated.
-constexpr long long kMaxPixels = 8192LL * 8192LL;
-
+// The largest image read, in pixels, is kMaxImagePixels (scene/limits.h): as large as the
+// largest frame clrender renders (8192 x 8192, 256 MiB as RGBA), more than any billboard
+// needs. A compressed file can claim a huge raster in a few bytes (the image fuzzer found a
+// 1.6 KB JPEG that decodes to 49680 x 255 texels, and the decoders accept up to 2 GiB of
+// pixels), so the size is checked from the header, before anything is allocated or decoded.
+// PPM needs no such limit: its raster is stored uncompressed, so a header larger than the
+// file is refused as truncated.
 void check_pixel_count(long long width, long long height, const char* format_name) {
-    if (width * height <= kMaxPixels) return;
+    if (width * height <= kMaxImagePixels) return;
     throw ImageError(std::string(format_name) + " image of " + std::to_string(width) + " x " + std::to_string(height) +
-                     " pixels is larger than the limit of " + std::to_string(kMaxPixels) + " pixels (8192 x 8192)");
+                     " pixels is larger than the limit of " + std::to_string(kMaxImagePixels) + " pixels (" +
+                     max_square_image_text() + ")");
 }
-
 
 // A sample in 0..maxval as a byte in 0..255, rounded to nearest (halves up).
 std::uint8_t scale_to_byte(std::uint32_t sample, std::uint32_t maxval) {
@@ -269,7 +269,7 @@ std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
     const int length = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels_in_file = 0;
     if (!stbi_info_from_memory(bytes.data(), length, &width, &height, &channels_in_file)) return std::nullopt;
-    if (static_cast<long long>(width) * height > kMaxPixels) return std::nullopt;  // refused as too large when decoded
+    if (static_cast<long long>(width) * height > kMaxImagePixels) return std::nullopt;  // refused as too large when decoded
     const bool sixteen_bit = stbi_is_16_bit_from_memory(bytes.data(), length) != 0;
     // stb_image holds the inflated samples and its output at once (two RGBA buffers, of 16-bit
     // samples for a 16-bit PNG), then its output and our 8-bit copy: 8 or 16 bytes a pixel at

@@ -153,7 +153,7 @@ void read_image_size(ObjectReader& file, const LoadOptions& options, Scene& scen
         file.node().diagnostics().fail(
             location, "the image has " + std::to_string(scene.width) + " x " + std::to_string(scene.height) + " = " +
                           std::to_string(pixels) + " pixels, more than the limit of " +
-                          std::to_string(kMaxImagePixels) + " (8192 x 8192)");
+                          std::to_string(kMaxImagePixels) + " (" + max_square_image_text() + ")");
     }
 }
 

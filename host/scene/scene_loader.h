@@ -6,21 +6,14 @@
 #include <optional>
 #include <string>
 
+#include "scene/limits.h"
 #include "scene/scene.h"
 
 namespace clr {
 
-// Largest image the loader accepts, so that a frame (RGBA, 4 bytes a pixel, plus a ray and
-// a hit record per pixel for the stage kernels) stays well inside memory.
-constexpr int kMaxImageSide = 16384;
-constexpr long long kMaxImagePixels = 8192LL * 8192LL;
-
 // Largest scene file read. The biggest generated scenes (scripts/forest) are a few MiB; a
 // parsed document takes several times its text in memory.
 constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(64) << 20;
-
-// Most samples per pixel (anti-aliasing) a scene or --spp may ask for.
-constexpr int kMaxSamplesPerPixel = 4096;
 
 struct LoadOptions {
     // Render a placeholder image (see make_placeholder_image) for a billboard image that is
