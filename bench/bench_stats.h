@@ -2,7 +2,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 namespace clr::bench {
@@ -25,9 +24,5 @@ inline double mrays_per_s(int width, int height, double ms) {
 // small next to it, and repeating it would take minutes (brute-force kernels on the big
 // scenes). Keeps a whole run within about two minutes on a 2-core machine.
 constexpr double kSlowFrameMs = 2000;
-
-inline double ms_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace clr::bench

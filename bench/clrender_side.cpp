@@ -1,8 +1,8 @@
 #include "bench/clrender_side.h"
 
-#include <chrono>
 
 #include "bench/bench_stats.h"
+#include "core/stopwatch.h"
 #include "render/device_camera.h"
 
 namespace clr::bench {
@@ -18,20 +18,20 @@ ClrCamera thumbnail_of(const Scene& scene) {
 
 ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, const ClrCamera& camera)
     : camera_(camera), key_(scene.camera_path.front()), faces_camera_(!scene.impostors.empty()) {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     renderer_.emplace(device, scene);
-    setup_ms_ = ms_since(start);
+    setup_ms_ = stopwatch.elapsed_ms();
     renderer_->render_frame(thumbnail_of(scene));
 }
 
 ClrenderFrame ClrenderSide::render_frame() {
     FrameTiming timing;
     renderer_->recycle(std::move(image_));  // as an interactive viewer reuses its framebuffer
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     // With impostors the frame's time includes placing them for the eye (and uploading them),
     // which every frame of a moving camera pays; the scene's size is the benchmark's.
     image_ = faces_camera_ ? renderer_->render_view(key_, &timing) : renderer_->render_frame(camera_, &timing);
-    return {timing.kernel_ms, ms_since(start)};
+    return {timing.kernel_ms, stopwatch.elapsed_ms()};
 }
 
 }  // namespace clr::bench

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -25,6 +24,7 @@
 
 #include "bench/bench_scenes.h"
 #include "bench/bench_stats.h"
+#include "core/stopwatch.h"
 #include "render/compiled_scene.h"
 
 namespace clr::bench {
@@ -328,7 +328,7 @@ struct EmbreePeer::State {
 };
 
 EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std::make_unique<State>()) {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     PeerScene& peer = state_->peer;
     peer.compiled = compile_scene(scene);
     peer.billboard_boxes = compute_billboard_boxes(placed_scene(scene, peer.compiled));  // impostors as placed
@@ -349,16 +349,16 @@ EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std
                              intersect_billboard);
     rtcCommitScene(rtc_scene);
     throw_on_error(device, "building the scene");
-    build_ms_ = ms_since(start);
+    build_ms_ = stopwatch.elapsed_ms();
     state_->tracer.emplace(rtc_scene, camera, static_cast<int>(scene.spheres.size()));
 }
 
 EmbreePeer::~EmbreePeer() = default;
 
 double EmbreePeer::trace_frame() {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     state_->tracer->trace(ids_);
-    double ms = ms_since(start);
+    double ms = stopwatch.elapsed_ms();
     throw_on_error(state_->device.get(), "tracing");
     return ms;
 }

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -21,6 +20,7 @@
 
 #include "bench/bench_program.h"
 #include "bench/bench_stats.h"
+#include "core/stopwatch.h"
 #include "bench/error_metrics.h"
 #include "bench/error_report.h"
 #include "bench/error_scenes.h"
@@ -136,9 +136,9 @@ std::unique_ptr<Renderer> make_renderer(DeviceContext& device, const ErrorScene&
 // One frame of `view`, timed: the kernel from OpenCL's profiling, the wall time around it all.
 Image render_timed(Renderer& renderer, const ErrorScene& view, double* kernel_ms, double* wall_ms) {
     FrameTiming timing;
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     Image image = renderer.render_view(view.key, &timing, view.frame);
-    if (wall_ms) *wall_ms = ms_since(start);
+    if (wall_ms) *wall_ms = stopwatch.elapsed_ms();
     if (kernel_ms) *kernel_ms = timing.kernel_ms;
     return image;
 }
@@ -163,9 +163,9 @@ std::vector<std::unique_ptr<Renderer>> set_up_settings(DeviceContext& device, co
             ErrorRow row;
             row.double_precision = double_precision;
             row.spp = spp;
-            auto start = std::chrono::steady_clock::now();
+            const Stopwatch stopwatch;
             renderers.push_back(make_renderer(device, view, spp, double_precision));
-            row.build_ms = ms_since(start);
+            row.build_ms = stopwatch.elapsed_ms();
             render_timed(*renderers.back(), view, nullptr, nullptr);
             rows.push_back(row);
         }

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/interruption.h"
+#include "core/stopwatch.h"
 #include "output/image_writer.h"
 
 namespace clr {
@@ -101,7 +102,7 @@ std::optional<Image> FrameSink::take_finished() {
 }
 
 void FrameSink::consume(const QueuedFrame& item) {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch write_time;
     if (!plan_.image_target.empty() && !item.on_disk) {
         const std::string path = plan_.image_path(item.frame);
         if (plan_.image_waits_for_stats()) {
@@ -111,7 +112,7 @@ void FrameSink::consume(const QueuedFrame& item) {
         }
     }
     if (encoder_) encoder_->add_frame(item.image);
-    write_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    write_ms_ += write_time.elapsed_ms();
 }
 
 }  // namespace clr

@@ -18,8 +18,7 @@ std::string format_duration(double seconds) {
 }
 
 Progress::Progress(int total_frames, bool quiet)
-    : total_(total_frames), enabled_(!quiet && total_frames > 1 && isatty(STDERR_FILENO)),
-      start_(std::chrono::steady_clock::now()) {}
+    : total_(total_frames), enabled_(!quiet && total_frames > 1 && isatty(STDERR_FILENO)) {}
 
 void Progress::frame_done() {
     ++done_;
@@ -27,7 +26,7 @@ void Progress::frame_done() {
 }
 
 void Progress::draw() const {
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = since_start_.elapsed_seconds();
     double fps = elapsed > 0 ? done_ / elapsed : 0;
     double left = fps > 0 ? (total_ - done_) / fps : 0;
     std::fprintf(stderr, "\rclrender: frame %d/%d  %.1f fps  ETA %s   ", done_, total_, fps, format_duration(left).c_str());

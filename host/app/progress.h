@@ -2,8 +2,9 @@
 // Silent when asked to be, or when standard error is not a terminal (logs stay clean).
 #pragma once
 
-#include <chrono>
 #include <string>
+
+#include "core/stopwatch.h"
 
 namespace clr {
 
@@ -19,7 +20,7 @@ private:
     int total_;
     int done_ = 0;
     bool enabled_;
-    std::chrono::steady_clock::time_point start_;
+    Stopwatch since_start_;
 };
 
 // "1:05" or "12:03:07": a duration for people.

@@ -1,6 +1,5 @@
 #include "app/run.h"
 
-#include <chrono>
 #include <filesystem>
 #include <future>
 #include <iostream>
@@ -9,6 +8,7 @@
 #include "app/frame_sink.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
+#include "core/stopwatch.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
 #include "core/errors.h"
@@ -23,12 +23,7 @@
 namespace clr {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 struct FrameRecord {
     int index = 0;
@@ -122,7 +117,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 
     FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
-    auto start = Clock::now();
+    const Stopwatch render_time;
     for (int frame : plan.frames) {
         throw_if_interrupted();
         if (options.resume && plan.frame_on_disk(frame)) {
@@ -140,7 +135,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     throw_if_interrupted();
     sink.finish();
     progress.finish();
-    report.render_ms = ms_since(start);
+    report.render_ms = render_time.elapsed_ms();
     report.write_ms = sink.write_ms();
     renderer->store_built_programs();  // the outputs are complete: the next run starts faster
 }
@@ -182,13 +177,13 @@ int run(const Options& options) {
         return kExitOk;
     }
     install_interruption_handlers();  // before anything is read or written (caches included)
-    auto start = Clock::now();
+    const Stopwatch run_time;
     RunReport report;
     DeviceList devices;
     if (!options.reference && !options.assemble && !options.print_frame_count)
         devices = std::async(std::launch::async, list_devices);
     Scene scene = load(options);
-    report.load_ms = ms_since(start);
+    report.load_ms = run_time.elapsed_ms();
     if (options.print_frame_count) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;
@@ -205,7 +200,7 @@ int run(const Options& options) {
         assemble_frames(options, scene, plan, report, staged);
     else
         render_frames(options, scene, plan, report, devices, staged);
-    report.total_ms = ms_since(start);
+    report.total_ms = run_time.elapsed_ms();
     if (!plan.stats_path.empty()) staged.add(write_stats(plan.stats_path, report));
     throw_if_interrupted();
     staged.commit_all();
