@@ -7,6 +7,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "support/scene_builder.h"
+
 namespace clr::bench {
 namespace {
 
@@ -102,34 +104,18 @@ std::vector<ImpostorView> impostor_views(std::uint32_t id, int size) {
 }
 
 Sphere make_sphere(const Vec3& center, double radius, std::uint32_t id) {
-    Sphere sphere;
-    sphere.center = center;
-    sphere.radius = radius;
-    sphere.ambient = id_color(id);
-    return sphere;
+    return testing::make_sphere(center, radius, id_color(id));
 }
 
 Billboard make_billboard(const Vec3& upper_left, const Vec3& lower_left, const Vec3& upper_right,
                          std::shared_ptr<const Image> image, std::uint32_t id) {
-    Billboard billboard;
-    billboard.upper_left = upper_left;
-    billboard.lower_left = lower_left;
-    billboard.upper_right = upper_right;
-    billboard.has_ambient = true;
-    billboard.ambient = id_color(id);
-    billboard.image = std::move(image);
-    return billboard;
+    return testing::make_billboard(upper_left, lower_left, upper_right, id_color(id), std::move(image));
 }
 
 Scene empty_scene(const BenchSceneSpec& spec, int width, int height) {
-    Scene scene;
+    Scene scene = testing::make_scene(kEye, kLookat, kUp, kFovDegrees, width, height);
     scene.path = "bench:" + spec.name;
     scene.name = spec.name;
-    scene.camera_path = {{kEye, kLookat}};
-    scene.up = kUp;
-    scene.fov_degrees = kFovDegrees;
-    scene.width = width;
-    scene.height = height;
     scene.background = id_color(kBackgroundId);
     scene.has_sun = false;  // flat shading: the benchmark measures primary rays only
     scene.only_ambient = true;

@@ -6,6 +6,7 @@
 
 #include "scene/camera_path.h"
 #include "scene/scene_loader.h"
+#include "support/scene_builder.h"
 
 namespace clr::bench {
 namespace {
@@ -27,14 +28,9 @@ ErrorScene from_file(const std::string& name, const std::string& root, const std
 
 // A scene with one camera key, no objects, black background and flat shading.
 Scene empty_scene(const std::string& name, const CameraKey& key, double fov_degrees, int width, int height) {
-    Scene scene;
+    Scene scene = testing::make_scene(key.eye, key.lookat, {0, 1, 0}, fov_degrees, width, height);
     scene.path = name + " (generated)";
     scene.name = name;
-    scene.camera_path = {key};
-    scene.up = {0, 1, 0};
-    scene.fov_degrees = fov_degrees;
-    scene.width = width;
-    scene.height = height;
     return scene;
 }
 
@@ -42,28 +38,6 @@ Scene empty_scene(const std::string& name, const CameraKey& key, double fov_degr
 ErrorScene generated(const std::string& name, const std::string& what, Scene scene) {
     CameraKey key = scene.camera_path.front();
     return {name, "generated in bench/error_scenes.cpp: " + what, std::move(scene), key, 0};
-}
-
-Sphere sphere(const Vec3& center, double radius, const Color& color, bool mirror = false) {
-    Sphere s;
-    s.center = center;
-    s.radius = radius;
-    s.ambient = color;
-    s.is_mirror = mirror;
-    return s;
-}
-
-// The billboard spanned by its upper-left, lower-left and upper-right corners.
-Billboard billboard(const Vec3& upper_left, const Vec3& lower_left, const Vec3& upper_right, const Color& color,
-                    std::shared_ptr<const Image> image = nullptr) {
-    Billboard b;
-    b.upper_left = upper_left;
-    b.lower_left = lower_left;
-    b.upper_right = upper_right;
-    b.has_ambient = true;
-    b.ambient = color;
-    b.image = std::move(image);
-    return b;
 }
 
 // An opaque size x size chessboard of orange and blue texels.
@@ -88,10 +62,11 @@ Scene translated_world(const Vec3& origin, int width, int height) {
     scene.background = {0.35, 0.5, 0.75};  // for the mirror to show
     scene.has_sun = true;
     scene.sun_location = origin + Vec3{25, 30, 12};
-    scene.spheres = {sphere(origin, 1, {0.85, 0.35, 0.25}), sphere(origin + Vec3{0.8, 1.5, 0.5}, 0.45, {0.25, 0.85, 0.4}),
-                     sphere(origin + Vec3{-2.3, 0.1, 0.4}, 0.9, {0, 0, 0}, true)};
-    scene.billboards = {billboard(origin + Vec3{-5, 3.5, -3}, origin + Vec3{-5, -2.5, -3}, origin + Vec3{5, 3.5, -3},
-                                  {0, 0, 0}, chessboard(12))};
+    scene.spheres = {testing::make_sphere(origin, 1, {0.85, 0.35, 0.25}),
+                     testing::make_sphere(origin + Vec3{0.8, 1.5, 0.5}, 0.45, {0.25, 0.85, 0.4}),
+                     testing::make_sphere(origin + Vec3{-2.3, 0.1, 0.4}, 0.9, {0, 0, 0}, true)};
+    scene.billboards = {testing::make_billboard(origin + Vec3{-5, 3.5, -3}, origin + Vec3{-5, -2.5, -3},
+                                                origin + Vec3{5, 3.5, -3}, {0, 0, 0}, chessboard(12))};
     return scene;
 }
 
@@ -105,7 +80,7 @@ Scene grazing_floor(int width, int height) {
         for (int j = 0; j < 64; ++j) {
             double x = i, z = -j;
             Color grey = (i + j) % 2 ? Color{0.85, 0.85, 0.85} : Color{0.15, 0.15, 0.15};
-            scene.billboards.push_back(billboard({x, 0, z - 1}, {x, 0, z}, {x + 1, 0, z - 1}, grey));
+            scene.billboards.push_back(testing::make_billboard({x, 0, z - 1}, {x, 0, z}, {x + 1, 0, z - 1}, grey));
         }
     return scene;
 }
