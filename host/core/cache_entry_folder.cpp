@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/cache_folder.h"
+#include "core/replacement_file.h"
 
 namespace clr {
 namespace {
@@ -26,12 +27,6 @@ public:
     OpenFile(const OpenFile&) = delete;
     OpenFile& operator=(const OpenFile&) = delete;
     int get() const { return descriptor_; }
-    // Closes now, reporting whether the last writes reached the file.
-    bool close() {
-        const int descriptor = descriptor_;
-        descriptor_ = -1;
-        return ::close(descriptor) == 0;
-    }
 
 private:
     int descriptor_;
@@ -158,19 +153,12 @@ void CacheEntryFolder::store(const Sha256Digest& key, const std::array<std::uint
                              const unsigned char* payload, std::size_t size) const {
     const std::string folder = usable_cache_subfolder(root_, subfolder_, /*create=*/true);
     if (folder.empty() || size > kind_.largest_payload) return;
-    const std::string final_path = path(key);
-    const std::string temporary_path = folder + "/" + temporary_name_for(to_hex(key) + "." + kind_.extension);
-    bool written = false;
-    {
-        OpenFile file(::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600));
-        if (file.get() < 0) return;
-        written = write_cache_entry(file.get(), kind_, key, detail, payload, size) && file.close();
-    }
-    // Renamed only when whole: a full disk leaves no partial entry under a final name.
-    if (!written || ::rename(temporary_path.c_str(), final_path.c_str()) != 0) {
-        ::unlink(temporary_path.c_str());
-        return;
-    }
+    ReplacementFile file(folder + "/" + temporary_name_for(to_hex(key) + "." + kind_.extension), 0600);
+    if (!file.created()) return;
+    // Renamed only when whole: a full disk leaves no partial entry under a final name. Not
+    // synced: a cache entry lost in a crash is only a miss, and its checksum catches a torn one.
+    const bool written = write_cache_entry(file.descriptor(), kind_, key, detail, payload, size);
+    if (!file.close(/*sync=*/false) || !written || !file.rename_onto(path(key))) return;
     evict();
 }
 

@@ -40,24 +40,18 @@ AtomicFile::AtomicFile(std::string final_path) : final_path_(std::move(final_pat
         throw OutputError("'" + final_path_ + "' is not a file name");
     }
     target_path_ = resolve_output_target(final_path_);
-    temp_path_ = temp_path_in_folder_of(target_path_);
-    // O_EXCL: never write into a file someone else created under the same temporary name.
     // Mode 0666 (less the umask) gives the permissions any newly written file would get.
-    const int fd = ::open(temp_path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) throw output_error(final_path_, "cannot create a file in its folder", errno);
-    stream_ = ::fdopen(fd, "wb");
-    if (!stream_) {
-        const int error_number = errno;
-        ::close(fd);
-        ::unlink(temp_path_.c_str());
-        throw output_error(final_path_, "cannot open a stream", error_number);
-    }
+    temp_.emplace(temp_path_in_folder_of(target_path_), 0666);
+    if (!temp_->created()) throw output_error(final_path_, "cannot create a file in its folder", errno);
+    stream_ = ::fdopen(temp_->descriptor(), "wb");
+    if (!stream_) throw output_error(final_path_, "cannot open a stream", errno);
+    temp_->release_descriptor();  // the stream closes it
 }
 
 std::unique_ptr<AtomicFile> AtomicFile::adopt(const std::string& finished_temp_path, std::string final_path) {
     std::unique_ptr<AtomicFile> file(new AtomicFile());
     file->final_path_ = std::move(final_path);
-    file->temp_path_ = finished_temp_path;  // owned from here on: removed unless committed
+    file->temp_.emplace(ReplacementFile::adopt(finished_temp_path));  // removed unless committed
     file->target_path_ = resolve_output_target(file->final_path_);
     file->completed_ = true;
     return file;
@@ -65,7 +59,6 @@ std::unique_ptr<AtomicFile> AtomicFile::adopt(const std::string& finished_temp_p
 
 AtomicFile::~AtomicFile() {
     if (stream_) std::fclose(stream_);
-    if (!committed_) ::unlink(temp_path_.c_str());
 }
 
 void AtomicFile::write(const void* data, std::size_t size) {
@@ -91,9 +84,7 @@ void AtomicFile::complete() {
 void AtomicFile::commit() {
     if (committed_) throw OutputError(final_path_ + ": committed twice");
     complete();
-    if (std::rename(temp_path_.c_str(), target_path_.c_str()) != 0) {
-        throw output_error(final_path_, "cannot move the finished file into place", errno);
-    }
+    if (!temp_->rename_onto(target_path_)) throw output_error(final_path_, "cannot move the finished file into place", errno);
     committed_ = true;
     sync_folder_of(target_path_);
 }

@@ -1,6 +1,6 @@
 // Writes a file so that it appears under its final name complete or not at all: data goes
 // to a temporary file in the same folder (named by temp_files.h), and commit() renames it
-// into place. A writer that is destroyed without commit() (an error, an exception) removes
+// into place (core/replacement_file.h, synced to the disk first). A writer that is destroyed without commit() (an error, an exception) removes
 // the temporary file.
 //
 // The final name is checked and resolved by resolve_output_target() (output_target.h): a
@@ -13,7 +13,10 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
+
+#include "core/replacement_file.h"
 
 namespace clr {
 
@@ -30,7 +33,7 @@ public:
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
 
-    const std::string& temp_path() const { return temp_path_; }
+    const std::string& temp_path() const { return temp_->temporary_path(); }
     const std::string& final_path() const { return final_path_; }  // as given, for messages
     const std::string& target_path() const { return target_path_; }  // the entry that is replaced
     std::FILE* stream() { return stream_; }  // open for binary writing until complete()
@@ -48,8 +51,8 @@ private:
 
     std::string final_path_;
     std::string target_path_;
-    std::string temp_path_;
-    std::FILE* stream_ = nullptr;
+    std::optional<ReplacementFile> temp_;
+    std::FILE* stream_ = nullptr;  // owns temp_'s descriptor
     bool completed_ = false;
     bool committed_ = false;
 };

@@ -1,0 +1,52 @@
+#include "core/replacement_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <utility>
+
+namespace clr {
+
+ReplacementFile::ReplacementFile(std::string temporary_path, mode_t mode) {
+    descriptor_ = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
+    if (descriptor_ >= 0) temporary_path_ = std::move(temporary_path);
+}
+
+ReplacementFile ReplacementFile::adopt(std::string temporary_path) {
+    ReplacementFile file;
+    file.temporary_path_ = std::move(temporary_path);
+    return file;
+}
+
+ReplacementFile::ReplacementFile(ReplacementFile&& other) noexcept
+    : temporary_path_(std::move(other.temporary_path_)),
+      descriptor_(std::exchange(other.descriptor_, -1)),
+      renamed_(other.renamed_) {
+    other.temporary_path_.clear();
+}
+
+ReplacementFile::~ReplacementFile() {
+    if (descriptor_ >= 0) ::close(descriptor_);
+    if (created() && !renamed_) ::unlink(temporary_path_.c_str());
+}
+
+int ReplacementFile::release_descriptor() { return std::exchange(descriptor_, -1); }
+
+bool ReplacementFile::close(bool sync) {
+    const int descriptor = std::exchange(descriptor_, -1);
+    const bool synced = !sync || ::fsync(descriptor) == 0;
+    const int sync_error = errno;
+    const bool closed = ::close(descriptor) == 0;
+    if (!synced) errno = sync_error;
+    return synced && closed;
+}
+
+bool ReplacementFile::rename_onto(const std::string& final_path) {
+    if (std::rename(temporary_path_.c_str(), final_path.c_str()) != 0) return false;
+    renamed_ = true;
+    return true;
+}
+
+}  // namespace clr
