@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <future>
 #include <iostream>
+#include <system_error>
 #include <nlohmann/json.hpp>
 
 #include "app/frame_sink.h"
@@ -55,7 +56,9 @@ std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport
                        {"write", report.write_ms}, {"total", report.total_ms}}},
         {"frames", frames},
     };
-    std::string text = stats.dump(2) + "\n";
+    // A driver's device name is not guaranteed to be UTF-8: invalid bytes become U+FFFD, so
+    // the report is still JSON instead of the run failing for it.
+    std::string text = stats.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     auto file = std::make_unique<AtomicFile>(path);
     file->write(text.data(), text.size());
     file->complete();
@@ -77,6 +80,15 @@ Scene load(const Options& options) {
 // The OpenCL devices, listed on another thread while the scene loads: the driver's start
 // (PoCL loads LLVM) takes about 40 ms of a warm run, and decoding the scene's images more.
 using DeviceList = std::future<std::vector<DeviceEntry>>;
+
+// A machine that cannot start the thread lists them when they are needed instead.
+DeviceList list_devices_meanwhile() {
+    try {
+        return std::async(std::launch::async, list_devices);
+    } catch (const std::system_error&) {
+        return std::async(std::launch::deferred, list_devices);
+    }
+}
 
 std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices) {
     // A long frame stops within a band (or a reference row) of a signal, not at its end.
@@ -181,7 +193,7 @@ int run(const Options& options) {
     RunReport report;
     DeviceList devices;
     if (!options.reference && !options.assemble && !options.print_frame_count)
-        devices = std::async(std::launch::async, list_devices);
+        devices = list_devices_meanwhile();
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
     if (options.print_frame_count) {

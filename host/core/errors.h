@@ -13,6 +13,8 @@ enum ExitCode : int {
     kExitScene = 2,   // bad scene file or input image
     kExitDevice = 3,  // OpenCL platform, device, build or run-time error
     kExitOutput = 4,  // output file or encoder error
+    kExitInternal = 5,     // a failure clrender does not expect: a bug to report
+    kExitOutOfMemory = 6,  // the machine's memory (or threads) ran out: not the scene's fault, not the device's
 };
 
 class Error : public std::runtime_error {

@@ -59,8 +59,10 @@ FileIdentity identify_file(const std::string& path) {
         return identity;
     }
     std::error_code error;
-    fs::path normal = fs::weakly_canonical(fs::absolute(path, error), error);
-    identity.path = error ? fs::absolute(path).lexically_normal().string() : normal.string();
+    fs::path absolute = fs::absolute(path, error);
+    if (error) absolute = path;  // no working folder (removed meanwhile): the name as given
+    const fs::path normal = fs::weakly_canonical(absolute, error);
+    identity.path = (error ? absolute.lexically_normal() : normal).string();
     return identity;
 }
 

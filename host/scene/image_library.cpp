@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <functional>
+#include <system_error>
 #include <thread>
 
 #include "core/interruption.h"
@@ -31,7 +32,13 @@ void for_each_in_parallel(std::size_t count, const std::function<void(std::size_
     };
     const std::size_t thread_count = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), count);
     std::vector<std::thread> helpers;
-    for (std::size_t t = 1; t < thread_count; ++t) helpers.emplace_back(worker);
+    try {
+        for (std::size_t t = 1; t < thread_count; ++t) helpers.emplace_back(worker);
+    } catch (const std::system_error&) {
+        // No more threads (a process limit, no memory for a stack): those started and this
+        // one share the work, which is slower but the same. Unjoined threads would end the
+        // process.
+    }
     worker();
     for (std::thread& helper : helpers) helper.join();
     for (const std::exception_ptr& error : errors) {
