@@ -19,6 +19,7 @@
 
 #include "core/errors.h"
 #include "output/atomic_file.h"
+#include "output/file_extension.h"
 
 namespace clr {
 namespace {
@@ -114,9 +115,7 @@ void check_image(const std::string& path, const Image& image) {
 }  // namespace
 
 ImageFormat image_format_for(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lowercase_extension(path);
     if (extension == ".png") return ImageFormat::Png;
     if (extension == ".ppm") return ImageFormat::Ppm;
     const std::string problem = extension.empty() ? "no file extension" : "unsupported extension '" + extension + "'";

@@ -30,6 +30,7 @@
 
 #include "core/errors.h"
 #include "core/interruption.h"
+#include "output/file_extension.h"
 #include "output/program_lookup.h"
 #include "output/temp_files.h"
 #include "output/video_probe.h"
@@ -171,9 +172,7 @@ Seconds probe_limit(const VideoSettings& settings, long frames, Seconds stall_ti
 }  // namespace
 
 VideoFormat video_format_for(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lowercase_extension(path);
     if (extension == ".mp4") return VideoFormat::Mp4;
     if (extension == ".gif") return VideoFormat::Gif;
     throw UsageError("'" + path + "': unsupported video format; use a .mp4 or .gif file name");
