@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "core/printable_text.h"
+
 namespace clr::fuzz {
 
 namespace {
@@ -43,13 +45,7 @@ void write_file(const std::string& path, const void* data, std::size_t size) {
     if (std::fclose(file) != 0 || !written) report_bug("cannot write a fuzz input file", path);
 }
 
-bool is_one_printable_line(const std::string& message) {
-    for (const char c : message) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7F) return false;
-    }
-    return true;
-}
+bool is_one_printable_line(const std::string& message) { return clr::printable(message) == message; }
 
 void report_bug(const std::string& what, const std::string& detail) {
     std::fprintf(stderr, "clrender fuzz: BUG: %s: %s\n", what.c_str(), detail.c_str());

@@ -16,10 +16,11 @@ const std::string& work_folder();
 // cannot write its input would only report false results.
 void write_file(const std::string& path, const void* data, std::size_t size);
 
-// Whether `message` is fit to print as (part of) one line of a terminal: no line breaks, no
-// escape sequences, no other control characters (bytes below 0x20, and 0x7F). Messages
-// quote file contents (keys, chunk names), so a file must not be able to forge output lines
-// or drive the terminal through them.
+// Whether `message` is fit to print as (part of) one line of a terminal by the rule clrender's
+// escaper applies (core/printable_text.h): nothing in it that printable() would escape (control
+// characters, bidirectional overrides, invalid UTF-8). Messages quote file contents (keys,
+// chunk names), so a file must not be able to forge output lines or drive the terminal
+// through them.
 bool is_one_printable_line(const std::string& message);
 
 // Prints "clrender fuzz: BUG: <what>: <detail>" and aborts, so that libFuzzer reports a
