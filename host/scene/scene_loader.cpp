@@ -450,6 +450,15 @@ void share_view_sets(Scene& scene, const ImpostorViews& views) {
     }
 }
 
+// The step after validation, and the only one that reads image files: every image the valid
+// scene shows is read and decoded (scene/image_library.h, within the memory budget) and put
+// where it is shown. Validation only collected the "filename" values.
+void load_scene_images(Scene& scene, const PendingBillboardImages& billboards, ImpostorViews& views,
+                       const LoadOptions& options) {
+    attach_images(scene, images_to_read(scene, billboards, views), options);
+    share_view_sets(scene, views);
+}
+
 // --------------------------------------------------------------------------------------
 
 // Keys of related formats that clrender recognises but does not render: each gets a
@@ -564,8 +573,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
-    attach_images(scene, images_to_read(scene, billboard_images, impostor_views), options);
-    share_view_sets(scene, impostor_views);
+    load_scene_images(scene, billboard_images, impostor_views, options);
     diagnostics.summarise_warnings();
     return scene;
 }
