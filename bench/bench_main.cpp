@@ -1,6 +1,6 @@
 // clrender_bench: clrender and an Embree peer side by side on the same generated scenes,
-// in one process, so that their ratio holds even on a noisy machine (issue 5,
-// docs/benchmarks.md).
+// in one process, so that their ratio holds even on a noisy machine (docs/benchmarks.md,
+// How to read the table).
 //
 //   clrender_bench [--size 1920x1080] [--repeat 5] [--device SEL] [--scenes a,b] [--json PATH]
 //                  [--images DIR]

@@ -137,8 +137,8 @@ void add_course_objects(Scene& scene) {
     };
 }
 
-// The half extents of the image plane at distance 1 from the eye (SPEC 2: the field of view
-// spans the larger image dimension).
+// The half extents of the image plane at distance 1 from the eye: the field of view spans the
+// larger image dimension (docs/scene-format.md, Conventions: Camera).
 struct PlaneExtent {
     double half_width, half_height;
 };

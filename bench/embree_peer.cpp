@@ -1,7 +1,8 @@
-// The Embree peer. Choices that make it a strong, fair opponent (issue 5, "Facts measured"):
-// - user geometry for both spheres and billboards: Embree's built-in sphere type measured
-//   2.5-3x slower (issue 5; 3.5-6x on this benchmark's scenes), and a user quad applies the
-//   alpha test inside its own intersector instead of paying for an intersection-filter call;
+// The Embree peer. Choices that make it a strong, fair opponent (the figures behind them are
+// in docs/benchmarks.md, The Embree peer):
+// - user geometry for both spheres and billboards: Embree's built-in sphere type is slower on
+//   these scenes, and a user quad applies the alpha test inside its own intersector instead
+//   of paying for an intersection-filter call;
 // - the same float data (compile_scene) and the same float arithmetic as clrender's kernels,
 //   so that both decide the same way everywhere but on silhouettes and edges;
 // - intersectors without branches, which the compiler vectorises over a packet's 16 lanes;

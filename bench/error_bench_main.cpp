@@ -1,4 +1,4 @@
-// clrender_error_bench: run time against error (issue 6, docs/error-benchmark.md). Renders
+// clrender_error_bench: run time against error (docs/error-benchmark.md, How to read it). Renders
 // each scene at several sample counts in float and in double, times every setting, compares
 // its image with a high-sample double-precision reference (RMSE, PSNR, SSIM), marks the Pareto
 // front, and optionally names the fastest setting that meets a target error.

@@ -274,7 +274,7 @@ void write_markdown(const std::string& path, const std::vector<SceneErrors>& sce
         << "How much image quality each anti-aliasing sample count and each precision buys, and what it costs: "
            "every scene at "
         << sample_list(settings.spp) << " samples per pixel, in float and in double, timed and compared with a "
-        << settings.reference_spp << "-spp double-precision reference (issue 6).\n\n"
+        << settings.reference_spp << "-spp double-precision reference.\n\n"
         << "```\nscripts/error_bench.sh                    # installs, builds build-error/ (Release), runs, and writes\n"
         << "                                          # docs/error-benchmark.md, .json and .png\n"
         << "scripts/error_bench.sh --target-psnr 40   # also prints the fastest setting per scene that meets it\n```\n\n"

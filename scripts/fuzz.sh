@@ -41,8 +41,9 @@ targets=(
 export CLRENDER_CACHE_DIR=off
 # The sanitizers stop at the first report; leaks count as findings too. libFuzzer's own
 # limits: 16 KiB inputs (larger than any seed, large enough for deep JSON nesting and
-# multi-chunk images); 30 s per input, a hang (the slowest valid input, a JPEG of the largest
-# size clrender reads, 8192 x 8192, takes about 7 s under the sanitizers); and 2 GiB of
+# multi-chunk images); 30 s per input, a hang (several times what the slowest valid input, a
+# JPEG of the largest size clrender reads, 8192 x 8192, takes under the sanitizers:
+# docs/benchmarks.md, Figures behind design choices); and 2 GiB of
 # memory in use, above which an input is an out-of-memory finding. A single allocation may
 # reach 4 GiB: stb_image reserves up to 2 GiB, untouched, for a PNG whose IDAT chunk claims
 # more bytes than the file has, then fails cleanly (docs/robustness.md).

@@ -41,7 +41,8 @@ public:
     double write_ms() const { return write_ms_; }  // worker time spent writing and encoding
 
     // A frame the worker has written and encoded, if one is done since the last call: its
-    // storage can be recycled for a later frame (a new 1080p image costs 3.5 ms of page faults).
+    // storage can be recycled for a later frame: a new image costs a page fault and a zero fill
+    // per page (docs/benchmarks.md, Figures behind design choices).
     std::optional<Image> take_finished();
 
 private:

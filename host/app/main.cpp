@@ -1,5 +1,5 @@
 // clrender's only entry point: parse the command line, run, and turn every error into one
-// message and the documented exit code (SPEC 3).
+// message and the documented exit code (docs/command-line.md, Exit codes).
 #include <exception>
 #include <iostream>
 

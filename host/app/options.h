@@ -1,4 +1,4 @@
-// What the user asked for on the command line (SPEC 3).
+// What the user asked for on the command line (docs/command-line.md, Options).
 #pragma once
 
 #include <optional>

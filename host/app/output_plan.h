@@ -1,5 +1,5 @@
 // What a run will produce, decided and checked before anything renders: which frames, which
-// image files, which video, that the encoder exists (SPEC 3 and 4), and that every output
+// image files, which video, that the encoder exists (docs/command-line.md, Outputs), and that every output
 // is a safe place to write: not an input or another output of the run, not a FIFO, device or
 // folder (output_roles.h, output_target.h), in a folder where a file can be created.
 #pragma once

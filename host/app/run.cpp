@@ -78,7 +78,8 @@ Scene load(const Options& options) {
 }
 
 // The OpenCL devices, listed on another thread while the scene loads: the driver's start
-// (PoCL loads LLVM) takes about 40 ms of a warm run, and decoding the scene's images more.
+// (PoCL loads LLVM) is a large part of a warm run, and decoding the scene's images more
+// (docs/benchmarks.md, Figures behind design choices).
 using DeviceList = std::future<std::vector<DeviceEntry>>;
 
 // A machine that cannot start the thread lists them when they are needed instead.

@@ -1,5 +1,5 @@
 // Typed errors thrown at the program's boundaries and caught once in main, each mapped to
-// the exit code the command line documents (SPEC 3).
+// the exit code the command line documents (docs/command-line.md, Exit codes).
 #pragma once
 
 #include <stdexcept>

@@ -73,8 +73,9 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
                           "\nbuild options: " + options + "\nbuild log:\n" + log +
                           (printed.empty() ? "" : "\ncompiler output:\n" + printed));
     }
-    // Asking PoCL for the binary compiles every kernel of the program (0.8 s cold): that is
-    // left to store_built_programs(), after the frames are written.
+    // Asking PoCL for the binary compiles every kernel of the program, which takes longer than
+    // a frame (docs/benchmarks.md, Figures behind design choices): that is left to
+    // store_built_programs(), after the frames are written.
     if (key) to_store_.push_back({cache.cache_folder(), *key, program});
     return program;
 }

@@ -34,8 +34,9 @@ public:
     cl::Program build_program(const std::string& source, const std::string& options) const;
     // Stores the binaries of the programs built from source in the program cache (best effort),
     // and puts back the entries this context built programs from (see ~DeviceContext).
-    // Asking PoCL for a binary compiles every kernel of the program (0.8 s cold), so the frame
-    // loop calls this once its outputs are written. Never from a destructor: at exit, static
+    // Asking PoCL for a binary compiles every kernel of the program, which takes longer than a
+    // frame (docs/benchmarks.md, Figures behind design choices), so the frame loop calls this
+    // once its outputs are written. Never from a destructor: at exit, static
     // destruction may already have torn down the compiler inside the driver.
     void store_built_programs();
     int cache_hits() const { return cache_hits_; }  // builds served by the program cache

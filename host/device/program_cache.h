@@ -1,7 +1,8 @@
 // Built OpenCL programs kept across runs: the device's binary of a program, keyed on the SHA-256
 // of everything that can change it (device, driver, platform, build options, the whole source,
-// this entry format). Building from the binary skips the compiler front end: on PoCL 4 ms
-// instead of 26 ms with PoCL's own cache warm. Entries live in programs/ under the cache folder
+// this entry format). Building from the binary skips the compiler front end, several times
+// faster on PoCL than a build with PoCL's own cache warm (docs/benchmarks.md, Figures behind
+// design choices). Entries live in programs/ under the cache folder
 // (core/cache_entry_folder.h): written atomically, checked in full before the driver sees a
 // byte (core/cache_entry.h), and kept under a size limit. An entry that is missing or fails a
 // check is a miss, never an error, and is replaced.

@@ -34,9 +34,10 @@ std::vector<std::uint8_t> rgb_without_alpha(const Image& image) {
 }
 
 // PNG through libpng, set for speed: RGB, 8 bits, every row with the "Up" filter, deflated
-// at level 1 with run-length matching. stb_image_write (all five filters tried per row, its
-// own deflate) took 35 ms for a 600x600 frame, 18 ms at best with one filter; this takes
-// about 4.5 ms, and rendered frames come out smaller than stb's level 8.
+// at level 1 with run-length matching: several times faster than stb_image_write (all five
+// filters tried per row, its own deflate), even with stb held to one filter, and rendered
+// frames come out smaller than stb's level 8 (docs/benchmarks.md, Figures behind design
+// choices).
 //
 // libpng reports errors by longjmp, so encoding runs in a function with nothing to unwind
 // into memory, and the file is written afterwards (where an OutputError may be thrown). libpng

@@ -1,6 +1,7 @@
 // Writes an animation as a video (MP4 with H.264 in yuv420p, or an animated GIF) by running
-// the ffmpeg program and piping it raw RGB frames (SPEC 3). The video appears under its final
-// name complete or not at all, as every output does (SPEC 4).
+// the ffmpeg program and piping it raw RGB frames (docs/command-line.md, Outputs). The video
+// appears under its final name complete or not at all, as every output does
+// (docs/command-line.md, Failures).
 #pragma once
 
 #include <atomic>

@@ -1,6 +1,7 @@
-// Turns a scene's camera keys into one camera per animation frame (SPEC 2, Camera path and
-// video). The frames are spread at constant parameter speed: every segment between two keys
-// gets the same share of frames, whatever its length.
+// Turns a scene's camera keys into one camera per animation frame (docs/scene-format.md,
+// Camera and camera path; the settings are in docs/scene-format.md, Extensions). The frames
+// are spread at constant parameter speed: every segment between two keys gets the same share
+// of frames, whatever its length.
 #pragma once
 
 #include "scene/scene.h"

@@ -1,6 +1,6 @@
 // Decoded images kept across runs. Decoding the large PNGs of a course scene is most of the time
-// a warm start takes (about 80-100 ms of it for three photos); reading back and checking the
-// decoded RGBA is a fraction of that. Entries live in images/ under the cache folder
+// a warm start takes; reading back and checking the decoded RGBA is a fraction of that
+// (docs/benchmarks.md, Figures behind design choices). Entries live in images/ under the cache folder
 // (core/cache_folder.h), one file per image (core/cache_entry_folder.h), named by the SHA-256 of
 // the source file's whole content and of everything else that decides the decoded pixels, so an
 // edited image is a new key and its old entry is never used, and no file can be forged to look

@@ -273,7 +273,7 @@ std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
     const bool sixteen_bit = stbi_is_16_bit_from_memory(bytes.data(), length) != 0;
     // stb_image holds the inflated samples and its output at once (two RGBA buffers, of 16-bit
     // samples for a 16-bit PNG), then its output and our 8-bit copy: 8 or 16 bytes a pixel at
-    // the peak (measured: two 16-bit 8192 x 8192 PNGs decoded at once peak at 2.1 GB).
+    // the peak, as measured (docs/benchmarks.md, Figures behind design choices).
     return header_of_size(width, height, sixteen_bit, sixteen_bit ? 4 * kRgba : 2 * kRgba);
 }
 

@@ -1,5 +1,6 @@
 // Reads billboard images: PNG (8- and 16-bit, with or without alpha), JPEG, PPM P6 and
-// PPM P3 (ASCII, with '#' comments). Every image becomes 8-bit RGBA (SPEC 2, Images).
+// PPM P3 (ASCII, with '#' comments). Every image becomes 8-bit RGBA
+// (docs/scene-format.md, Conventions: Billboards).
 #pragma once
 
 #include <cstdint>

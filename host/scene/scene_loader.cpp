@@ -24,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kDefaultMaxDepth = 5;  // SPEC 1
+constexpr int kDefaultMaxDepth = 5;  // (docs/scene-format.md, Keys)
 // More reflections than this change no visible pixel in any sensible scene, and each one
 // costs a full trace per pixel: a larger value is a typo, not an intent.
 constexpr int kMaxMaxDepth = 64;
@@ -245,7 +245,8 @@ void check_billboard_edge(const Vec3& edge, const std::string& corner, const Nod
                   " long, outside the range clrender renders exactly enough: " + length_range_text());
 }
 
-// Corners UL, LL, UR must span a parallelogram of non-zero area (SPEC 2, Billboards).
+// Corners UL, LL, UR must span a parallelogram of non-zero area (docs/scene-format.md,
+// Validation).
 void check_billboard_corners(const Billboard& billboard, const Node& node) {
     const Vec3 across = billboard.upper_right - billboard.upper_left;
     const Vec3 down = billboard.lower_left - billboard.upper_left;
@@ -281,8 +282,8 @@ std::pair<Billboard, std::optional<Node>> read_billboard(const Node& node, bool 
         node.fail("billboard needs 'filename' (an image) or 'ambient' (a flat colour), unless IsMirror is 1");
     check_billboard_corners(billboard, node);
     fields.warn_about_unknown_keys();
-    // A mirror shows what it reflects, never its image (SPEC 2, Mirrors), so that image is
-    // not even read: a missing file does no harm there.
+    // A mirror shows what it reflects, never its image (docs/scene-format.md, Conventions:
+    // Mirrors), so that image is not even read: a missing file does no harm there.
     return {billboard, billboard.is_mirror ? std::nullopt : filename};
 }
 

@@ -1,4 +1,4 @@
-// The clrender command as a user runs it: outputs, exit codes and messages (SPEC 3 and 4).
+// The clrender command as a user runs it: outputs, exit codes and messages (docs/command-line.md).
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -189,7 +189,7 @@ TEST(VideoEncoder, GifHasEveryFrame) {
     EXPECT_EQ(entries(folder.path()), std::vector<std::string>({"loop.gif"}));
 }
 
-// SPEC 4: the same frames and options give the same bytes.
+// The same frames and options give the same bytes (docs/command-line.md, Reproducible output).
 TEST(VideoEncoder, SameFramesGiveTheSameBytes) {
     const std::optional<std::string> encoder = real_encoder();
     if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";

@@ -1,4 +1,4 @@
-// Closed-form checks of the double-precision reference (SPEC 2). Expected values come from
+// Closed-form checks of the double-precision reference (docs/scene-format.md, Conventions). Expected values come from
 // geometry worked out by hand for each scene, not from the reference's own formulas.
 #include "reference/reference.h"
 

@@ -26,7 +26,7 @@ enum class Hue { Green, Blue };
 // A strongly green or blue pixel, as the two big spheres are (ambient 0.09/0.99/0.09 and
 // 0.09/0.09/0.99, lit): the other channels stay well below the dominant one. Only the lit
 // side counts: where n.l < 0 the instructor's frames show a flat dim colour (2, 5, 48)
-// instead of the black that max(0, n.l) gives (SPEC 2, Lighting), so the dominant channel
+// instead of the black that max(0, n.l) gives (docs/scene-format.md, Conventions: Lighting and shadows), so the dominant channel
 // must exceed that floor.
 bool has_hue(const Image& image, int col, int row, Hue hue) {
     int r = image.at(col, row, 0), g = image.at(col, row, 1), b = image.at(col, row, 2);
@@ -78,8 +78,8 @@ TEST(InstructorFrames, SpheresSitAndShadeAsInTheInstructorsRenders) {
 
     // Outside the central mirror the picture does not depend on MaxDepth; the first and the
     // last of the instructor's frames are compared. (Inside the mirror the frames differ by
-    // design: where clrender shows the background once MaxDepth runs out, as SPEC 2 says,
-    // the instructor's renderer shows a flat grey.)
+    // design: where clrender shows the background once MaxDepth runs out (docs/scene-format.md,
+    // Conventions: Mirrors), the instructor's renderer shows a flat grey.)
     for (int depth : {0, 5}) {
         SCOPED_TRACE("MaxDepth " + std::to_string(depth));
         scene.max_depth = depth;
