@@ -67,7 +67,10 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
     build_ms_ = elapsed_ms(start);
     try {
-        render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
+        if (screen_tiles_)
+            render_packets_ = TypedKernel<RenderPacketsSignature>(program_, kRenderPackets);
+        else
+            render_ = TypedKernel<RenderSignature>(program_, kRender);
         texels_ = upload(device_.context(), compiled_.texels);
         compiled_.texels = {};  // on the device now; frames only move positions
         if (!scene_.impostors.empty()) placed_ = placed_scene(scene_, compiled_);
@@ -87,7 +90,6 @@ void Renderer::upload_geometry() {
     bvh_nodes_ = upload(device_.context(), compile_bvh(bvh_, origin_));
     bvh_items_ = upload(device_.context(), bvh_.items);
     info_ = compiled_.info;
-    bind_scene(render_kernel_, 3);
 }
 
 void Renderer::set_origin(const Vec3& origin) {
@@ -137,13 +139,15 @@ Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame
 
 void Renderer::recycle(Image&& image) { spare_pixels_ = std::move(image.rgba); }
 
-void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
-    kernel.setArg(first, spheres_);
-    kernel.setArg(first + 1, billboards_);
-    kernel.setArg(first + 2, texels_);
-    kernel.setArg(first + 3, info_);
-    kernel.setArg(first + 4, bvh_nodes_);
-    kernel.setArg(first + 5, bvh_items_);
+SceneArgs Renderer::scene_args() const {
+    SceneArgs args;
+    args.spheres = spheres_;
+    args.billboards = billboards_;
+    args.texels = texels_;
+    args.info = info_;
+    args.bvh_nodes = bvh_nodes_;
+    args.bvh_items = bvh_items_;
+    return args;
 }
 
 static bool is_out_of_memory(const cl::Error& error) {
@@ -170,18 +174,8 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
                              band_bytes, target);
     else
         reserve_pixels(band_bytes);
-    render_kernel_.setArg(0, camera);
-    render_kernel_.setArg(1, static_cast<cl_int>(first_row));
-    render_kernel_.setArg(2, static_cast<cl_int>(rows));
-    const int after_scene = 3 + kSceneArgs;
-    render_kernel_.setArg(after_scene, pixels_);
-    if (screen_tiles_) {
-        render_kernel_.setArg(after_scene + 1, tile_offsets_);
-        render_kernel_.setArg(after_scene + 2, tile_items_);
-        render_kernel_.setArg(after_scene + 3, tile_nearest_);
-        render_kernel_.setArg(after_scene + 4, tile_rows_);
-        render_kernel_.setArg(after_scene + 5, static_cast<cl_int>(tiles_x_));
-    }
+    cl::Kernel& kernel = screen_tiles_ ? render_packets_.bind(camera, first_row, rows, scene_args(), pixels_, tile_args())
+                                       : render_.bind(camera, first_row, rows, scene_args(), pixels_);
     // render_packets: one work-item per screen tile that the band's rows touch; render: one
     // per pixel.
     cl::NDRange local, global;
@@ -194,7 +188,7 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
         global = cl::NDRange(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
     }
     cl::Event done;
-    device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, local, nullptr, &done);
+    device_.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, local, nullptr, &done);
     if (in_place) {
         // Mapping makes the kernel's writes visible in the image; the pointer is the image's.
         void* mapped = device_.queue().enqueueMapBuffer(pixels_, CL_TRUE, CL_MAP_READ, 0, band_bytes);
@@ -219,6 +213,16 @@ ScreenTiles Renderer::upload_screen_tiles(const ClrCamera& camera) {
     tile_rows_ = upload(device_.context(), tiles.rows);
     tiles_x_ = tiles.tiles_x;
     return tiles;
+}
+
+TileArgs Renderer::tile_args() const {
+    TileArgs args;
+    args.offsets = tile_offsets_;
+    args.items = tile_items_;
+    args.nearest = tile_nearest_;
+    args.rows = tile_rows_;
+    args.tiles_x = tiles_x_;
+    return args;
 }
 
 // Every frame renders in bands of rows (BandSizer) so that between_bands_ runs several times a

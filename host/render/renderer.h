@@ -12,6 +12,7 @@
 #include "render/band_sizer.h"
 #include "render/bvh.h"
 #include "render/compiled_scene.h"
+#include "render/kernel_signatures.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -71,11 +72,9 @@ public:
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
-    // For the stage tests: the built program and the scene's kernel arguments, bound from
-    // argument `first` on in the order of CLR_SCENE_PARAMS (spheres, billboards, texels, info).
+    // For the stage tests: the built program and the scene's kernel arguments.
     const cl::Program& program() const { return program_; }
-    void bind_scene(cl::Kernel& kernel, int first) const;
-    static constexpr int kSceneArgs = 6;  // arguments bind_scene() sets
+    SceneArgs scene_args() const;
 
 private:
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
@@ -85,6 +84,7 @@ private:
     double render_bands(const ClrCamera& camera, Image& image);
     void reserve_pixels(std::size_t bytes);
     ScreenTiles upload_screen_tiles(const ClrCamera& camera);
+    TileArgs tile_args() const;
     void upload_geometry();
     void face_impostors(const CameraKey& key);
     // What the screen tiles and the BVH see: the scene, with its impostors as placed billboards.
@@ -99,7 +99,8 @@ private:
     FeatureSet features_;
     ClrSceneInfo info_{};
     cl::Program program_;
-    cl::Kernel render_kernel_;  // render_packets or render
+    TypedKernel<RenderPacketsSignature> render_packets_;  // with screen tiles
+    TypedKernel<RenderSignature> render_;                 // without
     cl::Buffer tile_offsets_, tile_items_, tile_nearest_, tile_rows_;
     int tiles_x_ = 0;
     cl::Buffer spheres_, billboards_, texels_;
