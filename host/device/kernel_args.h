@@ -22,21 +22,18 @@
 namespace clr {
 
 // The OpenCL C name of a type passed by value, as the kernel declares it. Undefined for any
-// other type, so that a value of a type no kernel takes does not compile.
+// other type, so that a value of a type no kernel takes does not compile; CLR_KERNEL_VALUE_TYPE
+// names one.
 template <typename T>
 struct KernelValueType;
-template <>
-struct KernelValueType<cl_int> {
-    static constexpr const char* name = "int";
-};
-template <>
-struct KernelValueType<cl_uint> {
-    static constexpr const char* name = "uint";
-};
-template <>
-struct KernelValueType<cl_float> {
-    static constexpr const char* name = "float";
-};
+#define CLR_KERNEL_VALUE_TYPE(Type, opencl_name)         \
+    template <>                                          \
+    struct KernelValueType<Type> {                       \
+        static constexpr const char* name = opencl_name; \
+    };
+CLR_KERNEL_VALUE_TYPE(cl_int, "int")
+CLR_KERNEL_VALUE_TYPE(cl_uint, "uint")
+CLR_KERNEL_VALUE_TYPE(cl_float, "float")
 
 // Whether T is an argument group: a type that visits its parameters itself.
 template <typename T, typename = void>

@@ -12,14 +12,8 @@
 
 namespace clr {
 
-template <>
-struct KernelValueType<ClrCamera> {
-    static constexpr const char* name = "ClrCamera";
-};
-template <>
-struct KernelValueType<ClrSceneInfo> {
-    static constexpr const char* name = "ClrSceneInfo";
-};
+CLR_KERNEL_VALUE_TYPE(ClrCamera, "ClrCamera")
+CLR_KERNEL_VALUE_TYPE(ClrSceneInfo, "ClrSceneInfo")
 
 // The scene every tracing kernel reads: the parameters of CLR_SCENE_PARAMS
 // (kernels/intersect.cl), in its order.

@@ -71,7 +71,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
             render_packets_ = TypedKernel<RenderPacketsSignature>(program_, kRenderPackets);
         else
             render_ = TypedKernel<RenderSignature>(program_, kRender);
-        texels_ = upload(device_.context(), compiled_.texels);
+        scene_args_.texels = upload(device_.context(), compiled_.texels);
         compiled_.texels = {};  // on the device now; frames only move positions
         if (!scene_.impostors.empty()) placed_ = placed_scene(scene_, compiled_);
         if (features_.bvh) bvh_ = build_bvh(geometry());  // otherwise empty: never read
@@ -85,11 +85,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
 }
 
 void Renderer::upload_geometry() {
-    spheres_ = upload(device_.context(), compiled_.spheres);
-    billboards_ = upload(device_.context(), compiled_.billboards);
-    bvh_nodes_ = upload(device_.context(), compile_bvh(bvh_, origin_));
-    bvh_items_ = upload(device_.context(), bvh_.items);
-    info_ = compiled_.info;
+    scene_args_.spheres = upload(device_.context(), compiled_.spheres);
+    scene_args_.billboards = upload(device_.context(), compiled_.billboards);
+    scene_args_.bvh_nodes = upload(device_.context(), compile_bvh(bvh_, origin_));
+    scene_args_.bvh_items = upload(device_.context(), bvh_.items);
+    scene_args_.info = compiled_.info;
 }
 
 void Renderer::set_origin(const Vec3& origin) {
@@ -139,17 +139,6 @@ Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame
 
 void Renderer::recycle(Image&& image) { spare_pixels_ = std::move(image.rgba); }
 
-SceneArgs Renderer::scene_args() const {
-    SceneArgs args;
-    args.spheres = spheres_;
-    args.billboards = billboards_;
-    args.texels = texels_;
-    args.info = info_;
-    args.bvh_nodes = bvh_nodes_;
-    args.bvh_items = bvh_items_;
-    return args;
-}
-
 static bool is_out_of_memory(const cl::Error& error) {
     return error.err() == CL_MEM_OBJECT_ALLOCATION_FAILURE || error.err() == CL_OUT_OF_RESOURCES ||
            error.err() == CL_OUT_OF_HOST_MEMORY || error.err() == CL_INVALID_BUFFER_SIZE;
@@ -174,15 +163,15 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
                              band_bytes, target);
     else
         reserve_pixels(band_bytes);
-    cl::Kernel& kernel = screen_tiles_ ? render_packets_.bind(camera, first_row, rows, scene_args(), pixels_, tile_args())
-                                       : render_.bind(camera, first_row, rows, scene_args(), pixels_);
+    cl::Kernel& kernel = screen_tiles_ ? render_packets_.bind(camera, first_row, rows, scene_args_, pixels_, tile_args_)
+                                       : render_.bind(camera, first_row, rows, scene_args_, pixels_);
     // render_packets: one work-item per screen tile that the band's rows touch; render: one
     // per pixel.
     cl::NDRange local, global;
     if (screen_tiles_) {
         std::size_t tile_rows = (first_row + rows - 1) / kClrTileSize - first_row / kClrTileSize + 1;
         local = cl::NDRange(kTileGroupWidth, 1);
-        global = cl::NDRange(round_up(tiles_x_, kTileGroupWidth), tile_rows);
+        global = cl::NDRange(round_up(tile_args_.tiles_x, kTileGroupWidth), tile_rows);
     } else {
         local = cl::NDRange(kGroupWidth, kGroupHeight);
         global = cl::NDRange(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
@@ -207,22 +196,12 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
 
 ScreenTiles Renderer::upload_screen_tiles(const ClrCamera& camera) {
     ScreenTiles tiles = bin_screen_tiles(geometry(), camera, origin_);
-    tile_offsets_ = upload(device_.context(), tiles.offsets);
-    tile_items_ = upload(device_.context(), tiles.items);
-    tile_nearest_ = upload(device_.context(), tiles.nearest);
-    tile_rows_ = upload(device_.context(), tiles.rows);
-    tiles_x_ = tiles.tiles_x;
+    tile_args_.offsets = upload(device_.context(), tiles.offsets);
+    tile_args_.items = upload(device_.context(), tiles.items);
+    tile_args_.nearest = upload(device_.context(), tiles.nearest);
+    tile_args_.rows = upload(device_.context(), tiles.rows);
+    tile_args_.tiles_x = tiles.tiles_x;
     return tiles;
-}
-
-TileArgs Renderer::tile_args() const {
-    TileArgs args;
-    args.offsets = tile_offsets_;
-    args.items = tile_items_;
-    args.nearest = tile_nearest_;
-    args.rows = tile_rows_;
-    args.tiles_x = tiles_x_;
-    return args;
 }
 
 // Every frame renders in bands of rows (BandSizer) so that between_bands_ runs several times a

@@ -74,7 +74,7 @@ public:
 
     // For the stage tests: the built program and the scene's kernel arguments.
     const cl::Program& program() const { return program_; }
-    SceneArgs scene_args() const;
+    const SceneArgs& scene_args() const { return scene_args_; }
 
 private:
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
@@ -84,7 +84,6 @@ private:
     double render_bands(const ClrCamera& camera, Image& image);
     void reserve_pixels(std::size_t bytes);
     ScreenTiles upload_screen_tiles(const ClrCamera& camera);
-    TileArgs tile_args() const;
     void upload_geometry();
     void face_impostors(const CameraKey& key);
     // What the screen tiles and the BVH see: the scene, with its impostors as placed billboards.
@@ -97,15 +96,12 @@ private:
     bool screen_tiles_ = true;
     Vec3 origin_;
     FeatureSet features_;
-    ClrSceneInfo info_{};
     cl::Program program_;
     TypedKernel<RenderPacketsSignature> render_packets_;  // with screen tiles
     TypedKernel<RenderSignature> render_;                 // without
-    cl::Buffer tile_offsets_, tile_items_, tile_nearest_, tile_rows_;
-    int tiles_x_ = 0;
-    cl::Buffer spheres_, billboards_, texels_;
+    TileArgs tile_args_;  // the last frame's screen tiles
+    SceneArgs scene_args_;  // the scene's buffers on the device
     Bvh bvh_;
-    cl::Buffer bvh_nodes_, bvh_items_;
     cl::Buffer pixels_;
     std::vector<std::uint8_t> spare_pixels_;  // a recycled image's storage (see recycle())
     bool render_in_place_ = false;  // the kernel writes into the image's own storage (CPU devices)

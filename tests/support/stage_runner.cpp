@@ -32,8 +32,8 @@ std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
     std::size_t count = static_cast<std::size_t>(camera.width) * camera.height;
     cl::Buffer rays(test_device().context(), CL_MEM_WRITE_ONLY, count * sizeof(ClrRay));
     TypedKernel<RaygenSignature> kernel(renderer_.program(), kRaygen);
-    test_device().queue().enqueueNDRangeKernel(kernel.bind(camera, rays), cl::NullRange, cl::NDRange(camera.width, camera.height),
-                                               cl::NullRange);
+    test_device().queue().enqueueNDRangeKernel(kernel.bind(camera, rays), cl::NullRange,
+                                               cl::NDRange(camera.width, camera.height), cl::NullRange);
     return read_back<ClrRay>(rays, count);
 }
 
