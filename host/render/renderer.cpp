@@ -67,8 +67,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
     build_ms_ = elapsed_ms(start);
     try {
-        render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
-        texels_ = upload(device_.context(), compiled_.texels);
+        if (screen_tiles_)
+            render_packets_ = TypedKernel<RenderPacketsSignature>(program_, kRenderPackets);
+        else
+            render_ = TypedKernel<RenderSignature>(program_, kRender);
+        scene_args_.texels = upload(device_.context(), compiled_.texels);
         compiled_.texels = {};  // on the device now; frames only move positions
         if (!scene_.impostors.empty()) placed_ = placed_scene(scene_, compiled_);
         if (features_.bvh) bvh_ = build_bvh(geometry());  // otherwise empty: never read
@@ -82,12 +85,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
 }
 
 void Renderer::upload_geometry() {
-    spheres_ = upload(device_.context(), compiled_.spheres);
-    billboards_ = upload(device_.context(), compiled_.billboards);
-    bvh_nodes_ = upload(device_.context(), compile_bvh(bvh_, origin_));
-    bvh_items_ = upload(device_.context(), bvh_.items);
-    info_ = compiled_.info;
-    bind_scene(render_kernel_, 3);
+    scene_args_.spheres = upload(device_.context(), compiled_.spheres);
+    scene_args_.billboards = upload(device_.context(), compiled_.billboards);
+    scene_args_.bvh_nodes = upload(device_.context(), compile_bvh(bvh_, origin_));
+    scene_args_.bvh_items = upload(device_.context(), bvh_.items);
+    scene_args_.info = compiled_.info;
 }
 
 void Renderer::set_origin(const Vec3& origin) {
@@ -137,15 +139,6 @@ Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame
 
 void Renderer::recycle(Image&& image) { spare_pixels_ = std::move(image.rgba); }
 
-void Renderer::bind_scene(cl::Kernel& kernel, int first) const {
-    kernel.setArg(first, spheres_);
-    kernel.setArg(first + 1, billboards_);
-    kernel.setArg(first + 2, texels_);
-    kernel.setArg(first + 3, info_);
-    kernel.setArg(first + 4, bvh_nodes_);
-    kernel.setArg(first + 5, bvh_items_);
-}
-
 static bool is_out_of_memory(const cl::Error& error) {
     return error.err() == CL_MEM_OBJECT_ALLOCATION_FAILURE || error.err() == CL_OUT_OF_RESOURCES ||
            error.err() == CL_OUT_OF_HOST_MEMORY || error.err() == CL_INVALID_BUFFER_SIZE;
@@ -170,31 +163,21 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
                              band_bytes, target);
     else
         reserve_pixels(band_bytes);
-    render_kernel_.setArg(0, camera);
-    render_kernel_.setArg(1, static_cast<cl_int>(first_row));
-    render_kernel_.setArg(2, static_cast<cl_int>(rows));
-    const int after_scene = 3 + kSceneArgs;
-    render_kernel_.setArg(after_scene, pixels_);
-    if (screen_tiles_) {
-        render_kernel_.setArg(after_scene + 1, tile_offsets_);
-        render_kernel_.setArg(after_scene + 2, tile_items_);
-        render_kernel_.setArg(after_scene + 3, tile_nearest_);
-        render_kernel_.setArg(after_scene + 4, tile_rows_);
-        render_kernel_.setArg(after_scene + 5, static_cast<cl_int>(tiles_x_));
-    }
+    cl::Kernel& kernel = screen_tiles_ ? render_packets_.bind(camera, first_row, rows, scene_args_, pixels_, tile_args_)
+                                       : render_.bind(camera, first_row, rows, scene_args_, pixels_);
     // render_packets: one work-item per screen tile that the band's rows touch; render: one
     // per pixel.
     cl::NDRange local, global;
     if (screen_tiles_) {
         std::size_t tile_rows = (first_row + rows - 1) / kClrTileSize - first_row / kClrTileSize + 1;
         local = cl::NDRange(kTileGroupWidth, 1);
-        global = cl::NDRange(round_up(tiles_x_, kTileGroupWidth), tile_rows);
+        global = cl::NDRange(round_up(tile_args_.tiles_x, kTileGroupWidth), tile_rows);
     } else {
         local = cl::NDRange(kGroupWidth, kGroupHeight);
         global = cl::NDRange(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
     }
     cl::Event done;
-    device_.queue().enqueueNDRangeKernel(render_kernel_, cl::NullRange, global, local, nullptr, &done);
+    device_.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, local, nullptr, &done);
     if (in_place) {
         // Mapping makes the kernel's writes visible in the image; the pointer is the image's.
         void* mapped = device_.queue().enqueueMapBuffer(pixels_, CL_TRUE, CL_MAP_READ, 0, band_bytes);
@@ -213,11 +196,11 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
 
 ScreenTiles Renderer::upload_screen_tiles(const ClrCamera& camera) {
     ScreenTiles tiles = bin_screen_tiles(geometry(), camera, origin_);
-    tile_offsets_ = upload(device_.context(), tiles.offsets);
-    tile_items_ = upload(device_.context(), tiles.items);
-    tile_nearest_ = upload(device_.context(), tiles.nearest);
-    tile_rows_ = upload(device_.context(), tiles.rows);
-    tiles_x_ = tiles.tiles_x;
+    tile_args_.offsets = upload(device_.context(), tiles.offsets);
+    tile_args_.items = upload(device_.context(), tiles.items);
+    tile_args_.nearest = upload(device_.context(), tiles.nearest);
+    tile_args_.rows = upload(device_.context(), tiles.rows);
+    tile_args_.tiles_x = tiles.tiles_x;
     return tiles;
 }
 

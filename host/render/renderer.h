@@ -12,6 +12,7 @@
 #include "render/band_sizer.h"
 #include "render/bvh.h"
 #include "render/compiled_scene.h"
+#include "render/kernel_signatures.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -71,11 +72,9 @@ public:
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
-    // For the stage tests: the built program and the scene's kernel arguments, bound from
-    // argument `first` on in the order of CLR_SCENE_PARAMS (spheres, billboards, texels, info).
+    // For the stage tests: the built program and the scene's kernel arguments.
     const cl::Program& program() const { return program_; }
-    void bind_scene(cl::Kernel& kernel, int first) const;
-    static constexpr int kSceneArgs = 6;  // arguments bind_scene() sets
+    const SceneArgs& scene_args() const { return scene_args_; }
 
 private:
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
@@ -97,14 +96,12 @@ private:
     bool screen_tiles_ = true;
     Vec3 origin_;
     FeatureSet features_;
-    ClrSceneInfo info_{};
     cl::Program program_;
-    cl::Kernel render_kernel_;  // render_packets or render
-    cl::Buffer tile_offsets_, tile_items_, tile_nearest_, tile_rows_;
-    int tiles_x_ = 0;
-    cl::Buffer spheres_, billboards_, texels_;
+    TypedKernel<RenderPacketsSignature> render_packets_;  // with screen tiles
+    TypedKernel<RenderSignature> render_;                 // without
+    TileArgs tile_args_;  // the last frame's screen tiles
+    SceneArgs scene_args_;  // the scene's buffers on the device
     Bvh bvh_;
-    cl::Buffer bvh_nodes_, bvh_items_;
     cl::Buffer pixels_;
     std::vector<std::uint8_t> spare_pixels_;  // a recycled image's storage (see recycle())
     bool render_in_place_ = false;  // the kernel writes into the image's own storage (CPU devices)

@@ -1,5 +1,6 @@
 #include "support/stage_runner.h"
 
+#include "render/kernel_signatures.h"
 #include "support/opencl_test_device.h"
 
 namespace clr::testing {
@@ -30,23 +31,17 @@ StageRunner::StageRunner(const Scene& scene, const RendererOptions& options)
 std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
     std::size_t count = static_cast<std::size_t>(camera.width) * camera.height;
     cl::Buffer rays(test_device().context(), CL_MEM_WRITE_ONLY, count * sizeof(ClrRay));
-    cl::Kernel kernel(renderer_.program(), "raygen");
-    kernel.setArg(0, camera);
-    kernel.setArg(1, rays);
-    test_device().queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(camera.width, camera.height),
-                                               cl::NullRange);
+    TypedKernel<RaygenSignature> kernel(renderer_.program(), kRaygen);
+    test_device().queue().enqueueNDRangeKernel(kernel.bind(camera, rays), cl::NullRange,
+                                               cl::NDRange(camera.width, camera.height), cl::NullRange);
     return read_back<ClrRay>(rays, count);
 }
 
 std::vector<ClrHit> StageRunner::intersect(const std::vector<ClrRay>& rays) {
     cl::Buffer ray_buffer = input_buffer(rays);
     cl::Buffer hits(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(ClrHit));
-    cl::Kernel kernel(renderer_.program(), "intersect");
-    kernel.setArg(0, ray_buffer);
-    kernel.setArg(1, static_cast<cl_int>(rays.size()));
-    renderer_.bind_scene(kernel, 2);
-    kernel.setArg(2 + Renderer::kSceneArgs, hits);
-    run_1d(kernel, rays.size());
+    TypedKernel<IntersectSignature> kernel(renderer_.program(), kIntersect);
+    run_1d(kernel.bind(ray_buffer, static_cast<cl_int>(rays.size()), renderer_.scene_args(), hits), rays.size());
     return read_back<ClrHit>(hits, rays.size());
 }
 
@@ -55,15 +50,10 @@ ShadeOutput StageRunner::shade(const std::vector<ClrRay>& rays, const std::vecto
     cl::Buffer hit_buffer = input_buffer(hits);
     cl::Buffer colors(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(cl_float4));
     cl::Buffer next_rays(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(ClrRay));
-    cl::Kernel kernel(renderer_.program(), "shade");
-    kernel.setArg(0, ray_buffer);
-    kernel.setArg(1, hit_buffer);
-    kernel.setArg(2, static_cast<cl_int>(rays.size()));
-    kernel.setArg(3, static_cast<cl_int>(reflections));
-    renderer_.bind_scene(kernel, 4);
-    kernel.setArg(4 + Renderer::kSceneArgs, colors);
-    kernel.setArg(5 + Renderer::kSceneArgs, next_rays);
-    run_1d(kernel, rays.size());
+    TypedKernel<ShadeSignature> kernel(renderer_.program(), kShade);
+    run_1d(kernel.bind(ray_buffer, hit_buffer, static_cast<cl_int>(rays.size()), static_cast<cl_int>(reflections),
+                       renderer_.scene_args(), colors, next_rays),
+           rays.size());
     return {read_back<cl_float4>(colors, rays.size()), read_back<ClrRay>(next_rays, rays.size())};
 }
 
