@@ -137,7 +137,7 @@ std::unique_ptr<Renderer> make_renderer(DeviceContext& device, const ErrorScene&
 Image render_timed(Renderer& renderer, const ErrorScene& view, double* kernel_ms, double* wall_ms) {
     FrameTiming timing;
     auto start = std::chrono::steady_clock::now();
-    Image image = renderer.render_view(view.key, &timing, view.frame);
+    Image image = renderer.render(view.key, view.frame, &timing);
     if (wall_ms) *wall_ms = ms_since(start);
     if (kernel_ms) *kernel_ms = timing.kernel_ms;
     return image;
