@@ -1,9 +1,12 @@
 // Renderer::render(key) depends on its key alone, not on the frames rendered before it: the
 // geometry moves to each key's eye and impostors turn to it (with a BVH over them when shadows
-// need one). Each frame is compared with a fresh renderer whose scene starts at that key.
+// need one). Each frame is compared with the reference's image of its key, and byte for byte
+// with a fresh renderer whose scene starts at that key.
 #include <gtest/gtest.h>
 
+#include "reference/reference.h"
 #include "render/renderer.h"
+#include "support/image_compare.h"
 #include "support/opencl_test_device.h"
 #include "support/random_scene.h"
 #include "support/scene_builder.h"
@@ -29,8 +32,14 @@ Image fresh_render(Scene scene, const CameraKey& key, int frame) {
 void expect_each_frame_as_if_first(const Scene& scene, const std::vector<CameraKey>& keys) {
     Renderer renderer(testing::test_device(), scene);
     for (std::size_t k = 0; k < keys.size(); ++k) {
-        Image image = renderer.render(keys[k], static_cast<int>(k));
-        EXPECT_EQ(image.rgba, fresh_render(scene, keys[k], static_cast<int>(k)).rgba) << "frame " << k;
+        const int frame = static_cast<int>(k);
+        Image image = renderer.render(keys[k], frame);
+        // Float kernels may differ from the double reference on silhouettes and edges only.
+        testing::ImageComparison comparison =
+            testing::compare_images(image, reference::render(scene, reference::camera_of(scene, keys[k]), frame));
+        EXPECT_LE(comparison.differing_fraction(), 0.01) << "frame " << k << ": " << comparison.differing;
+        EXPECT_EQ(comparison.differing_off_edge, 0) << "frame " << k << ": " << comparison.first_off_edge;
+        EXPECT_EQ(image.rgba, fresh_render(scene, keys[k], frame).rgba) << "frame " << k;
     }
 }
 
