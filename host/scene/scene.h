@@ -106,7 +106,8 @@ struct Scene {
 
     std::vector<std::string> warnings;  // unknown keys and similar, one line each
 
-    // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (docs/scene-format.md, Conventions: Lighting and shadows).
+    // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (docs/scene-format.md,
+    // Conventions: Lighting and shadows).
     bool lit() const { return has_sun && !only_ambient; }
     bool is_animated() const { return camera_path.size() >= 2; }
 };
