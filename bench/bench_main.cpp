@@ -22,7 +22,7 @@
 #include "core/errors.h"
 #include "device/device_selection.h"
 #include "output/image_writer.h"
-#include "render/device_camera.h"
+#include "render/frame_camera.h"
 
 #if CLRENDER_BENCH_HAVE_EMBREE
 #include "bench/embree_peer.h"
@@ -123,12 +123,13 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     const RunSettings& settings = options.settings;
     Scene scene = make_bench_scene(spec, settings.width, settings.height);
     const CameraKey& key = scene.camera_path.front();
-    ClrCamera camera = make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, settings.width, settings.height);
+    // Embree's copy of the scene keeps scene coordinates (origin (0, 0, 0)).
+    ClrCamera camera = make_frame_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, settings.width, settings.height).device();
     SceneRow row;
     row.spec = spec;
 
     std::cerr << "bench: " << spec.name << ": setting up" << std::endl;
-    ClrenderSide clr(device, scene, camera);
+    ClrenderSide clr(device, scene);
     row.clr_setup_ms = clr.setup_ms();
     ClrenderFrame warmup = clr.render_frame();
     bool clr_done = keep_if_slow(warmup.wall_ms, row.clr_wall_ms);

@@ -192,9 +192,10 @@ void billboard_bounds(const RTCBoundsFunctionArguments* args) {
     *args->bounds_o = peer->billboard_boxes[args->primID];
 }
 
-std::vector<RTCBounds> compute_billboard_boxes(const Scene& scene) {
+std::vector<RTCBounds> compute_billboard_boxes(const FrameGeometry& frame) {
     std::vector<RTCBounds> boxes;
-    for (const Billboard& bb : scene.billboards) {
+    for (std::size_t i = 0; i < frame.billboard_count(); ++i) {
+        const Billboard& bb = frame.billboard(i);
         Vec3 corners[4] = {bb.upper_left, bb.lower_left, bb.upper_right,
                            bb.lower_left + (bb.upper_right - bb.upper_left)};
         float lo[3], hi[3];
@@ -331,8 +332,10 @@ struct EmbreePeer::State {
 EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std::make_unique<State>()) {
     const Stopwatch stopwatch;
     PeerScene& peer = state_->peer;
-    peer.compiled = compile_scene(scene);
-    peer.billboard_boxes = compute_billboard_boxes(placed_scene(scene, peer.compiled));  // impostors as placed
+    FrameGeometry frame(scene);
+    frame.place_impostors(scene.camera_path.front());  // clrender's frames place them likewise
+    peer.compiled = compile_scene(frame);
+    peer.billboard_boxes = compute_billboard_boxes(frame);
     for (std::size_t i = 3; i < peer.compiled.texels.size(); i += 4) peer.texel_alpha.push_back(peer.compiled.texels[i]);
 
     state_->device.reset(rtcNewDevice(nullptr));

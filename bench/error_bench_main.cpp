@@ -137,7 +137,7 @@ std::unique_ptr<Renderer> make_renderer(DeviceContext& device, const ErrorScene&
 Image render_timed(Renderer& renderer, const ErrorScene& view, double* kernel_ms, double* wall_ms) {
     FrameTiming timing;
     const Stopwatch stopwatch;
-    Image image = renderer.render_view(view.key, &timing, view.frame);
+    Image image = renderer.render(view.key, view.frame, &timing);
     if (wall_ms) *wall_ms = stopwatch.elapsed_ms();
     if (kernel_ms) *kernel_ms = timing.kernel_ms;
     return image;

@@ -2,7 +2,7 @@
 // channels (alpha is ignored; rendered frames are opaque).
 #pragma once
 
-#include "scene/scene.h"
+#include "core/image.h"
 
 namespace clr::bench {
 

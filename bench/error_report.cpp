@@ -162,7 +162,7 @@ constexpr const char* kHowToRead = R"(## How to read it
   each pixel (the reference's own sampling error is not in the figures).
 - **kernel ms** is the median device time of the render kernel (OpenCL profiling events) over
   the timed frames, after one warm-up frame per setting; **wall ms** the median wall time of
-  `Renderer::render_view()`: per-frame host work (screen tiles), the kernel, and reading the
+  `Renderer::render()`: per-frame host work (screen tiles), the kernel, and reading the
   image back. The settings of a scene take turns frame by frame, so that load from other
   processes slows them alike.
 - **RMSE** is the root mean square difference over every R, G and B byte (0..255 scale);

@@ -12,9 +12,9 @@
 #include <utility>
 
 #include "app/output_plan.h"
+#include "core/image.h"
 #include "output/staged_outputs.h"
 #include "output/video_encoder.h"
-#include "scene/scene.h"
 
 namespace clr {
 

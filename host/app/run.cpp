@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/frame_sink.h"
+#include "app/opencl_frame_renderer.h"
+#include "app/reference_frame_renderer.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "core/stopwatch.h"
@@ -17,7 +19,6 @@
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
 #include "scene/camera_path.h"
-#include "render/frame_renderer.h"
 #include "scene/image_loader.h"
 #include "scene/scene_loader.h"
 
@@ -98,8 +99,8 @@ std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene
     renderer_options.between_bands = throw_if_interrupted;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
-    if (devices.valid()) return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options);
-    return make_opencl_frame_renderer(scene, options.device, renderer_options);
+    // run() lists the devices while the scene loads whenever it renders with OpenCL.
+    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options);
 }
 
 // A frame written earlier (--assemble, --resume), checked to be of the scene's size.

@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "core/image.h"
 #include "output/atomic_file.h"
-#include "scene/scene.h"
 
 namespace clr {
 

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "output/atomic_file.h"
 #include "output/child_process.h"
 #include "output/encoder_timeout.h"
-#include "scene/scene.h"
 
 namespace clr {
 

@@ -1,5 +1,6 @@
-// Reference camera: the orthonormal basis and the witness point of each pixel (SPEC 2,
-// Camera; the lecture's "Building coordinates system" and "Witness points").
+// Reference camera: the orthonormal basis and the witness point of each pixel
+// (docs/scene-format.md, Conventions: Camera; the lecture's "Building coordinates system" and
+// "Witness points").
 #include <cmath>
 
 #include "reference/reference.h"
@@ -33,6 +34,10 @@ CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, dou
         camera.half_width = half_extent * width / height;
     }
     return camera;
+}
+
+CameraFrame camera_of(const Scene& scene, const CameraKey& key) {
+    return make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
 }
 
 Ray primary_ray(const CameraFrame& camera, int col, int row) { return primary_ray_through(camera, col, row, 0.5, 0.5); }

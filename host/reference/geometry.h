@@ -1,6 +1,7 @@
 // Internal to the reference renderer: the ray-surface geometry that intersect(),
 // decision_margin() and trace() share. Written from the lecture's formulas (ray-sphere
-// quadratic, ray-plane t, billboard coordinates) and SPEC section 2, in double precision.
+// quadratic, ray-plane t, billboard coordinates) and the conventions of docs/scene-format.md,
+// in double precision.
 #pragma once
 
 #include "reference/reference.h"
@@ -36,7 +37,8 @@ PlaneHit billboard_plane_hit(const Billboard& billboard, const Ray& ray);
 
 inline bool inside_unit_square(double a, double b) { return a >= 0 && a <= 1 && b >= 0 && b <= 1; }
 
-// Billboards that show an image (a mirror ignores its image, SPEC 2 Mirrors).
+// Billboards that show an image (a mirror ignores its image: docs/scene-format.md,
+// Conventions: Mirrors).
 inline bool is_textured(const Billboard& billboard) { return billboard.image && !billboard.is_mirror; }
 
 // The texel under billboard coordinates (a, b): column floor(a W), row floor(b H), clamped.

@@ -14,7 +14,7 @@ using detail::texel_is_opaque;
 namespace {
 
 // A billboard point counts as a hit unless it lies on a transparent texel, which lets the
-// ray through as if the billboard were not there (SPEC 2, Images).
+// ray through as if the billboard were not there (docs/scene-format.md, Conventions: Billboards).
 bool billboard_blocks(const Billboard& billboard, double a, double b) {
     if (!inside_unit_square(a, b)) return false;
     if (!is_textured(billboard)) return true;

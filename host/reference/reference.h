@@ -1,6 +1,6 @@
 // The double-precision host reference: an independent implementation of every kernel stage
 // (camera rays, nearest-hit intersection, shading), written from the lecture's formulas and
-// SPEC section 2, not from the kernels. Tests compare each kernel with it; `--reference`
+// the conventions of docs/scene-format.md, not from the kernels. Tests compare each kernel with it; `--reference`
 // renders with it.
 #pragma once
 
@@ -20,7 +20,7 @@ struct Ray {
     Vec3 direction;  // unit length
 };
 
-// The camera of one frame (SPEC 2, Camera).
+// The camera of one frame (docs/scene-format.md, Conventions: Camera).
 struct CameraFrame {
     Vec3 eye;
     Vec3 u, v, w;        // orthonormal: u screen right, v screen up, w towards the viewer
@@ -31,6 +31,8 @@ struct CameraFrame {
 
 CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, double fov_degrees, int width,
                         int height);
+// The camera at `key` with the scene's up vector, field of view and image size.
+CameraFrame camera_of(const Scene& scene, const CameraKey& key);
 
 // The ray from the eye through the centre of pixel (col, row); row 0 is the top row.
 Ray primary_ray(const CameraFrame& camera, int col, int row);
@@ -69,7 +71,8 @@ Hit intersect(const Scene& scene, const Ray& ray, double t_max = kInfinity, Surf
 double decision_margin(const Scene& scene, const Ray& ray);
 
 // The colour seen along a primary ray: flat or sun-lit surfaces, shadows, mirrors up to the
-// scene's MaxDepth, background (SPEC 2, Lighting and Mirrors). Unclamped.
+// scene's MaxDepth, background (docs/scene-format.md, Conventions: Lighting and shadows;
+// docs/scene-format.md, Conventions: Mirrors). Unclamped.
 Color trace(const Scene& scene, const Ray& ray);
 
 // Display byte for a colour channel: round(clamp(c, 0, 1) * 255).

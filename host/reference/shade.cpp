@@ -1,4 +1,5 @@
-// Reference shading: what colour a ray sees (SPEC 2, Lighting and Mirrors).
+// Reference shading: what colour a ray sees (docs/scene-format.md, Conventions: Lighting and
+// shadows; docs/scene-format.md, Conventions: Mirrors).
 #include "reference/geometry.h"
 
 namespace clr::reference {

@@ -9,8 +9,9 @@ namespace clr {
 namespace {
 
 // The first band of a run, before anything is measured, holds this much work (samples x row
-// work): a few milliseconds on two CPU cores with PoCL, so that a stop request during it
-// waits little on any device.
+// work): a small fraction of the band target on the slowest device measured, so that a stop
+// request during it waits little on any device (docs/architecture.md, "Bands of rows: a frame
+// that can be stopped").
 constexpr double kFirstBandWork = 1 << 18;
 // A band may hold at most this many times the rows of the band before it: a second guard,
 // besides row_work(), against rows much costlier than the estimate says (mirrors, shadows).

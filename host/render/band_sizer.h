@@ -29,8 +29,10 @@ public:
     // `target_seconds`: the wall time a band aims at.
     explicit BandSizer(double target_seconds);
 
-    // Samples a band holds at the most, whatever the estimate says: about 0.1 s on two CPU cores
-    // with PoCL, so even rows ten times costlier than average end a band within a second.
+    // Samples a band holds at the most, whatever the estimate says: empty sky measures as free,
+    // and bands grown over it would take seconds once they reach costly rows. This many stay
+    // near the band target on the slowest device measured, so even rows ten times costlier than
+    // average end a band soon (docs/architecture.md, "Bands of rows: a frame that can be stopped").
     static constexpr double kMostSamplesPerBand = 1 << 23;
 
     // Starts a frame of `width` pixels a row: `work` per row (row_work()), `samples` per pixel.

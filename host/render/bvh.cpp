@@ -38,18 +38,18 @@ struct Primitive {
     std::uint32_t item;
 };
 
-std::vector<Primitive> primitives_of(const Scene& scene) {
+std::vector<Primitive> primitives_of(const FrameGeometry& frame) {
     std::vector<Primitive> primitives;
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        const Sphere& s = scene.spheres[i];
+    for (std::size_t i = 0; i < frame.spheres().size(); ++i) {
+        const Sphere& s = frame.spheres()[i];
         Vec3 r{s.radius, s.radius, s.radius};
         Primitive p{{}, s.center, static_cast<std::uint32_t>(i)};
         p.box.grow(s.center - r);
         p.box.grow(s.center + r);
         primitives.push_back(p);
     }
-    for (std::size_t i = 0; i < scene.billboards.size(); ++i) {
-        const Billboard& b = scene.billboards[i];
+    for (std::size_t i = 0; i < frame.billboard_count(); ++i) {
+        const Billboard& b = frame.billboard(i);
         Vec3 lower_right = b.upper_right + (b.lower_left - b.upper_left);
         Primitive p{{}, (b.upper_left + lower_right) * 0.5, static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD};
         for (const Vec3& corner : {b.upper_left, b.upper_right, b.lower_left, lower_right}) p.box.grow(corner);
@@ -155,7 +155,7 @@ float up(double v) {
 
 }  // namespace
 
-Bvh build_bvh(const Scene& scene) { return Builder(primitives_of(scene)).build(); }
+Bvh build_bvh(const FrameGeometry& frame) { return Builder(primitives_of(frame)).build(); }
 
 std::vector<ClrBvhNode> compile_bvh(const Bvh& bvh, const Vec3& origin) {
     std::vector<ClrBvhNode> nodes;

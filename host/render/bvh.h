@@ -1,14 +1,15 @@
-// A bounding volume hierarchy over a scene's spheres and billboards, for the rays that screen
-// tiles cannot cull: shadow rays and mirror reflections. Built once per scene on the host
-// (binned surface-area heuristic); its bounds are re-expressed relative to each frame's
-// origin when uploaded, like the rest of the geometry (see compile_scene).
+// A bounding volume hierarchy over a frame's spheres and billboards, for the rays that screen
+// tiles cannot cull: shadow rays and mirror reflections. Built on the host (binned
+// surface-area heuristic) once per scene, or every frame when impostors turn; its bounds are
+// re-expressed relative to each frame's origin when uploaded, like the rest of the geometry
+// (see compile_scene).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "core/vec3.h"
-#include "scene/scene.h"
+#include "render/frame_geometry.h"
 #include "shared/clr_types.h"
 
 namespace clr {
@@ -27,7 +28,7 @@ struct Bvh {
     std::vector<std::uint32_t> items;  // object index, with CLR_TILE_BILLBOARD for billboards
 };
 
-Bvh build_bvh(const Scene& scene);
+Bvh build_bvh(const FrameGeometry& frame);
 
 // The device form, bounds relative to `origin` and rounded outwards to float so that they
 // still contain every object after rounding.

@@ -4,18 +4,22 @@
 #include <string>
 
 #include "core/errors.h"
-
 #include "render/device_structs.h"
-#include "render/impostor_placement.h"
 
 namespace clr {
 namespace {
 
 constexpr std::uint64_t kMaxPackedTexels = 0xFFFFFFFFull;
 
+// The parts of the device structs that depend on the frame's origin.
+clr_float4 center_radius_of(const Sphere& sphere, const Vec3& origin) {
+    return to_float4(sphere.center - origin, static_cast<float>(sphere.radius));
+}
+clr_float4 corner_of(const Billboard& billboard, const Vec3& origin) { return to_float4(billboard.upper_left - origin); }
+
 ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
     ClrSphere out{};
-    out.center_radius = to_float4(sphere.center - origin, static_cast<float>(sphere.radius));
+    out.center_radius = center_radius_of(sphere, origin);
     out.color = to_float4(sphere.ambient);
     out.flags = sphere.is_mirror ? CLR_SURFACE_MIRROR : 0u;
     return out;
@@ -60,7 +64,7 @@ ClrBillboard compile_billboard(const Billboard& billboard, const TextureSlot* te
     double m2 = dot(m, m);
 
     ClrBillboard out{};
-    out.corner = to_float4(billboard.upper_left - origin);
+    out.corner = corner_of(billboard, origin);
     out.normal = to_float4(normalize(cross(edge_b, edge_a)));  // front: (LL-UL) x (UR-UL)
     out.dual_a = to_float4(cross(edge_b, m) / m2);
     out.dual_b = to_float4(cross(m, edge_a) / m2);
@@ -76,28 +80,8 @@ ClrBillboard compile_billboard(const Billboard& billboard, const TextureSlot* te
     return out;
 }
 
-void place_impostors(CompiledScene& compiled, const Scene& scene, const CameraKey& key, const Vec3& origin) {
-    place_impostors(scene, PlacementCamera(key, scene.up), 0, compiled.placed_impostors);
-    std::size_t first = scene.billboards.size();
-    compiled.billboards.resize(first + compiled.placed_impostors.size());
-    for (std::size_t i = 0; i < compiled.placed_impostors.size(); ++i) {
-        const Billboard& billboard = compiled.placed_impostors[i];
-        compiled.billboards[first + i] = compile_billboard(billboard, texture_of(billboard, compiled), origin);
-    }
-}
-
-void move_origin(CompiledScene& compiled, const Scene& scene, const Vec3& origin) {
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        compiled.spheres[i].center_radius =
-            to_float4(scene.spheres[i].center - origin, static_cast<float>(scene.spheres[i].radius));
-    for (std::size_t i = 0; i < scene.billboards.size(); ++i)
-        compiled.billboards[i].corner = to_float4(scene.billboards[i].upper_left - origin);
-    for (std::size_t i = 0; i < compiled.placed_impostors.size(); ++i)
-        compiled.billboards[scene.billboards.size() + i].corner = to_float4(compiled.placed_impostors[i].upper_left - origin);
-    compiled.info.sun = to_float4(scene.sun_location - origin);
-}
-
-CompiledScene compile_scene(const Scene& scene, const Vec3& origin) {
+CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
+    const Scene& scene = frame.scene();
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);
     for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(compile_sphere(sphere, origin));
@@ -105,24 +89,29 @@ CompiledScene compile_scene(const Scene& scene, const Vec3& origin) {
         if (!billboard.is_mirror) pack_texture(billboard.image.get(), compiled);
         compiled.billboards.push_back(compile_billboard(billboard, texture_of(billboard, compiled), origin));
     }
+    // Every view, not only those placed for this frame: a later frame may show any of them.
     for (const Impostor& impostor : scene.impostors) {
         for (const ImpostorView& view : impostor.views) pack_texture(view.image.get(), compiled);
     }
-    if (!scene.impostors.empty() && !scene.camera_path.empty()) place_impostors(compiled, scene, scene.camera_path.front(), origin);
     compiled.info.background = to_float4(scene.background);
-    compiled.info.sun = to_float4(scene.sun_location - origin);
-    compiled.info.sphere_count = static_cast<int>(scene.spheres.size());
-    compiled.info.billboard_count = static_cast<int>(compiled.billboards.size());
     compiled.info.max_depth = scene.max_depth;
     compiled.info.lit = scene.lit() ? 1 : 0;
+    compiled.info.sphere_count = static_cast<int>(scene.spheres.size());
+    compile_frame(compiled, frame, origin);
     return compiled;
 }
 
-Scene placed_scene(const Scene& scene, const CompiledScene& compiled) {
-    Scene placed = scene;
-    placed.impostors.clear();
-    placed.billboards.insert(placed.billboards.end(), compiled.placed_impostors.begin(), compiled.placed_impostors.end());
-    return placed;
+void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Vec3& origin) {
+    const Scene& scene = frame.scene();
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        compiled.spheres[i].center_radius = center_radius_of(scene.spheres[i], origin);
+    for (std::size_t i = 0; i < scene.billboards.size(); ++i)
+        compiled.billboards[i].corner = corner_of(scene.billboards[i], origin);
+    compiled.billboards.resize(frame.billboard_count());
+    for (std::size_t i = frame.first_impostor(); i < frame.billboard_count(); ++i)
+        compiled.billboards[i] = compile_billboard(frame.billboard(i), texture_of(frame.billboard(i), compiled), origin);
+    compiled.info.sun = to_float4(scene.sun_location - origin);
+    compiled.info.billboard_count = static_cast<int>(compiled.billboards.size());
 }
 
 }  // namespace clr

@@ -67,11 +67,9 @@ Billboard place_impostor(const Impostor& impostor, const PlacementCamera& camera
     return billboard;
 }
 
-void place_impostors(const Scene& scene, const PlacementCamera& camera, std::size_t first,
-                     std::vector<Billboard>& billboards) {
-    billboards.resize(first + scene.impostors.size());
-    for (std::size_t i = 0; i < scene.impostors.size(); ++i)
-        billboards[first + i] = place_impostor(scene.impostors[i], camera);
+void place_impostors(const Scene& scene, const PlacementCamera& camera, std::vector<Billboard>& placed) {
+    placed.resize(scene.impostors.size());
+    for (std::size_t i = 0; i < scene.impostors.size(); ++i) placed[i] = place_impostor(scene.impostors[i], camera);
 }
 
 }  // namespace clr

@@ -26,8 +26,8 @@ int choose_view(const Impostor& impostor, const PlacementCamera& camera);
 // The billboard `impostor` is for one frame: front normal towards the eye, image upright.
 Billboard place_impostor(const Impostor& impostor, const PlacementCamera& camera);
 
-// Replaces billboards[first ...] by the scene's impostors placed for `camera`.
-void place_impostors(const Scene& scene, const PlacementCamera& camera, std::size_t first,
-                     std::vector<Billboard>& billboards);
+// The scene's impostors placed for `camera`, in order, into `placed` (whose storage is reused
+// from frame to frame).
+void place_impostors(const Scene& scene, const PlacementCamera& camera, std::vector<Billboard>& placed);
 
 }  // namespace clr

@@ -1,13 +1,12 @@
 #include "render/renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 
 #include "core/errors.h"
+#include "core/stopwatch.h"
 #include "device/cl_errors.h"
 #include "device/kernel_sources.h"
-#include "render/device_camera.h"
 #include "render/screen_tiles.h"
 #include "shared/clr_samples.h"
 
@@ -36,13 +35,9 @@ cl::Buffer upload(const cl::Context& context, const std::vector<T>& data) {
     return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, size, const_cast<void*>(bytes));
 }
 
-double elapsed_ms(std::chrono::steady_clock::time_point since) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
-}
-
 // Whether the device works in host memory (CPU devices such as PoCL's): then the kernel
 // writes into the image itself, through a buffer over its storage, instead of into a
-// device buffer that is then copied (8 MB a 1080p frame, 0.6-0.9 ms on the benchmark machine).
+// device buffer whose every byte is then copied once more (docs/benchmarks.md).
 bool shares_host_memory(const cl::Device& device) {
     return device.getInfo<CL_DEVICE_TYPE>() == CL_DEVICE_TYPE_CPU && device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>();
 }
@@ -52,20 +47,23 @@ bool shares_host_memory(const cl::Device& device) {
 Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options)
     : device_(device),
       scene_(scene),
+      frame_(scene_),
       screen_tiles_(options.screen_tiles),
       band_sizer_(options.band_seconds),
       fixed_band_rows_(options.band_rows),
       between_bands_(options.between_bands) {
-    compiled_ = compile_scene(scene);
+    // Impostors start placed for the first key, so that the buffers have their frames' sizes.
+    if (!scene_.camera_path.empty()) frame_.place_impostors(scene_.camera_path.front());
+    compiled_ = compile_scene(frame_, origin_);
     features_ = options.features.value_or(compiled_.features);
     features_.double_precision = options.double_precision;
     if (options.double_precision && device_.device().getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() == 0)
         throw DeviceError("'" + device_.entry().device_name +
                           "' has no double precision (cl_khr_fp64); use --precision float or another device");
 
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch build_time;
     program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
-    build_ms_ = elapsed_ms(start);
+    build_ms_ = build_time.elapsed_ms();
     try {
         if (screen_tiles_)
             render_packets_ = TypedKernel<RenderPacketsSignature>(program_, kRenderPackets);
@@ -73,9 +71,9 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
             render_ = TypedKernel<RenderSignature>(program_, kRender);
         scene_args_.texels = upload(device_.context(), compiled_.texels);
         compiled_.texels = {};  // on the device now; frames only move positions
-        if (!scene_.impostors.empty()) placed_ = placed_scene(scene_, compiled_);
-        if (features_.bvh) bvh_ = build_bvh(geometry());  // otherwise empty: never read
+        if (features_.bvh) bvh_ = build_bvh(frame_);  // otherwise empty: never read
         upload_geometry();
+        uploaded_ = true;
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
         render_in_place_ = shares_host_memory(device_.device());
     } catch (const cl::Error& error) {
@@ -92,49 +90,35 @@ void Renderer::upload_geometry() {
     scene_args_.info = compiled_.info;
 }
 
-void Renderer::set_origin(const Vec3& origin) {
-    if (origin == origin_) return;
-    Vec3 previous = origin_;
+// Only positions change from frame to frame; impostors also turn, and then their billboards
+// and the BVH over them are made anew.
+void Renderer::show(const CameraKey& key, const Vec3& origin) {
+    bool turns = !scene_.impostors.empty();
+    if (uploaded_ && origin == origin_ && !turns) return;
+    uploaded_ = false;
     origin_ = origin;
-    try {
-        move_origin(compiled_, scene_, origin);
-        upload_geometry();
-    } catch (const cl::Error& error) {
-        origin_ = previous;
-        move_origin(compiled_, scene_, previous);
-        throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
-    }
-}
-
-// Impostors turn to each frame's eye: their billboards, and the BVH over them, are made anew.
-void Renderer::face_impostors(const CameraKey& key) {
-    Vec3 previous = origin_;
-    origin_ = key.eye;
-    move_origin(compiled_, scene_, origin_);
-    place_impostors(compiled_, scene_, key, origin_);
-    // Only the placed impostors change; the rest of placed_ was copied once, at construction.
-    placed_.billboards.resize(scene_.billboards.size());
-    placed_.billboards.insert(placed_.billboards.end(), compiled_.placed_impostors.begin(),
-                              compiled_.placed_impostors.end());
-    if (features_.bvh) bvh_ = build_bvh(placed_);
+    if (turns) frame_.place_impostors(key);
+    compile_frame(compiled_, frame_, origin_);
+    if (turns && features_.bvh) bvh_ = build_bvh(frame_);
     try {
         upload_geometry();
     } catch (const cl::Error& error) {
-        origin_ = previous;
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
+    uploaded_ = true;
 }
 
-Image Renderer::render_view(const CameraKey& key, FrameTiming* timing, int frame) {
-    if (scene_.impostors.empty())
-        set_origin(key.eye);
-    else
-        face_impostors(key);
-    ClrCamera camera = make_device_camera(key.eye - origin_, key.lookat - origin_, scene_.up, scene_.fov_degrees,
-                                          scene_.width, scene_.height);
-    camera.samples = scene_.sampling.samples_per_pixel;
-    camera.frame_seed = clr_frame_seed(scene_.sampling.seed, static_cast<unsigned>(frame));
-    return render_frame(camera, timing);
+Image Renderer::render(const CameraKey& key, int frame, FrameTiming* timing) {
+    FrameCamera camera = frame_camera(scene_, key, frame);
+    show(key, camera.origin);
+    return render_camera(camera, timing);
+}
+
+void Renderer::warm_up() {
+    const CameraKey& key = scene_.camera_path.front();
+    FrameCamera thumbnail = make_frame_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, 64, 36, key.eye);
+    show(key, thumbnail.origin);
+    render_camera(thumbnail, nullptr);
 }
 
 void Renderer::recycle(Image&& image) { spare_pixels_ = std::move(image.rgba); }
@@ -194,8 +178,8 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
     return static_cast<double>(ns) * 1e-6;
 }
 
-ScreenTiles Renderer::upload_screen_tiles(const ClrCamera& camera) {
-    ScreenTiles tiles = bin_screen_tiles(geometry(), camera, origin_);
+ScreenTiles Renderer::upload_screen_tiles(const FrameCamera& camera) {
+    ScreenTiles tiles = bin_screen_tiles(frame_, camera);
     tile_args_.offsets = upload(device_.context(), tiles.offsets);
     tile_args_.items = upload(device_.context(), tiles.items);
     tile_args_.nearest = upload(device_.context(), tiles.nearest);
@@ -208,14 +192,15 @@ ScreenTiles Renderer::upload_screen_tiles(const ClrCamera& camera) {
 // second, and also when one band's pixel buffer exceeds the device's allocation limit, or its
 // allocation fails: then the limit halves until a band fits. Bands give the same bytes: every
 // pixel's samples depend on the pixel and the frame (clr_samples.h), not on its band.
-Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
-    auto start = std::chrono::steady_clock::now();
+Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
+    const Stopwatch frame_time;
+    const ClrCamera camera = view.device();
     Image image;
     image.width = camera.width;
     image.height = camera.height;
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
     // Every pixel is written below, so recycled storage of the right size needs no clearing;
-    // new storage costs a page fault and a zero fill per page (3.5 ms at 1080p).
+    // new storage costs a page fault and a zero fill per page (docs/benchmarks.md).
     if (spare_pixels_.size() == row_bytes * camera.height) image.rgba.swap(spare_pixels_);
     spare_pixels_.clear();
     image.rgba.resize(row_bytes * camera.height);
@@ -226,19 +211,19 @@ Image Renderer::render_frame(const ClrCamera& camera, FrameTiming* timing) {
     std::vector<double> work;
     if (screen_tiles_) {
         try {
-            work = row_work(upload_screen_tiles(camera), camera.width, camera.height);
+            work = row_work(upload_screen_tiles(view), camera.width, camera.height);
         } catch (const cl::Error& error) {
             throw DeviceError(describe_cl_error(error, "uploading screen tiles to '" + device_.entry().device_name + "'"));
         }
     } else {
-        int objects = static_cast<int>(geometry().spheres.size() + geometry().billboards.size());
+        int objects = static_cast<int>(frame_.object_count());
         work = row_work(objects, camera.width, camera.height);
     }
     band_sizer_.start_frame(std::move(work), camera.samples, camera.width);
     double kernel_ms = render_bands(camera, image);
     if (timing) {
         timing->kernel_ms = kernel_ms;
-        timing->total_ms = elapsed_ms(start);
+        timing->total_ms = frame_time.elapsed_ms();
     }
     return image;
 }
@@ -252,7 +237,7 @@ double Renderer::render_bands(const ClrCamera& camera, Image& image) {
         if (between_bands_) between_bands_();
         int rows = fixed_band_rows_ > 0 ? std::min({fixed_band_rows_, limit, camera.height - first_row})
                                         : band_sizer_.next_rows(first_row, limit);
-        auto band_start = std::chrono::steady_clock::now();
+        const Stopwatch band_time;
         try {
             kernel_ms += render_band(camera, first_row, rows, image);
         } catch (const cl::Error& error) {
@@ -261,7 +246,7 @@ double Renderer::render_bands(const ClrCamera& camera, Image& image) {
             limit = std::max(1, rows / 2);
             continue;  // the same rows again, in a smaller band
         }
-        band_sizer_.band_done(first_row, rows, elapsed_ms(band_start) / 1000);
+        band_sizer_.band_done(first_row, rows, band_time.elapsed_seconds());
         first_row += rows;
         ++bands_;
     }

@@ -1,6 +1,6 @@
 // Renders frames of one scene on one OpenCL device. Construction builds the program for the
-// scene's feature set and uploads the scene buffers once; each frame then only changes the
-// camera.
+// scene's feature set and uploads the scene buffers once; each frame then moves the geometry
+// to its eye and places the impostors (FrameGeometry -> CompiledScene, BVH, screen tiles).
 #pragma once
 
 #include <functional>
@@ -12,6 +12,9 @@
 #include "render/band_sizer.h"
 #include "render/bvh.h"
 #include "render/compiled_scene.h"
+#include "render/frame_camera.h"
+#include "render/frame_geometry.h"
+#include "render/frame_timing.h"
 #include "render/kernel_signatures.h"
 #include "scene/scene.h"
 
@@ -21,7 +24,7 @@ struct RendererOptions {
     std::string kernel_dir;                // read kernels from here instead of the embedded copies
     std::optional<FeatureSet> features;    // compile these instead of the scene's own (tests)
     // Largest pixel buffer to allocate on the device, in bytes; 0: the device's own limit.
-    // No band is larger (see render_frame()).
+    // No band is larger (see render_bands()).
     std::size_t max_buffer_bytes = 0;
     // Every frame renders in bands of rows, each sized to take about band_seconds, so that
     // between_bands runs several times a second however long the frame takes.
@@ -38,35 +41,28 @@ struct RendererOptions {
     bool double_precision = false;
 };
 
-struct FrameTiming {
-    double kernel_ms = 0;  // device time of the render kernel (OpenCL profiling events)
-    double total_ms = 0;   // wall time from enqueue to the finished image in host memory
-};
-
 class Renderer {
 public:
     // Throws DeviceError on a build or upload failure.
     Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options = {});
+    // The frame geometry refers to the renderer's own copy of the scene.
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
 
-    // Renders the frame seen from camera key `key` with the scene's up vector, field of view
-    // and size. The scene's coordinates are first made relative to the key's eye (see
-    // compile_scene), so float32 precision does not depend on where the scene lies.
-    // `frame` (the animation frame index) seeds the sample pattern with the scene's seed.
-    Image render_view(const CameraKey& key, FrameTiming* timing = nullptr, int frame = 0);
+    // Renders the frame seen from camera key `key` with the scene's up vector, field of view,
+    // size and sampling; `frame` (the animation frame index) seeds the sample pattern with the
+    // scene's seed. Each call places everything for its own key: the result depends on no
+    // earlier call. Throws DeviceError.
+    Image render(const CameraKey& key, int frame = 0, FrameTiming* timing = nullptr);
 
-    // Renders one frame seen by `camera`, given in the renderer's current coordinates
-    // (origin() subtracted; (0, 0, 0) until render_view() moves it). Its width and height set
-    // the image size. Impostors stay placed as for the last render_view() (at first: for the
-    // scene's first camera key).
-    Image render_frame(const ClrCamera& camera, FrameTiming* timing = nullptr);
+    // Renders a small frame of the scene's first camera key and throws it away, so that work a
+    // driver does on a kernel's first launch (PoCL compiles it for the work-group size) is not
+    // timed with the first real frame (the benchmark).
+    void warm_up();
 
     // Hands back a frame's image once the caller is done with it: the next frame of the same
     // size renders into its storage instead of new memory.
     void recycle(Image&& image);
-
-    // Makes device coordinates relative to `origin`, re-uploading the geometry if it moved.
-    void set_origin(const Vec3& origin);
-    const Vec3& origin() const { return origin_; }
 
     const FeatureSet& features() const { return features_; }
     int bands_of_last_frame() const { return bands_; }
@@ -77,24 +73,27 @@ public:
     const SceneArgs& scene_args() const { return scene_args_; }
 
 private:
+    // Moves the device geometry to `origin` (the frame camera's) and places the impostors for
+    // `key`, uploading what changed.
+    void show(const CameraKey& key, const Vec3& origin);
+    // Renders the frame seen by `camera`, the geometry already shown for it.
+    Image render_camera(const FrameCamera& camera, FrameTiming* timing);
     // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
     double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
     // Renders every row of `image` in bands (band_sizer_ started for this frame); returns the
     // summed kernel time in ms.
     double render_bands(const ClrCamera& camera, Image& image);
     void reserve_pixels(std::size_t bytes);
-    ScreenTiles upload_screen_tiles(const ClrCamera& camera);
+    ScreenTiles upload_screen_tiles(const FrameCamera& camera);
     void upload_geometry();
-    void face_impostors(const CameraKey& key);
-    // What the screen tiles and the BVH see: the scene, with its impostors as placed billboards.
-    const Scene& geometry() const { return scene_.impostors.empty() ? scene_ : placed_; }
 
     DeviceContext& device_;
-    Scene scene_;  // the geometry, for binning each frame's screen tiles (images are shared)
-    Scene placed_;  // scene_ with its impostors placed as billboards (unused without impostors)
-    CompiledScene compiled_;  // its device form, without texels once they are uploaded
+    Scene scene_;  // the renderer's own copy (images are shared)
+    FrameGeometry frame_;  // scene_ as the current frame shows it: impostors placed for its key
+    CompiledScene compiled_;  // frame_'s device form, without texels once they are uploaded
     bool screen_tiles_ = true;
-    Vec3 origin_;
+    Vec3 origin_;  // the scene point at device (0, 0, 0)
+    bool uploaded_ = false;  // the device holds frame_ relative to origin_ (false after a failed upload)
     FeatureSet features_;
     cl::Program program_;
     TypedKernel<RenderPacketsSignature> render_packets_;  // with screen tiles

@@ -8,8 +8,6 @@
 namespace clr {
 namespace {
 
-Vec3 to_vec3(const clr_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
-
 // The pixel rectangle an object may cover, in (fractional) pixel coordinates, or the
 // whole screen when the object reaches behind the eye (its projection is then unbounded), or
 // nothing when it lies wholly behind the eye.
@@ -22,9 +20,9 @@ struct PixelBounds {
 
 class Projector {
 public:
-    Projector(const ClrCamera& camera, const Vec3& origin)
-        : eye_(to_vec3(camera.eye) + origin), forward_(to_vec3(camera.forward)), right_(to_vec3(camera.right)),
-          up_(to_vec3(camera.up)), width_(camera.width), height_(camera.height) {}
+    explicit Projector(const FrameCamera& camera)
+        : eye_(camera.eye_in_scene()), forward_(camera.forward), right_(camera.right), up_(camera.up),
+          width_(camera.width), height_(camera.height) {}
 
     // Widens `bounds` by the projection of `point`. A point less than a small fraction of the
     // scene's distance in front of the eye counts as behind it. An object whose points are all
@@ -114,14 +112,14 @@ bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width,
 
 }  // namespace
 
-ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const Vec3& origin) {
-    Projector projector(camera, origin);
+ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& camera) {
+    Projector projector(camera);
     std::vector<Candidate> candidates;
-    candidates.reserve(scene.spheres.size() + scene.billboards.size());
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        candidates.push_back(sphere_candidate(scene.spheres[i], static_cast<std::uint32_t>(i), projector));
-    for (std::size_t i = 0; i < scene.billboards.size(); ++i)
-        candidates.push_back(billboard_candidate(scene.billboards[i], static_cast<std::uint32_t>(i), projector));
+    candidates.reserve(frame.object_count());
+    for (std::size_t i = 0; i < frame.spheres().size(); ++i)
+        candidates.push_back(sphere_candidate(frame.spheres()[i], static_cast<std::uint32_t>(i), projector));
+    for (std::size_t i = 0; i < frame.billboard_count(); ++i)
+        candidates.push_back(billboard_candidate(frame.billboard(i), static_cast<std::uint32_t>(i), projector));
     // Nearest first, ties by item, so every tile's list is in a deterministic near-to-far order.
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.nearest != b.nearest ? a.nearest < b.nearest : a.item < b.item;
@@ -131,7 +129,8 @@ ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const 
     tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
     tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
     // Two passes over flat arrays (count per tile, then fill in candidate order), without a
-    // list per tile: a frame bins anew, and 8,000 small vectors at 1080p cost milliseconds.
+    // list per tile: a frame bins anew, and a vector per tile (thousands at 1080p) would be
+    // allocated and freed every frame (docs/benchmarks.md).
     struct Placed {
         std::uint32_t item;
         float bound;

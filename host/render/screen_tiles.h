@@ -8,7 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/scene.h"
+#include "render/frame_camera.h"
+#include "render/frame_geometry.h"
 #include "shared/clr_types.h"
 
 namespace clr {
@@ -23,9 +24,8 @@ struct ScreenTiles {
     std::vector<std::uint32_t> rows;
 };
 
-// Bins the scene's objects for the frame seen by `camera` (the same ClrCamera the kernels
-// get, so that the projection matches their rays), whose coordinates are relative to
-// `origin` (see compile_scene).
-ScreenTiles bin_screen_tiles(const Scene& scene, const ClrCamera& camera, const Vec3& origin = {});
+// Bins the frame's objects for the view of `camera`, whose float-rounded values are those the
+// kernels get, so that the projection matches their rays.
+ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& camera);
 
 }  // namespace clr

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "core/cache_entry_folder.h"
+#include "core/image.h"
 #include "core/sha256.h"
-#include "scene/scene.h"
 
 namespace clr {
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "scene/image_budget.h"
 #include "scene/image_cache.h"
 #include "scene/image_loader.h"
 #include "scene/json_reader.h"
-#include "scene/scene.h"
 
 namespace clr {
 

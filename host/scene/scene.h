@@ -2,30 +2,16 @@
 // applied. Nothing here knows about OpenCL; render/ turns a Scene into device data.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "core/vec3.h"
 
 namespace clr {
 
 using Color = Vec3;  // display-referred RGB in [0,1] (values outside are clamped on output)
-
-// An 8-bit RGBA image, rows from top to bottom, 4 bytes a texel. Images without alpha get
-// alpha 255 everywhere.
-struct Image {
-    int width = 0;
-    int height = 0;
-    std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
-    std::string path;                // where it was read from, for messages
-
-    std::uint8_t at(int col, int row, int channel) const {
-        return rgba[(static_cast<std::size_t>(row) * width + col) * 4 + channel];
-    }
-    bool has_transparency() const;  // any alpha below 255
-};
 
 struct Sphere {
     Vec3 center;

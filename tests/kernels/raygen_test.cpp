@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "reference/reference.h"
-#include "render/device_camera.h"
+#include "render/frame_camera.h"
 #include "support/scene_builder.h"
 #include "support/stage_runner.h"
 
@@ -36,7 +36,7 @@ TEST_P(RaygenTest, MatchesReferenceRays) {
     Scene scene = testing::make_scene(c.eye, c.lookat, c.up, c.fov, c.width, c.height);
     scene.spheres.push_back(testing::make_sphere({0, 0, 0}, 1, {1, 1, 1}));
     testing::StageRunner runner(scene);
-    std::vector<ClrRay> rays = runner.raygen(make_device_camera(c.eye, c.lookat, c.up, c.fov, c.width, c.height));
+    std::vector<ClrRay> rays = runner.raygen(make_frame_camera(c.eye, c.lookat, c.up, c.fov, c.width, c.height).device());
     reference::CameraFrame camera = reference::make_camera(c.eye, c.lookat, c.up, c.fov, c.width, c.height);
 
     // float32 rounding of the basis and of the per-pixel sum: a few ulps of a unit vector,
@@ -70,7 +70,7 @@ TEST(Raygen, TopLeftPixelLooksUpAndLeft) {
     Scene scene = testing::make_scene({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 4, 2);
     scene.spheres.push_back(testing::make_sphere({0, 0, -5}, 1, {1, 1, 1}));
     testing::StageRunner runner(scene);
-    std::vector<ClrRay> rays = runner.raygen(make_device_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 4, 2));
+    std::vector<ClrRay> rays = runner.raygen(make_frame_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 4, 2).device());
     const ClrRay& top_left = rays[0];
     const ClrRay& bottom_right = rays[7];
     EXPECT_LT(top_left.direction.s[0], 0);

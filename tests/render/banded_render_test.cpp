@@ -34,7 +34,7 @@ constexpr int kFrame = 3;  // an animation frame: its own sample pattern
 
 Image render_in_bands(const Scene& scene, RendererOptions options, int* bands) {
     Renderer renderer(testing::test_device(), scene, options);
-    Image image = renderer.render_view(scene.camera_path.front(), nullptr, kFrame);
+    Image image = renderer.render(scene.camera_path.front(), kFrame);
     *bands = renderer.bands_of_last_frame();
     return image;
 }
@@ -72,14 +72,14 @@ TEST(BandedRender, BandsOfAnySizeGiveTheSameBytesAsOneLaunch) {
 TEST(BandedRender, AFrameLargerThanOneBufferRendersInBands) {
     Scene scene = test_scene();
     Renderer whole(testing::test_device(), scene);
-    Image expected = whole.render_view(scene.camera_path.front());
+    Image expected = whole.render(scene.camera_path.front());
 
     RendererOptions small;
     small.max_buffer_bytes = 90 * 4 * 7;  // seven rows at a time
     small.band_seconds = 1e6;  // only the buffer decides, however slow the device (Oclgrind)
     Renderer banded(testing::test_device(), scene, small);
     FrameTiming timing;
-    Image image = banded.render_view(scene.camera_path.front(), &timing);
+    Image image = banded.render(scene.camera_path.front(), 0, &timing);
     EXPECT_EQ(banded.bands_of_last_frame(), 9);
     EXPECT_TRUE(image.rgba == expected.rgba);
     EXPECT_GT(timing.kernel_ms, 0);
@@ -99,18 +99,18 @@ TEST(BandedRender, TheCheckBetweenBandsRunsBeforeEachBandAndMayAbandonTheFrame) 
         if (++checks == stop_at) throw StopRequested();
     };
     Renderer renderer(testing::test_device(), scene, options);
-    Image expected = renderer.render_view(scene.camera_path.front());
+    Image expected = renderer.render(scene.camera_path.front());
     EXPECT_EQ(checks, 9);
 
     checks = 0;
     stop_at = 4;
-    EXPECT_THROW(renderer.render_view(scene.camera_path.front()), StopRequested);
+    EXPECT_THROW(renderer.render(scene.camera_path.front()), StopRequested);
     EXPECT_EQ(checks, 4) << "no band after the check that stopped the frame";
 
     // The renderer is still usable: the next frame is whole and right.
     checks = 0;
     stop_at = 0;
-    EXPECT_TRUE(renderer.render_view(scene.camera_path.front()).rgba == expected.rgba);
+    EXPECT_TRUE(renderer.render(scene.camera_path.front()).rgba == expected.rgba);
 }
 
 TEST(BandedRender, ARowThatDoesNotFitIsAClearDeviceError) {
@@ -119,7 +119,7 @@ TEST(BandedRender, ARowThatDoesNotFitIsAClearDeviceError) {
     tiny.max_buffer_bytes = 100;
     Renderer renderer(testing::test_device(), scene, tiny);
     try {
-        renderer.render_view(scene.camera_path.front());
+        renderer.render(scene.camera_path.front());
         FAIL() << "a 90-pixel row cannot fit in 100 bytes";
     } catch (const DeviceError& error) {
         EXPECT_NE(std::string(error.what()).find("a row of 90 pixels needs 360 bytes"), std::string::npos) << error.what();

@@ -57,21 +57,22 @@ void check_structure(const Scene& scene, const Bvh& bvh) {
 TEST(BvhBuild, EveryObjectInOneLeafInsideItsBoxes) {
     for (std::uint32_t seed : {250u, 251u}) {
         Scene scene = testing::make_random_scene(seed, 300, 200);
-        check_structure(scene, build_bvh(scene));
+        check_structure(scene, build_bvh(FrameGeometry(scene)));
     }
 }
 
 TEST(BvhBuild, AFarOutlierDoesNotStopTheSplitting) {
     Scene scene = testing::make_random_scene(252, 400, 0);
     scene.spheres.push_back(testing::make_sphere({0, -1e4, 0}, 1e4 - 12, {0.3, 0.6, 0.3}));  // a ground far below
-    Bvh bvh = build_bvh(scene);
+    Bvh bvh = build_bvh(FrameGeometry(scene));
     check_structure(scene, bvh);
     EXPECT_GT(bvh.nodes.size(), 100u);
     EXPECT_EQ(bvh.nodes[0].count, 0u) << "the root must split";
 }
 
 TEST(BvhBuild, EmptySceneHasNoNodes) {
-    EXPECT_TRUE(build_bvh(testing::make_random_scene(253, 0, 0)).nodes.empty());
+    Scene empty = testing::make_random_scene(253, 0, 0);
+    EXPECT_TRUE(build_bvh(FrameGeometry(empty)).nodes.empty());
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // what the fully general kernel renders for the same scene.
 #include <gtest/gtest.h>
 
-#include "render/device_camera.h"
 #include "render/feature_set.h"
+#include "render/frame_camera.h"
 #include "render/screen_tiles.h"
 
 #include <random>
@@ -100,8 +100,7 @@ TEST(FeatureVariants, ObjectsAllAroundTheCamera) {
         expect_same_as_general(scene);
     }
     const CameraKey& key = scene.camera_path.front();
-    ScreenTiles tiles = bin_screen_tiles(scene, make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees,
-                                                                   scene.width, scene.height));
+    ScreenTiles tiles = bin_screen_tiles(FrameGeometry(scene), frame_camera(scene, key, 0));
     std::size_t tile_count = tiles.offsets.size() - 1;
     EXPECT_LT(tiles.items.size(), tile_count * (scene.spheres.size() + scene.billboards.size()) / 2)
         << "objects behind the camera must not be listed in every tile";

@@ -56,10 +56,6 @@ Scene impostor_scene(const Vec3& eye, const Vec3& lookat) {
     return scene;
 }
 
-reference::CameraFrame reference_camera(const Scene& scene, const CameraKey& key) {
-    return reference::make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
-}
-
 void expect_matches_reference(const Image& kernel, const Image& reference, const std::string& what) {
     testing::ImageComparison comparison = testing::compare_images(kernel, reference);
     EXPECT_LE(comparison.differing_fraction(), 0.002) << what << ": " << comparison.differing << " pixels differ";
@@ -81,7 +77,7 @@ TEST(ImpostorPlacement, HostPlacementEqualsTheReferencesForRandomCameras) {
         impostor.width = 1 + trial % 5;
         Scene scene = impostor_scene(key.eye, key.lookat);
         scene.up = up;
-        reference::CameraFrame camera = reference_camera(scene, key);
+        reference::CameraFrame camera = reference::camera_of(scene, key);
         PlacementCamera placement(key, scene.up);
         Billboard host = place_impostor(impostor, placement);
         Billboard expected = reference::place_impostor(impostor, camera, scene.up);
@@ -99,7 +95,7 @@ TEST(ImpostorPlacement, DegenerateEyesFollowTheDocumentedFallbacks) {
         for (const CameraKey& key : {CameraKey{{1, 9, 3}, {1.5, 2, 2}}, CameraKey{{1, 2, 3}, {0, 2, 0}}}) {
             Scene scene = impostor_scene(key.eye, key.lookat);
             Billboard host = place_impostor(impostor, PlacementCamera(key, scene.up));
-            Billboard expected = reference::place_impostor(impostor, reference_camera(scene, key), scene.up);
+            Billboard expected = reference::place_impostor(impostor, reference::camera_of(scene, key), scene.up);
             EXPECT_LT(length(host.upper_left - expected.upper_left), 1e-12);
             EXPECT_LT(length(host.upper_right - expected.upper_right), 1e-12);
             EXPECT_LT(length(host.lower_left - expected.lower_left), 1e-12);
@@ -138,9 +134,9 @@ TEST(ImpostorFrames, CirclingCameraSwitchesViewsWhereTheReferenceDoes) {
     std::set<int> views_seen;
     for (int k = 0; k < frames; ++k) {
         const CameraKey& key = scene.camera_path[k];
-        reference::CameraFrame camera = reference_camera(scene, key);
+        reference::CameraFrame camera = reference::camera_of(scene, key);
         views_seen.insert(reference::chosen_view(scene.impostors[0], camera));
-        Image kernel = renderer.render_view(key, nullptr, k);
+        Image kernel = renderer.render(key, k);
         expect_matches_reference(kernel, reference::render(scene, camera, k), "frame " + std::to_string(k));
         // The impostor's centre pixel column: left of it the picture's left half shows.
         Image expected_left = k < frames / 2 ? *two_tone(kRed, kBlue) : *two_tone(kGreen, kYellow);
@@ -210,9 +206,9 @@ TEST(ImpostorFrames, ForestWithSunAndMirrorEqualsTheGeneralKernel) {
     Renderer specialised(testing::test_device(), scene);
     Renderer brute_force(testing::test_device(), scene, general);
     for (const CameraKey& key : scene.camera_path) {
-        Image image = specialised.render_view(key);
-        EXPECT_EQ(image.rgba, brute_force.render_view(key).rgba);
-        expect_matches_reference(image, reference::render(scene, reference_camera(scene, key)), "forest");
+        Image image = specialised.render(key);
+        EXPECT_EQ(image.rgba, brute_force.render(key).rgba);
+        expect_matches_reference(image, reference::render(scene, reference::camera_of(scene, key)), "forest");
     }
 }
 

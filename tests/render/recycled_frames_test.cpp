@@ -19,20 +19,20 @@ TEST(RecycledFrames, RenderIntoOldStorageWithoutStalePixels) {
         RendererOptions options;
         options.screen_tiles = tiles;
         Renderer renderer(testing::test_device(), scene, options);
-        Image fresh = renderer.render_view(scene.camera_path[0]);
+        Image fresh = renderer.render(scene.camera_path[0]);
 
         Image garbage = fresh;
         for (std::size_t i = 0; i < garbage.rgba.size(); ++i) garbage.rgba[i] = static_cast<std::uint8_t>(i * 37 + 11);
         const std::uint8_t* storage = garbage.rgba.data();
         renderer.recycle(std::move(garbage));
-        Image reused = renderer.render_view(scene.camera_path[0]);
+        Image reused = renderer.render(scene.camera_path[0]);
         EXPECT_EQ(reused.rgba.data(), storage) << "the recycled storage is used";
         EXPECT_EQ(reused.rgba, fresh.rgba) << (tiles ? "tiles" : "brute force");
 
         Image small = fresh;
         small.rgba.resize(16);
         renderer.recycle(std::move(small));  // the wrong size: new storage
-        EXPECT_EQ(renderer.render_view(scene.camera_path[0]).rgba, fresh.rgba);
+        EXPECT_EQ(renderer.render(scene.camera_path[0]).rgba, fresh.rgba);
     }
 }
 

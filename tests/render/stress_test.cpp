@@ -11,7 +11,7 @@
 #include "support/image_compare.h"
 #include "support/render_helpers.h"
 #include "reference/reference.h"
-#include "render/device_camera.h"
+#include "render/frame_camera.h"
 #include "support/scene_builder.h"
 #include "support/stage_runner.h"
 
@@ -24,7 +24,7 @@ namespace {
 void expect_no_nan(const Scene& scene, const std::string& what) {
     testing::StageRunner runner(scene);
     const CameraKey& key = scene.camera_path.front();
-    std::vector<ClrRay> rays = runner.raygen(make_device_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height));
+    std::vector<ClrRay> rays = runner.raygen(make_frame_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height).device());
     std::vector<ClrHit> hits = runner.intersect(rays);
     testing::ShadeOutput shaded = runner.shade(rays, hits, 0);
     int bad = 0;

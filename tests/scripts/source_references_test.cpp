@@ -32,8 +32,7 @@ const fs::path kRoot = CLRENDER_SOURCE_DIR;
 
 // Files whose numbered citations are allowed until kernels/, host/render/, host/reference/
 // and host/device/kernel_sources* are converted to cite docs/scene-format.md's Conventions.
-const std::vector<std::string> kNotYetConverted = {"kernels/", "host/render/", "host/reference/",
-                                                   "host/device/kernel_sources"};
+const std::vector<std::string> kNotYetConverted = {"kernels/", "host/device/kernel_sources"};
 
 bool not_yet_converted(const std::string& path) {
     return std::any_of(kNotYetConverted.begin(), kNotYetConverted.end(),

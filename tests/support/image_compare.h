@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "scene/scene.h"
+#include "core/image.h"
 
 namespace clr::testing {
 

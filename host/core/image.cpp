@@ -1,7 +1,6 @@
-// Image helpers declared in scene.h.
-#include <cstddef>
+#include "core/image.h"
 
-#include "scene/scene.h"
+#include <cstddef>
 
 namespace clr {
 

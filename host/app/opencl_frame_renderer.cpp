@@ -1,0 +1,35 @@
+#include "app/opencl_frame_renderer.h"
+
+#include "device/device_context.h"
+
+namespace clr {
+namespace {
+
+class OpenClFrameRenderer : public FrameRenderer {
+public:
+    OpenClFrameRenderer(const Scene& scene, const DeviceEntry& entry, const RendererOptions& options)
+        : device_(entry), renderer_(device_, scene, options) {}
+
+    Image render(const CameraKey& key, int frame, FrameTiming* timing) override {
+        return renderer_.render(key, frame, timing);
+    }
+    std::string device_name() const override { return device_.entry().device_name; }
+    double build_ms() const override { return renderer_.build_ms(); }
+    int cache_hits() const override { return device_.cache_hits(); }
+    void store_built_programs() override { device_.store_built_programs(); }
+    void recycle(Image&& image) override { renderer_.recycle(std::move(image)); }
+
+private:
+    DeviceContext device_;
+    Renderer renderer_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::vector<DeviceEntry>& devices,
+                                                          const std::string& device_selector,
+                                                          const RendererOptions& options) {
+    return std::make_unique<OpenClFrameRenderer>(scene, select_device(devices, device_selector), options);
+}
+
+}  // namespace clr

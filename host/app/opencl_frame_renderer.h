@@ -1,0 +1,21 @@
+// The frame loop's renderer on an OpenCL device (render/renderer.h).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/frame_renderer.h"
+#include "device/device_selection.h"
+#include "render/renderer.h"
+
+namespace clr {
+
+// Opens the device chosen by `device_selector` among `devices` (see select_device; list_devices()
+// runs while the scene loads), builds the scene's program and uploads its buffers, once.
+// Throws DeviceError.
+std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::vector<DeviceEntry>& devices,
+                                                          const std::string& device_selector,
+                                                          const RendererOptions& options);
+
+}  // namespace clr

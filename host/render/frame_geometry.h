@@ -1,0 +1,42 @@
+// What one frame shows, in scene coordinates (double): the scene's spheres and billboards, and
+// its impostors placed as billboards for the frame's camera key (impostor_placement.h). It is
+// the one source of everything the device sees of a frame's geometry, derived in one
+// direction: the device structs (compile_scene), the BVH (build_bvh) and the screen tiles
+// (bin_screen_tiles), so the three always describe the same objects in the same order.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace clr {
+
+class FrameGeometry {
+public:
+    // `scene` must outlive this object. Its impostors show once placed for a camera key.
+    explicit FrameGeometry(const Scene& scene) : scene_(&scene) {}
+
+    // Places the impostors for a camera at `key`; nothing else moves from frame to frame.
+    void place_impostors(const CameraKey& key);
+
+    const Scene& scene() const { return *scene_; }
+    const std::vector<Sphere>& spheres() const { return scene_->spheres; }
+
+    // Billboard i as the kernels index it: the scene's own billboards first, then its impostors
+    // as placed, in the scene's order.
+    std::size_t billboard_count() const { return scene_->billboards.size() + placed_impostors_.size(); }
+    const Billboard& billboard(std::size_t i) const {
+        std::size_t own = scene_->billboards.size();
+        return i < own ? scene_->billboards[i] : placed_impostors_[i - own];
+    }
+    std::size_t first_impostor() const { return scene_->billboards.size(); }  // index of the first placed impostor
+
+    std::size_t object_count() const { return spheres().size() + billboard_count(); }
+
+private:
+    const Scene* scene_;
+    std::vector<Billboard> placed_impostors_;  // scene_->impostors placed for the last key
+};
+
+}  // namespace clr
