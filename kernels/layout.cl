@@ -2,6 +2,11 @@
  * can check that host and device agree byte for byte. One work-item writes
  * out[0..5] = sizes of ClrCamera, ClrSphere, ClrBillboard, ClrRay, ClrHit, ClrSceneInfo and
  * out[6..] = offsets of selected fields, in the order the test lists them. */
+#ifndef CLR_LAYOUT_CL
+#define CLR_LAYOUT_CL
+
+#include "shared/clr_types.h"
+
 #define CLR_OFFSET(type, field) ((int)((size_t) & (((type*)0)->field)))
 
 __kernel void struct_layout(__global int* out)
@@ -23,3 +28,5 @@ __kernel void struct_layout(__global int* out)
     out[12] = CLR_OFFSET(ClrSceneInfo, sphere_count);
     out[13] = CLR_OFFSET(ClrSceneInfo, max_depth);
 }
+
+#endif /* CLR_LAYOUT_CL */
