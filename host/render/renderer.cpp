@@ -64,10 +64,14 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
                           "' has no double precision (cl_khr_fp64); use --precision float or another device");
 
     auto start = std::chrono::steady_clock::now();
-    program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
+    // Only the kernel this renderer runs is built: compiling the others too would slow every
+    // cold start (docs/benchmarks.md, Start-up).
+    const KernelProgram& program = screen_tiles_ ? kRenderTilesProgram : kRenderBruteForceProgram;
+    program_ = device_.build_program(assemble_program_source(program.entry, options.kernel_dir),
+                                     features_.build_options());
     build_ms_ = elapsed_ms(start);
     try {
-        render_kernel_ = cl::Kernel(program_, screen_tiles_ ? "render_packets" : "render");
+        render_kernel_ = cl::Kernel(program_, program.kernel);
         texels_ = upload(device_.context(), compiled_.texels);
         compiled_.texels = {};  // on the device now; frames only move positions
         if (!scene_.impostors.empty()) placed_ = placed_scene(scene_, compiled_);

@@ -71,9 +71,8 @@ public:
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
-    // For the stage tests: the built program and the scene's kernel arguments, bound from
-    // argument `first` on in the order of CLR_SCENE_PARAMS (spheres, billboards, texels, info).
-    const cl::Program& program() const { return program_; }
+    // For the stage tests: the scene's kernel arguments, bound from argument `first` on in the
+    // order of CLR_SCENE_PARAMS (spheres, billboards, texels, info).
     void bind_scene(cl::Kernel& kernel, int first) const;
     static constexpr int kSceneArgs = 6;  // arguments bind_scene() sets
 

@@ -14,7 +14,7 @@ namespace {
 
 TEST(StructLayout, DeviceAgreesWithHost) {
     auto& device = testing::test_device();
-    cl::Program program = device.build_program(assemble_program_source(), FeatureSet::all().build_options());
+    cl::Program program = device.build_program(assemble_program_source(kTestStagesProgram.entry), FeatureSet::all().build_options());
     cl::Kernel kernel(program, "struct_layout");
     const int kCount = 14;
     cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY, kCount * sizeof(cl_int));

@@ -1,5 +1,6 @@
 #include "support/stage_runner.h"
 
+#include "device/kernel_sources.h"
 #include "support/opencl_test_device.h"
 
 namespace clr::testing {
@@ -25,12 +26,14 @@ void run_1d(cl::Kernel& kernel, std::size_t count) {
 }  // namespace
 
 StageRunner::StageRunner(const Scene& scene, const RendererOptions& options)
-    : renderer_(test_device(), scene, options) {}
+    : renderer_(test_device(), scene, options),
+      program_(test_device().build_program(assemble_program_source(kTestStagesProgram.entry, options.kernel_dir),
+                                           renderer_.features().build_options())) {}
 
 std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
     std::size_t count = static_cast<std::size_t>(camera.width) * camera.height;
     cl::Buffer rays(test_device().context(), CL_MEM_WRITE_ONLY, count * sizeof(ClrRay));
-    cl::Kernel kernel(renderer_.program(), "raygen");
+    cl::Kernel kernel(program_, "raygen");
     kernel.setArg(0, camera);
     kernel.setArg(1, rays);
     test_device().queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(camera.width, camera.height),
@@ -41,7 +44,7 @@ std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
 std::vector<ClrHit> StageRunner::intersect(const std::vector<ClrRay>& rays) {
     cl::Buffer ray_buffer = input_buffer(rays);
     cl::Buffer hits(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(ClrHit));
-    cl::Kernel kernel(renderer_.program(), "intersect");
+    cl::Kernel kernel(program_, "intersect");
     kernel.setArg(0, ray_buffer);
     kernel.setArg(1, static_cast<cl_int>(rays.size()));
     renderer_.bind_scene(kernel, 2);
@@ -55,7 +58,7 @@ ShadeOutput StageRunner::shade(const std::vector<ClrRay>& rays, const std::vecto
     cl::Buffer hit_buffer = input_buffer(hits);
     cl::Buffer colors(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(cl_float4));
     cl::Buffer next_rays(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(ClrRay));
-    cl::Kernel kernel(renderer_.program(), "shade");
+    cl::Kernel kernel(program_, "shade");
     kernel.setArg(0, ray_buffer);
     kernel.setArg(1, hit_buffer);
     kernel.setArg(2, static_cast<cl_int>(rays.size()));
