@@ -95,34 +95,26 @@ CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hit
     return out;
 }
 
-/* One sample's colours of 16 pixels, in the program's shading mode (shading_modes.cl). */
+/* The colours of 16 rays from the eye with nearest hits `hits`, in the program's shading mode
+ * (shading_modes.cl). `flat` holds the intersection loop's flat colours (CLR_LOOP_COLORS). */
 #if CLR_FLAT_SHADING
-/* Flat: the intersection loop's colours are the pixels' colours. */
-CLR_PACKET_INLINE Colors16 sample_colors16(real3 eye, Directions16 d, TileItems tile, int row, CLR_SCENE_PARAMS)
+/* Flat: the loop's colours are the pixels' colours. */
+CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    Hits16 hits;
-    Colors16 colors;
-    intersect_tile16(eye, d, row, tile, CLR_SCENE_ARGS, &hits, &colors);
-    return colors;
+    return flat;
 }
 #elif CLR_LOOP_COLORS
 /* Sun without mirrors: the loop's flat colours, with lanes on spheres lit one by one. */
-CLR_PACKET_INLINE Colors16 sample_colors16(real3 eye, Directions16 d, TileItems tile, int row, CLR_SCENE_PARAMS)
+CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    Hits16 hits;
-    Colors16 colors;
-    intersect_tile16(eye, d, row, tile, CLR_SCENE_ARGS, &hits, &colors);
     if (!any(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
-        return colors;
-    return traced_colors16(eye, d, hits, &colors, CLR_SCENE_ARGS);
+        return flat;
+    return traced_colors16(eye, d, hits, &flat, CLR_SCENE_ARGS);
 }
 #else
-/* Mirrors: every lane's path is traced. */
-CLR_PACKET_INLINE Colors16 sample_colors16(real3 eye, Directions16 d, TileItems tile, int row, CLR_SCENE_PARAMS)
+/* Mirrors: every lane's path is traced (the loop gives no flat colours). */
+CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    Hits16 hits;
-    Colors16 unused; /* the loop gives no flat colours with mirrors */
-    intersect_tile16(eye, d, row, tile, CLR_SCENE_ARGS, &hits, &unused);
     return traced_colors16(eye, d, hits, 0, CLR_SCENE_ARGS);
 }
 #endif
@@ -137,7 +129,10 @@ CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int
         float16 ox, oy;
         sample_offsets16(camera, col0, row, sample, &ox, &oy);
         Directions16 d = camera_rays16(camera, col0, row, ox, oy);
-        Colors16 colors = sample_colors16(eye, d, tile, row, CLR_SCENE_ARGS);
+        Hits16 hits;
+        Colors16 flat;
+        intersect_tile16(eye, d, row, tile, CLR_SCENE_ARGS, &hits, &flat);
+        Colors16 colors = shaded_colors16(eye, d, hits, flat, CLR_SCENE_ARGS);
         sums.r += colors.r;
         sums.g += colors.g;
         sums.b += colors.b;
