@@ -17,7 +17,7 @@ struct EmbeddedKernelFile {
 const std::vector<EmbeddedKernelFile>& embedded_kernel_files();
 
 // The programs clrender builds, each from one entry file under kernels/programs/ that
-// includes what its kernels use (docs/architecture.md, Kernels).
+// includes what its kernels use (docs/architecture.md, Kernel files and programs).
 struct KernelProgram {
     const char* entry;   // relative to kernels/
     const char* kernel;  // the kernel the renderer runs from it (test programs: one of several)
