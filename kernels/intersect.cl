@@ -1,13 +1,14 @@
 /* Stage 2: nearest-hit intersection against spheres and billboards. Primary, shadow and
  * reflection rays all go through intersect_scene(). */
+#ifndef CLR_INTERSECT_CL
+#define CLR_INTERSECT_CL
 
-/* The scene buffers every stage reads, as kernel and function parameters. Counts stay
- * run-time values (ClrSceneInfo), so one compiled program serves every scene of a kind. */
-#define CLR_SCENE_PARAMS                                                                      \
-    __global const ClrSphere *spheres, __global const ClrBillboard *billboards,              \
-        __global const uchar4 *texels, ClrSceneInfo info, __global const ClrBvhNode *bvh_nodes, \
-        __global const uint *bvh_items
-#define CLR_SCENE_ARGS spheres, billboards, texels, info, bvh_nodes, bvh_items
+#include "common/hit_order.cl"
+#include "common/math.cl"
+#include "common/scene_items.cl"
+#include "common/scene_params.cl"
+#include "common/texture.cl"
+#include "shared/clr_types.h"
 
 /* Distance along the unit direction to the nearest intersection with t > 0, or +inf.
  * Float32-robust form (Ray Tracing Gems, ch. 7): the discriminant is computed from the
@@ -66,16 +67,6 @@ real billboard_distance(__global const ClrBillboard* billboard, __global const u
     return t;
 }
 
-/* Whether a hit at distance t on surface (kind, index) beats `best`: nearer, or as near and
- * first in the order spheres, then billboards, by index (the brute-force loops' order), so
- * that any visiting order finds the brute-force answer, ties included. */
-bool hit_beats(real t, int kind, int index, Hit best)
-{
-    if (t != best.t)
-        return t < best.t;
-    return t < INFINITY && (kind < best.kind || (kind == best.kind && index < best.index));
-}
-
 #if CLR_FEATURE_BVH
 /* Whether the ray can meet the box before t_max (slab test). A zero direction component is
  * replaced by a tiny one, so that no 0 * inf makes a NaN; the exit distance gets a small
@@ -119,9 +110,8 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
             continue;
         }
         for (uint k = node->first; k < node->first + node->count; ++k) {
-            uint item = bvh_items[k];
-            int index = (int)(item & ~CLR_TILE_BILLBOARD);
-            int kind = (item & CLR_TILE_BILLBOARD) ? CLR_HIT_BILLBOARD : CLR_HIT_SPHERE;
+            int kind = item_kind(bvh_items[k]);
+            int index = item_index(bvh_items[k]);
             if (kind == skip_kind && index == skip_index)
                 continue;
             real t = INFINITY;
@@ -133,7 +123,7 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
             if (kind == CLR_HIT_SPHERE)
                 t = sphere_distance(spheres[index].center_radius, origin, direction);
 #endif
-            if (hit_beats(t, kind, index, hit)) {
+            if (hit_beats(t, kind, index, hit)) { /* common/hit_order.cl */
                 hit.t = t;
                 hit.kind = kind;
                 hit.index = index;
@@ -148,7 +138,10 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
 
 /* The nearest surface along the ray with 0 < t < t_max. The surface (skip_kind,
  * skip_index) is left out: a secondary ray leaves a convex surface on its outer side and
- * cannot meet it again, so excluding it is exact and needs no scale-dependent epsilon. */
+ * cannot meet it again, so excluding it is exact and needs no scale-dependent epsilon.
+ * Without a BVH the loops visit spheres, then billboards, by index: the order that
+ * common/hit_order.cl ranks ties by, so keeping the first of equal distances (t < hit.t)
+ * already is that rule and needs no tie-break. */
 Hit intersect_scene(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
 {
 #if CLR_FEATURE_BVH
@@ -199,13 +192,4 @@ ClrHit device_hit(Hit hit)
     return out;
 }
 
-/* One work-item per ray: writes the nearest hit of rays[i] to hits[i], for i < ray_count. */
-__kernel void intersect(__global const ClrRay* rays, int ray_count, CLR_SCENE_PARAMS, __global ClrHit* hits)
-{
-    int i = get_global_id(0);
-    if (i >= ray_count)
-        return;
-    Hit hit = intersect_scene(convert_real3(rays[i].origin.xyz), convert_real3(rays[i].direction.xyz), INFINITY,
-                              CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
-    hits[i] = device_hit(hit);
-}
+#endif /* CLR_INTERSECT_CL */

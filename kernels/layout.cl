@@ -2,6 +2,12 @@
  * can check that host and device agree byte for byte. One work-item writes, for each entry of
  * CLR_LAYOUT_LIST (kernels/shared/clr_layout.h) in its order: a struct's size; a field's
  * offset, then its size. The host test expands the same list the same way. */
+#ifndef CLR_LAYOUT_CL
+#define CLR_LAYOUT_CL
+
+#include "shared/clr_types.h"
+#include "shared/clr_layout.h"
+
 #define CLR_OFFSET(type, field) ((int)((size_t) & (((type*)0)->field)))
 
 __kernel void struct_layout(__global int* out)
@@ -17,3 +23,5 @@ __kernel void struct_layout(__global int* out)
 #undef CLR_LAYOUT_STRUCT
 #undef CLR_LAYOUT_FIELD
 }
+
+#endif /* CLR_LAYOUT_CL */

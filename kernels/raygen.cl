@@ -1,4 +1,9 @@
-/* Stage 1: camera rays (SPEC 2, Camera). */
+/* Stage 1: camera rays (docs/scene-format.md, Conventions: Camera). */
+#ifndef CLR_RAYGEN_CL
+#define CLR_RAYGEN_CL
+
+#include "common/math.cl"
+#include "shared/clr_types.h"
 
 /* The unit-direction ray from the eye through point (col + ox, row + oy) of the image, with
  * ox, oy in [0, 1) inside pixel (col, row); row 0 is the top of the image, so the vertical
@@ -30,12 +35,4 @@ Ray camera_ray(ClrCamera camera, int col, int row)
     return camera_ray_through(camera, col, row, 0.5f, 0.5f);
 }
 
-/* One work-item per pixel: writes the primary ray of pixel (x, y) to rays[y * width + x]. */
-__kernel void raygen(ClrCamera camera, __global ClrRay* rays)
-{
-    int col = get_global_id(0);
-    int row = get_global_id(1);
-    if (col >= camera.width || row >= camera.height)
-        return;
-    rays[row * camera.width + col] = device_ray(camera_ray(camera, col, row));
-}
+#endif /* CLR_RAYGEN_CL */

@@ -1,5 +1,14 @@
-/* Stage 3: shading a hit (SPEC 2, Lighting and Mirrors). A hit either ends the path with a
- * colour or, on the front of a mirror, continues it with a reflected ray. */
+/* Stage 3: shading a hit (docs/scene-format.md, Conventions: Lighting and shadows; Mirrors).
+ * A hit either ends the path with a colour or, on the front of a mirror, continues it with a
+ * reflected ray. */
+#ifndef CLR_SHADE_CL
+#define CLR_SHADE_CL
+
+#include "common/math.cl"
+#include "common/scene_params.cl"
+#include "common/texture.cl"
+#include "intersect.cl"
+#include "shared/clr_types.h"
 
 typedef struct {
     float3 color;     /* the path's colour, when it ends here */
@@ -85,24 +94,4 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     return result;
 }
 
-/* One work-item per ray: shades hits[i] of rays[i] as seen after `reflections` bounces.
- * Writes colors[i] = (rgb, 1) when the path ends there, or (0, 0, 0, 0) and the reflected
- * ray to next_rays[i] when it continues. */
-__kernel void shade(__global const ClrRay* rays, __global const ClrHit* hits, int ray_count, int reflections,
-                    CLR_SCENE_PARAMS, __global float4* colors, __global ClrRay* next_rays)
-{
-    int i = get_global_id(0);
-    if (i >= ray_count)
-        return;
-    Hit hit;
-    hit.t = hits[i].t;
-    hit.kind = hits[i].kind;
-    hit.index = hits[i].index;
-    ShadeResult result = shade_hit(hit, convert_real3(rays[i].origin.xyz), convert_real3(rays[i].direction.xyz),
-                                   reflections, CLR_SCENE_ARGS);
-    colors[i] = result.bounces ? (float4)(0.0f) : (float4)(result.color, 1.0f);
-    ClrRay next;
-    next.origin = (float4)(result.bounces ? convert_float3(result.next_origin) : (float3)(0.0f), 0.0f);
-    next.direction = (float4)(result.bounces ? convert_float3(result.next_direction) : (float3)(0.0f), 0.0f);
-    next_rays[i] = next;
-}
+#endif /* CLR_SHADE_CL */

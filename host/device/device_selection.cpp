@@ -7,9 +7,14 @@
 
 #include "core/errors.h"
 #include "device/cl_errors.h"
+#include "device/driver_settings.h"
 
 namespace clr {
 namespace {
+
+// Before main(), so before any thread and any driver: every OpenCL user lists devices first,
+// so this file is always linked.
+[[maybe_unused]] const bool kDriverSettingsApplied = (apply_driver_settings(), true);
 
 std::string device_type_name(cl_device_type type) {
     if (type & CL_DEVICE_TYPE_GPU) return "GPU";

@@ -62,7 +62,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
                           "' has no double precision (cl_khr_fp64); use --precision float or another device");
 
     const Stopwatch build_time;
-    program_ = device_.build_program(assemble_program_source(options.kernel_dir), features_.build_options());
+    // Only the kernel this renderer runs is built: compiling the others too would slow every
+    // cold start (docs/benchmarks.md, Start-up).
+    const KernelProgram& program = screen_tiles_ ? kRenderTilesProgram : kRenderBruteForceProgram;
+    program_ = device_.build_program(assemble_program_source(program.entry, options.kernel_dir),
+                                     features_.build_options());
     build_ms_ = build_time.elapsed_ms();
     try {
         if (screen_tiles_)

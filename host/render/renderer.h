@@ -68,8 +68,7 @@ public:
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
-    // For the stage tests: the built program and the scene's kernel arguments.
-    const cl::Program& program() const { return program_; }
+    // For the stage tests: the scene's kernel arguments.
     const SceneArgs& scene_args() const { return scene_args_; }
 
 private:

@@ -1,4 +1,9 @@
-/* Small device helpers shared by every stage. */
+/* Small device helpers shared by every stage: the `real` type, the in-kernel Ray and Hit,
+ * and arithmetic written out so that every path computes the same bits. */
+#ifndef CLR_COMMON_MATH_CL
+#define CLR_COMMON_MATH_CL
+
+#include "shared/clr_types.h"
 
 /* No fused multiply-adds: the 16-lane primary-ray path (intersect_packet.cl) and the scalar
  * path must compute bit-identical distances from the same formulas, on every device. */
@@ -52,7 +57,7 @@ real3 unit3(real3 v)
 }
 
 /* Display byte for a colour channel: round(clamp(c, 0, 1) * 255), rounding halves up as
- * the host reference does (SPEC 2, Colour). */
+ * the host reference does (docs/scene-format.md, Conventions: Colour). */
 uchar color_to_byte(float c)
 {
     return (uchar)floor(clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f);
@@ -63,3 +68,5 @@ real3 reflect_direction(real3 d, real3 n)
 {
     return d - 2.0f * dot3(d, n) * n; /* dot3, not dot(): see sphere_color() */
 }
+
+#endif /* CLR_COMMON_MATH_CL */

@@ -10,6 +10,8 @@
 #define CLR_SAMPLES_H
 
 #ifdef __OPENCL_VERSION__
+/* No fused multiply-adds, as on the host: both must pick the same sample points. */
+#pragma OPENCL FP_CONTRACT OFF
 #define CLR_INLINE
 #define CLR_FLOORF floor
 #else

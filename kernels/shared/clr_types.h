@@ -40,7 +40,8 @@ constexpr int kClrTileSize = CLR_TILE_SIZE;
 #define CLR_HIT_SPHERE 1
 #define CLR_HIT_BILLBOARD 2
 
-/* The pinhole camera of one frame, flattened from SPEC 2 (Camera). The direction through
+/* The pinhole camera of one frame, flattened from the scene's camera
+ * (docs/scene-format.md, Conventions: Camera). The direction through
  * the point (col + ox, row + oy) of pixel (col, row) (the centre: ox = oy = 0.5) is
  *   forward + (2(col+ox)/width - 1) * right + (1 - 2(row+oy)/height) * up. */
 typedef struct {

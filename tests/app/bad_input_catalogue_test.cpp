@@ -182,14 +182,15 @@ std::string long_animation_scene(int keys, int per_segment) {
            ", \"clrender\": {\"frames_per_segment\": " + std::to_string(per_segment) + "}}";
 }
 
-// The kernel sources with `broken` (a path under kernels/) ending in a line that is not C.
-std::vector<File> kernels_with_broken(const std::string& broken) {
+// The kernel sources with `broken` (a path under kernels/) ending in `appended`: by default
+// a line that is not C.
+std::vector<File> kernels_with_broken(const std::string& broken, const std::string& appended = "\nthis is not C;\n") {
     std::vector<File> files = {{"scene.json", "{" + kCamera + ", " + kSize + "}"}};
     const fs::path root = fs::path(CLRENDER_SOURCE_DIR) / "kernels";
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
         if (!entry.is_regular_file()) continue;
         const std::string relative = fs::relative(entry.path(), root).string();
-        files.push_back({"kd/" + relative, read_bytes(entry.path()) + (relative == broken ? "\nthis is not C;\n" : "")});
+        files.push_back({"kd/" + relative, read_bytes(entry.path()) + (relative == broken ? appended : "")});
     }
     return files;
 }
@@ -505,6 +506,11 @@ std::vector<BadInput> catalogue() {
                   {"bad.json: line 1, column 1000010:", "aaa ... aaa", "aaa\\xFF'"}),
         {"ScenePathWithANewline", {}, {}, "'two\nlines.json'", 2,
          {"two\\x0Alines.json: cannot read scene file: no such file"}},
+        // --- Kernel sources: an #include that names no file of the kernel folder is refused
+        // before anything is compiled, naming the including file and line
+        {"KernelIncludeOfNoFile", kernels_with_broken("intersect.cl", "\n#include \"common/nothing.cl\"\n"),
+         kernel_folders(), "scene.json -q --kernel-dir kd", 3,
+         {"kernels/intersect.cl:", "#include \"common/nothing.cl\" names no kernel source", "kd/common/nothing.cl"}},
     };
 }
 

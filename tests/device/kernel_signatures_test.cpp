@@ -17,17 +17,41 @@
 namespace clr {
 namespace {
 
+// Every program clrender builds: the production one, the brute-force one, the tests' stages.
+const std::vector<KernelProgram> kPrograms = {kRenderTilesProgram, kRenderBruteForceProgram, kTestStagesProgram};
+
 // Built from source (never from the program cache: a binary need not carry argument info).
-cl::Program program_with_arg_info() {
+cl::Program program_with_arg_info(const KernelProgram& entry) {
     auto& device = testing::test_device();
-    cl::Program program(device.context(), assemble_program_source());
+    cl::Program program(device.context(), assemble_program_source(entry.entry));
     program.build({device.device()}, (FeatureSet::all().build_options() + " -cl-kernel-arg-info").c_str());
     return program;
 }
 
-const cl::Program& shared_program() {
-    static const cl::Program program = program_with_arg_info();
-    return program;
+const std::vector<cl::Program>& programs() {
+    static const std::vector<cl::Program> built = [] {
+        std::vector<cl::Program> list;
+        for (const KernelProgram& entry : kPrograms) list.push_back(program_with_arg_info(entry));
+        return list;
+    }();
+    return built;
+}
+
+// The kernel names of `program`.
+std::set<std::string> kernel_names(const cl::Program& program) {
+    std::istringstream names(program.getInfo<CL_PROGRAM_KERNEL_NAMES>());
+    std::set<std::string> in_program;
+    for (std::string name; std::getline(names, name, ';');)
+        if (!name.empty()) in_program.insert(name.c_str());  // c_str(): drop a trailing terminator
+    return in_program;
+}
+
+// The kernel `name` from whichever program holds it.
+cl::Kernel kernel_named(const std::string& name) {
+    for (const cl::Program& program : programs())
+        if (kernel_names(program).count(name)) return cl::Kernel(program, name.c_str());
+    ADD_FAILURE() << "no program holds kernel " << name;
+    return cl::Kernel();
 }
 
 // "name: global pointer" or "name: private int", as the host declares a parameter.
@@ -52,7 +76,8 @@ std::string describe(const cl::Kernel& kernel, cl_uint index) {
 TEST(KernelSignatures, EveryHostSignatureMatchesItsKernel) {
     for (const KernelDeclaration& declared : kernel_declarations()) {
         SCOPED_TRACE(declared.kernel_name);
-        cl::Kernel kernel(shared_program(), declared.kernel_name.c_str());
+        cl::Kernel kernel = kernel_named(declared.kernel_name);
+        if (!kernel()) continue;
         cl_uint count = kernel.getInfo<CL_KERNEL_NUM_ARGS>();
         std::vector<std::string> host, device;
         for (const KernelParam& param : declared.params) host.push_back(describe(param));
@@ -64,11 +89,10 @@ TEST(KernelSignatures, EveryHostSignatureMatchesItsKernel) {
 TEST(KernelSignatures, EveryKernelOfTheProgramHasAHostSignature) {
     std::set<std::string> declared;
     for (const KernelDeclaration& declaration : kernel_declarations()) declared.insert(declaration.kernel_name);
-    std::istringstream names(shared_program().getInfo<CL_PROGRAM_KERNEL_NAMES>());
-    std::set<std::string> in_program;
-    for (std::string name; std::getline(names, name, ';');)
-        if (!name.empty()) in_program.insert(name.c_str());  // c_str(): drop a trailing terminator
-    EXPECT_EQ(in_program, declared);
+    std::set<std::string> in_programs;
+    for (const cl::Program& program : programs())
+        for (const std::string& name : kernel_names(program)) in_programs.insert(name);
+    EXPECT_EQ(in_programs, declared);
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ TEST(ProgramCache, ABorrowedEntryIsFoundAgainOnlyOnceGivenBack) {
 TEST(ProgramCache, ASecondBuildComesFromTheCacheAndACorruptEntryIsRebuilt) {
     TempFolder folder;
     ScopedEnv dir("CLRENDER_CACHE_DIR", folder.path().c_str());
-    const std::string source = assemble_program_source("");
+    const std::string source = assemble_program_source(kRenderTilesProgram.entry);
     FeatureSet features;
     features.spheres = true;
     const std::string options = features.build_options();

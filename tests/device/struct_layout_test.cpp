@@ -39,7 +39,7 @@ std::vector<LayoutValue> host_layout() {
 
 std::vector<int> device_layout(std::size_t count) {
     auto& device = testing::test_device();
-    cl::Program program = device.build_program(assemble_program_source(), FeatureSet::all().build_options());
+    cl::Program program = device.build_program(assemble_program_source(kTestStagesProgram.entry), FeatureSet::all().build_options());
     cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY, count * sizeof(cl_int));
     TypedKernel<StructLayoutSignature> kernel(program, kStructLayout);
     device.queue().enqueueNDRangeKernel(kernel.bind(out), cl::NullRange, cl::NDRange(1), cl::NullRange);

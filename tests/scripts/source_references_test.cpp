@@ -30,15 +30,6 @@ using testing::SourceText;
 
 const fs::path kRoot = CLRENDER_SOURCE_DIR;
 
-// Files whose numbered citations are allowed until kernels/, host/render/, host/reference/
-// and host/device/kernel_sources* are converted to cite docs/scene-format.md's Conventions.
-const std::vector<std::string> kNotYetConverted = {"kernels/", "host/device/kernel_sources"};
-
-bool not_yet_converted(const std::string& path) {
-    return std::any_of(kNotYetConverted.begin(), kNotYetConverted.end(),
-                       [&](const std::string& prefix) { return path.rfind(prefix, 0) == 0; });
-}
-
 // The numbered citations of `text`, as a file named x.cpp.
 std::vector<std::string> citations_in(const std::string& text) { return numbered_citations({"x.cpp", text}); }
 
@@ -79,7 +70,6 @@ TEST(SourceReferences, TheScanReadsTheRepositorysCodeScriptsAndDocs) {
 TEST(SourceReferences, NoCommentCitesASpecOrIssueNumber) {
     std::vector<std::string> found;
     for (const SourceText& file : repository_texts(kRoot)) {
-        if (not_yet_converted(file.path)) continue;
         for (const std::string& citation : numbered_citations(file)) found.push_back(citation);
     }
     for (const std::string& citation : found)

@@ -1,5 +1,6 @@
 #include "support/stage_runner.h"
 
+#include "device/kernel_sources.h"
 #include "render/kernel_signatures.h"
 #include "support/opencl_test_device.h"
 
@@ -26,12 +27,14 @@ void run_1d(cl::Kernel& kernel, std::size_t count) {
 }  // namespace
 
 StageRunner::StageRunner(const Scene& scene, const RendererOptions& options)
-    : renderer_(test_device(), scene, options) {}
+    : renderer_(test_device(), scene, options),
+      program_(test_device().build_program(assemble_program_source(kTestStagesProgram.entry, options.kernel_dir),
+                                           renderer_.features().build_options())) {}
 
 std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
     std::size_t count = static_cast<std::size_t>(camera.width) * camera.height;
     cl::Buffer rays(test_device().context(), CL_MEM_WRITE_ONLY, count * sizeof(ClrRay));
-    TypedKernel<RaygenSignature> kernel(renderer_.program(), kRaygen);
+    TypedKernel<RaygenSignature> kernel(program_, kRaygen);
     test_device().queue().enqueueNDRangeKernel(kernel.bind(camera, rays), cl::NullRange,
                                                cl::NDRange(camera.width, camera.height), cl::NullRange);
     return read_back<ClrRay>(rays, count);
@@ -40,7 +43,7 @@ std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
 std::vector<ClrHit> StageRunner::intersect(const std::vector<ClrRay>& rays) {
     cl::Buffer ray_buffer = input_buffer(rays);
     cl::Buffer hits(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(ClrHit));
-    TypedKernel<IntersectSignature> kernel(renderer_.program(), kIntersect);
+    TypedKernel<IntersectSignature> kernel(program_, kIntersect);
     run_1d(kernel.bind(ray_buffer, static_cast<cl_int>(rays.size()), renderer_.scene_args(), hits), rays.size());
     return read_back<ClrHit>(hits, rays.size());
 }
@@ -50,7 +53,7 @@ ShadeOutput StageRunner::shade(const std::vector<ClrRay>& rays, const std::vecto
     cl::Buffer hit_buffer = input_buffer(hits);
     cl::Buffer colors(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(cl_float4));
     cl::Buffer next_rays(test_device().context(), CL_MEM_WRITE_ONLY, rays.size() * sizeof(ClrRay));
-    TypedKernel<ShadeSignature> kernel(renderer_.program(), kShade);
+    TypedKernel<ShadeSignature> kernel(program_, kShade);
     run_1d(kernel.bind(ray_buffer, hit_buffer, static_cast<cl_int>(rays.size()), static_cast<cl_int>(reflections),
                        renderer_.scene_args(), colors, next_rays),
            rays.size());

@@ -25,7 +25,8 @@ public:
     Renderer& renderer() { return renderer_; }
 
 private:
-    Renderer renderer_;
+    Renderer renderer_;      // the scene's buffers and features
+    cl::Program program_;    // the stage kernels (kernels/programs/test_stages.cl)
 };
 
 }  // namespace clr::testing

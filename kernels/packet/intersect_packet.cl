@@ -4,14 +4,17 @@
  * vectorise the scalar loop by itself (the running nearest hit defeats it), hence explicit
  * float16. Every formula is the scalar one of intersect.cl, operation for operation, so each
  * lane computes the same bits as the scalar path would (FP_CONTRACT is off, see math.cl). */
+#ifndef CLR_PACKET_INTERSECT_PACKET_CL
+#define CLR_PACKET_INTERSECT_PACKET_CL
 
-typedef struct {
-    real16 x, y, z;
-} Directions16;
-
-/* The packet functions are inlined into render_packets: called, they pass their 16-lane
- * vectors and results through the stack. */
-#define CLR_PACKET_INLINE __attribute__((always_inline))
+#include "common/hit_order.cl"
+#include "common/math.cl"
+#include "common/rgba_words.cl"
+#include "common/scene_items.cl"
+#include "common/scene_params.cl"
+#include "packet/packet_types.cl"
+#include "packet/shading_modes.cl"
+#include "shared/clr_types.h"
 
 /* The 16 lanes' column offsets within the packet. */
 #define CLR_LANES ((int16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
@@ -60,27 +63,11 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, D
     return select(t, (real16)(INFINITY), discriminant < 0.0f || q == 0.0f);
 }
 
-/* Flat shading (no sun, no mirrors): a primary ray's colour is its nearest surface's own
- * colour, so render_packets takes it from the intersection loop, 16 lanes at a time, instead
- * of shading lane by lane (the same values as shade_hit(): see intersect_tile16). */
-#define CLR_FLAT_SHADING (!CLR_FEATURE_SUN && !CLR_FEATURE_MIRRORS)
-/* Without mirrors, every lane that does not end on a sphere shows a flat colour (the
- * background, or a billboard's texel or colour: billboards are unlit), so the loop provides
- * it even with a sun; only lanes on spheres are then shaded one by one. */
-#define CLR_LOOP_COLORS (!CLR_FEATURE_MIRRORS)
-
 /* A comparison of two int16 as a mask16 (what comparing two real16 gives). */
 #if CLR_FEATURE_DOUBLE
 #define CLR_MASK16(m) convert_long16(m)
 #else
 #define CLR_MASK16(m) (m)
-#endif
-
-/* Channel c (0 red .. 3 alpha) of texels read as 32-bit words. */
-#if __ENDIAN_LITTLE__
-#define CLR_TEXEL_CHANNEL(words, c) (((words) >> (8u * (c))) & 0xffu)
-#else
-#define CLR_TEXEL_CHANNEL(words, c) (((words) >> (24u - 8u * (c))) & 0xffu)
 #endif
 
 #if CLR_FEATURE_ALPHA || CLR_FEATURE_TEXTURES
@@ -136,78 +123,100 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
         uint16 words = billboard_texels16(billboard, texels, a, b, inside);
         *texel = words;
         if (holes) /* a texel with alpha below 255 is a hole */
-            inside = inside && CLR_MASK16(convert_int16(CLR_TEXEL_CHANNEL(words, 3u) == 255u));
+            inside = inside && CLR_MASK16(convert_int16(CLR_RGBA_CHANNEL(words, 3u) == 255u));
     }
 #endif
     return select((real16)(INFINITY), t, inside);
 }
 
-/* The nearest hits of 16 primary rays among the objects binned to their screen tile
- * (items[first] .. items[end - 1], nearest first; see host/render/screen_tiles.h), skipping
- * those whose pixel rows (item_rows) leave out this `row`. The loop
- * ends once every lane's hit is nearer than every object left (item_nearest holds a lower
- * bound on each object's hit distance). Hits are compared by (t, kind, index): nearer, or as
- * near and first in intersect_scene()'s order (spheres, then billboards, by index), so the
- * visiting order does not matter and the answer is intersect_scene()'s, ties included.
- * Without mirrors (CLR_LOOP_COLORS), *r, *g, *b receive each lane's colour as flat shading
- * gives it: the background, a sphere's ambient or untextured billboard's colour, or
- * texel_color() of its texel; with a sun, lanes on spheres still need shade_hit(). */
-CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, __global const uint* items,
-                      __global const float* item_nearest, __global const uint* item_rows, uint first, uint end, CLR_SCENE_PARAMS, real16* best_t, int16* best_kind, int16* best_index,
-                      float16* r, float16* g, float16* b)
+/* Colours of 16 lanes as flat shading gives them for surface `kind`, `index`: a sphere's
+ * ambient or an untextured billboard's colour, or texel_color() of each lane's texel. */
+CLR_PACKET_INLINE Colors16 flat_colors16(int kind, int index, uint16 texel, CLR_SCENE_PARAMS)
 {
-    *best_t = (real16)(INFINITY);
-    *best_kind = (int16)(CLR_HIT_NONE);
-    *best_index = (int16)(-1);
-#if CLR_LOOP_COLORS
-    *r = (float16)(info.background.x);
-    *g = (float16)(info.background.y);
-    *b = (float16)(info.background.z);
-#endif
-    for (uint k = first; k < end; ++k) {
-        if (all(*best_t < item_nearest[k]))
-            break;
-        uint rows = item_rows[k]; /* first << 16 | last pixel row the object may cover */
-        if ((uint)row < (rows >> 16) || (uint)row > (rows & 0xffffu))
-            continue;
-        uint item = items[k];
-        int index = (int)(item & ~CLR_TILE_BILLBOARD);
-        int kind = (item & CLR_TILE_BILLBOARD) ? CLR_HIT_BILLBOARD : CLR_HIT_SPHERE;
-        real16 t = (real16)(INFINITY);
-        float3 color = (float3)(0.0f);
-        uint16 texel = (uint16)(0u);
-        int textured = 0;
+    float3 color = (float3)(0.0f);
+    int textured = 0;
 #if CLR_FEATURE_BILLBOARDS
-        if (kind == CLR_HIT_BILLBOARD) {
-            t = billboard_distance16(&billboards[index], texels, origin, d, CLR_LOOP_COLORS, &texel);
-            color = billboards[index].color.xyz;
+    if (kind == CLR_HIT_BILLBOARD) {
+        color = billboards[index].color.xyz;
 #if CLR_FEATURE_TEXTURES
-            textured = (billboards[index].flags & CLR_SURFACE_TEXTURED) != 0;
+        textured = (billboards[index].flags & CLR_SURFACE_TEXTURED) != 0;
 #endif
-        }
+    }
 #endif
 #if CLR_FEATURE_SPHERES
-        if (kind == CLR_HIT_SPHERE) {
-            t = sphere_distance16(spheres[index].center_radius, origin, d);
-            color = spheres[index].color.xyz;
-        }
+    if (kind == CLR_HIT_SPHERE)
+        color = spheres[index].color.xyz;
 #endif
-        int16 order_first = kind < *best_kind || (kind == *best_kind && index < *best_index);
-        mask16 beats = t < *best_t || (t == *best_t && t < INFINITY && convert_real16(order_first) != 0.0f);
-        int16 beats_int = convert_int16(beats);
-        *best_t = select(*best_t, t, beats);
-        *best_kind = select(*best_kind, (int16)(kind), beats_int);
-        *best_index = select(*best_index, (int16)(index), beats_int);
+    Colors16 out;
+    out.r = (float16)(color.x);
+    out.g = (float16)(color.y);
+    out.b = (float16)(color.z);
+    if (textured) { /* texel_color() */
+        out.r = convert_float16(CLR_RGBA_CHANNEL(texel, 0u)) * (1.0f / 255.0f);
+        out.g = convert_float16(CLR_RGBA_CHANNEL(texel, 1u)) * (1.0f / 255.0f);
+        out.b = convert_float16(CLR_RGBA_CHANNEL(texel, 2u)) * (1.0f / 255.0f);
+    }
+    return out;
+}
+
+/* Distances along 16 primary rays from `origin` to surface `kind`, `index`, as
+ * sphere_distance16() or billboard_distance16() give them. With `want_texels`, *texel
+ * receives each lane's texel of a billboard that shows its image. */
+CLR_PACKET_INLINE real16 item_distance16(int kind, int index, real3 origin, Directions16 d, int want_texels,
+                                         uint16* texel, CLR_SCENE_PARAMS)
+{
+    real16 t = (real16)(INFINITY);
+#if CLR_FEATURE_BILLBOARDS
+    if (kind == CLR_HIT_BILLBOARD)
+        t = billboard_distance16(&billboards[index], texels, origin, d, want_texels, texel);
+#endif
+#if CLR_FEATURE_SPHERES
+    if (kind == CLR_HIT_SPHERE)
+        t = sphere_distance16(spheres[index].center_radius, origin, d);
+#endif
+    return t;
+}
+
+/* The nearest hits of 16 primary rays among the objects binned to their screen tile, skipping
+ * those whose pixel rows leave out this `row`. The loop ends once every lane's hit is nearer
+ * than every object left (the tile's items come nearest first). Hits are ranked by
+ * hits_beat16() (common/hit_order.cl), so the visiting order does not matter and the answer
+ * is intersect_scene()'s, ties included. Without mirrors (CLR_LOOP_COLORS), *colors receives
+ * each lane's colour as flat shading gives it: the background or flat_colors16(); with a sun,
+ * lanes on spheres still need shade_hit(). */
+CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, TileItems tile, CLR_SCENE_PARAMS,
+                                        Hits16* best, Colors16* colors)
+{
+    best->t = (real16)(INFINITY);
+    best->kind = (int16)(CLR_HIT_NONE);
+    best->index = (int16)(-1);
 #if CLR_LOOP_COLORS
-        float16 cr = (float16)(color.x), cg = (float16)(color.y), cb = (float16)(color.z);
-        if (textured) { /* texel_color() */
-            cr = convert_float16(CLR_TEXEL_CHANNEL(texel, 0u)) * (1.0f / 255.0f);
-            cg = convert_float16(CLR_TEXEL_CHANNEL(texel, 1u)) * (1.0f / 255.0f);
-            cb = convert_float16(CLR_TEXEL_CHANNEL(texel, 2u)) * (1.0f / 255.0f);
-        }
-        *r = select(*r, cr, beats_int);
-        *g = select(*g, cg, beats_int);
-        *b = select(*b, cb, beats_int);
+    colors->r = (float16)(info.background.x);
+    colors->g = (float16)(info.background.y);
+    colors->b = (float16)(info.background.z);
+#endif
+    for (uint k = tile.first; k < tile.end; ++k) {
+        if (all(best->t < tile.nearest[k]))
+            break;
+        uint rows = tile.rows[k]; /* first << 16 | last pixel row the object may cover */
+        if ((uint)row < (rows >> 16) || (uint)row > (rows & 0xffffu))
+            continue;
+        int kind = item_kind(tile.items[k]);
+        int index = item_index(tile.items[k]);
+        uint16 texel = (uint16)(0u);
+        real16 t = item_distance16(kind, index, origin, d, CLR_LOOP_COLORS, &texel, CLR_SCENE_ARGS);
+        mask16 beats = hits_beat16(t, kind, index, best->t, best->kind, best->index);
+        int16 beats_int = convert_int16(beats);
+        best->t = select(best->t, t, beats);
+        best->kind = select(best->kind, (int16)(kind), beats_int);
+        best->index = select(best->index, (int16)(index), beats_int);
+#if CLR_LOOP_COLORS
+        Colors16 flat = flat_colors16(kind, index, texel, CLR_SCENE_ARGS);
+        colors->r = select(colors->r, flat.r, beats_int);
+        colors->g = select(colors->g, flat.g, beats_int);
+        colors->b = select(colors->b, flat.b, beats_int);
 #endif
     }
 }
+
+#endif /* CLR_PACKET_INTERSECT_PACKET_CL */

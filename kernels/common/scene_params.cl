@@ -1,0 +1,16 @@
+/* The scene buffers every stage reads, as kernel and function parameters: a function that
+ * looks at the scene takes CLR_SCENE_PARAMS and passes CLR_SCENE_ARGS on. Counts stay
+ * run-time values (ClrSceneInfo), so one compiled program serves every scene of a kind. The
+ * host binds them in this order (Renderer::bind_scene). */
+#ifndef CLR_COMMON_SCENE_PARAMS_CL
+#define CLR_COMMON_SCENE_PARAMS_CL
+
+#include "shared/clr_types.h"
+
+#define CLR_SCENE_PARAMS                                                                      \
+    __global const ClrSphere *spheres, __global const ClrBillboard *billboards,              \
+        __global const uchar4 *texels, ClrSceneInfo info, __global const ClrBvhNode *bvh_nodes, \
+        __global const uint *bvh_items
+#define CLR_SCENE_ARGS spheres, billboards, texels, info, bvh_nodes, bvh_items
+
+#endif /* CLR_COMMON_SCENE_PARAMS_CL */

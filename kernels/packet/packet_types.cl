@@ -1,0 +1,39 @@
+/* What the 16-ray packet code passes around: primary rays 16 at a time, one per lane, share
+ * the eye as origin and differ in direction. */
+#ifndef CLR_PACKET_TYPES_CL
+#define CLR_PACKET_TYPES_CL
+
+#include "common/math.cl"
+
+/* The packet functions are inlined into render_packets: called, they pass their 16-lane
+ * vectors and results through the stack. */
+#define CLR_PACKET_INLINE __attribute__((always_inline))
+
+/* The 16 rays' unit directions. */
+typedef struct {
+    real16 x, y, z;
+} Directions16;
+
+/* The 16 rays' nearest hits so far, lane by lane as in Hit. */
+typedef struct {
+    real16 t;
+    int16 kind;
+    int16 index;
+} Hits16;
+
+/* 16 colours (or sums of colours), one per lane. */
+typedef struct {
+    float16 r, g, b;
+} Colors16;
+
+/* The objects binned to one screen tile (host/render/screen_tiles.h), entries first .. end - 1
+ * of its lists: items[k] (common/scene_items.cl), nearest first; nearest[k], a lower bound on
+ * the object's hit distance; rows[k], the pixel rows it may cover (first << 16 | last). */
+typedef struct {
+    __global const uint* items;
+    __global const float* nearest;
+    __global const uint* rows;
+    uint first, end;
+} TileItems;
+
+#endif /* CLR_PACKET_TYPES_CL */

@@ -1,0 +1,143 @@
+/* 16 pixels of one row of a screen tile at a time, for render_packets: their primary rays
+ * are intersected together (intersect_packet.cl) and coloured by the program's shading mode
+ * (shading_modes.cl), then packed as display words. */
+#ifndef CLR_PACKET_RENDER_ROW16_CL
+#define CLR_PACKET_RENDER_ROW16_CL
+
+#include "common/math.cl"
+#include "common/rgba_words.cl"
+#include "common/scene_params.cl"
+#include "packet/intersect_packet.cl"
+#include "packet/packet_types.cl"
+#include "packet/shading_modes.cl"
+#include "shared/clr_samples.h"
+#include "shared/clr_types.h"
+#include "trace.cl"
+
+/* The display bytes of 16 pixels, packed as RGBA words (alpha 255): color_to_byte() of the
+ * mean of their samples' colours (the sums r, g, b over `samples`). */
+CLR_PACKET_INLINE uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
+{
+    float n = (float)samples;
+    uint16 rb = convert_uint16(floor(clamp(r / n, 0.0f, 1.0f) * 255.0f + 0.5f));
+    uint16 gb = convert_uint16(floor(clamp(g / n, 0.0f, 1.0f) * 255.0f + 0.5f));
+    uint16 bb = convert_uint16(floor(clamp(b / n, 0.0f, 1.0f) * 255.0f + 0.5f));
+    return CLR_RGBA_OPAQUE(rb, gb, bb);
+}
+
+/* Writes the first `lanes` of 16 packed pixels to out[0 .. lanes - 1]. */
+CLR_PACKET_INLINE void store_pixels16(__global uchar4* out, uint16 packed, int lanes)
+{
+    __global uint* words = (__global uint*)out;
+    if (lanes == 16) {
+        vstore16(packed, 0, words);
+        return;
+    }
+    uint w[16];
+    vstore16(packed, 0, w);
+    for (int lane = 0; lane < lanes; ++lane)
+        words[lane] = w[lane];
+}
+
+/* Where in their pixels the 16 rays of sample `sample` lie (clr_samples.h). */
+CLR_PACKET_INLINE void sample_offsets16(ClrCamera camera, int col0, int row, int sample, float16* ox, float16* oy)
+{
+    *ox = (float16)(0.5f); /* one sample: the centre */
+    *oy = (float16)(0.5f);
+    if (camera.samples > 1) {
+        float oxs[16], oys[16];
+        for (int lane = 0; lane < 16; ++lane) {
+            oxs[lane] = clr_sample_offset_x(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+            oys[lane] = clr_sample_offset_y(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+        }
+        *ox = vload16(0, oxs);
+        *oy = vload16(0, oys);
+    }
+}
+
+/* The colours of 16 rays from the eye with nearest hits `hits`, each path shaded by
+ * trace_path(). Given `flat` (the intersection loop's flat colours), only lanes on spheres
+ * are traced and the others keep their flat colour; without (0), every lane is traced. */
+CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hits, const Colors16* flat,
+                                           CLR_SCENE_PARAMS)
+{
+    real ts[16], xs[16], ys[16], zs[16];
+    int kinds[16], indices[16];
+    float rl[16], gl[16], bl[16];
+    if (flat) {
+        vstore16(flat->r, 0, rl);
+        vstore16(flat->g, 0, gl);
+        vstore16(flat->b, 0, bl);
+    }
+    vstore16(hits.t, 0, ts);
+    vstore16(hits.kind, 0, kinds);
+    vstore16(hits.index, 0, indices);
+    vstore16(d.x, 0, xs);
+    vstore16(d.y, 0, ys);
+    vstore16(d.z, 0, zs);
+    for (int lane = 0; lane < 16; ++lane) {
+        if (flat && kinds[lane] != CLR_HIT_SPHERE)
+            continue; /* its flat colour is in rl, gl, bl already */
+        Hit hit;
+        hit.t = ts[lane];
+        hit.kind = kinds[lane];
+        hit.index = indices[lane];
+        real3 direction = (real3)(xs[lane], ys[lane], zs[lane]);
+        float3 color = trace_path(eye, direction, hit, CLR_SCENE_ARGS);
+        rl[lane] = color.x;
+        gl[lane] = color.y;
+        bl[lane] = color.z;
+    }
+    Colors16 out;
+    out.r = vload16(0, rl);
+    out.g = vload16(0, gl);
+    out.b = vload16(0, bl);
+    return out;
+}
+
+/* The colours of 16 rays from the eye with nearest hits `hits`, in the program's shading mode
+ * (shading_modes.cl). `flat` holds the intersection loop's flat colours (CLR_LOOP_COLORS). */
+#if CLR_FLAT_SHADING
+/* Flat: the loop's colours are the pixels' colours. */
+CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
+{
+    return flat;
+}
+#elif CLR_LOOP_COLORS
+/* Sun without mirrors: the loop's flat colours, with lanes on spheres lit one by one. */
+CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
+{
+    if (!any(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
+        return flat;
+    return traced_colors16(eye, d, hits, &flat, CLR_SCENE_ARGS);
+}
+#else
+/* Mirrors: every lane's path is traced (the loop gives no flat colours). */
+CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
+{
+    return traced_colors16(eye, d, hits, 0, CLR_SCENE_ARGS);
+}
+#endif
+
+/* Pixels col0 .. col0 + 15 of `row`, whose primary rays meet only objects of `tile`, as
+ * packed display words: the mean of their samples' colours. */
+CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, TileItems tile, CLR_SCENE_PARAMS)
+{
+    Colors16 sums;
+    sums.r = sums.g = sums.b = (float16)(0.0f);
+    for (int sample = 0; sample < camera.samples; ++sample) {
+        float16 ox, oy;
+        sample_offsets16(camera, col0, row, sample, &ox, &oy);
+        Directions16 d = camera_rays16(camera, col0, row, ox, oy);
+        Hits16 hits;
+        Colors16 flat;
+        intersect_tile16(eye, d, row, tile, CLR_SCENE_ARGS, &hits, &flat);
+        Colors16 colors = shaded_colors16(eye, d, hits, flat, CLR_SCENE_ARGS);
+        sums.r += colors.r;
+        sums.g += colors.g;
+        sums.b += colors.b;
+    }
+    return display_pixels16(sums.r, sums.g, sums.b, camera.samples);
+}
+
+#endif /* CLR_PACKET_RENDER_ROW16_CL */

@@ -1,0 +1,49 @@
+/* The program clrender renders with: render_packets alone, so that building it (and asking
+ * for its binary, to cache it) compiles only the kernel the command line runs. */
+#include "common/math.cl"
+#include "common/scene_params.cl"
+#include "packet/packet_types.cl"
+#include "packet/render_row16.cl"
+#include "shared/clr_types.h"
+
+/* The same as render, with screen-tile culling for the primary rays: work-item (x, y)
+ * renders screen tile x of tile row first_row / CLR_TILE_SIZE + y, that is the rows of its
+ * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16). A tile
+ * that no object can reach is the background's colour throughout. Identical output to
+ * render. */
+__kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
+                             __global uchar4* pixels, __global const uint* tile_offsets,
+                             __global const uint* tile_items, __global const float* item_nearest,
+                             __global const uint* item_rows, int tiles_x)
+{
+    int tile_x = get_global_id(0);
+    int tile_y = first_row / CLR_TILE_SIZE + (int)get_global_id(1);
+    int col0 = tile_x * CLR_TILE_SIZE;
+    int row_begin = max(first_row, tile_y * CLR_TILE_SIZE);
+    int row_end = min(first_row + row_count, (tile_y + 1) * CLR_TILE_SIZE);
+    if (col0 >= camera.width || row_begin >= row_end)
+        return;
+    int lanes = min(16, camera.width - col0);
+    int tile = tile_y * tiles_x + tile_x;
+    TileItems items;
+    items.items = tile_items;
+    items.nearest = item_nearest;
+    items.rows = item_rows;
+    items.first = tile_offsets[tile];
+    items.end = tile_offsets[tile + 1];
+    __global uchar4* out = pixels + (row_begin - first_row) * camera.width + col0;
+    if (items.first == items.end) {
+        /* Every sample sees the background: the mean as render computes it, once. */
+        float3 sum = (float3)(0.0f);
+        for (int sample = 0; sample < camera.samples; ++sample)
+            sum += info.background.xyz;
+        float3 mean = sum / (float)camera.samples;
+        uint16 packed = display_pixels16((float16)(mean.x), (float16)(mean.y), (float16)(mean.z), 1);
+        for (int row = row_begin; row < row_end; ++row, out += camera.width)
+            store_pixels16(out, packed, lanes);
+        return;
+    }
+    real3 eye = convert_real3(camera.eye.xyz);
+    for (int row = row_begin; row < row_end; ++row, out += camera.width)
+        store_pixels16(out, render_row16(camera, eye, col0, row, items, CLR_SCENE_ARGS), lanes);
+}
