@@ -14,6 +14,13 @@ struct Image {
     int height = 0;
     std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
     std::string path;                // where it was read from, for messages
+    // A rendered frame's linear colours, for EXR and --alpha outputs (docs/command-line.md,
+    // HDR and alpha outputs): 4 floats a pixel, the mean of its samples' colours, unclamped,
+    // and the fraction of them that hit an object. Empty unless the run asked for them.
+    std::vector<float> linear;
+    // The outputs write rgba's alpha (and linear's fourth float) as transparency (--alpha);
+    // otherwise they are opaque RGB.
+    bool write_alpha = false;
 
     std::uint8_t at(int col, int row, int channel) const {
         return rgba[(static_cast<std::size_t>(row) * width + col) * 4 + channel];

@@ -22,41 +22,67 @@ std::uint8_t to_byte(double channel) {
 
 namespace {
 
-// The mean colour of the pixel's samples, at the positions the kernels use.
-Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_seed, int col, int row) {
+// The mean colour of the pixel's samples, at the positions the kernels use; with `coverage`,
+// also the fraction of them whose primary ray hits an object.
+Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_seed, int col, int row,
+                  double* coverage = nullptr) {
     const int samples = scene.sampling.samples_per_pixel;
     Color sum{0, 0, 0};
+    int hits = 0;
     for (int sample = 0; sample < samples; ++sample) {
         double ox = clr_sample_offset_x(frame_seed, col, row, sample, samples);
         double oy = clr_sample_offset_y(frame_seed, col, row, sample, samples);
-        sum = sum + trace(scene, primary_ray_through(camera, col, row, ox, oy));
+        const Ray ray = primary_ray_through(camera, col, row, ox, oy);
+        sum = sum + trace(scene, ray);
+        if (coverage && intersect(scene, ray).kind != HitKind::None) ++hits;
     }
+    if (coverage) *coverage = static_cast<double>(hits) / samples;
     return sum / samples;
 }
 
-}  // namespace
-
-Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows) {
+Image render_frame(const Scene& scene, const CameraFrame& camera, int frame,
+                   const std::function<void()>& between_rows, bool linear) {
     // Impostors face this frame's eye; once placed they are billboards like any other, which
     // is all trace() knows about. The placed scene has no impostors, so this recurses once.
-    if (!scene.impostors.empty()) return render(with_impostors_placed(scene, camera), camera, frame, between_rows);
+    if (!scene.impostors.empty())
+        return render_frame(with_impostors_placed(scene, camera), camera, frame, between_rows, linear);
     const unsigned frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
     Image image;
     image.width = camera.width;
     image.height = camera.height;
     image.rgba.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
+    if (linear) image.linear.resize(image.rgba.size());
     for (int row = 0; row < camera.height; ++row) {
         if (between_rows) between_rows();
         for (int col = 0; col < camera.width; ++col) {
-            const Color color = pixel_color(scene, camera, frame_seed, col, row);
-            std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(row) * camera.width + col) * 4];
+            double coverage = 0;
+            const Color color = pixel_color(scene, camera, frame_seed, col, row, linear ? &coverage : nullptr);
+            const std::size_t offset = (static_cast<std::size_t>(row) * camera.width + col) * 4;
+            std::uint8_t* texel = &image.rgba[offset];
             texel[0] = to_byte(color.x);
             texel[1] = to_byte(color.y);
             texel[2] = to_byte(color.z);
             texel[3] = 255;
+            if (!linear) continue;
+            float* values = &image.linear[offset];
+            values[0] = static_cast<float>(color.x);
+            values[1] = static_cast<float>(color.y);
+            values[2] = static_cast<float>(color.z);
+            values[3] = static_cast<float>(coverage);
         }
     }
     return image;
+}
+
+}  // namespace
+
+Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows) {
+    return render_frame(scene, camera, frame, between_rows, false);
+}
+
+Image render_linear(const Scene& scene, const CameraFrame& camera, int frame,
+                    const std::function<void()>& between_rows) {
+    return render_frame(scene, camera, frame, between_rows, true);
 }
 
 }  // namespace clr::reference

@@ -85,4 +85,10 @@ std::uint8_t to_byte(double channel);
 Image render(const Scene& scene, const CameraFrame& camera, int frame = 0,
              const std::function<void()>& between_rows = {});
 
+// Renders one frame as render() does, and also its linear colours (Image::linear): per pixel
+// the mean of its samples' colours as float, unclamped, and the fraction of its samples whose
+// primary ray hits an object (docs/command-line.md, HDR and alpha outputs).
+Image render_linear(const Scene& scene, const CameraFrame& camera, int frame = 0,
+                    const std::function<void()>& between_rows = {});
+
 }  // namespace clr::reference

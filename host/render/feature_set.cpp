@@ -43,6 +43,7 @@ std::string FeatureSet::build_options() const {
     const std::map<std::string, bool> macros = {
         {"CLR_FEATURE_ALPHA", alpha},         {"CLR_FEATURE_BILLBOARDS", billboards},
         {"CLR_FEATURE_BVH", bvh},             {"CLR_FEATURE_DOUBLE", double_precision},
+        {"CLR_FEATURE_FLOAT_OUTPUT", float_output},
         {"CLR_FEATURE_MIRRORS", mirrors},     {"CLR_FEATURE_SPHERES", spheres},
         {"CLR_FEATURE_SUN", sun},             {"CLR_FEATURE_TEXTURES", textures},
     };

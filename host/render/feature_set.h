@@ -21,6 +21,9 @@ struct FeatureSet {
     bool mirrors = false;      // a mirror surface
     bool double_precision = false;  // geometry in double (--precision double), not a scene property
     bool bvh = false;          // secondary rays (shadows, mirrors) among enough objects to need a BVH
+    // Pixels as float4 (linear mean colour, coverage) instead of RGBA bytes: for EXR and
+    // --alpha outputs (docs/command-line.md, HDR and alpha outputs), not a scene property.
+    bool float_output = false;
 
     // Every scene feature on: the general kernel that every specialised variant must match
     // (in the same precision).

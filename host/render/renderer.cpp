@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/display_bytes.h"
 #include "core/errors.h"
 #include "core/stopwatch.h"
 #include "device/cl_errors.h"
@@ -57,6 +58,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     compiled_ = compile_scene(frame_, origin_);
     features_ = options.features.value_or(compiled_.features);
     features_.double_precision = options.double_precision;
+    features_.float_output = options.float_output;
     if (options.double_precision && device_.device().getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() == 0)
         throw DeviceError("'" + device_.entry().device_name +
                           "' has no double precision (cl_khr_fp64); use --precision float or another device");
@@ -141,10 +143,14 @@ void Renderer::reserve_pixels(std::size_t bytes) {
 }
 
 
+std::uint8_t* Renderer::kernel_pixels(Image& image) const {
+    return features_.float_output ? reinterpret_cast<std::uint8_t*>(image.linear.data()) : image.rgba.data();
+}
+
 double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, Image& image) {
-    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();
     std::size_t band_bytes = rows * row_bytes;
-    std::uint8_t* target = image.rgba.data() + first_row * row_bytes;
+    std::uint8_t* target = kernel_pixels(image) + first_row * row_bytes;
     bool in_place = render_in_place_;
     if (in_place)
         pixels_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR | CL_MEM_HOST_READ_ONLY,
@@ -208,6 +214,10 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
     if (spare_pixels_.size() == row_bytes * camera.height) image.rgba.swap(spare_pixels_);
     spare_pixels_.clear();
     image.rgba.resize(row_bytes * camera.height);
+    if (features_.float_output) {
+        image.linear.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
+        row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();  // the kernel's rows
+    }
     if (row_bytes > max_buffer_bytes_)
         throw DeviceError("a row of " + std::to_string(camera.width) + " pixels needs " + std::to_string(row_bytes) +
                           " bytes of device memory, more than '" + device_.entry().device_name + "' allows (" +
@@ -225,6 +235,7 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
     }
     band_sizer_.start_frame(std::move(work), camera.samples, camera.width);
     double kernel_ms = render_bands(camera, image);
+    if (features_.float_output) fill_display_bytes(image);  // the kernel wrote floats only
     if (timing) {
         timing->kernel_ms = kernel_ms;
         timing->total_ms = frame_time.elapsed_ms();
@@ -233,7 +244,7 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
 }
 
 double Renderer::render_bands(const ClrCamera& camera, Image& image) {
-    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    std::size_t row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();
     int limit = static_cast<int>(std::min<std::size_t>(camera.height, max_buffer_bytes_ / row_bytes));
     double kernel_ms = 0;
     bands_ = 0;

@@ -39,6 +39,10 @@ struct RendererOptions {
     bool screen_tiles = true;
     // Intersect and shade in double (the device needs cl_khr_fp64; DeviceError otherwise).
     bool double_precision = false;
+    // Frames also carry their linear colours and coverage (Image::linear), from kernels
+    // compiled with the float output mode (FeatureSet::float_output); rgba then holds the
+    // same bytes as without.
+    bool float_output = false;
 };
 
 class Renderer {
@@ -83,6 +87,9 @@ private:
     // summed kernel time in ms.
     double render_bands(const ClrCamera& camera, Image& image);
     void reserve_pixels(std::size_t bytes);
+    // Bytes the kernel writes per pixel, and where it writes them in `image`.
+    std::size_t pixel_bytes() const { return features_.float_output ? 4 * sizeof(float) : 4; }
+    std::uint8_t* kernel_pixels(Image& image) const;
     ScreenTiles upload_screen_tiles(const FrameCamera& camera);
     void upload_geometry();
 

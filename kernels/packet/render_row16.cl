@@ -14,6 +14,13 @@
 #include "shared/clr_types.h"
 #include "trace.cl"
 
+/* What render_packets writes per pixel: RGBA bytes, or in the float output mode a float4. */
+#if CLR_FEATURE_FLOAT_OUTPUT
+#define CLR_PIXEL float4
+#else
+#define CLR_PIXEL uchar4
+#endif
+
 /* The display bytes of 16 pixels, packed as RGBA words (alpha 255): color_to_byte() of the
  * mean of their samples' colours (the sums r, g, b over `samples`). */
 CLR_PACKET_INLINE uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
@@ -119,10 +126,16 @@ CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hit
 }
 #endif
 
-/* Pixels col0 .. col0 + 15 of `row`, whose primary rays meet only objects of `tile`, as
- * packed display words: the mean of their samples' colours. */
-CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, TileItems tile, CLR_SCENE_PARAMS)
+/* The sums of the samples' colours of pixels col0 .. col0 + 15 of `row`, whose primary rays
+ * meet only objects of `tile`. With CLR_FEATURE_FLOAT_OUTPUT, `hit_counts` receives how many
+ * of each pixel's samples hit an object (its coverage, docs/command-line.md, HDR and alpha
+ * outputs); otherwise it is not touched. */
+CLR_PACKET_INLINE Colors16 sample_sums16(ClrCamera camera, real3 eye, int col0, int row, TileItems tile,
+                                         float16* hit_counts, CLR_SCENE_PARAMS)
 {
+#if CLR_FEATURE_FLOAT_OUTPUT
+    *hit_counts = (float16)(0.0f);
+#endif
     Colors16 sums;
     sums.r = sums.g = sums.b = (float16)(0.0f);
     for (int sample = 0; sample < camera.samples; ++sample) {
@@ -136,8 +149,46 @@ CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int
         sums.r += colors.r;
         sums.g += colors.g;
         sums.b += colors.b;
+#if CLR_FEATURE_FLOAT_OUTPUT
+        *hit_counts += select((float16)(0.0f), (float16)(1.0f), hits.kind != (int16)(CLR_HIT_NONE));
+#endif
     }
+    return sums;
+}
+
+/* Pixels col0 .. col0 + 15 of `row`, whose primary rays meet only objects of `tile`, as
+ * packed display words: the mean of their samples' colours. */
+CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, TileItems tile, CLR_SCENE_PARAMS)
+{
+    float16 unused;
+    Colors16 sums = sample_sums16(camera, eye, col0, row, tile, &unused, CLR_SCENE_ARGS);
     return display_pixels16(sums.r, sums.g, sums.b, camera.samples);
 }
+
+#if CLR_FEATURE_FLOAT_OUTPUT
+/* The float output mode (docs/command-line.md, HDR and alpha outputs): per pixel the mean of
+ * its samples' colours, linear and unclamped (the very value display_pixels16() turns into
+ * bytes), and the fraction of its samples that hit an object. Writes the first `lanes`. */
+CLR_PACKET_INLINE void store_linear16(__global float4* out, Colors16 sums, float16 hit_counts, int samples, int lanes)
+{
+    float n = (float)samples;
+    float r[16], g[16], b[16], a[16];
+    vstore16(sums.r / n, 0, r);
+    vstore16(sums.g / n, 0, g);
+    vstore16(sums.b / n, 0, b);
+    vstore16(hit_counts / n, 0, a);
+    for (int lane = 0; lane < lanes; ++lane)
+        out[lane] = (float4)(r[lane], g[lane], b[lane], a[lane]);
+}
+
+/* Pixels col0 .. col0 + 15 of `row` in the float output mode, written to out[0 .. lanes - 1]. */
+CLR_PACKET_INLINE void render_linear_row16(__global float4* out, int lanes, ClrCamera camera, real3 eye, int col0,
+                                           int row, TileItems tile, CLR_SCENE_PARAMS)
+{
+    float16 hit_counts;
+    Colors16 sums = sample_sums16(camera, eye, col0, row, tile, &hit_counts, CLR_SCENE_ARGS);
+    store_linear16(out, sums, hit_counts, camera.samples, lanes);
+}
+#endif
 
 #endif /* CLR_PACKET_RENDER_ROW16_CL */

@@ -11,7 +11,8 @@
 
 /* One work-item per pixel of a band of rows starting at `first_row` (the whole image when
  * it fits in one buffer): writes the display colour of pixel (x, first_row + y) to
- * pixels[y * width + x] as RGBA bytes (alpha 255). */
+ * pixels[y * width + x] as RGBA bytes (alpha 255); with CLR_FEATURE_FLOAT_OUTPUT as a float4
+ * (the linear mean colour and the fraction of samples that hit an object) instead. */
 /* vec_type_hint (a standard hint, which PoCL ignores) keeps Intel's CPU runtime from
  * vectorising this kernel across work-items: with AVX-512 its vectorised form of the double
  * kernels with sun and mirrors gave a fifth of the pixels different colours from the same
@@ -27,13 +28,24 @@ __kernel __attribute__((vec_type_hint(float4))) void render(ClrCamera camera, in
     int row = first_row + band_row;
     /* The mean of the pixel's samples (clr_samples.h), in display values. */
     float3 sum = (float3)(0.0f);
+#if CLR_FEATURE_FLOAT_OUTPUT
+    float hit_count = 0.0f; /* samples that hit an object: the pixel's coverage */
+#endif
     for (int sample = 0; sample < camera.samples; ++sample) {
         float ox = clr_sample_offset_x(camera.frame_seed, col, row, sample, camera.samples);
         float oy = clr_sample_offset_y(camera.frame_seed, col, row, sample, camera.samples);
         Ray ray = camera_ray_through(camera, col, row, ox, oy);
         Hit hit = intersect_scene(ray.origin, ray.direction, INFINITY, CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
         sum += trace_path(ray.origin, ray.direction, hit, CLR_SCENE_ARGS);
+#if CLR_FEATURE_FLOAT_OUTPUT
+        hit_count += hit.kind != CLR_HIT_NONE ? 1.0f : 0.0f;
+#endif
     }
+#if CLR_FEATURE_FLOAT_OUTPUT
+    float n = (float)camera.samples;
+    ((__global float4*)pixels)[band_row * camera.width + col] = (float4)(sum / n, hit_count / n);
+#else
     pixels[band_row * camera.width + col] = display_pixel(sum / (float)camera.samples);
+#endif
 }
 

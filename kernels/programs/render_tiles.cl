@@ -10,7 +10,7 @@
  * renders screen tile x of tile row first_row / CLR_TILE_SIZE + y, that is the rows of its
  * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16). A tile
  * that no object can reach is the background's colour throughout. Identical output to
- * render. */
+ * render. With CLR_FEATURE_FLOAT_OUTPUT, `pixels` holds a float4 per pixel instead (CLR_PIXEL). */
 __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
                              __global uchar4* pixels, __global const uint* tile_offsets,
                              __global const uint* tile_items, __global const float* item_nearest,
@@ -31,19 +31,29 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
     items.rows = item_rows;
     items.first = tile_offsets[tile];
     items.end = tile_offsets[tile + 1];
-    __global uchar4* out = pixels + (row_begin - first_row) * camera.width + col0;
+    __global CLR_PIXEL* out = (__global CLR_PIXEL*)pixels + (row_begin - first_row) * camera.width + col0;
     if (items.first == items.end) {
         /* Every sample sees the background: the mean as render computes it, once. */
         float3 sum = (float3)(0.0f);
         for (int sample = 0; sample < camera.samples; ++sample)
             sum += info.background.xyz;
         float3 mean = sum / (float)camera.samples;
+#if CLR_FEATURE_FLOAT_OUTPUT
+        for (int row = row_begin; row < row_end; ++row, out += camera.width)
+            for (int lane = 0; lane < lanes; ++lane)
+                out[lane] = (float4)(mean, 0.0f); /* no sample hit an object */
+#else
         uint16 packed = display_pixels16((float16)(mean.x), (float16)(mean.y), (float16)(mean.z), 1);
         for (int row = row_begin; row < row_end; ++row, out += camera.width)
             store_pixels16(out, packed, lanes);
+#endif
         return;
     }
     real3 eye = convert_real3(camera.eye.xyz);
     for (int row = row_begin; row < row_end; ++row, out += camera.width)
+#if CLR_FEATURE_FLOAT_OUTPUT
+        render_linear_row16(out, lanes, camera, eye, col0, row, items, CLR_SCENE_ARGS);
+#else
         store_pixels16(out, render_row16(camera, eye, col0, row, items, CLR_SCENE_ARGS), lanes);
+#endif
 }

@@ -112,11 +112,13 @@ TEST(FeatureSet, OptionsAreDeterministicAndComplete) {
     FeatureSet none;
     EXPECT_EQ(none.build_options(),
               "-DCLR_FEATURE_ALPHA=0 -DCLR_FEATURE_BILLBOARDS=0 -DCLR_FEATURE_BVH=0 -DCLR_FEATURE_DOUBLE=0 "
+              "-DCLR_FEATURE_FLOAT_OUTPUT=0 "
               "-DCLR_FEATURE_MIRRORS=0 "
               "-DCLR_FEATURE_SPHERES=0 "
               "-DCLR_FEATURE_SUN=0 -DCLR_FEATURE_TEXTURES=0");
     EXPECT_EQ(FeatureSet::all().build_options(),
               "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_BVH=1 -DCLR_FEATURE_DOUBLE=0 "
+              "-DCLR_FEATURE_FLOAT_OUTPUT=0 "
               "-DCLR_FEATURE_MIRRORS=1 "
               "-DCLR_FEATURE_SPHERES=1 "
               "-DCLR_FEATURE_SUN=1 -DCLR_FEATURE_TEXTURES=1");
