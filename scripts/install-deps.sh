@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev libstb-dev libcli11-dev libpng-dev zlib1g-dev
   # SHA-256 (libcrypto) for the keys and checksums of the caches
   libssl-dev
+  # EXR output (-o frame.exr): OpenEXR 3 and its CMake config
+  libopenexr-dev
   googletest libgtest-dev
   ffmpeg
   parallel

@@ -19,6 +19,7 @@
 
 #include "core/errors.h"
 #include "output/atomic_file.h"
+#include "output/exr_writer.h"
 #include "output/file_extension.h"
 
 namespace clr {
@@ -73,13 +74,14 @@ std::string encode_png(const Image& image, PngOutput& output) {
         return output.out_of_memory ? "out of memory" : "libpng failed";
     }
     png_set_write_fn(png, &output, append_png_bytes, flush_png);
+    const int color_type = image.write_alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB;  // --alpha: straight alpha
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
-                 PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+                 color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
     png_set_compression_level(png, 1);
     png_set_compression_strategy(png, Z_RLE);
     png_write_info(png, info);
-    png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are RGBA in memory: libpng drops the alpha byte
+    if (!image.write_alpha) png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are RGBA in memory: libpng drops the alpha byte
     const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 4;
     for (int row = 0; row < image.height; ++row)
         png_write_row(png, const_cast<png_bytep>(image.rgba.data() + row * row_bytes));
@@ -119,8 +121,9 @@ ImageFormat image_format_for(const std::string& path) {
     const std::string extension = lowercase_extension(path);
     if (extension == ".png") return ImageFormat::Png;
     if (extension == ".ppm") return ImageFormat::Ppm;
+    if (extension == ".exr") return ImageFormat::Exr;
     const std::string problem = extension.empty() ? "no file extension" : "unsupported extension '" + extension + "'";
-    throw UsageError(path + ": " + problem + " for an image (supported: .png, .ppm)");
+    throw UsageError(path + ": " + problem + " for an image (supported: .png, .ppm, .exr)");
 }
 
 std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image) {
@@ -129,6 +132,9 @@ std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, con
     auto file = std::make_unique<AtomicFile>(path);
     if (format == ImageFormat::Png) {
         write_png(*file, image);
+    } else if (format == ImageFormat::Exr) {
+        const std::vector<char> bytes = encode_exr(path, image);
+        file->write(bytes.data(), bytes.size());
     } else {
         write_ppm(*file, image);
     }

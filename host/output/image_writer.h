@@ -1,5 +1,5 @@
-// Writes rendered frames: PNG or PPM (binary P6), chosen by the path's extension, always
-// atomically (see atomic_file.h).
+// Writes rendered frames: PNG, PPM (binary P6) or OpenEXR (exr_writer.h), chosen by the path's
+// extension, always atomically (see atomic_file.h).
 #pragma once
 
 #include <memory>
@@ -10,13 +10,14 @@
 
 namespace clr {
 
-enum class ImageFormat { Png, Ppm };
+enum class ImageFormat { Png, Ppm, Exr };
 
-// The format for `path` from its extension (".png", ".ppm", any case). Throws UsageError for
+// The format for `path` from its extension (".png", ".ppm", ".exr", any case). Throws UsageError for
 // any other extension, naming the path and the supported ones.
 ImageFormat image_format_for(const std::string& path);
 
-// Writes the RGBA image (alpha is dropped: outputs are opaque RGB). Throws OutputError
+// Writes the RGBA image (alpha is dropped unless image.write_alpha: then a PNG is RGBA; an EXR
+// writes image.linear, with A when image.write_alpha). Throws OutputError
 // naming the path when the file cannot be written; nothing is left under `path` then.
 void write_image(const std::string& path, const Image& image);
 
