@@ -43,7 +43,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.set_version_flag("--version", std::string("clrender ") + CLRENDER_VERSION);
     app.add_option("scene", options.scene_path, "Scene file (.json or .js)");
     app.add_option("-o,--output", options.output_path,
-                   "Image to write (.png or .ppm); for an animation a frame pattern with %04d or ####. "
+                   "Image to write (.png, .ppm, or .exr: linear float colours); for an animation a frame pattern with %04d or ####. "
                    "Default: <scene name>.png for a still, no frames for an animation");
     app.add_option("--video", options.video_path,
                    "Video of the animation (.mp4: H.264, yuv420p; .gif). Default for an animation without -o: "
@@ -79,6 +79,10 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
+    // HDR and alpha outputs (docs/command-line.md, HDR and alpha outputs).
+    app.add_flag("--alpha", options.alpha,
+                 "Write an alpha channel: the fraction of each pixel's samples that hit an object, so the "
+                 "background is transparent (PNG: straight alpha; EXR: premultiplied); not with a video or .ppm");
 
     try {
         app.parse(argc, argv);

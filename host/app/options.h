@@ -26,6 +26,8 @@ struct Options {
     bool quiet = false;
     std::string stats_path;      // JSON timing report
     std::string kernel_dir;      // load kernels from this folder (kernel development)
+    // HDR and alpha outputs (docs/command-line.md): EXR is chosen by -o's extension.
+    bool alpha = false;          // --alpha: the background transparent (coverage as alpha)
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome

@@ -10,7 +10,9 @@
 namespace clr {
 
 // `between_rows` runs before each row of a frame and throws to abandon it (a stop request).
+// `linear_frames`: frames also carry their linear colours (Image::linear).
 std::unique_ptr<FrameRenderer> make_reference_frame_renderer(const Scene& scene,
-                                                             std::function<void()> between_rows = {});
+                                                             std::function<void()> between_rows = {},
+                                                             bool linear_frames = false);
 
 }  // namespace clr

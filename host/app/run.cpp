@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/frame_sink.h"
+#include "app/linear_outputs.h"
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
 #include "core/interruption.h"
@@ -92,10 +93,12 @@ DeviceList list_devices_meanwhile() {
     }
 }
 
-std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices) {
+std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices,
+                                             bool linear_frames) {
     // A long frame stops within a band (or a reference row) of a signal, not at its end.
-    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted);
+    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted, linear_frames);
     RendererOptions renderer_options;
+    renderer_options.float_output = linear_frames;
     renderer_options.between_bands = throw_if_interrupted;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
@@ -123,7 +126,7 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                    DeviceList& devices, StagedOutputs& staged) {
-    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices);
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, needs_linear_frames(options, plan));
     report.device = renderer->device_name();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
@@ -143,6 +146,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
         if (std::optional<Image> written = sink.take_finished()) renderer->recycle(std::move(*written));
         Image image = renderer->render(camera_at_frame(scene, frame), frame, &record.timing);
         report.frames.push_back(record);
+        prepare_linear_frame(image, options, plan, scene);
         sink.push(frame, std::move(image));
         progress.frame_done();
     }
@@ -204,6 +208,7 @@ int run(const Options& options) {
     }
     throw_if_interrupted();
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
+    check_linear_outputs(options, plan);
     throw_if_interrupted();
 
     // A still's image or an animation's video, and the stats, are renamed into place together,

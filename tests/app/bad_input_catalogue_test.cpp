@@ -358,7 +358,7 @@ std::vector<BadInput> catalogue() {
         {"OutputIsAFolder", {{"scene.json", scene_with("")}}, {"out.png"}, "scene.json -o out.png -q", 4,
          {"out.png: is a folder; clrender writes outputs only to regular files"}},
         {"UnsupportedOutputExtension", {{"scene.json", scene_with("")}}, {}, "scene.json -o out.bmp", 1,
-         {"out.bmp: unsupported extension '.bmp' for an image (supported: .png, .ppm)"}},
+         {"out.bmp: unsupported extension '.bmp' for an image (supported: .png, .ppm, .exr)"}},
         {"UnsupportedVideoExtension", {{"path.json", animation_scene()}}, {}, "path.json --video out.avi", 1,
          {"'out.avi': unsupported video format; use a .mp4 or .gif file name"}},
         {"MissingFfmpegForAVideo", {{"path.json", animation_scene()}}, {}, "path.json --video out.mp4 -q", 4,
@@ -511,6 +511,18 @@ std::vector<BadInput> catalogue() {
         {"KernelIncludeOfNoFile", kernels_with_broken("intersect.cl", "\n#include \"common/nothing.cl\"\n"),
          kernel_folders(), "scene.json -q --kernel-dir kd", 3,
          {"kernels/intersect.cl:", "#include \"common/nothing.cl\" names no kernel source", "kd/common/nothing.cl"}},
+        // --- HDR and alpha outputs: --alpha only where the output has an alpha channel, EXR
+        // frames never read back into a video
+        {"AlphaWithAVideo", {{"path.json", animation_scene()}}, {}, "path.json -q --alpha -o f_%04d.png --video v.mp4", 1,
+         {"--alpha: the video v.mp4 would have no alpha channel"}},
+        {"AlphaWithTheDefaultVideo", {{"path.json", animation_scene()}}, {}, "path.json -q --alpha", 1,
+         {"--alpha: the video path.mp4 would have no alpha channel"}},
+        {"AlphaIntoAPpm", {{"scene.json", scene_with("")}}, {}, "scene.json -q --alpha -o out.ppm", 1,
+         {"--alpha: out.ppm is a PPM, which has no alpha channel"}},
+        {"AssembleFromExrFrames", {{"path.json", animation_scene()}}, {}, "path.json -q --assemble -o f_%04d.exr --video v.mp4",
+         1, {"-o f_%04d.exr: EXR frames cannot be read back into a video (--assemble)"}},
+        {"ResumeExrFramesIntoAVideo", {{"path.json", animation_scene()}}, {}, "path.json -q --resume -o f_%04d.exr --video v.mp4",
+         1, {"-o f_%04d.exr: EXR frames cannot be read back into a video (--resume)"}},
     };
 }
 

@@ -1,0 +1,211 @@
+// -o x.exr and --alpha through the real binary (docs/command-line.md, HDR and alpha outputs):
+// the EXR read back with OpenEXR and the RGBA PNG read back, each against the double
+// reference's linear colours and coverage, and against the plain PNG's bytes.
+#include <gtest/gtest.h>
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "reference/reference.h"
+#include "scene/image_loader.h"
+#include "scene/scene_loader.h"
+#include "support/command.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+using testing::read_bytes;
+using testing::run_clrender;
+using testing::TempFolder;
+
+// Lit spheres, a mirror and a billboard in front of a visible background; --spp 4 gives
+// partly covered pixels along the silhouettes.
+const char* kScene = R"({
+  "eye": [1, 1, 9], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 50,
+  "width": 64, "height": 48, "DefaultColor": [0.2, 0.3, 0.5], "SunLocation": [-10, 20, 10],
+  "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0.3, 0.2]},
+              {"center": [2.2, 0.5, -1], "radius": 0.8, "ambient": [0, 0, 0], "IsMirror": 1}],
+  "billboards": [{"UpperLeft": [-4, 3, -3], "LowerLeft": [-4, 0, -3], "UpperRight": [-1, 3, -3], "ambient": [0.9, 0.8, 0.1]}]
+})";
+constexpr int kWidth = 64, kHeight = 48, kSamples = 4;
+
+struct Exr {
+    std::vector<std::string> channels;
+    std::vector<float> rgba;  // 4 floats a pixel; A is 1 where the file has none
+};
+
+Exr read_exr(const std::string& path) {
+    Imf::InputFile file(path.c_str());
+    Exr exr;
+    const Imath::Box2i window = file.header().dataWindow();
+    EXPECT_EQ(window.max.x - window.min.x + 1, kWidth);
+    EXPECT_EQ(window.max.y - window.min.y + 1, kHeight);
+    for (auto channel = file.header().channels().begin(); channel != file.header().channels().end(); ++channel) {
+        exr.channels.push_back(channel.name());
+        EXPECT_EQ(channel.channel().type, Imf::FLOAT) << channel.name();
+    }
+    exr.rgba.assign(static_cast<std::size_t>(kWidth) * kHeight * 4, 0.0f);
+    Imf::FrameBuffer frame;
+    const char* names[] = {"R", "G", "B", "A"};
+    char* base = reinterpret_cast<char*>(exr.rgba.data());
+    for (int c = 0; c < 4; ++c)
+        frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 4 * sizeof(float),
+                                          4 * sizeof(float) * kWidth, 1, 1, c == 3 ? 1.0 : 0.0));
+    file.setFrameBuffer(frame);
+    file.readPixels(window.min.y, window.max.y);
+    return exr;
+}
+
+// The reference's linear colours and coverage of the scene as clrender loads it.
+Image reference_of(const std::string& scene_path) {
+    LoadOptions options;
+    options.samples_override = kSamples;
+    Scene scene = load_scene(scene_path, options);
+    return reference::render_linear(scene, reference::camera_of(scene, scene.camera_path.front()));
+}
+
+float at(const std::vector<float>& values, int col, int row, int c) {
+    return values[(static_cast<std::size_t>(row) * kWidth + col) * 4 + c];
+}
+
+// Off the silhouettes: the reference's coverage and red are the same in all 8 neighbours.
+bool interior(const Image& reference, int col, int row) {
+    if (col == 0 || row == 0 || col + 1 == kWidth || row + 1 == kHeight) return false;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int c : {0, 3})
+                if (at(reference.linear, col + dx, row + dy, c) != at(reference.linear, col, row, c)) return false;
+    return true;
+}
+
+std::uint8_t display_byte_of(float c) {
+    const volatile float scaled = std::clamp(c, 0.0f, 1.0f) * 255.0f;
+    return static_cast<std::uint8_t>(std::floor(scaled + 0.5f));
+}
+
+class HdrAlphaCli : public ::testing::Test {
+protected:
+    void SetUp() override { folder_.write("scene.json", kScene); }
+    void render(const std::string& arguments) {
+        auto result = run_clrender("scene.json -q --spp 4 " + arguments, folder_.path());
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_TRUE(result.output.empty()) << result.output;
+    }
+    TempFolder folder_;
+};
+
+TEST_F(HdrAlphaCli, ExrHoldsTheReferencesLinearColoursAndThePngsBytes) {
+    render("-o plain.png");
+    render("-o hdr.exr");
+    const Exr exr = read_exr(folder_.file("hdr.exr"));
+    EXPECT_EQ(exr.channels, (std::vector<std::string>{"B", "G", "R"}));
+    auto png = load_image(folder_.file("plain.png"));
+    for (std::size_t i = 0; i < exr.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        ASSERT_EQ(display_byte_of(exr.rgba[i]), png->rgba[i]) << "value " << i << ": " << exr.rgba[i];
+    }
+    const Image reference = reference_of(folder_.file("scene.json"));
+    int compared = 0;
+    for (int row = 0; row < kHeight; ++row)
+        for (int col = 0; col < kWidth; ++col) {
+            if (!interior(reference, col, row)) continue;
+            ++compared;
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(at(exr.rgba, col, row, c), at(reference.linear, col, row, c), 1e-4)
+                    << "(" << col << ", " << row << ") channel " << c;
+        }
+    EXPECT_GT(compared, kWidth * kHeight / 2);
+}
+
+TEST_F(HdrAlphaCli, AlphaPngIsStraightRgbaWithTheReferencesCoverage) {
+    render("-o plain.png");
+    render("--alpha -o alpha.png");
+    const std::string bytes = read_bytes(folder_.file("alpha.png"));
+    ASSERT_GT(bytes.size(), 26u);
+    EXPECT_EQ(bytes[25], 6) << "PNG colour type: RGBA";
+    auto plain = load_image(folder_.file("plain.png"));
+    auto alpha = load_image(folder_.file("alpha.png"));
+    const Image reference = reference_of(folder_.file("scene.json"));
+    int transparent = 0, opaque = 0, partial = 0;
+    for (int row = 0; row < kHeight; ++row)
+        for (int col = 0; col < kWidth; ++col) {
+            const int a = alpha->at(col, row, 3);
+            transparent += a == 0;
+            opaque += a == 255;
+            partial += a > 0 && a < 255;
+            if (a == 0 || a == 255) {  // straight alpha: RGB as without --alpha
+                for (int c = 0; c < 3; ++c) ASSERT_EQ(alpha->at(col, row, c), plain->at(col, row, c));
+            }
+            if (!interior(reference, col, row)) continue;
+            const float coverage = at(reference.linear, col, row, 3);
+            ASSERT_EQ(a, static_cast<int>(std::lround(coverage * 255))) << "(" << col << ", " << row << ")";
+        }
+    EXPECT_GT(transparent, 0);
+    EXPECT_GT(opaque, 0);
+    EXPECT_GT(partial, 0) << "--spp 4 must give partly covered pixels";
+    EXPECT_EQ(alpha->at(0, 0, 3), 0) << "a corner sees only the background";
+    EXPECT_EQ(alpha->at(kWidth / 2, kHeight / 2, 3), 255) << "the centre is on the sphere";
+}
+
+TEST_F(HdrAlphaCli, AlphaExrIsPremultipliedWithTheReferencesCoverage) {
+    render("-o hdr.exr");
+    render("--alpha -o alpha.exr");
+    const Exr plain = read_exr(folder_.file("hdr.exr"));
+    const Exr alpha = read_exr(folder_.file("alpha.exr"));
+    EXPECT_EQ(alpha.channels, (std::vector<std::string>{"A", "B", "G", "R"}));
+    const Image reference = reference_of(folder_.file("scene.json"));
+    const float background[] = {0.2f, 0.3f, 0.5f};
+    for (int row = 0; row < kHeight; ++row)
+        for (int col = 0; col < kWidth; ++col) {
+            const float a = at(alpha.rgba, col, row, 3);
+            ASSERT_EQ(a * kSamples, std::round(a * kSamples)) << "coverage counts whole samples";
+            for (int c = 0; c < 3; ++c) {  // premultiplied: the mean less the background's share
+                ASSERT_NEAR(at(alpha.rgba, col, row, c), at(plain.rgba, col, row, c) - (1 - a) * background[c], 1e-6)
+                    << "(" << col << ", " << row << ")";
+            }
+            if (interior(reference, col, row)) {
+                ASSERT_EQ(a, at(reference.linear, col, row, 3));
+            }
+        }
+    EXPECT_EQ(at(alpha.rgba, 0, 0, 0), 0.0f) << "no object, no colour";
+}
+
+TEST_F(HdrAlphaCli, ReferenceRendererWritesTheSameCoverage) {
+    render("--alpha -o kernels.exr");
+    render("--reference --alpha -o reference.exr");
+    const Exr kernels = read_exr(folder_.file("kernels.exr"));
+    const Exr reference = read_exr(folder_.file("reference.exr"));
+    int differing = 0;
+    for (std::size_t i = 3; i < kernels.rgba.size(); i += 4) differing += kernels.rgba[i] != reference.rgba[i];
+    EXPECT_LT(differing, kWidth * kHeight / 20) << "only silhouette pixels may differ";
+}
+
+TEST(HdrAlphaCliAnimation, FramesOfAnAnimationAsExr) {
+    TempFolder folder;
+    folder.write("path.json", R"({
+      "eyeLocations": [[-3, 1, 8], [3, 2, 7]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 55,
+      "width": 64, "height": 48, "DefaultColor": [0.1, 0.1, 0.2],
+      "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0.3, 0.2]}]})");
+    auto result = run_clrender("path.json -q --frames 0,10 -o f_%04d.exr --video v.mp4", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const Exr first = read_exr(folder.file("f_0000.exr"));
+    const Exr last = read_exr(folder.file("f_0010.exr"));
+    EXPECT_NE(first.rgba, last.rgba);
+    EXPECT_TRUE(std::filesystem::is_regular_file(folder.file("v.mp4"))) << "the video from the display colours";
+}
+
+TEST(HdrAlphaCliHelp, HelpNamesAlphaAndExr) {
+    auto result = run_clrender("--help");
+    EXPECT_NE(result.output.find("--alpha"), std::string::npos);
+    EXPECT_NE(result.output.find(".exr"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace clr
