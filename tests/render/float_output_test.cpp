@@ -84,8 +84,8 @@ void expect_floats_give_the_default_bytes(const Scene& scene, bool screen_tiles)
 
 // Coverage equal to the reference's wherever the reference's coverage does not change within
 // the pixel's 8 neighbours (off silhouettes), colours within float rounding there.
-void expect_matches_reference(const Scene& scene) {
-    const Image kernel = testing::render_with_kernels(scene, float_mode(true));
+void expect_matches_reference(const Scene& scene, bool screen_tiles) {
+    const Image kernel = testing::render_with_kernels(scene, float_mode(screen_tiles));
     const Image reference = reference::render_linear(scene, reference::camera_of(scene, scene.camera_path.front()));
     ASSERT_EQ(kernel.linear.size(), reference.linear.size());
     const int w = scene.width, h = scene.height;
@@ -150,7 +150,8 @@ TEST(FloatOutput, DisplayBytesOfTheFloatsAreTheDefaultKernelsBytes) {
 TEST(FloatOutput, LinearColoursAndCoverageMatchTheReference) {
     for (const NamedParts& scene : kScenes) {
         SCOPED_TRACE(scene.name);
-        expect_matches_reference(test_scene(scene.parts));
+        expect_matches_reference(test_scene(scene.parts), true);
+        expect_matches_reference(test_scene(scene.parts), false);
     }
 }
 
