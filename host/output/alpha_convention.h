@@ -10,14 +10,14 @@
 #pragma once
 
 #include "core/image.h"
+#include "core/vec3.h"
 #include "output/image_writer.h"
-#include "scene/scene.h"
 
 namespace clr {
 
 // Rewrites `image` (which has linear colours) for `format` as above and marks it
 // write_alpha. `samples`: samples per pixel, to which the coverage is snapped (k / samples),
 // so that a pixel every sample hit has alpha exactly 1 whatever the device's division.
-void apply_alpha_convention(Image& image, ImageFormat format, const Color& background, int samples);
+void apply_alpha_convention(Image& image, ImageFormat format, const Vec3& background, int samples);
 
 }  // namespace clr

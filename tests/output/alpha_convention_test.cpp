@@ -20,7 +20,7 @@ Image three_pixels() {
     return image;
 }
 
-const Color kBackground{0.2, 0.4, 0.6};
+const Vec3 kBackground{0.2, 0.4, 0.6};
 
 TEST(AlphaConvention, ExrIsPremultiplied) {
     Image image = three_pixels();
