@@ -1,5 +1,8 @@
 #include "app/run.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <future>
 #include <iostream>
@@ -44,8 +47,7 @@ struct RunReport {
     std::vector<FrameRecord> frames;
 };
 
-// Written under a temporary name; renamed into place with a still's image (staged_outputs.h).
-std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport& report) {
+std::string stats_text(const RunReport& report) {
     nlohmann::json frames = nlohmann::json::array();
     for (const FrameRecord& frame : report.frames)
         frames.push_back({{"index", frame.index}, {"kernel_ms", frame.timing.kernel_ms}, {"total_ms", frame.timing.total_ms}});
@@ -59,11 +61,24 @@ std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport
     };
     // A driver's device name is not guaranteed to be UTF-8: invalid bytes become U+FFFD, so
     // the report is still JSON instead of the run failing for it.
-    std::string text = stats.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return stats.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+// Written under a temporary name; renamed into place with a still's image (staged_outputs.h).
+std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport& report) {
+    const std::string text = stats_text(report);
     auto file = std::make_unique<AtomicFile>(path);
     file->write(text.data(), text.size());
     file->complete();
     return file;
+}
+
+// --stats -: the report on standard output. A closed pipe or a full disk behind standard
+// output is an output error.
+void print_stats(const RunReport& report) {
+    const std::string text = stats_text(report);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+        throw OutputError(std::string("--stats -: cannot write the report to standard output: ") + std::strerror(errno));
 }
 
 Scene load(const Options& options) {
@@ -128,6 +143,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
     if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
+    make_missing_folders(plan);  // the device is ready: nothing refuses the run before it renders
 
     FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
@@ -158,6 +174,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                      StagedOutputs& staged) {
     report.device = "none (assembling frames)";
+    make_missing_folders(plan);
     FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     for (int frame : plan.frames) {
@@ -170,8 +187,18 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
     report.write_ms = sink.write_ms();
 }
 
+// "wrote anim_0000.png ... anim_0047.png (48 frames, no video: ...)" for the default frames.
+void print_default_frames(const OutputPlan& plan) {
+    std::cerr << "clrender: wrote " << printable(plan.image_path(plan.frames.front()));
+    if (plan.frames.size() > 1)
+        std::cerr << " ... " << printable(plan.image_path(plan.frames.back())) << " (" << plan.frames.size() << " frames)";
+    std::cerr << "; no video for a --frames selection (--video makes one)\n";
+}
+
 void print_summary(const OutputPlan& plan, const RunReport& report) {
-    if (!plan.image_target.empty() && !plan.assemble)
+    if (plan.default_frame_digits > 0)
+        print_default_frames(plan);
+    else if (!plan.image_target.empty() && !plan.assemble)
         std::cerr << "clrender: wrote "
                   << printable(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
                   << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
@@ -217,6 +244,9 @@ int run(const Options& options) {
     report.total_ms = run_time.elapsed_ms();
     if (!plan.stats_path.empty()) staged.add(write_stats(plan.stats_path, report));
     throw_if_interrupted();
+    // --stats -: printed before the renames, so that a report that cannot be written leaves
+    // the earlier files as they were, as a --stats file that cannot be written does.
+    if (plan.stats_to_standard_output) print_stats(report);
     staged.commit_all();
     if (!options.quiet) print_summary(plan, report);
     return kExitOk;

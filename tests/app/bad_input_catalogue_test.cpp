@@ -351,8 +351,6 @@ std::vector<BadInput> catalogue() {
          {"unknown OpenCL device '42'"}, "CLRENDER_DEVICE=42"},
 
         // --- Outputs
-        {"OutputInAMissingFolder", {{"scene.json", scene_with("")}}, {}, "scene.json -o missing/out.png -q", 4,
-         {"missing/out.png: cannot create a file in its folder: No such file or directory"}},
         {"OutputUnderAFile", {{"scene.json", scene_with("")}}, {}, "scene.json -o scene.json/out.png -q", 4,
          {"scene.json/out.png: cannot create a file in its folder: Not a directory"}},
         {"OutputIsAFolder", {{"scene.json", scene_with("")}}, {"out.png"}, "scene.json -o out.png -q", 4,
@@ -511,6 +509,22 @@ std::vector<BadInput> catalogue() {
         {"KernelIncludeOfNoFile", kernels_with_broken("intersect.cl", "\n#include \"common/nothing.cl\"\n"),
          kernel_folders(), "scene.json -q --kernel-dir kd", 3,
          {"kernels/intersect.cl:", "#include \"common/nothing.cl\" names no kernel source", "kd/common/nothing.cl"}},
+        // --- Outputs: missing folders are made only for a run that passes every check (none
+        // for a refused one), never through a file; "-" is standard output for --stats only
+        {"OutputFolderThroughAFile", {{"scene.json", scene_with("")}, {"a.png", "not a folder"}}, {},
+         "scene.json -q -o a.png/frames/x.png", 4,
+         {"a.png/frames/x.png: cannot create the folder 'a.png/frames': 'a.png' is not a folder"}},
+        {"NewOutputFolderWithAnUnknownDevice", {{"scene.json", scene_with("")}}, {},
+         "scene.json -q -o new/out.png --stats new/stats/run.json -d no-such-device", 3,
+         {"unknown OpenCL device 'no-such-device'"}},
+        {"NewFramesFolderWithAFrameOutOfRange", {{"path.json", animation_scene()}}, {},
+         "path.json -q --frames 99 -o 'frames/f_%04d.png'", 1, {"frame 99 is out of range"}},
+        {"ImageToStandardOutput", {{"scene.json", scene_with("")}}, {}, "scene.json -o -", 1,
+         {"-o -: clrender writes images and videos only to files", "./- for a file named '-'"}},
+        {"VideoToStandardOutput", {{"path.json", animation_scene()}}, {}, "path.json --video -", 1,
+         {"--video -: clrender writes images and videos only to files"}},
+        {"ResumeWithoutFramesToLookFor", {{"path.json", animation_scene()}}, {}, "path.json --resume", 1,
+         {"--resume needs -o with a frame pattern (or --frames without -o and --video)"}},
     };
 }
 
