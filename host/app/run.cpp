@@ -9,6 +9,7 @@
 #include <system_error>
 #include <nlohmann/json.hpp>
 
+#include "app/frame_description.h"
 #include "app/frame_sink.h"
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
@@ -145,7 +146,8 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
     make_missing_folders(plan);  // the device is ready: nothing refuses the run before it renders
 
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
+    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged,
+                   [&scene](int frame) { return describe_frame(scene, frame); });
     Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
     const Stopwatch render_time;
     for (int frame : plan.frames) {
