@@ -43,11 +43,12 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.set_version_flag("--version", std::string("clrender ") + CLRENDER_VERSION);
     app.add_option("scene", options.scene_path, "Scene file (.json or .js)");
     app.add_option("-o,--output", options.output_path,
-                   "Image to write (.png or .ppm); for an animation a frame pattern with %04d or ####. "
-                   "Default: <scene name>.png for a still, no frames for an animation");
+                   "Image to write (.png or .ppm); for an animation a frame pattern with %04d or ####; missing "
+                   "folders are made. Default: <scene name>.png for a still, <scene name>_NNNN.png for the frames "
+                   "that --frames selects, no frames for a whole animation");
     app.add_option("--video", options.video_path,
-                   "Video of the animation (.mp4: H.264, yuv420p; .gif). Default for an animation without -o: "
-                   "<scene name>.mp4");
+                   "Video of the animation (.mp4: H.264, yuv420p; .gif). Default for an animation without -o "
+                   "and --frames: <scene name>.mp4");
     app.add_option("--frames", options.frames, "Frames to render, 0-based: 7, 0-99 or 5,7,10-20; default all");
     app.add_flag("--assemble", options.assemble,
                  "Encode the frames that -o names (rendered earlier, e.g. split across processes) into --video "
@@ -76,7 +77,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
     app.add_flag("--placeholders", options.placeholders,
                  "Render a magenta checkerboard for billboard images that are missing, instead of failing");
-    app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file");
+    app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file ('-': standard output)");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
 
