@@ -1,4 +1,4 @@
-# What `cmake --install build --prefix P` puts under P (README, Install): the two programs, the
+# What `cmake --install build --prefix P` puts under P (README.md, Install): the two programs, the
 # man page, the bash completion, the documentation with the licence, and the scene format's
 # JSON Schema. The kernels are embedded in the binary, so nothing else is read at run time.
 

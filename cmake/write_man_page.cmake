@@ -6,6 +6,8 @@
 # Only the first line of --version ("clrender 0.1.0") is given to help2man: the rest names the
 # commit and this machine's OpenCL platforms, which have no place in an installed page.
 
+cmake_minimum_required(VERSION 3.21)  # this script runs alone (-P): give it the project's policies
+
 execute_process(COMMAND "${PROGRAM}" --version
                 RESULT_VARIABLE version_status OUTPUT_VARIABLE version_text ERROR_VARIABLE version_error)
 if(NOT version_status EQUAL 0)

@@ -8,6 +8,8 @@
 # that repository's commit, and a machine without git must still build. The file is only
 # rewritten when its text changes, so that an unchanged commit recompiles nothing.
 
+cmake_minimum_required(VERSION 3.21)  # this script runs alone (-P): give it the project's policies
+
 set(commit "unknown")
 find_program(GIT_PROGRAM git)
 if(GIT_PROGRAM)
