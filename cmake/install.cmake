@@ -6,8 +6,8 @@ include(GNUInstallDirs)
 
 install(TARGETS clrender clrender_make_forest RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-# The man page is made from --help and --version by help2man at build time, so it cannot
-# drift from the options. Without help2man the build goes on and installs no man page.
+# The man page is made from --help by help2man at build time, so it cannot drift from the
+# options. Without help2man the build goes on and installs no man page.
 find_program(HELP2MAN_PROGRAM help2man)
 if(HELP2MAN_PROGRAM)
     set(CLRENDER_MAN_PAGE "${CMAKE_BINARY_DIR}/man/clrender.1")
@@ -15,6 +15,7 @@ if(HELP2MAN_PROGRAM)
         OUTPUT "${CLRENDER_MAN_PAGE}"
         COMMAND ${CMAKE_COMMAND} -E make_directory "${CMAKE_BINARY_DIR}/man"
         COMMAND ${CMAKE_COMMAND} -DHELP2MAN=${HELP2MAN_PROGRAM} -DPROGRAM=$<TARGET_FILE:clrender>
+                "-DVERSION_LINE=clrender ${PROJECT_VERSION}"
                 -DINCLUDE=${CMAKE_SOURCE_DIR}/packaging/man/clrender.h2m -DOUTPUT=${CLRENDER_MAN_PAGE}
                 -P ${CMAKE_SOURCE_DIR}/cmake/write_man_page.cmake
         DEPENDS clrender ${CMAKE_SOURCE_DIR}/packaging/man/clrender.h2m ${CMAKE_SOURCE_DIR}/cmake/write_man_page.cmake

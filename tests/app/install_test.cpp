@@ -130,7 +130,8 @@ TEST_F(Install, VersionNamesTheBuildsCommitAndTheOpenCLPlatforms) {
         if (commit.size() > dirty.size() && commit.compare(commit.size() - dirty.size(), dirty.size(), dirty) == 0)
             commit.resize(commit.size() - dirty.size());
         const auto head = run_shell("git -C " + shell_quoted(CLRENDER_SOURCE_DIR) + " rev-parse HEAD");
-        EXPECT_EQ(resolve_commit(commit), head.output) << "--version's commit " << commit << " is not HEAD";
+        EXPECT_EQ(resolve_commit(commit), head.output)
+            << "--version's commit " << commit << " is not HEAD (a commit made since the last build?)";
     } else {
         EXPECT_EQ(commit, "unknown");
     }
@@ -207,6 +208,8 @@ TEST_F(Install, ManPageRendersWithEveryOptionAndSection) {
     EXPECT_EQ(warnings.output, "") << "the formatter warned";
     const auto result = run_shell(render + " 2>/dev/null");
     ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find(std::string("\nclrender ") + CLRENDER_VERSION + " "), std::string::npos)
+        << "the page's footer names no version";
     for (const char* section : {"NAME", "SYNOPSIS", "OPTIONS", "ENVIRONMENT", "EXIT STATUS", "EXAMPLES", "SEE ALSO"})
         EXPECT_NE(result.output.find(std::string("\n") + section + "\n"), std::string::npos) << section;
     // Every long option the program knows, as an entry of its own: its name (after its short
