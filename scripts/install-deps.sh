@@ -11,6 +11,8 @@ packages=(
   # SHA-256 (libcrypto) for the keys and checksums of the caches
   libssl-dev
   googletest libgtest-dev
+  # the man page, made from --help at build time (cmake/write_man_page.cmake)
+  help2man
   ffmpeg
   parallel
   # clrender_bench's Embree peer (scripts/bench.sh, docs/benchmarks.md)

@@ -2,12 +2,18 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <regex>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/completion_words.h"
+#include "app/help_footer.h"
+#include "app/help_formatter.h"
+#include "app/version_text.h"
 #include "core/printable_text.h"
 #include "scene/limits.h"
 
@@ -40,7 +46,17 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     ParsedOptions parsed;
     Options& options = parsed.options;
     CLI::App app{"clrender: renders spheres-and-billboards scenes with OpenCL", "clrender"};
-    app.set_version_flag("--version", std::string("clrender ") + CLRENDER_VERSION);
+    // Version, help footer and completion (docs/command-line.md, Version): the
+    // version names the build's commit and the OpenCL platforms; --help ends with the
+    // environment variables, exit codes and examples; the hidden --completion-words lists
+    // the options for the bash completion, so new options complete without editing it.
+    app.set_version_flag("--version", std::function<std::string()>(version_text));
+    app.footer(help_footer());
+    app.formatter(std::make_shared<HelpFormatter>());
+    app.add_flag_callback("--completion-words", [&app] {
+           std::cout << completion_words(app);
+           throw CLI::Success();
+       })->group("");
     app.add_option("scene", options.scene_path, "Scene file (.json or .js)");
     app.add_option("-o,--output", options.output_path,
                    "Image to write (.png or .ppm); for an animation a frame pattern with %04d or ####; missing "
