@@ -79,6 +79,25 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
+    // The pixel explainer (docs/explain-pixel.md): "X,Y", non-negative integers; it prints and
+    // writes no files, so options that name outputs are refused with it.
+    app.add_option_function<std::string>(
+           "--explain-pixel",
+           [&options](const std::string& text) {
+               std::smatch match;
+               static const std::regex pattern(R"((\d{1,6}),(\d{1,6}))");
+               if (!std::regex_match(text, match, pattern))
+                   throw CLI::ValidationError("--explain-pixel", "expected X,Y with non-negative integers (column,row), "
+                                                                 "got '" + text + "'");
+               options.explain_pixel = Options::PixelPosition{std::stoi(match[1]), std::stoi(match[2])};
+           },
+           "Print how pixel X,Y (column, row from the top-left, 0-based) of the frame --frames names (default 0) "
+           "is computed, step by step, and the bytes the kernels give it; writes no files")
+        ->excludes("--output")
+        ->excludes("--video")
+        ->excludes("--stats")
+        ->excludes("--assemble")
+        ->excludes("--resume");
 
     try {
         app.parse(argc, argv);
