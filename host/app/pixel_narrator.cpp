@@ -12,7 +12,8 @@ using reference::detail::SphereRoots;
 
 std::string explain_number(double value) {
     char text[40];
-    std::snprintf(text, sizeof text, "%.9g", value);
+    // -0 (a normal's zero component, say) reads as a different number to a reader: print 0.
+    std::snprintf(text, sizeof text, "%.9g", value == 0 ? 0.0 : value);
     return text;
 }
 

@@ -526,7 +526,7 @@ std::vector<BadInput> catalogue() {
         {"ExplainPixelOfTwoFrames", {{"path.json", animation_scene()}}, {}, "path.json --explain-pixel 0,0 --frames 0-1", 1,
          {"--explain-pixel explains one frame; --frames '0-1' names 2"}},
         {"ExplainPixelWithAnOutput", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,0 -o x.png", 1,
-         {"--explain-pixel excludes --output"}, "", true},
+         {"--output excludes --explain-pixel"}, "", true},
     };
 }
 

@@ -316,5 +316,14 @@ TEST(ExplainPixel, SeveralSamplesAreEachExplained) {
     EXPECT_NE(result.output.find("pixel colour = mean of 4 sample(s)"), std::string::npos) << result.output;
 }
 
+TEST(ExplainPixel, HelpAndTheOptionsReferenceDescribeIt) {
+    const auto help = run_clrender("--help");
+    EXPECT_NE(help.output.find("--explain-pixel"), std::string::npos) << help.output;
+    const std::string reference = testing::read_bytes(std::string(CLRENDER_SOURCE_DIR) + "/docs/command-line.md");
+    EXPECT_NE(reference.find("| `--explain-pixel X,Y` |"), std::string::npos);
+    const std::string page = testing::read_bytes(std::string(CLRENDER_SOURCE_DIR) + "/docs/explain-pixel.md");
+    EXPECT_NE(page.find("## A worked example"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace clr
