@@ -6,6 +6,7 @@
 #include "app/frame_selection.h"
 #include "app/pixel_narrator.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "reference/impostors.h"
 #include "reference/reference.h"
 #include "scene/camera_path.h"
@@ -60,7 +61,7 @@ void describe_kernel_bytes(const KernelRendererFactory& kernel_renderer, const C
                                           image.at(pixel.x, pixel.y, 2)};
     const bool same = kernel_bytes[0] == reference_bytes[0] && kernel_bytes[1] == reference_bytes[1] &&
                       kernel_bytes[2] == reference_bytes[2];
-    out << "bytes the OpenCL kernels write (" << renderer->device_name() << "): " << bytes_text(kernel_bytes)
+    out << "bytes the OpenCL kernels write (" << printable(renderer->device_name()) << "): " << bytes_text(kernel_bytes)
         << (same ? " (the same)" : " (they differ: float rounding near an edge, see docs/explain-pixel.md)") << "\n";
 }
 

@@ -211,6 +211,7 @@ int run(const Options& options) {
         std::ostringstream explanation;  // whole or nothing: a device failure leaves no half explanation
         explain_pixel(options, scene, kernel_renderer, explanation);
         std::cout << explanation.str() << std::flush;
+        if (!std::cout) throw OutputError("standard output: cannot write the explanation (disk full or pipe closed?)");
         return kExitOk;
     }
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering

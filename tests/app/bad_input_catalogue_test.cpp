@@ -527,6 +527,10 @@ std::vector<BadInput> catalogue() {
          {"--explain-pixel explains one frame; --frames '0-1' names 2"}},
         {"ExplainPixelWithAnOutput", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,0 -o x.png", 1,
          {"--output excludes --explain-pixel"}, "", true},
+        // A device failure comes after the reference's part is computed: still only the error
+        // line, no half explanation before it.
+        {"ExplainPixelOnAnUnknownDevice", {{"scene.json", scene_with("")}}, {},
+         "scene.json --explain-pixel 0,0 -d nosuchdevice", 3, {"unknown OpenCL device 'nosuchdevice'"}},
     };
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <regex>
+#include <sys/wait.h>
 #include <string>
 
 #include "core/vec3.h"
@@ -314,6 +315,18 @@ TEST(ExplainPixel, SeveralSamplesAreEachExplained) {
     for (const char* sample : {"== Sample 0 of 4", "== Sample 1 of 4", "== Sample 2 of 4", "== Sample 3 of 4"})
         EXPECT_NE(result.output.find(sample), std::string::npos) << sample << "\n" << result.output;
     EXPECT_NE(result.output.find("pixel colour = mean of 4 sample(s)"), std::string::npos) << result.output;
+}
+
+TEST(ExplainPixel, UnwritableStandardOutputIsAnOutputError) {
+    TempFolder folder;
+    folder.write("sphere.json", kSphereScene);
+    const std::string command = "cd '" + folder.path() + "' && '" + CLRENDER_BINARY +
+                                "' sphere.json --reference --explain-pixel 1,1 >/dev/full 2>err.txt";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 4);
+    EXPECT_EQ(testing::read_bytes(folder.file("err.txt")),
+              "clrender: error: standard output: cannot write the explanation (disk full or pipe closed?)\n");
 }
 
 TEST(ExplainPixel, HelpAndTheOptionsReferenceDescribeIt) {
