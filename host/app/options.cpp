@@ -40,6 +40,16 @@ void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::s
     }
 }
 
+// --explain-pixel prints and writes no files: options that name outputs contradict it. (Checked
+// here rather than with CLI11's excludes(), which would print the pairing under every option
+// in --help and the man page.)
+void refuse_outputs_with_explain_pixel(const CLI::App& app) {
+    if (app.count("--explain-pixel") == 0) return;
+    for (const char* output : {"--output", "--video", "--stats", "--assemble", "--resume"})
+        if (app.count(output) > 0)
+            throw CLI::ValidationError(std::string(output) + " excludes --explain-pixel: the explainer writes no files");
+}
+
 }  // namespace
 
 ParsedOptions parse_options(int argc, const char* const* argv) {
@@ -96,9 +106,24 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file ('-': standard output)");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
+    // The pixel explainer (docs/explain-pixel.md): "X,Y", non-negative integers; it prints and
+    // writes no files, so options that name outputs are refused with it.
+    app.add_option_function<std::string>(
+           "--explain-pixel",
+           [&options](const std::string& text) {
+               std::smatch match;
+               static const std::regex pattern(R"((\d{1,6}),(\d{1,6}))");
+               if (!std::regex_match(text, match, pattern))
+                   throw CLI::ValidationError("--explain-pixel", "expected X,Y with non-negative integers (column,row), "
+                                                                 "got '" + text + "'");
+               options.explain_pixel = Options::PixelPosition{std::stoi(match[1]), std::stoi(match[2])};
+           },
+           "Print how pixel X,Y (column, row from the top-left, 0-based) of the frame --frames names (default 0) "
+           "is computed, step by step, and the bytes the kernels give it; writes no files");
 
     try {
         app.parse(argc, argv);
+        refuse_outputs_with_explain_pixel(app);
         if (app.count("scene") > 0 && options.scene_path.empty())
             throw CLI::ValidationError("scene", "the scene file name is empty");
         refuse_empty_values(app, {{"--output", &options.output_path},

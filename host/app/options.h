@@ -26,6 +26,14 @@ struct Options {
     bool quiet = false;
     std::string stats_path;      // JSON timing report
     std::string kernel_dir;      // load kernels from this folder (kernel development)
+
+    // The pixel explainer (docs/explain-pixel.md): --explain-pixel X,Y prints how the
+    // reference computes that pixel, and the kernels' bytes for it, instead of writing files.
+    struct PixelPosition {
+        int x = 0;  // column from the left, 0-based
+        int y = 0;  // row from the top, 0-based
+    };
+    std::optional<PixelPosition> explain_pixel;
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome

@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <future>
 #include <iostream>
+#include <sstream>
 #include <system_error>
 #include <nlohmann/json.hpp>
 
 #include "app/frame_description.h"
+#include "app/explain_pixel.h"
 #include "app/frame_sink.h"
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
@@ -232,6 +234,15 @@ int run(const Options& options) {
         return kExitOk;
     }
     throw_if_interrupted();
+    if (options.explain_pixel) {  // prints, writes no files (docs/explain-pixel.md)
+        KernelRendererFactory kernel_renderer;
+        if (!options.reference) kernel_renderer = [&] { return make_renderer(options, scene, devices); };
+        std::ostringstream explanation;  // whole or nothing: a device failure leaves no half explanation
+        explain_pixel(options, scene, kernel_renderer, explanation);
+        std::cout << explanation.str() << std::flush;
+        if (!std::cout) throw OutputError("standard output: cannot write the explanation (disk full or pipe closed?)");
+        return kExitOk;
+    }
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
     throw_if_interrupted();
 

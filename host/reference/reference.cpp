@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "reference/impostors.h"
+#include "reference/trace_observer.h"
 #include "shared/clr_samples.h"
 
 namespace clr::reference {
@@ -23,24 +24,42 @@ std::uint8_t to_byte(double channel) {
 namespace {
 
 // The mean colour of the pixel's samples, at the positions the kernels use.
-Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_seed, int col, int row) {
+Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_seed, int col, int row,
+                  TraceObserver* observer) {
     const int samples = scene.sampling.samples_per_pixel;
     Color sum{0, 0, 0};
     for (int sample = 0; sample < samples; ++sample) {
         double ox = clr_sample_offset_x(frame_seed, col, row, sample, samples);
         double oy = clr_sample_offset_y(frame_seed, col, row, sample, samples);
-        sum = sum + trace(scene, primary_ray_through(camera, col, row, ox, oy));
+        const Ray ray = primary_ray_through(camera, col, row, ox, oy);
+        if (!observer) {
+            sum = sum + trace(scene, ray);
+            continue;
+        }
+        observer->sample_started(sample, samples, ox, oy, witness_direction(camera, col, row, ox, oy), ray);
+        const Color colour = trace(scene, ray, observer);
+        observer->sample_finished(sample, colour);
+        sum = sum + colour;
     }
     return sum / samples;
 }
 
+unsigned frame_seed_of(const Scene& scene, int frame) {
+    return clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
+}
+
 }  // namespace
+
+Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int col, int row,
+                   TraceObserver* observer) {
+    return pixel_color(scene, camera, frame_seed_of(scene, frame), col, row, observer);
+}
 
 Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows) {
     // Impostors face this frame's eye; once placed they are billboards like any other, which
     // is all trace() knows about. The placed scene has no impostors, so this recurses once.
     if (!scene.impostors.empty()) return render(with_impostors_placed(scene, camera), camera, frame, between_rows);
-    const unsigned frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
+    const unsigned frame_seed = frame_seed_of(scene, frame);
     Image image;
     image.width = camera.width;
     image.height = camera.height;
@@ -48,7 +67,7 @@ Image render(const Scene& scene, const CameraFrame& camera, int frame, const std
     for (int row = 0; row < camera.height; ++row) {
         if (between_rows) between_rows();
         for (int col = 0; col < camera.width; ++col) {
-            const Color color = pixel_color(scene, camera, frame_seed, col, row);
+            const Color color = pixel_color(scene, camera, frame_seed, col, row, nullptr);
             std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(row) * camera.width + col) * 4];
             texel[0] = to_byte(color.x);
             texel[1] = to_byte(color.y);

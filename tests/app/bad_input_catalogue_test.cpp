@@ -525,6 +525,26 @@ std::vector<BadInput> catalogue() {
          {"--video -: clrender writes images and videos only to files"}},
         {"ResumeWithoutFramesToLookFor", {{"path.json", animation_scene()}}, {}, "path.json --resume", 1,
          {"--resume needs -o with a frame pattern (or --frames without -o and --video)"}},
+        // --- The pixel explainer (--explain-pixel): a pixel outside the image, coordinates that
+        // are not X,Y, more than one frame, or an output file named with it (it writes none)
+        {"ExplainPixelOutsideTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json --reference --explain-pixel 8,0", 1,
+         {"--explain-pixel 8,0 is outside the 8x6 image (X from 0 to 7, Y from 0 to 5)"}},
+        {"ExplainPixelRowOutsideTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,6", 1,
+         {"--explain-pixel 0,6 is outside the 8x6 image"}},
+        {"ExplainPixelWithoutTheRow", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 3", 1,
+         {"--explain-pixel: expected X,Y with non-negative integers (column,row), got '3'"}, "", true},
+        {"ExplainPixelNegative", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel=-1,2", 1,
+         {"expected X,Y with non-negative integers (column,row), got '-1,2'"}, "", true},
+        {"ExplainPixelEmpty", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel ''", 1,
+         {"expected X,Y with non-negative integers (column,row), got ''"}, "", true},
+        {"ExplainPixelOfTwoFrames", {{"path.json", animation_scene()}}, {}, "path.json --explain-pixel 0,0 --frames 0-1", 1,
+         {"--explain-pixel explains one frame; --frames '0-1' names 2"}},
+        {"ExplainPixelWithAnOutput", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,0 -o x.png", 1,
+         {"--output excludes --explain-pixel"}, "", true},
+        // A device failure comes after the reference's part is computed: still only the error
+        // line, no half explanation before it.
+        {"ExplainPixelOnAnUnknownDevice", {{"scene.json", scene_with("")}}, {},
+         "scene.json --explain-pixel 0,0 -d nosuchdevice", 3, {"unknown OpenCL device 'nosuchdevice'"}},
     };
 }
 
