@@ -48,6 +48,28 @@ TEST(DeviceSelection, ByCaseInsensitiveNameOrPlatformSubstring) {
     EXPECT_EQ(select_device(fake_devices(), "portable").index, 1) << "the first match wins";
 }
 
+TEST(DeviceSelection, CpuAndGpuSelectTheFirstDeviceOfThatType) {
+    EXPECT_EQ(select_device(fake_devices(), "cpu").index, 1);
+    EXPECT_EQ(select_device(fake_devices(), "GPU").index, 0);
+    std::vector<DeviceEntry> gpu_named_cpu = {entry(0, 0, 0, "Portable Computing Language", "gpu-emulation", "CPU"),
+                                              entry(1, 1, 0, "NVIDIA CUDA", "NVIDIA H100", "GPU")};
+    EXPECT_EQ(select_device(gpu_named_cpu, "gpu").index, 1) << "the type, not a name substring";
+}
+
+TEST(DeviceSelection, MissingTypeIsADeviceErrorListingWhatExists) {
+    auto cpus_only = fake_devices();
+    cpus_only.erase(cpus_only.begin());
+    try {
+        select_device(cpus_only, "gpu");
+        ADD_FAILURE() << "gpu was accepted without a GPU";
+    } catch (const DeviceError& error) {
+        std::string message = error.what();
+        EXPECT_NE(message.find("no OpenCL GPU device"), std::string::npos) << message;
+        EXPECT_NE(message.find("pthread-skylake"), std::string::npos) << message;
+        EXPECT_EQ(error.code(), kExitDevice);
+    }
+}
+
 TEST(DeviceSelection, UnknownSelectorsAreDeviceErrorsListingTheDevices) {
     for (const char* selector : {"3", "2:0", "0:5", "quantum", "1:x"}) {
         try {
