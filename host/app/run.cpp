@@ -1,6 +1,7 @@
 #include "app/run.h"
 
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <system_error>
@@ -16,6 +17,7 @@
 #include "app/progress.h"
 #include "core/errors.h"
 #include "device/device_selection.h"
+#include "device/driver_settings.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
 #include "scene/camera_path.h"
@@ -35,6 +37,7 @@ struct FrameRecord {
 // Everything the --stats report says.
 struct RunReport {
     std::string device;
+    int compute_units = 0;  // of the OpenCL device; 0 for the reference
     double load_ms = 0;
     double build_ms = 0;
     int cache_hits = 0;
@@ -51,6 +54,7 @@ std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport
         frames.push_back({{"index", frame.index}, {"kernel_ms", frame.timing.kernel_ms}, {"total_ms", frame.timing.total_ms}});
     nlohmann::json stats = {
         {"device", report.device},
+        {"compute_units", report.compute_units},
         {"build_ms", report.build_ms},
         {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
@@ -92,19 +96,41 @@ DeviceList list_devices_meanwhile() {
     }
 }
 
-std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices) {
+// `part_done` gets the fraction of each frame rendered, band by band (or row by row).
+std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices,
+                                             std::function<void(double)> part_done) {
     // A long frame stops within a band (or a reference row) of a signal, not at its end.
-    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted);
+    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted, options.crop, part_done);
     RendererOptions renderer_options;
     renderer_options.between_bands = throw_if_interrupted;
+    renderer_options.band_done = std::move(part_done);
+    renderer_options.crop = options.crop;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
     // run() lists the devices while the scene loads whenever it renders with OpenCL.
-    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options);
+    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options, options.threads);
+}
+
+// The size of the frames this run writes: the scene's, or the crop's (docs/command-line.md, Crop).
+struct FrameSize {
+    int width = 0, height = 0;
+};
+
+FrameSize frame_size(const Options& options, const Scene& scene) {
+    if (options.crop) return {options.crop->width(), options.crop->height()};
+    return {scene.width, scene.height};
+}
+
+// A crop must lie inside the frame; the frame's size is known once the scene (and --size) is.
+void check_crop(const Options& options, const Scene& scene) {
+    if (options.crop && !options.crop->inside(scene.width, scene.height))
+        throw UsageError("--crop " + format_pixel_rect(*options.crop) + " reaches outside the " +
+                         std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                         " image (x1 at most the width, y1 at most the height)");
 }
 
 // A frame written earlier (--assemble, --resume), checked to be of the scene's size.
-Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
+Image read_frame(const OutputPlan& plan, const FrameSize& size, int frame) {
     std::string path = plan.image_path(frame);
     std::shared_ptr<const Image> image;
     try {
@@ -112,10 +138,10 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
     } catch (const ImageError& error) {
         throw SceneError(path, "", std::string("cannot read frame ") + std::to_string(frame) + ": " + error.what());
     }
-    if (image->width != scene.width || image->height != scene.height)
+    if (image->width != size.width || image->height != size.height)
         throw SceneError(path, "", "frame " + std::to_string(frame) + " is " + std::to_string(image->width) + "x" +
                                        std::to_string(image->height) + ", the scene renders " +
-                                       std::to_string(scene.width) + "x" + std::to_string(scene.height));
+                                       std::to_string(size.width) + "x" + std::to_string(size.height));
     return *image;
 }
 
@@ -123,19 +149,30 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                    DeviceList& devices, StagedOutputs& staged) {
-    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices);
+    Progress* shown = nullptr;  // the progress of the frames, once they start
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, [&shown](double fraction) {
+        if (shown) shown->frame_part_done(fraction);
+    });
     report.device = renderer->device_name();
+    report.compute_units = renderer->compute_units();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
-    if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
+    if (!options.quiet) {
+        std::cerr << "clrender: device " << report.device;
+        if (report.compute_units > 0) std::cerr << " (compute units: " << report.compute_units << ")";
+        std::cerr << "\n";
+    }
 
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
-    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    const FrameSize size = frame_size(options, scene);
+    FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged);
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
+    shown = &progress;
     const Stopwatch render_time;
     for (int frame : plan.frames) {
         throw_if_interrupted();
+        progress.frame_started(frame);
         if (options.resume && plan.frame_on_disk(frame)) {
-            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, scene, frame), true);
+            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, size, frame), true);
             progress.frame_done();
             continue;
         }
@@ -158,11 +195,13 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                      StagedOutputs& staged) {
     report.device = "none (assembling frames)";
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
-    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    const FrameSize size = frame_size(options, scene);
+    FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged);
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     for (int frame : plan.frames) {
         throw_if_interrupted();
-        sink.push(frame, read_frame(plan, scene, frame), true);
+        progress.frame_started(frame);
+        sink.push(frame, read_frame(plan, size, frame), true);
         progress.frame_done();
     }
     sink.finish();
@@ -186,6 +225,7 @@ void print_summary(const OutputPlan& plan, const RunReport& report) {
 }  // namespace
 
 int run(const Options& options) {
+    if (options.threads) limit_cpu_threads(*options.threads);  // before any driver loads
     if (options.list_devices) {
         std::cout << format_device_list(list_devices());
         return kExitOk;
@@ -202,6 +242,7 @@ int run(const Options& options) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;
     }
+    check_crop(options, scene);
     throw_if_interrupted();
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
     throw_if_interrupted();
