@@ -21,7 +21,12 @@ std::optional<double> seconds_left(double fraction, double elapsed_s) {
     return elapsed_s * (1 - fraction) / fraction;
 }
 
-double rounded(double value, double step) { return std::round(value / step) * step; }
+// `value` to `decimals` places; dividing last gives the double nearest the decimal (41.7, not
+// 41.699999999999996), which JSON then shows as written.
+double rounded(double value, int decimals) {
+    const double scale = std::pow(10.0, decimals);
+    return std::round(value * scale) / scale;
+}
 
 }  // namespace
 
@@ -61,9 +66,9 @@ std::string format_progress_json(int frame, int frames, int frames_done, double 
     nlohmann::json line = {{"frame", frame},
                            {"frames", frames},
                            {"frames_done", frames_done},
-                           {"percent", rounded(fraction * 100, 0.1)},
-                           {"elapsed_s", rounded(elapsed_s, 0.01)},
-                           {"eta_s", left ? nlohmann::json(rounded(*left, 0.01)) : nlohmann::json(nullptr)}};
+                           {"percent", rounded(fraction * 100, 1)},
+                           {"elapsed_s", rounded(elapsed_s, 2)},
+                           {"eta_s", left ? nlohmann::json(rounded(*left, 2)) : nlohmann::json(nullptr)}};
     return line.dump();
 }
 

@@ -4,6 +4,9 @@
 #include "core/errors.h"
 #include "device/cl_errors.h"
 #include "device/device_selection.h"
+#include "render/renderer.h"
+#include "support/opencl_test_device.h"
+#include "support/random_scene.h"
 
 namespace clr {
 namespace {
@@ -91,6 +94,33 @@ TEST(DeviceSelection, ListingShowsIndicesAndPlatforms) {
     EXPECT_NE(listing.find("Platform 1: Portable Computing Language"), std::string::npos) << listing;
     EXPECT_NE(listing.find("[2] 1:1  cpu-other (CPU"), std::string::npos) << listing;
     EXPECT_NE(format_device_list({}).find("No OpenCL devices"), std::string::npos);
+}
+
+// -t on a driver that is not told the thread count by the environment: a sub-device of that
+// many compute units, which renders the same bytes.
+TEST(DeviceSelection, ASubDeviceOfOneComputeUnitRendersTheSameBytes) {
+    const DeviceEntry& whole = testing::test_device().entry();
+    const int units = compute_units(whole);
+    EXPECT_EQ(select_compute_units(whole, units).device(), whole.device()) << "as many as it has: the device itself";
+    EXPECT_THROW(select_compute_units(whole, units + 1), DeviceError);
+    if (units < 2) GTEST_SKIP() << "one compute unit: nothing to divide";
+    DeviceEntry part;
+    try {
+        part = select_compute_units(whole, 1);
+    } catch (const DeviceError& error) {
+        GTEST_SKIP() << "the driver cannot divide the device: " << error.what();
+    }
+    EXPECT_EQ(compute_units(part), 1);
+
+    Scene scene = testing::make_random_scene(5, 6, 6);
+    scene.camera_path = {{{3, 5, 30}, {0, 0, 0}}};
+    scene.width = 64;
+    scene.height = 48;
+    scene.sampling.samples_per_pixel = 4;
+    Renderer on_whole(testing::test_device(), scene);
+    DeviceContext part_context(part);
+    Renderer on_part(part_context, scene);
+    EXPECT_TRUE(on_part.render(scene.camera_path.front()).rgba == on_whole.render(scene.camera_path.front()).rgba);
 }
 
 TEST(DeviceSelection, RealDevicesAreListed) {
