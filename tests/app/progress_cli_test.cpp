@@ -77,6 +77,13 @@ std::string run_on_a_terminal(const TempFolder& folder, const std::string& scrip
 
 const std::string kBinary = std::string("'") + CLRENDER_BINARY + "'";
 
+TEST(ProgressCli, HelpNamesTheProgressAndControlOptions) {
+    auto result = run_clrender("--help");
+    EXPECT_EQ(result.exit_code, 0);
+    for (const char* option : {"--progress", "-t,--threads", "--crop", "bar", "json"})
+        EXPECT_NE(result.output.find(option), std::string::npos) << option;
+}
+
 TEST(ProgressCli, AStillShowsABarOnATerminal) {
     TempFolder folder;
     folder.write("still.json", kStill);
