@@ -45,10 +45,13 @@ void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::s
 // in --help and the man page.)
 void refuse_outputs_with_explain_pixel(const CLI::App& app) {
     if (app.count("--explain-pixel") == 0) return;
-    for (const char* output : {"--output", "--video", "--stats", "--assemble", "--resume"})
+    for (const char* output : {"--output", "--video", "--stats", "--assemble", "--resume", "--crop"})
         if (app.count(output) > 0)
             throw CLI::ValidationError(std::string(output) + " excludes --explain-pixel: the explainer writes no files");
 }
+
+// More threads than this is a typing mistake, not a machine.
+constexpr int kMaxThreads = 4096;
 
 }  // namespace
 
@@ -121,6 +124,19 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
            "Print how pixel X,Y (column, row from the top-left, 0-based) of the frame --frames names (default 0) "
            "is computed, step by step, and the bytes the kernels give it; writes no files");
 
+    // Progress and control (docs/command-line.md, Progress; Threads; Crop).
+    app.add_option("--progress", options.progress,
+                   "Progress on standard error: bar (default; only on a terminal, not with -q), none, or json "
+                   "(one JSON object per line, also with -q and when not a terminal)")
+        ->check(CLI::IsMember({"bar", "none", "json"}));
+    app.add_option("-t,--threads", options.threads,
+                   "Compute units (threads) of the CPU device to render with; default all")
+        ->check(CLI::Range(1, kMaxThreads));
+    std::string crop;
+    app.add_option("--crop", crop,
+                   "Render only pixels x0 <= x < x1, y0 <= y < y1 of the frame, as x0,x1,y0,y1; the image is the "
+                   "crop's size, each pixel as in the full frame");
+
     try {
         app.parse(argc, argv);
         refuse_outputs_with_explain_pixel(app);
@@ -132,13 +148,20 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                                   {"--device", &options.device},
                                   {"--size", &size},
                                   {"--stats", &options.stats_path},
-                                  {"--kernel-dir", &options.kernel_dir}});
+                                  {"--kernel-dir", &options.kernel_dir},
+                                  {"--crop", &crop}});
         if (!size.empty()) {
             int width = 0, height = 0;
             if (!parse_size(size, width, height))
                 throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT with positive integers, got '" + size + "'");
             options.width = width;
             options.height = height;
+        }
+        if (!crop.empty()) {
+            options.crop = parse_pixel_rect(crop);
+            if (!options.crop)
+                throw CLI::ValidationError("--crop", "expected x0,x1,y0,y1 with 0 <= x0 < x1 and 0 <= y0 < y1, got '" +
+                                                         crop + "'");
         }
         options.double_precision = precision == "double";
         if (options.scene_path.empty() && !options.list_devices)

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "core/pixel_rect.h"
+
 namespace clr {
 
 struct Options {
@@ -26,6 +28,10 @@ struct Options {
     bool quiet = false;
     std::string stats_path;      // JSON timing report
     std::string kernel_dir;      // load kernels from this folder (kernel development)
+    // Progress and control (docs/command-line.md, Progress; Threads; Crop).
+    std::string progress = "bar";   // --progress: bar (on a terminal), none, json
+    std::optional<int> threads;     // -t: compute units of the CPU device
+    std::optional<PixelRect> crop;  // --crop x0,x1,y0,y1: only these pixels, half-open
 
     // The pixel explainer (docs/explain-pixel.md): --explain-pixel X,Y prints how the
     // reference computes that pixel, and the kernels' bytes for it, instead of writing files.

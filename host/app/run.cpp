@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <sstream>
@@ -22,6 +23,7 @@
 #include "app/progress.h"
 #include "core/errors.h"
 #include "device/device_selection.h"
+#include "device/driver_settings.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
 #include "scene/camera_path.h"
@@ -41,6 +43,7 @@ struct FrameRecord {
 // Everything the --stats report says.
 struct RunReport {
     std::string device;
+    int compute_units = 0;  // of the OpenCL device; 0 for the reference
     double load_ms = 0;
     double build_ms = 0;
     int cache_hits = 0;
@@ -56,6 +59,7 @@ std::string stats_text(const RunReport& report) {
         frames.push_back({{"index", frame.index}, {"kernel_ms", frame.timing.kernel_ms}, {"total_ms", frame.timing.total_ms}});
     nlohmann::json stats = {
         {"device", report.device},
+        {"compute_units", report.compute_units},
         {"build_ms", report.build_ms},
         {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
@@ -110,19 +114,41 @@ DeviceList list_devices_meanwhile() {
     }
 }
 
-std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices) {
+// `part_done` gets the fraction of each frame rendered, band by band (or row by row).
+std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices,
+                                             std::function<void(double)> part_done) {
     // A long frame stops within a band (or a reference row) of a signal, not at its end.
-    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted);
+    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted, options.crop, part_done);
     RendererOptions renderer_options;
     renderer_options.between_bands = throw_if_interrupted;
+    renderer_options.band_done = std::move(part_done);
+    renderer_options.crop = options.crop;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
     // run() lists the devices while the scene loads whenever it renders with OpenCL.
-    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options);
+    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options, options.threads);
+}
+
+// The size of the frames this run writes: the scene's, or the crop's (docs/command-line.md, Crop).
+struct FrameSize {
+    int width = 0, height = 0;
+};
+
+FrameSize frame_size(const Options& options, const Scene& scene) {
+    if (options.crop) return {options.crop->width(), options.crop->height()};
+    return {scene.width, scene.height};
+}
+
+// A crop must lie inside the frame; the frame's size is known once the scene (and --size) is.
+void check_crop(const Options& options, const Scene& scene) {
+    if (options.crop && !options.crop->inside(scene.width, scene.height))
+        throw UsageError("--crop " + format_pixel_rect(*options.crop) + " reaches outside the " +
+                         std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                         " image (x1 at most the width, y1 at most the height)");
 }
 
 // A frame written earlier (--assemble, --resume), checked to be of the scene's size.
-Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
+Image read_frame(const OutputPlan& plan, const FrameSize& size, int frame) {
     std::string path = plan.image_path(frame);
     std::shared_ptr<const Image> image;
     try {
@@ -130,10 +156,10 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
     } catch (const ImageError& error) {
         throw SceneError(path, "", std::string("cannot read frame ") + std::to_string(frame) + ": " + error.what());
     }
-    if (image->width != scene.width || image->height != scene.height)
+    if (image->width != size.width || image->height != size.height)
         throw SceneError(path, "", "frame " + std::to_string(frame) + " is " + std::to_string(image->width) + "x" +
                                        std::to_string(image->height) + ", the scene renders " +
-                                       std::to_string(scene.width) + "x" + std::to_string(scene.height));
+                                       std::to_string(size.width) + "x" + std::to_string(size.height));
     return *image;
 }
 
@@ -141,21 +167,32 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                    DeviceList& devices, StagedOutputs& staged) {
-    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices);
+    Progress* shown = nullptr;  // the progress of the frames, once they start
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, [&shown](double fraction) {
+        if (shown) shown->frame_part_done(fraction);
+    });
     report.device = renderer->device_name();
+    report.compute_units = renderer->compute_units();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
-    if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
+    if (!options.quiet) {
+        std::cerr << "clrender: device " << report.device;
+        if (report.compute_units > 0) std::cerr << " (compute units: " << report.compute_units << ")";
+        std::cerr << "\n";
+    }
     make_missing_folders(plan);  // the device is ready: nothing refuses the run before it renders
 
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged,
+    const FrameSize size = frame_size(options, scene);
+    FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged,
                    [&scene](int frame) { return describe_frame(scene, frame); });
-    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
+    shown = &progress;
     const Stopwatch render_time;
     for (int frame : plan.frames) {
         throw_if_interrupted();
+        progress.frame_started(frame);
         if (options.resume && plan.frame_on_disk(frame)) {
-            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, scene, frame), true);
+            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, size, frame), true);
             progress.frame_done();
             continue;
         }
@@ -179,11 +216,13 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
                      StagedOutputs& staged) {
     report.device = "none (assembling frames)";
     make_missing_folders(plan);
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
-    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    const FrameSize size = frame_size(options, scene);
+    FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged);
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     for (int frame : plan.frames) {
         throw_if_interrupted();
-        sink.push(frame, read_frame(plan, scene, frame), true);
+        progress.frame_started(frame);
+        sink.push(frame, read_frame(plan, size, frame), true);
         progress.frame_done();
     }
     sink.finish();
@@ -217,6 +256,7 @@ void print_summary(const OutputPlan& plan, const RunReport& report) {
 }  // namespace
 
 int run(const Options& options) {
+    if (options.threads) limit_cpu_threads(*options.threads);  // before any driver loads
     if (options.list_devices) {
         std::cout << format_device_list(list_devices());
         return kExitOk;
@@ -233,10 +273,11 @@ int run(const Options& options) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;
     }
+    check_crop(options, scene);
     throw_if_interrupted();
     if (options.explain_pixel) {  // prints, writes no files (docs/explain-pixel.md)
         KernelRendererFactory kernel_renderer;
-        if (!options.reference) kernel_renderer = [&] { return make_renderer(options, scene, devices); };
+        if (!options.reference) kernel_renderer = [&] { return make_renderer(options, scene, devices, {}); };
         std::ostringstream explanation;  // whole or nothing: a device failure leaves no half explanation
         explain_pixel(options, scene, kernel_renderer, explanation);
         std::cout << explanation.str() << std::flush;

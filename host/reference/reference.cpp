@@ -55,20 +55,24 @@ Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int
     return pixel_color(scene, camera, frame_seed_of(scene, frame), col, row, observer);
 }
 
-Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows) {
+Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows,
+             const std::optional<PixelRect>& crop) {
     // Impostors face this frame's eye; once placed they are billboards like any other, which
     // is all trace() knows about. The placed scene has no impostors, so this recurses once.
-    if (!scene.impostors.empty()) return render(with_impostors_placed(scene, camera), camera, frame, between_rows);
+    if (!scene.impostors.empty())
+        return render(with_impostors_placed(scene, camera), camera, frame, between_rows, crop);
     const unsigned frame_seed = frame_seed_of(scene, frame);
+    const PixelRect region = crop.value_or(PixelRect{0, camera.width, 0, camera.height});
     Image image;
-    image.width = camera.width;
-    image.height = camera.height;
-    image.rgba.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
-    for (int row = 0; row < camera.height; ++row) {
+    image.width = region.width();
+    image.height = region.height();
+    image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4);
+    for (int row = region.y0; row < region.y1; ++row) {
         if (between_rows) between_rows();
-        for (int col = 0; col < camera.width; ++col) {
+        for (int col = region.x0; col < region.x1; ++col) {
             const Color color = pixel_color(scene, camera, frame_seed, col, row, nullptr);
-            std::uint8_t* texel = &image.rgba[(static_cast<std::size_t>(row) * camera.width + col) * 4];
+            std::uint8_t* texel =
+                &image.rgba[(static_cast<std::size_t>(row - region.y0) * image.width + (col - region.x0)) * 4];
             texel[0] = to_byte(color.x);
             texel[1] = to_byte(color.y);
             texel[2] = to_byte(color.z);

@@ -7,8 +7,10 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
+#include "core/pixel_rect.h"
 #include "scene/scene.h"
 
 namespace clr::reference {
@@ -99,7 +101,8 @@ Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int
 // scene.sampling.samples_per_pixel samples placed as kernels/shared/clr_samples.h says for
 // this frame index (one sample: the pixel's centre). Impostors are placed for `camera` first.
 // `between_rows` runs before each row; it throws to abandon the frame (a stop request).
+// With `crop`, only those pixels, into an image of the crop's size (docs/command-line.md, Crop).
 Image render(const Scene& scene, const CameraFrame& camera, int frame = 0,
-             const std::function<void()>& between_rows = {});
+             const std::function<void()>& between_rows = {}, const std::optional<PixelRect>& crop = std::nullopt);
 
 }  // namespace clr::reference

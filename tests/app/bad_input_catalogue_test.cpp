@@ -545,6 +545,26 @@ std::vector<BadInput> catalogue() {
         // line, no half explanation before it.
         {"ExplainPixelOnAnUnknownDevice", {{"scene.json", scene_with("")}}, {},
          "scene.json --explain-pixel 0,0 -d nosuchdevice", 3, {"unknown OpenCL device 'nosuchdevice'"}},
+        // --- Progress and control: --progress, -t/--threads and --crop take only what they
+        // document; a crop must lie inside the image (after --size)
+        {"ProgressStyleUnknown", {{"scene.json", scene_with("")}}, {}, "scene.json --progress xml", 1,
+         {"--progress: xml not in {bar,none,json}"}, "", true},
+        {"ThreadsZero", {{"scene.json", scene_with("")}}, {}, "scene.json -t 0", 1, {"--threads: Value 0 not in range"},
+         "", true},
+        {"ThreadsNotANumber", {{"scene.json", scene_with("")}}, {}, "scene.json --threads many", 1,
+         {"--threads", "many"}, "", true},
+        {"CropEmptyRectangle", {{"scene.json", scene_with("")}}, {}, "scene.json --crop 4,4,0,6", 1,
+         {"--crop: expected x0,x1,y0,y1 with 0 <= x0 < x1 and 0 <= y0 < y1, got '4,4,0,6'"}, "", true},
+        {"CropThreeNumbers", {{"scene.json", scene_with("")}}, {}, "scene.json --crop 1,2,3", 1,
+         {"--crop: expected x0,x1,y0,y1", "got '1,2,3'"}, "", true},
+        {"CropNegative", {{"scene.json", scene_with("")}}, {}, "scene.json --crop=-1,4,0,6", 1,
+         {"--crop: expected x0,x1,y0,y1", "got '-1,4,0,6'"}, "", true},
+        {"CropEmptyValue", {{"scene.json", scene_with("")}}, {}, "scene.json --crop ''", 1,
+         {"--crop: the value is empty"}, "", true},
+        {"CropOutsideTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json --crop 0,9,0,6", 1,
+         {"--crop 0,9,0,6 reaches outside the 8x6 image"}},
+        {"CropOutsideTheSizeOverride", {{"scene.json", scene_with("")}}, {}, "scene.json --size 4x4 --crop 0,8,0,6", 1,
+         {"--crop 0,8,0,6 reaches outside the 4x4 image"}},
     };
 }
 
