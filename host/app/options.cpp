@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/edit_distance.h"
+#include "core/errors.h"
 #include "core/printable_text.h"
 #include "scene/limits.h"
 
@@ -32,6 +34,55 @@ void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::s
         if (app.count(name) > 0 && value->empty())
             throw CLI::ValidationError(name, "the value is empty; give a value or leave the option out");
     }
+}
+
+// Scene overrides and checks: -D, --seed, --strict, --check (docs/command-line.md, Scene
+// overrides and checks). The options are added in one block; their values are read by
+// read_scene_check_options once the command line is parsed.
+struct SceneCheckOptions {
+    std::vector<std::string> defines;
+    std::optional<long long> seed;
+};
+
+void add_scene_check_options(CLI::App& app, Options& options, SceneCheckOptions& values) {
+    app.add_option("-D,--define", values.defines,
+                   "Set a scene value before the scene is checked, e.g. -D MaxDepth=2, -D spheres.0.radius=2, "
+                   "-D /eye=[0,0,5]; the value is JSON, else a string. Repeatable, applied in order; --size, --spp "
+                   "and --seed win over it")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--seed", values.seed, "Seed of the sample pattern (0 to 4294967295); overrides clrender.seed")
+        ->check(CLI::Range(0LL, 4294967295LL));
+    app.add_flag("--strict", options.strict, "Treat every warning as an error (exit 2, nothing written)");
+    app.add_flag("--check", options.check,
+                 "Check the scene and its images' headers and print a summary, without an OpenCL device; "
+                 "writes nothing");
+}
+
+void read_scene_check_options(const SceneCheckOptions& values, Options& options) {
+    for (const std::string& define : values.defines) {
+        try {
+            options.overrides.push_back(parse_scene_override(define));
+        } catch (const UsageError& error) {
+            throw CLI::ValidationError(error.what());
+        }
+    }
+    if (values.seed) options.seed = static_cast<unsigned>(*values.seed);
+}
+
+// "unknown option '--sp'; did you mean --spp?" for the first unknown option that is a likely
+// typo of a known one ("--sp", "-spp", "--sp=4"), else "" (CLI11's message then stands).
+std::string did_you_mean_option(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& extra : app.remaining()) {
+        if (extra.size() < 2 || extra[0] != '-') continue;
+        const std::string option = extra.substr(0, extra.find('='));
+        const std::string best = closest_spelling(option, names);
+        if (!best.empty()) return "unknown option '" + option + "'; did you mean " + best + "?";
+    }
+    return "";
 }
 
 }  // namespace
@@ -79,6 +130,8 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
+    SceneCheckOptions scene_check_values;
+    add_scene_check_options(app, options, scene_check_values);
 
     try {
         app.parse(argc, argv);
@@ -99,6 +152,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             options.height = height;
         }
         options.double_precision = precision == "double";
+        read_scene_check_options(scene_check_values, options);
         if (options.scene_path.empty() && !options.list_devices)
             throw CLI::RequiredError("a scene file");
     } catch (const CLI::ParseError& error) {
@@ -107,7 +161,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             return parsed;
         }
         // A usage error, in the same form as every other error of clrender's, and a hint.
-        std::cerr << "clrender: error: " << printable(error.what()) << "\nRun with --help for more information.\n";
+        const std::string suggestion = dynamic_cast<const CLI::ExtrasError*>(&error) ? did_you_mean_option(app) : "";
+        std::cerr << "clrender: error: " << printable(suggestion.empty() ? error.what() : suggestion)
+                  << "\nRun with --help for more information.\n";
         parsed.exit_code = 1;
         return parsed;
     }

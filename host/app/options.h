@@ -3,6 +3,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "scene/scene_overrides.h"
 
 namespace clr {
 
@@ -26,6 +29,11 @@ struct Options {
     bool quiet = false;
     std::string stats_path;      // JSON timing report
     std::string kernel_dir;      // load kernels from this folder (kernel development)
+    // Scene overrides and checks (docs/command-line.md, Scene overrides and checks)
+    std::vector<SceneOverride> overrides;  // -D key=value, in command-line order
+    std::optional<unsigned> seed;          // --seed: the sample pattern's seed (clrender.seed)
+    bool strict = false;                   // --strict: a warning fails the run (exit 2)
+    bool check = false;                    // --check: validate and summarise, no device, nothing written
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome

@@ -6,6 +6,7 @@
 #include <system_error>
 #include <nlohmann/json.hpp>
 
+#include "app/check_summary.h"
 #include "app/frame_sink.h"
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
@@ -72,9 +73,18 @@ Scene load(const Options& options) {
     load_options.width_override = options.width;
     load_options.height_override = options.height;
     load_options.samples_override = options.samples_per_pixel;
+    load_options.seed_override = options.seed;
+    load_options.overrides = options.overrides;
+    load_options.decode_images = !options.check;  // --check reads images' headers only
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
+    // --strict: the warnings above are the problems; this line says why they stop the run.
+    if (options.strict && !scene.warnings.empty()) {
+        const std::size_t n = scene.warnings.size();
+        throw SceneError(printable(scene.path), "",
+                         std::to_string(n) + (n == 1 ? " warning" : " warnings") + " (above), and --strict makes warnings errors");
+    }
     return scene;
 }
 
@@ -194,12 +204,17 @@ int run(const Options& options) {
     const Stopwatch run_time;
     RunReport report;
     DeviceList devices;
-    if (!options.reference && !options.assemble && !options.print_frame_count)
+    // --check never opens an OpenCL platform: it must work where there is none.
+    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check)
         devices = list_devices_meanwhile();
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
     if (options.print_frame_count) {
         std::cout << animation_frame_count(scene) << "\n";
+        return kExitOk;
+    }
+    if (options.check) {
+        std::cout << check_summary(scene, options.double_precision);
         return kExitOk;
     }
     throw_if_interrupted();
