@@ -1,5 +1,5 @@
 // What --check prints: a one-screen summary of a valid scene, read without an OpenCL device
-// and with its images checked from their headers only (docs/command-line.md, --check).
+// and with its images checked from their headers only (docs/command-line.md, Checking a scene).
 #pragma once
 
 #include <string>

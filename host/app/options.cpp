@@ -36,9 +36,9 @@ void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::s
     }
 }
 
-// Scene overrides and checks: -D, --seed, --strict, --check (docs/command-line.md, Scene
-// overrides and checks). The options are added in one block; their values are read by
-// read_scene_check_options once the command line is parsed.
+// Scene overrides and checks: -D, --seed, --strict, --check. The options are added in one
+// block; their values are read by read_scene_check_options once the command line is parsed
+// (docs/command-line.md, Scene overrides and checks).
 struct SceneCheckOptions {
     std::vector<std::string> defines;
     std::optional<long long> seed;

@@ -1,6 +1,6 @@
-// Scene values set on the command line, `-D key=value` (docs/command-line.md, Scene
-// overrides): applied to the parsed document before it is validated, so that the loader
-// checks them as it checks the file's own values.
+// Scene values set on the command line, `-D key=value`: applied to the parsed document
+// before it is validated, so that the loader checks them as it checks the file's own values
+// (docs/command-line.md, Scene overrides).
 #pragma once
 
 #include <string>

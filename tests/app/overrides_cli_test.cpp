@@ -190,5 +190,15 @@ TEST(SceneOverridesCli, AMistypedOptionGetsASuggestion) {
     EXPECT_EQ(far_off.output.find("did you mean"), std::string::npos) << far_off.output;
 }
 
+TEST(SceneOverridesCli, HelpAndTheCommandLineDocumentEachOption) {
+    const auto help = run_clrender("--help");
+    const std::string doc = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "docs/command-line.md");
+    for (const char* option : {"--define", "--seed", "--strict", "--check"}) {
+        EXPECT_NE(help.output.find(option), std::string::npos) << option;
+        EXPECT_NE(doc.find(std::string(option) + " "), std::string::npos) << option;
+    }
+    EXPECT_NE(doc.find("`-D, --define KEY=VALUE`"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace clr
