@@ -195,7 +195,7 @@ TEST(SceneOverridesCli, HelpAndTheCommandLineDocumentEachOption) {
     const std::string doc = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "docs/command-line.md");
     for (const char* option : {"--define", "--seed", "--strict", "--check"}) {
         EXPECT_NE(help.output.find(option), std::string::npos) << option;
-        EXPECT_NE(doc.find(std::string(option) + " "), std::string::npos) << option;
+        EXPECT_NE(doc.find(option), std::string::npos) << option;
     }
     EXPECT_NE(doc.find("`-D, --define KEY=VALUE`"), std::string::npos);
 }
