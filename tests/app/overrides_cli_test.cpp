@@ -147,6 +147,22 @@ TEST(SceneOverridesCli, CheckSummarisesWithoutAnyOpenClPlatformAndWritesNothing)
     EXPECT_EQ(entries_of(folder.path()), before);
 }
 
+// The OpenCL ICD loader opens a platform's library only when platforms are listed: with an
+// ICD that names a probe library, the dynamic linker's log (LD_DEBUG) shows whether the
+// program looked for it.
+TEST(SceneOverridesCli, CheckNeverOpensAnOpenClPlatform) {
+    TempFolder folder;
+    folder.write("s.json", kScene);
+    fs::create_directories(folder.file("icds"));
+    folder.write("icds/probe.icd", "libclrender_icd_probe.so\n");
+    const std::string environment = "OCL_ICD_VENDORS=" + folder.file("icds") + " LD_DEBUG=libs";
+    const auto listing = run_clrender("--list-devices", folder.path(), environment);
+    EXPECT_NE(listing.output.find("libclrender_icd_probe.so"), std::string::npos) << "the probe does not work";
+    const auto check = run_clrender("s.json --check", folder.path(), environment);
+    EXPECT_EQ(check.exit_code, 0) << check.output;
+    EXPECT_EQ(check.output.find("libclrender_icd_probe.so"), std::string::npos) << check.output;
+}
+
 TEST(SceneOverridesCli, CheckFindsSceneErrorsAndStrictWarnings) {
     TempFolder folder;
     folder.write("s.json", kScene);
