@@ -14,6 +14,8 @@
 #include "app/help_footer.h"
 #include "app/help_formatter.h"
 #include "app/version_text.h"
+#include "core/edit_distance.h"
+#include "core/errors.h"
 #include "core/printable_text.h"
 #include "scene/limits.h"
 
@@ -52,6 +54,54 @@ void refuse_outputs_with_explain_pixel(const CLI::App& app) {
 
 // More threads than this is a typing mistake, not a machine.
 constexpr int kMaxThreads = 4096;
+// Scene overrides and checks: -D, --seed, --strict, --check. The options are added in one
+// block; their values are read by read_scene_check_options once the command line is parsed
+// (docs/command-line.md, Scene overrides and checks).
+struct SceneCheckOptions {
+    std::vector<std::string> defines;
+    std::optional<long long> seed;
+};
+
+void add_scene_check_options(CLI::App& app, Options& options, SceneCheckOptions& values) {
+    app.add_option("-D,--define", values.defines,
+                   "Set a scene value before the scene is checked, e.g. -D MaxDepth=2, -D spheres.0.radius=2, "
+                   "-D /eye=[0,0,5]; the value is JSON, else a string. Repeatable, applied in order; --size, --spp "
+                   "and --seed win over it")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--seed", values.seed, "Seed of the sample pattern (0 to 4294967295); overrides clrender.seed")
+        ->check(CLI::Range(0LL, 4294967295LL));
+    app.add_flag("--strict", options.strict, "Treat every warning as an error (exit 2, nothing written)");
+    app.add_flag("--check", options.check,
+                 "Check the scene and its images' headers and print a summary, without an OpenCL device; "
+                 "writes nothing");
+}
+
+void read_scene_check_options(const SceneCheckOptions& values, Options& options) {
+    for (const std::string& define : values.defines) {
+        try {
+            options.overrides.push_back(parse_scene_override(define));
+        } catch (const UsageError& error) {
+            throw CLI::ValidationError(error.what());
+        }
+    }
+    if (values.seed) options.seed = static_cast<unsigned>(*values.seed);
+}
+
+// "unknown option '--sp'; did you mean --spp?" for the first unknown option that is a likely
+// typo of a known one ("--sp", "-spp", "--sp=4"), else "" (CLI11's message then stands).
+std::string did_you_mean_option(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& extra : app.remaining()) {
+        if (extra.size() < 2 || extra[0] != '-') continue;
+        const std::string option = extra.substr(0, extra.find('='));
+        const std::string best = closest_spelling(option, names);
+        if (!best.empty()) return "unknown option '" + option + "'; did you mean " + best + "?";
+    }
+    return "";
+}
 
 }  // namespace
 
@@ -136,6 +186,8 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_option("--crop", crop,
                    "Render only pixels x0 <= x < x1, y0 <= y < y1 of the frame, as x0,x1,y0,y1; the image is the "
                    "crop's size, each pixel as in the full frame");
+    SceneCheckOptions scene_check_values;
+    add_scene_check_options(app, options, scene_check_values);
 
     try {
         app.parse(argc, argv);
@@ -164,6 +216,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                                                          crop + "'");
         }
         options.double_precision = precision == "double";
+        read_scene_check_options(scene_check_values, options);
         if (options.scene_path.empty() && !options.list_devices)
             throw CLI::RequiredError("a scene file");
     } catch (const CLI::ParseError& error) {
@@ -172,7 +225,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             return parsed;
         }
         // A usage error, in the same form as every other error of clrender's, and a hint.
-        std::cerr << "clrender: error: " << printable(error.what()) << "\nRun with --help for more information.\n";
+        const std::string suggestion = dynamic_cast<const CLI::ExtrasError*>(&error) ? did_you_mean_option(app) : "";
+        std::cerr << "clrender: error: " << printable(suggestion.empty() ? error.what() : suggestion)
+                  << "\nRun with --help for more information.\n";
         parsed.exit_code = 1;
         return parsed;
     }

@@ -3,6 +3,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "scene/scene_overrides.h"
 
 #include "core/pixel_rect.h"
 
@@ -40,6 +43,11 @@ struct Options {
         int y = 0;  // row from the top, 0-based
     };
     std::optional<PixelPosition> explain_pixel;
+    // Scene overrides and checks (docs/command-line.md, Scene overrides and checks)
+    std::vector<SceneOverride> overrides;  // -D key=value, in command-line order
+    std::optional<unsigned> seed;          // --seed: the sample pattern's seed (clrender.seed)
+    bool strict = false;                   // --strict: a warning fails the run (exit 2)
+    bool check = false;                    // --check: validate and summarise, no device, nothing written
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome

@@ -13,6 +13,7 @@
 
 #include "app/frame_description.h"
 #include "app/explain_pixel.h"
+#include "app/check_summary.h"
 #include "app/frame_sink.h"
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
@@ -94,9 +95,18 @@ Scene load(const Options& options) {
     load_options.width_override = options.width;
     load_options.height_override = options.height;
     load_options.samples_override = options.samples_per_pixel;
+    load_options.seed_override = options.seed;
+    load_options.overrides = options.overrides;
+    load_options.decode_images = !options.check;  // --check reads images' headers only
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
+    // --strict: the warnings above are the problems; this line says why they stop the run.
+    if (options.strict && !scene.warnings.empty()) {
+        const std::size_t n = scene.warnings.size();
+        throw SceneError(printable(scene.path), "",
+                         std::to_string(n) + (n == 1 ? " warning" : " warnings") + " (above), and --strict makes warnings errors");
+    }
     return scene;
 }
 
@@ -265,7 +275,8 @@ int run(const Options& options) {
     const Stopwatch run_time;
     RunReport report;
     DeviceList devices;
-    if (!options.reference && !options.assemble && !options.print_frame_count)
+    // --check never opens an OpenCL platform: it must work where there is none.
+    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check)
         devices = list_devices_meanwhile();
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
@@ -274,6 +285,10 @@ int run(const Options& options) {
         return kExitOk;
     }
     check_crop(options, scene);
+    if (options.check) {
+        std::cout << check_summary(scene, options.double_precision);
+        return kExitOk;
+    }
     throw_if_interrupted();
     if (options.explain_pixel) {  // prints, writes no files (docs/explain-pixel.md)
         KernelRendererFactory kernel_renderer;

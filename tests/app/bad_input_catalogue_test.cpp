@@ -565,6 +565,24 @@ std::vector<BadInput> catalogue() {
          {"--crop 0,9,0,6 reaches outside the 8x6 image"}},
         {"CropOutsideTheSizeOverride", {{"scene.json", scene_with("")}}, {}, "scene.json --size 4x4 --crop 0,8,0,6", 1,
          {"--crop 0,8,0,6 reaches outside the 4x4 image"}},
+        // --- Scene overrides and checks: -D values are checked like the file's and say where
+        // they came from; a -D path that leads nowhere, a malformed -D or --seed, and a
+        // mistyped option are usage errors; --check fails as a render would, without a device
+        {"DefinedValueOutOfRange", {{"scene.json", scene_with("")}}, {}, "scene.json -q -D MaxDepth=65", 2,
+         {"scene.json: /MaxDepth: MaxDepth must be a whole number from 0 to 64 (got 65) (set on the command line: -D MaxDepth=65)"}},
+        {"DefineIntoAMissingArrayElement", {{"scene.json", sphere_scene(R"("radius": 1)")}}, {}, "scene.json -q -D spheres.1.radius=2",
+         1, {"scene.json: -D spheres.1.radius=2: /spheres has 1 element, so there is no element 1"}},
+        {"DefineThroughANumber", {{"scene.json", scene_with("")}}, {}, "scene.json -q -D /fov_angle/x=1", 1,
+         {"scene.json: -D /fov_angle/x=1: /fov_angle is a number, not an object or array, so it has no 'x'"}},
+        {"DefineWithoutAValue", {{"scene.json", scene_with("")}}, {}, "scene.json -q -D MaxDepth", 1,
+         {"-D MaxDepth: expected key=value"}, "", true},
+        {"SeedOutOfRange", {{"scene.json", scene_with("")}}, {}, "scene.json -q --seed 4294967296", 1, {"--seed"}, "", true},
+        {"MistypedOption", {{"scene.json", scene_with("")}}, {}, "scene.json --sp 4", 1,
+         {"unknown option '--sp'; did you mean --spp?"}, "", true},
+        {"CheckOfAMissingImage", {{"bad.json", image_scene("nowhere.png")}}, {}, "bad.json --check", 2,
+         {"bad.json: /billboards/0/filename: cannot read image", "nowhere.png': no such file"}},
+        {"CheckOfAnImageOverThePixelLimit", {{"bad.json", image_scene("huge.jpg")}, {"huge.jpg", jpeg_claiming_20000_squared()}},
+         {}, "bad.json --check", 2, {"bad.json: /billboards/0/filename:", "20000 x 20000 pixels is larger than the limit"}},
     };
 }
 
