@@ -13,6 +13,8 @@ packages=(
   # EXR output (-o frame.exr): OpenEXR 3 and its CMake config
   libopenexr-dev
   googletest libgtest-dev
+  # the man page, made from --help at build time (cmake/write_man_page.cmake)
+  help2man
   ffmpeg
   parallel
   # clrender_bench's Embree peer (scripts/bench.sh, docs/benchmarks.md)

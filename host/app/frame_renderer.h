@@ -21,6 +21,8 @@ public:
     virtual Image render(const CameraKey& key, int frame, FrameTiming* timing) = 0;
     virtual std::string device_name() const = 0;
     virtual double build_ms() const = 0;  // program build time, 0 for the reference
+    // The OpenCL device's compute units in use (-t); 0 for the reference, which has none.
+    virtual int compute_units() const { return 0; }
     virtual int cache_hits() const { return 0; }  // programs built from the program cache
     // Keeps the programs built for this run in the program cache for the next (slow the first
     // time: call once the outputs are written).

@@ -17,8 +17,9 @@ constexpr std::chrono::milliseconds kInterruptionCheck{100};
 
 }  // namespace
 
-FrameSink::FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality, StagedOutputs& staged)
-    : plan_(plan), staged_(staged) {
+FrameSink::FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality, StagedOutputs& staged,
+                     std::function<ImageText(int frame)> describe)
+    : plan_(plan), staged_(staged), describe_(std::move(describe)) {
     if (!plan_.video_path.empty()) {
         VideoSettings settings;
         settings.path = plan_.video_path;
@@ -105,10 +106,11 @@ void FrameSink::consume(const QueuedFrame& item) {
     const Stopwatch write_time;
     if (!plan_.image_target.empty() && !item.on_disk) {
         const std::string path = plan_.image_path(item.frame);
+        const ImageText text = describe_ ? describe_(item.frame) : ImageText{};
         if (plan_.image_waits_for_stats()) {
-            staged_.add(write_image_uncommitted(path, item.image));
+            staged_.add(write_image_uncommitted(path, item.image, text));
         } else {
-            write_image(path, item.image);
+            write_image(path, item.image, text);
         }
     }
     if (encoder_) encoder_->add_frame(item.image);

@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -13,6 +14,7 @@
 
 #include "app/output_plan.h"
 #include "core/image.h"
+#include "output/image_writer.h"
 #include "output/staged_outputs.h"
 #include "output/video_encoder.h"
 
@@ -22,7 +24,9 @@ class FrameSink {
 public:
     // Starts the encoder (when the plan has a video) for frames of width x height. A single
     // image file (plan.image_waits_for_stats()) goes to `staged`, written but not yet renamed.
-    FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality, StagedOutputs& staged);
+    // `describe` gives the text that a frame's PNG carries (frame_description.h); none when empty.
+    FrameSink(const OutputPlan& plan, int width, int height, double fps, int quality, StagedOutputs& staged,
+              std::function<ImageText(int frame)> describe = nullptr);
     // Stops the worker; an unfinished video is abandoned and leaves no file behind.
     ~FrameSink();
     FrameSink(const FrameSink&) = delete;
@@ -57,6 +61,7 @@ private:
 
     const OutputPlan& plan_;
     StagedOutputs& staged_;
+    std::function<ImageText(int frame)> describe_;
     std::unique_ptr<VideoEncoder> encoder_;
     std::deque<QueuedFrame> queue_;
     std::mutex mutex_;

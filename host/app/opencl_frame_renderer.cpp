@@ -15,6 +15,7 @@ public:
     }
     std::string device_name() const override { return device_.entry().device_name; }
     double build_ms() const override { return renderer_.build_ms(); }
+    int compute_units() const override { return clr::compute_units(device_.entry()); }
     int cache_hits() const override { return device_.cache_hits(); }
     void store_built_programs() override { device_.store_built_programs(); }
     void recycle(Image&& image) override { renderer_.recycle(std::move(image)); }
@@ -28,8 +29,11 @@ private:
 
 std::unique_ptr<FrameRenderer> make_opencl_frame_renderer(const Scene& scene, const std::vector<DeviceEntry>& devices,
                                                           const std::string& device_selector,
-                                                          const RendererOptions& options) {
-    return std::make_unique<OpenClFrameRenderer>(scene, select_device(devices, device_selector), options);
+                                                          const RendererOptions& options,
+                                                          std::optional<int> threads) {
+    DeviceEntry device = select_device(devices, device_selector);
+    if (threads) device = select_compute_units(device, *threads);
+    return std::make_unique<OpenClFrameRenderer>(scene, device, options);
 }
 
 }  // namespace clr

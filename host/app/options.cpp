@@ -2,12 +2,20 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <regex>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/completion_words.h"
+#include "app/help_footer.h"
+#include "app/help_formatter.h"
+#include "app/version_text.h"
+#include "core/edit_distance.h"
+#include "core/errors.h"
 #include "core/printable_text.h"
 #include "scene/limits.h"
 
@@ -34,20 +42,92 @@ void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::s
     }
 }
 
+// --explain-pixel prints and writes no files: options that name outputs contradict it. (Checked
+// here rather than with CLI11's excludes(), which would print the pairing under every option
+// in --help and the man page.)
+void refuse_outputs_with_explain_pixel(const CLI::App& app) {
+    if (app.count("--explain-pixel") == 0) return;
+    for (const char* output : {"--output", "--video", "--stats", "--assemble", "--resume", "--crop", "--alpha"})
+        if (app.count(output) > 0)
+            throw CLI::ValidationError(std::string(output) + " excludes --explain-pixel: the explainer writes no files");
+}
+
+// More threads than this is a typing mistake, not a machine.
+constexpr int kMaxThreads = 4096;
+// Scene overrides and checks: -D, --seed, --strict, --check. The options are added in one
+// block; their values are read by read_scene_check_options once the command line is parsed
+// (docs/command-line.md, Scene overrides and checks).
+struct SceneCheckOptions {
+    std::vector<std::string> defines;
+    std::optional<long long> seed;
+};
+
+void add_scene_check_options(CLI::App& app, Options& options, SceneCheckOptions& values) {
+    app.add_option("-D,--define", values.defines,
+                   "Set a scene value before the scene is checked, e.g. -D MaxDepth=2, -D spheres.0.radius=2, "
+                   "-D /eye=[0,0,5]; the value is JSON, else a string. Repeatable, applied in order; --size, --spp "
+                   "and --seed win over it")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.add_option("--seed", values.seed, "Seed of the sample pattern (0 to 4294967295); overrides clrender.seed")
+        ->check(CLI::Range(0LL, 4294967295LL));
+    app.add_flag("--strict", options.strict, "Treat every warning as an error (exit 2, nothing written)");
+    app.add_flag("--check", options.check,
+                 "Check the scene and its images' headers and print a summary, without an OpenCL device; "
+                 "writes nothing");
+}
+
+void read_scene_check_options(const SceneCheckOptions& values, Options& options) {
+    for (const std::string& define : values.defines) {
+        try {
+            options.overrides.push_back(parse_scene_override(define));
+        } catch (const UsageError& error) {
+            throw CLI::ValidationError(error.what());
+        }
+    }
+    if (values.seed) options.seed = static_cast<unsigned>(*values.seed);
+}
+
+// "unknown option '--sp'; did you mean --spp?" for the first unknown option that is a likely
+// typo of a known one ("--sp", "-spp", "--sp=4"), else "" (CLI11's message then stands).
+std::string did_you_mean_option(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& extra : app.remaining()) {
+        if (extra.size() < 2 || extra[0] != '-') continue;
+        const std::string option = extra.substr(0, extra.find('='));
+        const std::string best = closest_spelling(option, names);
+        if (!best.empty()) return "unknown option '" + option + "'; did you mean " + best + "?";
+    }
+    return "";
+}
+
 }  // namespace
 
 ParsedOptions parse_options(int argc, const char* const* argv) {
     ParsedOptions parsed;
     Options& options = parsed.options;
     CLI::App app{"clrender: renders spheres-and-billboards scenes with OpenCL", "clrender"};
-    app.set_version_flag("--version", std::string("clrender ") + CLRENDER_VERSION);
+    // Version, help footer and completion (docs/command-line.md, Version): the
+    // version names the build's commit and the OpenCL platforms; --help ends with the
+    // environment variables, exit codes and examples; the hidden --completion-words lists
+    // the options for the bash completion, so new options complete without editing it.
+    app.set_version_flag("--version", std::function<std::string()>(version_text));
+    app.footer(help_footer());
+    app.formatter(std::make_shared<HelpFormatter>());
+    app.add_flag_callback("--completion-words", [&app] {
+           std::cout << completion_words(app);
+           throw CLI::Success();
+       })->group("");
     app.add_option("scene", options.scene_path, "Scene file (.json or .js)");
     app.add_option("-o,--output", options.output_path,
-                   "Image to write (.png, .ppm, or .exr: linear float colours); for an animation a frame pattern with %04d or ####. "
-                   "Default: <scene name>.png for a still, no frames for an animation");
+                   "Image to write (.png, .ppm, or .exr: linear float colours); for an animation a frame pattern "
+                   "with %04d or ####; missing folders are made. Default: <scene name>.png for a still, "
+                   "<scene name>_NNNN.png for the frames that --frames selects, no frames for a whole animation");
     app.add_option("--video", options.video_path,
-                   "Video of the animation (.mp4: H.264, yuv420p; .gif). Default for an animation without -o: "
-                   "<scene name>.mp4");
+                   "Video of the animation (.mp4: H.264, yuv420p; .gif). Default for an animation without -o "
+                   "and --frames: <scene name>.mp4");
     app.add_option("--frames", options.frames, "Frames to render, 0-based: 7, 0-99 or 5,7,10-20; default all");
     app.add_flag("--assemble", options.assemble,
                  "Encode the frames that -o names (rendered earlier, e.g. split across processes) into --video "
@@ -76,9 +156,39 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
     app.add_flag("--placeholders", options.placeholders,
                  "Render a magenta checkerboard for billboard images that are missing, instead of failing");
-    app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file");
+    app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file ('-': standard output)");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");
+    // The pixel explainer (docs/explain-pixel.md): "X,Y", non-negative integers; it prints and
+    // writes no files, so options that name outputs are refused with it.
+    app.add_option_function<std::string>(
+           "--explain-pixel",
+           [&options](const std::string& text) {
+               std::smatch match;
+               static const std::regex pattern(R"((\d{1,6}),(\d{1,6}))");
+               if (!std::regex_match(text, match, pattern))
+                   throw CLI::ValidationError("--explain-pixel", "expected X,Y with non-negative integers (column,row), "
+                                                                 "got '" + text + "'");
+               options.explain_pixel = Options::PixelPosition{std::stoi(match[1]), std::stoi(match[2])};
+           },
+           "Print how pixel X,Y (column, row from the top-left, 0-based) of the frame --frames names (default 0) "
+           "is computed, step by step, and the bytes the kernels give it; writes no files");
+
+    // Progress and control (docs/command-line.md, Progress; Threads; Crop).
+    app.add_option("--progress", options.progress,
+                   "Progress on standard error: bar (default; only on a terminal, not with -q), none, or json "
+                   "(one JSON object per line, also with -q and when not a terminal)")
+        ->check(CLI::IsMember({"bar", "none", "json"}));
+    app.add_option("-t,--threads", options.threads,
+                   "Compute units (threads) of the CPU device to render with; default all")
+        ->check(CLI::Range(1, kMaxThreads));
+    std::string crop;
+    app.add_option("--crop", crop,
+                   "Render only pixels x0 <= x < x1, y0 <= y < y1 of the frame, as x0,x1,y0,y1; the image is the "
+                   "crop's size, each pixel as in the full frame");
+    SceneCheckOptions scene_check_values;
+    add_scene_check_options(app, options, scene_check_values);
+
     // HDR and alpha outputs (docs/command-line.md, HDR and alpha outputs).
     app.add_flag("--alpha", options.alpha,
                  "Write an alpha channel: the fraction of each pixel's samples that hit an object, so the "
@@ -86,6 +196,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
 
     try {
         app.parse(argc, argv);
+        refuse_outputs_with_explain_pixel(app);
         if (app.count("scene") > 0 && options.scene_path.empty())
             throw CLI::ValidationError("scene", "the scene file name is empty");
         refuse_empty_values(app, {{"--output", &options.output_path},
@@ -94,7 +205,8 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                                   {"--device", &options.device},
                                   {"--size", &size},
                                   {"--stats", &options.stats_path},
-                                  {"--kernel-dir", &options.kernel_dir}});
+                                  {"--kernel-dir", &options.kernel_dir},
+                                  {"--crop", &crop}});
         if (!size.empty()) {
             int width = 0, height = 0;
             if (!parse_size(size, width, height))
@@ -102,7 +214,14 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             options.width = width;
             options.height = height;
         }
+        if (!crop.empty()) {
+            options.crop = parse_pixel_rect(crop);
+            if (!options.crop)
+                throw CLI::ValidationError("--crop", "expected x0,x1,y0,y1 with 0 <= x0 < x1 and 0 <= y0 < y1, got '" +
+                                                         crop + "'");
+        }
         options.double_precision = precision == "double";
+        read_scene_check_options(scene_check_values, options);
         if (options.scene_path.empty() && !options.list_devices)
             throw CLI::RequiredError("a scene file");
     } catch (const CLI::ParseError& error) {
@@ -111,7 +230,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
             return parsed;
         }
         // A usage error, in the same form as every other error of clrender's, and a hint.
-        std::cerr << "clrender: error: " << printable(error.what()) << "\nRun with --help for more information.\n";
+        const std::string suggestion = dynamic_cast<const CLI::ExtrasError*>(&error) ? did_you_mean_option(app) : "";
+        std::cerr << "clrender: error: " << printable(suggestion.empty() ? error.what() : suggestion)
+                  << "\nRun with --help for more information.\n";
         parsed.exit_code = 1;
         return parsed;
     }

@@ -3,6 +3,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "scene/scene_overrides.h"
+
+#include "core/pixel_rect.h"
 
 namespace clr {
 
@@ -28,6 +33,23 @@ struct Options {
     std::string kernel_dir;      // load kernels from this folder (kernel development)
     // HDR and alpha outputs (docs/command-line.md): EXR is chosen by -o's extension.
     bool alpha = false;          // --alpha: the background transparent (coverage as alpha)
+    // Progress and control (docs/command-line.md, Progress; Threads; Crop).
+    std::string progress = "bar";   // --progress: bar (on a terminal), none, json
+    std::optional<int> threads;     // -t: compute units of the CPU device
+    std::optional<PixelRect> crop;  // --crop x0,x1,y0,y1: only these pixels, half-open
+
+    // The pixel explainer (docs/explain-pixel.md): --explain-pixel X,Y prints how the
+    // reference computes that pixel, and the kernels' bytes for it, instead of writing files.
+    struct PixelPosition {
+        int x = 0;  // column from the left, 0-based
+        int y = 0;  // row from the top, 0-based
+    };
+    std::optional<PixelPosition> explain_pixel;
+    // Scene overrides and checks (docs/command-line.md, Scene overrides and checks)
+    std::vector<SceneOverride> overrides;  // -D key=value, in command-line order
+    std::optional<unsigned> seed;          // --seed: the sample pattern's seed (clrender.seed)
+    bool strict = false;                   // --strict: a warning fails the run (exit 2)
+    bool check = false;                    // --check: validate and summarise, no device, nothing written
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome

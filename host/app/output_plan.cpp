@@ -1,11 +1,13 @@
 #include "app/output_plan.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
 #include "app/frame_selection.h"
 #include "core/errors.h"
 #include "output/image_writer.h"
+#include "output/output_folders.h"
 #include "output/output_roles.h"
 #include "output/output_target.h"
 #include "output/temp_files.h"
@@ -15,11 +17,30 @@
 namespace clr {
 namespace {
 
+// Digits of the default frame names: 4, more when the animation's last frame needs them, so
+// that the names sort in frame order.
+int default_frame_digits(int frame_count) {
+    return std::max(4, static_cast<int>(std::to_string(frame_count - 1).size()));
+}
+
+// --frames selects part of an animation: without -o and --video its frames are written as
+// images beside where a still's image would go, and no video is made (a video of a selection
+// would silently replace the whole animation's video) (docs/command-line.md, Outputs).
+bool writes_default_frames(const Options& options, bool animated) {
+    return animated && !options.frames.empty() && options.output_path.empty() && options.video_path.empty();
+}
+
 void plan_images(const Options& options, const Scene& scene, OutputPlan& plan) {
     plan.image_target = options.output_path;
     plan.image_is_pattern = !plan.image_target.empty() && is_frame_pattern(plan.image_target);
     bool animated = plan.frame_count > 1;
     if (plan.image_target.empty() && !animated) plan.image_target = scene.name + ".png";
+    if (writes_default_frames(options, animated)) {
+        plan.default_frame_digits = default_frame_digits(plan.frame_count);
+        plan.default_frame_stem = scene.name + "_";
+        plan.image_target = plan.default_frame_stem + std::string(plan.default_frame_digits, 'N') + ".png";
+        plan.image_is_pattern = true;
+    }
     if (animated && !plan.image_target.empty() && !plan.image_is_pattern && plan.frames.size() > 1)
         throw UsageError("-o " + plan.image_target + ": the animation has " + std::to_string(plan.frames.size()) +
                          " frames to write; give a frame pattern such as frames/" + scene.name + "_%04d.png");
@@ -34,10 +55,26 @@ void plan_video(const Options& options, const Scene& scene, OutputPlan& plan) {
                              "a video needs eyeLocations with two or more keys");
         return;
     }
-    if (plan.video_path.empty() && options.output_path.empty()) plan.video_path = scene.name + ".mp4";
+    if (plan.video_path.empty() && options.output_path.empty() && options.frames.empty())
+        plan.video_path = scene.name + ".mp4";
     if (plan.video_path.empty()) return;
     video_format_for(plan.video_path);
     plan.encoder = find_encoder();  // before any rendering: a missing encoder must not waste a render
+}
+
+// "-" as an output name: --stats - writes the report to standard output, where nothing else
+// of clrender's goes; images and videos are files only, so -o - and --video - are refused
+// (docs/command-line.md, Outputs). A file named "-" is written as ./-.
+constexpr const char* kStandardOutput = "-";
+
+void plan_standard_output(const Options& options, OutputPlan& plan) {
+    for (const auto& [option, value] : {std::pair{"-o", options.output_path}, std::pair{"--video", options.video_path}}) {
+        if (value == kStandardOutput)
+            throw UsageError(std::string(option) + " -: clrender writes images and videos only to files; give a file "
+                             "name (./- for a file named '-'); --stats - writes the report to standard output");
+    }
+    plan.stats_to_standard_output = options.stats_path == kStandardOutput;
+    if (!plan.stats_to_standard_output) plan.stats_path = options.stats_path;
 }
 
 // Every file the scene reads: the scene and its images (placeholders keep the missing path).
@@ -66,7 +103,7 @@ void add_images(const Options& options, const OutputPlan& plan, OutputRoles& rol
         } else if (options.resume && plan.frame_on_disk(frame)) {
             roles.add_input(name + " (read back by --resume)", path);
         } else {
-            roles.add_output(name + " (-o)", path);
+            roles.add_output(name + (options.output_path.empty() ? " (the default output name)" : " (-o)"), path);
         }
     }
 }
@@ -103,13 +140,25 @@ void check_targets(const Options& options, const Scene& scene, OutputPlan& plan)
     if (!plan.video_path.empty()) roles.add_output("video (--video)", plan.video_path);
     if (!plan.stats_path.empty()) roles.add_output("--stats report", plan.stats_path);
 
-    for (const std::string& target : one_target_per_folder) prepare_output_folder(target);
+    for (const std::string& target : one_target_per_folder) {
+        std::vector<std::string> missing = missing_folders_of(target);
+        if (missing.empty()) {
+            prepare_output_folder(target);
+        } else {
+            plan.missing_folders.push_back({target, std::move(missing)});
+        }
+    }
 }
 
 }  // namespace
 
 std::string OutputPlan::image_path(int frame) const {
     if (image_target.empty()) return "";
+    if (default_frame_digits > 0) {
+        std::string number = std::to_string(frame);
+        if (static_cast<int>(number.size()) < default_frame_digits) number.insert(0, default_frame_digits - number.size(), '0');
+        return default_frame_stem + number + ".png";
+    }
     return image_is_pattern ? frame_path(image_target, frame) : image_target;
 }
 
@@ -126,16 +175,22 @@ OutputPlan plan_outputs(const Options& options, const Scene& scene) {
     } else {
         plan.frames = parse_frame_list(options.frames, plan.frame_count);
     }
+    plan_standard_output(options, plan);
     plan_images(options, scene, plan);
     plan_video(options, scene, plan);
     plan.assemble = options.assemble;
-    plan.stats_path = options.stats_path;
     if (options.resume && !plan.image_is_pattern)
-        throw UsageError("--resume needs -o with a frame pattern: it skips the frames whose files exist");
+        throw UsageError("--resume needs -o with a frame pattern (or --frames without -o and --video): it skips "
+                         "the frames whose files exist");
     if (plan.assemble && (!plan.image_is_pattern || plan.video_path.empty() || options.video_path.empty()))
         throw UsageError("--assemble needs -o with the frame pattern to read and --video with the video to write");
     check_targets(options, scene, plan);
     return plan;
+}
+
+void make_missing_folders(const OutputPlan& plan) {
+    for (const OutputPlan::MissingFolders& missing : plan.missing_folders)
+        make_output_folders(missing.folders, missing.output);
 }
 
 }  // namespace clr

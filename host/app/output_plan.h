@@ -17,10 +17,23 @@ struct OutputPlan {
     int frame_count = 1;       // frames in the whole animation (1 for a still)
     std::string image_target;  // image path, or frame pattern when image_is_pattern; empty: none
     bool image_is_pattern = false;
+    // --frames without -o or --video: frames named <scene name>_NNNN.png, with this many
+    // digits (0: image_target is the pattern). Built without a pattern, so that a '%' or '#'
+    // in the scene's name is never read as a placeholder.
+    int default_frame_digits = 0;
+    std::string default_frame_stem;  // "<scene name>_"
     std::string video_path;    // empty: no video; a symbolic link is resolved to its target
-    std::string stats_path;    // --stats report; empty: none
+    std::string stats_path;    // --stats report; empty: none (or standard output)
+    bool stats_to_standard_output = false;  // --stats -
     std::string encoder;       // the ffmpeg program, when there is a video
     bool assemble = false;     // read the frames from image_target instead of rendering them
+    // Folders to make before the first output is written (output_folders.h), each list with
+    // the output that needs it, for messages.
+    struct MissingFolders {
+        std::string output;
+        std::vector<std::string> folders;  // outermost first
+    };
+    std::vector<MissingFolders> missing_folders;
 
     // The image file of `frame`, or empty when no image is written.
     std::string image_path(int frame) const;
@@ -39,5 +52,10 @@ struct OutputPlan {
 // or another output, is not a regular file, or its folder cannot take a new file. Removes
 // the temporary files that crashed runs left in the output folders (temp_files.h).
 OutputPlan plan_outputs(const Options& options, const Scene& scene);
+
+// Makes the plan's missing output folders. Called once every check of the run has passed (the
+// device chosen and the program built), so that a refused run leaves no empty folder behind.
+// Throws OutputError.
+void make_missing_folders(const OutputPlan& plan);
 
 }  // namespace clr

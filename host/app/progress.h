@@ -1,5 +1,9 @@
-// Progress of a long render on a terminal: frames done, frames per second and the time left.
-// Silent when asked to be, or when standard error is not a terminal (logs stay clean).
+// Progress of a run, for people and for scripts (docs/command-line.md, Progress):
+// - a bar on a terminal: percentage, elapsed and remaining time, redrawn after every band of
+//   rows, so a long still shows it as an animation does; silent with -q, or when standard
+//   error is not a terminal (logs stay clean);
+// - --progress json: one JSON object per line on standard error, on a terminal or not, for
+//   render farms and scripts: per band for a still, per frame for an animation.
 #pragma once
 
 #include <string>
@@ -8,22 +12,53 @@
 
 namespace clr {
 
+enum class ProgressStyle { Bar, None, Json };
+
+// "bar", "none", "json" as --progress takes them; nullopt-free: the caller checks the value.
+ProgressStyle progress_style_named(const std::string& name);
+
 class Progress {
 public:
-    Progress(int total_frames, bool quiet);
+    // `quiet` (-q) silences the bar, not the JSON lines that --progress json asks for.
+    Progress(int total_frames, ProgressStyle style, bool quiet);
+    // Ends an unfinished bar line, so that an error or interruption message that follows (the
+    // frame loop unwinds through here) starts on its own line.
+    ~Progress();
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+
+    // The animation frame index the next updates are about.
+    void frame_started(int frame);
+    // `fraction` (0..1) of the current frame is rendered: called after each band of rows.
+    void frame_part_done(double fraction);
     void frame_done();
     void finish();  // ends the progress line
 
 private:
-    void draw() const;
+    double fraction_of_run() const;
+    void draw_bar();
+    void print_json_line() const;
 
     int total_;
     int done_ = 0;
-    bool enabled_;
+    int frame_ = 0;
+    double frame_fraction_ = 0;
+    bool bar_;
+    bool json_;
+    bool line_open_ = false;  // a bar is drawn and its line not yet ended
     Stopwatch since_start_;
+    Stopwatch since_last_part_;  // the last update shown within a frame
 };
 
 // "1:05" or "12:03:07": a duration for people.
 std::string format_duration(double seconds);
+
+// The bar line without its leading carriage return, e.g.
+// "clrender: [########            ]  40%  frame 2/5  elapsed 0:04  left 0:06".
+std::string format_progress_bar(double fraction, int frames_done, int frames, double elapsed_s);
+
+// One --progress json line (without the newline): {"frame", "frames", "frames_done",
+// "percent", "elapsed_s", "eta_s"}; eta_s is null until some of the work is done.
+std::string format_progress_json(int frame, int frames, int frames_done, double fraction, double elapsed_s);
 
 }  // namespace clr

@@ -1,11 +1,19 @@
 #include "app/run.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <iostream>
+#include <sstream>
 #include <system_error>
 #include <nlohmann/json.hpp>
 
+#include "app/frame_description.h"
+#include "app/explain_pixel.h"
+#include "app/check_summary.h"
 #include "app/frame_sink.h"
 #include "app/linear_outputs.h"
 #include "app/opencl_frame_renderer.h"
@@ -17,6 +25,7 @@
 #include "app/progress.h"
 #include "core/errors.h"
 #include "device/device_selection.h"
+#include "device/driver_settings.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
 #include "scene/camera_path.h"
@@ -36,6 +45,7 @@ struct FrameRecord {
 // Everything the --stats report says.
 struct RunReport {
     std::string device;
+    int compute_units = 0;  // of the OpenCL device; 0 for the reference
     double load_ms = 0;
     double build_ms = 0;
     int cache_hits = 0;
@@ -45,13 +55,13 @@ struct RunReport {
     std::vector<FrameRecord> frames;
 };
 
-// Written under a temporary name; renamed into place with a still's image (staged_outputs.h).
-std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport& report) {
+std::string stats_text(const RunReport& report) {
     nlohmann::json frames = nlohmann::json::array();
     for (const FrameRecord& frame : report.frames)
         frames.push_back({{"index", frame.index}, {"kernel_ms", frame.timing.kernel_ms}, {"total_ms", frame.timing.total_ms}});
     nlohmann::json stats = {
         {"device", report.device},
+        {"compute_units", report.compute_units},
         {"build_ms", report.build_ms},
         {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
@@ -60,11 +70,24 @@ std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport
     };
     // A driver's device name is not guaranteed to be UTF-8: invalid bytes become U+FFFD, so
     // the report is still JSON instead of the run failing for it.
-    std::string text = stats.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return stats.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+// Written under a temporary name; renamed into place with a still's image (staged_outputs.h).
+std::unique_ptr<AtomicFile> write_stats(const std::string& path, const RunReport& report) {
+    const std::string text = stats_text(report);
     auto file = std::make_unique<AtomicFile>(path);
     file->write(text.data(), text.size());
     file->complete();
     return file;
+}
+
+// --stats -: the report on standard output. A closed pipe or a full disk behind standard
+// output is an output error.
+void print_stats(const RunReport& report) {
+    const std::string text = stats_text(report);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+        throw OutputError(std::string("--stats -: cannot write the report to standard output: ") + std::strerror(errno));
 }
 
 Scene load(const Options& options) {
@@ -73,9 +96,18 @@ Scene load(const Options& options) {
     load_options.width_override = options.width;
     load_options.height_override = options.height;
     load_options.samples_override = options.samples_per_pixel;
+    load_options.seed_override = options.seed;
+    load_options.overrides = options.overrides;
+    load_options.decode_images = !options.check;  // --check reads images' headers only
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
+    // --strict: the warnings above are the problems; this line says why they stop the run.
+    if (options.strict && !scene.warnings.empty()) {
+        const std::size_t n = scene.warnings.size();
+        throw SceneError(printable(scene.path), "",
+                         std::to_string(n) + (n == 1 ? " warning" : " warnings") + " (above), and --strict makes warnings errors");
+    }
     return scene;
 }
 
@@ -93,21 +125,44 @@ DeviceList list_devices_meanwhile() {
     }
 }
 
+// `part_done` gets the fraction of each frame rendered, band by band (or row by row);
+// `linear_frames`: frames also carry their linear colours (Image::linear).
 std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices,
-                                             bool linear_frames) {
+                                             std::function<void(double)> part_done, bool linear_frames) {
     // A long frame stops within a band (or a reference row) of a signal, not at its end.
-    if (options.reference) return make_reference_frame_renderer(scene, throw_if_interrupted, linear_frames);
+    if (options.reference)
+        return make_reference_frame_renderer(scene, throw_if_interrupted, options.crop, part_done, linear_frames);
     RendererOptions renderer_options;
     renderer_options.float_output = linear_frames;
     renderer_options.between_bands = throw_if_interrupted;
+    renderer_options.band_done = std::move(part_done);
+    renderer_options.crop = options.crop;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
     // run() lists the devices while the scene loads whenever it renders with OpenCL.
-    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options);
+    return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options, options.threads);
+}
+
+// The size of the frames this run writes: the scene's, or the crop's (docs/command-line.md, Crop).
+struct FrameSize {
+    int width = 0, height = 0;
+};
+
+FrameSize frame_size(const Options& options, const Scene& scene) {
+    if (options.crop) return {options.crop->width(), options.crop->height()};
+    return {scene.width, scene.height};
+}
+
+// A crop must lie inside the frame; the frame's size is known once the scene (and --size) is.
+void check_crop(const Options& options, const Scene& scene) {
+    if (options.crop && !options.crop->inside(scene.width, scene.height))
+        throw UsageError("--crop " + format_pixel_rect(*options.crop) + " reaches outside the " +
+                         std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                         " image (x1 at most the width, y1 at most the height)");
 }
 
 // A frame written earlier (--assemble, --resume), checked to be of the scene's size.
-Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
+Image read_frame(const OutputPlan& plan, const FrameSize& size, int frame) {
     std::string path = plan.image_path(frame);
     std::shared_ptr<const Image> image;
     try {
@@ -115,10 +170,10 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
     } catch (const ImageError& error) {
         throw SceneError(path, "", std::string("cannot read frame ") + std::to_string(frame) + ": " + error.what());
     }
-    if (image->width != scene.width || image->height != scene.height)
+    if (image->width != size.width || image->height != size.height)
         throw SceneError(path, "", "frame " + std::to_string(frame) + " is " + std::to_string(image->width) + "x" +
                                        std::to_string(image->height) + ", the scene renders " +
-                                       std::to_string(scene.width) + "x" + std::to_string(scene.height));
+                                       std::to_string(size.width) + "x" + std::to_string(size.height));
     return *image;
 }
 
@@ -126,19 +181,35 @@ Image read_frame(const OutputPlan& plan, const Scene& scene, int frame) {
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                    DeviceList& devices, StagedOutputs& staged) {
-    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, needs_linear_frames(options, plan));
+    Progress* shown = nullptr;  // the progress of the frames, once they start
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(
+        options, scene, devices,
+        [&shown](double fraction) {
+            if (shown) shown->frame_part_done(fraction);
+        },
+        needs_linear_frames(options, plan));
     report.device = renderer->device_name();
+    report.compute_units = renderer->compute_units();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
-    if (!options.quiet) std::cerr << "clrender: device " << report.device << "\n";
+    if (!options.quiet) {
+        std::cerr << "clrender: device " << report.device;
+        if (report.compute_units > 0) std::cerr << " (compute units: " << report.compute_units << ")";
+        std::cerr << "\n";
+    }
+    make_missing_folders(plan);  // the device is ready: nothing refuses the run before it renders
 
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
-    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    const FrameSize size = frame_size(options, scene);
+    FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged,
+                   [&scene](int frame) { return describe_frame(scene, frame); });
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
+    shown = &progress;
     const Stopwatch render_time;
     for (int frame : plan.frames) {
         throw_if_interrupted();
+        progress.frame_started(frame);
         if (options.resume && plan.frame_on_disk(frame)) {
-            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, scene, frame), true);
+            if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, size, frame), true);
             progress.frame_done();
             continue;
         }
@@ -162,11 +233,14 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
                      StagedOutputs& staged) {
     report.device = "none (assembling frames)";
-    FrameSink sink(plan, scene.width, scene.height, scene.animation.fps, options.quality, staged);
-    Progress progress(static_cast<int>(plan.frames.size()), options.quiet);
+    make_missing_folders(plan);
+    const FrameSize size = frame_size(options, scene);
+    FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged);
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     for (int frame : plan.frames) {
         throw_if_interrupted();
-        sink.push(frame, read_frame(plan, scene, frame), true);
+        progress.frame_started(frame);
+        sink.push(frame, read_frame(plan, size, frame), true);
         progress.frame_done();
     }
     sink.finish();
@@ -174,8 +248,18 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
     report.write_ms = sink.write_ms();
 }
 
+// "wrote anim_0000.png ... anim_0047.png (48 frames, no video: ...)" for the default frames.
+void print_default_frames(const OutputPlan& plan) {
+    std::cerr << "clrender: wrote " << printable(plan.image_path(plan.frames.front()));
+    if (plan.frames.size() > 1)
+        std::cerr << " ... " << printable(plan.image_path(plan.frames.back())) << " (" << plan.frames.size() << " frames)";
+    std::cerr << "; no video for a --frames selection (--video makes one)\n";
+}
+
 void print_summary(const OutputPlan& plan, const RunReport& report) {
-    if (!plan.image_target.empty() && !plan.assemble)
+    if (plan.default_frame_digits > 0)
+        print_default_frames(plan);
+    else if (!plan.image_target.empty() && !plan.assemble)
         std::cerr << "clrender: wrote "
                   << printable(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
                   << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
@@ -190,6 +274,7 @@ void print_summary(const OutputPlan& plan, const RunReport& report) {
 }  // namespace
 
 int run(const Options& options) {
+    if (options.threads) limit_cpu_threads(*options.threads);  // before any driver loads
     if (options.list_devices) {
         std::cout << format_device_list(list_devices());
         return kExitOk;
@@ -198,7 +283,8 @@ int run(const Options& options) {
     const Stopwatch run_time;
     RunReport report;
     DeviceList devices;
-    if (!options.reference && !options.assemble && !options.print_frame_count)
+    // --check never opens an OpenCL platform: it must work where there is none.
+    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check)
         devices = list_devices_meanwhile();
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
@@ -206,7 +292,21 @@ int run(const Options& options) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;
     }
+    check_crop(options, scene);
+    if (options.check) {
+        std::cout << check_summary(scene, options.double_precision);
+        return kExitOk;
+    }
     throw_if_interrupted();
+    if (options.explain_pixel) {  // prints, writes no files (docs/explain-pixel.md)
+        KernelRendererFactory kernel_renderer;
+        if (!options.reference) kernel_renderer = [&] { return make_renderer(options, scene, devices, {}, false); };
+        std::ostringstream explanation;  // whole or nothing: a device failure leaves no half explanation
+        explain_pixel(options, scene, kernel_renderer, explanation);
+        std::cout << explanation.str() << std::flush;
+        if (!std::cout) throw OutputError("standard output: cannot write the explanation (disk full or pipe closed?)");
+        return kExitOk;
+    }
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
     check_linear_outputs(options, plan);
     throw_if_interrupted();
@@ -222,6 +322,9 @@ int run(const Options& options) {
     report.total_ms = run_time.elapsed_ms();
     if (!plan.stats_path.empty()) staged.add(write_stats(plan.stats_path, report));
     throw_if_interrupted();
+    // --stats -: printed before the renames, so that a report that cannot be written leaves
+    // the earlier files as they were, as a --stats file that cannot be written does.
+    if (plan.stats_to_standard_output) print_stats(report);
     staged.commit_all();
     if (!options.quiet) print_summary(plan, report);
     return kExitOk;

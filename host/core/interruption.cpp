@@ -35,7 +35,7 @@ std::string signal_name(int signal_number) {
 Interrupted::Interrupted(int signal_number)
     : Error("interrupted by " + signal_name(signal_number) +
                 "; the unfinished frame was discarded and no partial file was left (frames of an animation "
-                "already written are kept: rerun with --resume to skip them)",
+                "already written are kept; with -o and a frame pattern, --resume skips them)",
             static_cast<ExitCode>(128 + signal_number)) {}
 
 void install_interruption_handlers() {

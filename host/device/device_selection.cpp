@@ -96,6 +96,15 @@ DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::st
         auto cpu = std::find_if(devices.begin(), devices.end(), [](const DeviceEntry& e) { return e.type == "CPU"; });
         return cpu != devices.end() ? *cpu : devices.front();
     }
+    // "cpu" and "gpu" name a kind of device, not a name substring: on a machine with a GPU
+    // and PoCL, "-d gpu" must not fall back to whatever device has "gpu" in its name, nor to
+    // the CPU (docs/command-line.md, Options).
+    if (const std::string kind = lower(selector); kind == "cpu" || kind == "gpu") {
+        const std::string type = kind == "cpu" ? "CPU" : "GPU";
+        auto found = std::find_if(devices.begin(), devices.end(), [&](const DeviceEntry& e) { return e.type == type; });
+        if (found != devices.end()) return *found;
+        throw DeviceError("no OpenCL " + type + " device; available devices:\n" + format_device_list(devices));
+    }
     if (auto index = parse_index(selector)) {
         if (*index < static_cast<int>(devices.size())) return devices[*index];
     } else if (auto colon = selector.find(':'); colon != std::string::npos) {
@@ -112,6 +121,37 @@ DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::st
                 return entry;
     }
     throw DeviceError("unknown OpenCL device '" + selector + "'; available devices:\n" + format_device_list(devices));
+}
+
+int compute_units(const DeviceEntry& entry) {
+    try {
+        return static_cast<int>(entry.device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
+    } catch (const cl::Error& error) {
+        throw DeviceError(describe_cl_error(error, "asking '" + entry.device_name + "' for its compute units"));
+    }
+}
+
+DeviceEntry select_compute_units(const DeviceEntry& entry, int units) {
+    const int available = compute_units(entry);
+    if (available == units) return entry;
+    if (available < units)
+        throw DeviceError("--threads " + std::to_string(units) + ": '" + entry.device_name + "' has only " +
+                          std::to_string(available) + " compute units");
+    std::vector<cl::Device> parts;
+    try {
+        const cl_device_partition_property equally[] = {CL_DEVICE_PARTITION_EQUALLY,
+                                                        static_cast<cl_device_partition_property>(units), 0};
+        cl::Device whole = entry.device;  // the bindings' createSubDevices is not const
+        whole.createSubDevices(equally, &parts);
+    } catch (const cl::Error& error) {
+        throw DeviceError(describe_cl_error(error, "--threads " + std::to_string(units) + ": dividing '" +
+                                                       entry.device_name + "' into devices of that many compute units"));
+    }
+    if (parts.empty())
+        throw DeviceError("--threads " + std::to_string(units) + ": '" + entry.device_name + "' gave no sub-device");
+    DeviceEntry part = entry;
+    part.device = parts.front();
+    return part;
 }
 
 }  // namespace clr

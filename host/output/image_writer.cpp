@@ -61,8 +61,50 @@ void append_png_bytes(png_structp png, png_bytep data, png_size_t size) {
 
 void flush_png(png_structp) {}
 
+// tEXt holds Latin-1: anything but printable ASCII (a UTF-8 file name, a control character)
+// is written as \xNN, so a reader shows exactly the bytes it stands for.
+std::string text_chunk_safe(const std::string& text) {
+    static const char* const digits = "0123456789ABCDEF";
+    std::string safe;
+    for (unsigned char c : text) {
+        if (c >= 0x20 && c < 0x7F && c != '\\') {
+            safe += static_cast<char>(c);
+        } else {
+            safe += {'\\', 'x', digits[c >> 4], digits[c & 15]};
+        }
+    }
+    return safe;
+}
+
+// What libpng's text structures point to, kept until the PNG is written. Owned by the caller
+// of setjmp, so that a longjmp out of libpng skips no destructor.
+struct PngTextStorage {
+    std::vector<std::string> strings;
+    std::vector<png_text> chunks;
+};
+
+// The chunks that say what the pixels are: sRGB colours (rendered for an sRGB display, so
+// colour-managed viewers show them unchanged) and the caller's text.
+void set_png_description(png_structp png, png_infop info, const ImageText& text, PngTextStorage& storage) {
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (text.empty()) return;
+    for (const auto& [keyword, value] : text) {
+        storage.strings.push_back(text_chunk_safe(keyword).substr(0, 79));
+        storage.strings.push_back(text_chunk_safe(value));
+    }
+    storage.chunks.resize(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        storage.chunks[i].compression = PNG_TEXT_COMPRESSION_NONE;
+        storage.chunks[i].key = const_cast<png_charp>(storage.strings[2 * i].c_str());
+        storage.chunks[i].text = const_cast<png_charp>(storage.strings[2 * i + 1].c_str());
+        storage.chunks[i].text_length = storage.strings[2 * i + 1].size();
+    }
+    png_set_text(png, info, storage.chunks.data(), static_cast<int>(storage.chunks.size()));  // libpng copies them
+}
+
 // Returns libpng's message, or an empty string when `output` holds the whole PNG.
-std::string encode_png(const Image& image, PngOutput& output) {
+std::string encode_png(const Image& image, const ImageText& text, PngOutput& output) {
+    PngTextStorage text_storage;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -80,6 +122,7 @@ std::string encode_png(const Image& image, PngOutput& output) {
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
     png_set_compression_level(png, 1);
     png_set_compression_strategy(png, Z_RLE);
+    set_png_description(png, info, text, text_storage);
     png_write_info(png, info);
     if (!image.write_alpha) png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are RGBA in memory: libpng drops the alpha byte
     const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 4;
@@ -90,9 +133,9 @@ std::string encode_png(const Image& image, PngOutput& output) {
     return "";
 }
 
-void write_png(AtomicFile& file, const Image& image) {
+void write_png(AtomicFile& file, const Image& image, const ImageText& text) {
     PngOutput output;
-    const std::string problem = encode_png(image, output);
+    const std::string problem = encode_png(image, text, output);
     if (!problem.empty()) throw OutputError(file.final_path() + ": the PNG encoder failed (" + problem + ")");
     file.write(output.bytes.data(), output.bytes.size());
 }
@@ -126,12 +169,12 @@ ImageFormat image_format_for(const std::string& path) {
     throw UsageError(path + ": " + problem + " for an image (supported: .png, .ppm, .exr)");
 }
 
-std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image) {
+std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image, const ImageText& text) {
     const ImageFormat format = image_format_for(path);
     check_image(path, image);
     auto file = std::make_unique<AtomicFile>(path);
     if (format == ImageFormat::Png) {
-        write_png(*file, image);
+        write_png(*file, image, text);
     } else if (format == ImageFormat::Exr) {
         const std::vector<char> bytes = encode_exr(path, image);
         file->write(bytes.data(), bytes.size());
@@ -142,6 +185,8 @@ std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, con
     return file;
 }
 
-void write_image(const std::string& path, const Image& image) { write_image_uncommitted(path, image)->commit(); }
+void write_image(const std::string& path, const Image& image, const ImageText& text) {
+    write_image_uncommitted(path, image, text)->commit();
+}
 
 }  // namespace clr

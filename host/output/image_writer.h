@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/image.h"
 #include "output/atomic_file.h"
@@ -16,13 +18,20 @@ enum class ImageFormat { Png, Ppm, Exr };
 // any other extension, naming the path and the supported ones.
 ImageFormat image_format_for(const std::string& path);
 
+// What an image shows, as (keyword, text) pairs in order: a PNG stores each as a tEXt chunk
+// (bytes outside printable ASCII in the text are written as \xNN, since tEXt is Latin-1); PPM
+// and EXR have no place for it here. Keywords are 1 to 79 printable ASCII characters.
+using ImageText = std::vector<std::pair<std::string, std::string>>;
+
 // Writes the RGBA image (alpha is dropped unless image.write_alpha: then a PNG is RGBA; an EXR
-// writes image.linear, with A when image.write_alpha). Throws OutputError
-// naming the path when the file cannot be written; nothing is left under `path` then.
-void write_image(const std::string& path, const Image& image);
+// writes image.linear, with A when image.write_alpha). A PNG, RGB or RGBA, is marked as sRGB
+// (an sRGB chunk, perceptual intent) and carries `text`. Throws OutputError naming the path
+// when the file cannot be written; nothing is left under `path` then.
+void write_image(const std::string& path, const Image& image, const ImageText& text = {});
 
 // Writes the image completely under a temporary name and returns the file, not yet renamed
 // into place (see staged_outputs.h). Throws OutputError as write_image does.
-std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image);
+std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image,
+                                                    const ImageText& text = {});
 
 }  // namespace clr

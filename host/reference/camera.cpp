@@ -42,12 +42,15 @@ CameraFrame camera_of(const Scene& scene, const CameraKey& key) {
 
 Ray primary_ray(const CameraFrame& camera, int col, int row) { return primary_ray_through(camera, col, row, 0.5, 0.5); }
 
-Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, double oy) {
+Vec3 witness_direction(const CameraFrame& camera, int col, int row, double ox, double oy) {
     // Image points (col + ox, row + oy) mapped to [-1, 1], row 0 at the top (+v).
     const double x = 2.0 * (col + ox) / camera.width - 1.0;
     const double y = 1.0 - 2.0 * (row + oy) / camera.height;
-    const Vec3 witness_direction = -camera.w + camera.u * (x * camera.half_width) + camera.v * (y * camera.half_height);
-    return {camera.eye, normalize(witness_direction)};
+    return -camera.w + camera.u * (x * camera.half_width) + camera.v * (y * camera.half_height);
+}
+
+Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, double oy) {
+    return {camera.eye, normalize(witness_direction(camera, col, row, ox, oy))};
 }
 
 }  // namespace clr::reference

@@ -18,11 +18,14 @@ SphereRoots sphere_roots(const Sphere& sphere, const Ray& ray) {
     // nearly equal numbers when the sphere is far away and small (Ray Tracing Gems ch. 7).
     const Vec3 closest = oc - ray.direction * half_b;
     const double discriminant = sphere.radius * sphere.radius - dot(closest, closest);
-    if (discriminant < 0) return {};
+    SphereRoots roots;
+    roots.half_b = half_b;
+    roots.c = c;
+    roots.quarter_discriminant = discriminant;
+    if (discriminant < 0) return roots;
 
     // Compute the root without cancellation first and get the other from t_near t_far = C.
     const double root = std::sqrt(discriminant);
-    SphereRoots roots;
     roots.real = true;
     if (half_b < 0) {
         roots.t_far = -half_b + root;

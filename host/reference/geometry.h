@@ -15,6 +15,11 @@ struct SphereRoots {
     bool real = false;  // false: the ray's line misses the sphere
     double t_near = 0;  // t_near <= t_far
     double t_far = 0;
+    // The coefficients as computed, for an explanation of the test (trace_observer.h):
+    // B/2 = d.(o-c), C, and (B/2)^2 - AC, a quarter of the lecture's discriminant.
+    double half_b = 0;
+    double c = 0;
+    double quarter_discriminant = 0;
 };
 SphereRoots sphere_roots(const Sphere& sphere, const Ray& ray);
 

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "reference/impostors.h"
+#include "reference/trace_observer.h"
 #include "shared/clr_samples.h"
 
 namespace clr::reference {
@@ -25,7 +26,7 @@ namespace {
 // The mean colour of the pixel's samples, at the positions the kernels use; with `coverage`,
 // also the fraction of them whose primary ray hits an object.
 Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_seed, int col, int row,
-                  double* coverage = nullptr) {
+                  TraceObserver* observer, double* coverage = nullptr) {
     const int samples = scene.sampling.samples_per_pixel;
     Color sum{0, 0, 0};
     int hits = 0;
@@ -33,31 +34,43 @@ Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_
         double ox = clr_sample_offset_x(frame_seed, col, row, sample, samples);
         double oy = clr_sample_offset_y(frame_seed, col, row, sample, samples);
         const Ray ray = primary_ray_through(camera, col, row, ox, oy);
-        sum = sum + trace(scene, ray);
         if (coverage && intersect(scene, ray).kind != HitKind::None) ++hits;
+        if (!observer) {
+            sum = sum + trace(scene, ray);
+            continue;
+        }
+        observer->sample_started(sample, samples, ox, oy, witness_direction(camera, col, row, ox, oy), ray);
+        const Color colour = trace(scene, ray, observer);
+        observer->sample_finished(sample, colour);
+        sum = sum + colour;
     }
     if (coverage) *coverage = static_cast<double>(hits) / samples;
     return sum / samples;
 }
 
+unsigned frame_seed_of(const Scene& scene, int frame) {
+    return clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
+}
+
 Image render_frame(const Scene& scene, const CameraFrame& camera, int frame,
-                   const std::function<void()>& between_rows, bool linear) {
+                   const std::function<void()>& between_rows, const std::optional<PixelRect>& crop, bool linear) {
     // Impostors face this frame's eye; once placed they are billboards like any other, which
     // is all trace() knows about. The placed scene has no impostors, so this recurses once.
     if (!scene.impostors.empty())
-        return render_frame(with_impostors_placed(scene, camera), camera, frame, between_rows, linear);
-    const unsigned frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
+        return render_frame(with_impostors_placed(scene, camera), camera, frame, between_rows, crop, linear);
+    const unsigned frame_seed = frame_seed_of(scene, frame);
+    const PixelRect region = crop.value_or(PixelRect{0, camera.width, 0, camera.height});
     Image image;
-    image.width = camera.width;
-    image.height = camera.height;
-    image.rgba.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
+    image.width = region.width();
+    image.height = region.height();
+    image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4);
     if (linear) image.linear.resize(image.rgba.size());
-    for (int row = 0; row < camera.height; ++row) {
+    for (int row = region.y0; row < region.y1; ++row) {
         if (between_rows) between_rows();
-        for (int col = 0; col < camera.width; ++col) {
+        for (int col = region.x0; col < region.x1; ++col) {
             double coverage = 0;
-            const Color color = pixel_color(scene, camera, frame_seed, col, row, linear ? &coverage : nullptr);
-            const std::size_t offset = (static_cast<std::size_t>(row) * camera.width + col) * 4;
+            const Color color = pixel_color(scene, camera, frame_seed, col, row, nullptr, linear ? &coverage : nullptr);
+            const std::size_t offset = (static_cast<std::size_t>(row - region.y0) * image.width + (col - region.x0)) * 4;
             std::uint8_t* texel = &image.rgba[offset];
             texel[0] = to_byte(color.x);
             texel[1] = to_byte(color.y);
@@ -76,13 +89,19 @@ Image render_frame(const Scene& scene, const CameraFrame& camera, int frame,
 
 }  // namespace
 
-Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows) {
-    return render_frame(scene, camera, frame, between_rows, false);
+Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int col, int row,
+                   TraceObserver* observer) {
+    return pixel_color(scene, camera, frame_seed_of(scene, frame), col, row, observer);
+}
+
+Image render(const Scene& scene, const CameraFrame& camera, int frame, const std::function<void()>& between_rows,
+             const std::optional<PixelRect>& crop) {
+    return render_frame(scene, camera, frame, between_rows, crop, false);
 }
 
 Image render_linear(const Scene& scene, const CameraFrame& camera, int frame,
-                    const std::function<void()>& between_rows) {
-    return render_frame(scene, camera, frame, between_rows, true);
+                    const std::function<void()>& between_rows, const std::optional<PixelRect>& crop) {
+    return render_frame(scene, camera, frame, between_rows, crop, true);
 }
 
 }  // namespace clr::reference

@@ -7,8 +7,10 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
+#include "core/pixel_rect.h"
 #include "scene/scene.h"
 
 namespace clr::reference {
@@ -37,9 +39,16 @@ CameraFrame camera_of(const Scene& scene, const CameraKey& key);
 // The ray from the eye through the centre of pixel (col, row); row 0 is the top row.
 Ray primary_ray(const CameraFrame& camera, int col, int row);
 
+// The witness point of image point (col + ox, row + oy) minus the eye: the image plane sits at
+// distance 1 along -w (the lecture's "Witness points", D = 1). primary_ray_through()'s direction
+// is this, made unit.
+Vec3 witness_direction(const CameraFrame& camera, int col, int row, double ox, double oy);
+
 // The ray through point (col + ox, row + oy) of the image, ox and oy in [0, 1) inside pixel
 // (col, row): a sample of the pixel (anti-aliasing).
 Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, double oy);
+
+class TraceObserver;  // reference/trace_observer.h
 
 enum class HitKind { None, Sphere, Billboard };
 
@@ -63,6 +72,8 @@ struct SurfaceId {
 // Nearest surface with 0 < t < t_max, skipping `leaving`. Billboard texels whose alpha is
 // below 255 let the ray through.
 Hit intersect(const Scene& scene, const Ray& ray, double t_max = kInfinity, SurfaceId leaving = {});
+// The same search, telling `observer` (when not null) each surface tested (trace_observer.h).
+Hit intersect(const Scene& scene, const Ray& ray, double t_max, SurfaceId leaving, TraceObserver* observer);
 
 // How close `ray` passes to a place where intersect()'s answer changes: a sphere's
 // silhouette, a billboard's edge, the edge of a texel, or two surfaces at nearly the same
@@ -74,21 +85,31 @@ double decision_margin(const Scene& scene, const Ray& ray);
 // scene's MaxDepth, background (docs/scene-format.md, Conventions: Lighting and shadows;
 // docs/scene-format.md, Conventions: Mirrors). Unclamped.
 Color trace(const Scene& scene, const Ray& ray);
+// The same colour, telling `observer` (when not null) each step (trace_observer.h).
+Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer);
 
 // Display byte for a colour channel: round(clamp(c, 0, 1) * 255).
 std::uint8_t to_byte(double channel);
+
+// The unclamped colour of pixel (col, row) of frame `frame`: the mean of its samples, exactly
+// as render() computes it, telling `observer` (when not null) each step. Like trace(), it sees
+// spheres and billboards only: place impostors first.
+Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int col, int row,
+                   TraceObserver* observer = nullptr);
 
 // Renders one frame: RGBA bytes, alpha 255, rows from the top. Each pixel is the mean of
 // scene.sampling.samples_per_pixel samples placed as kernels/shared/clr_samples.h says for
 // this frame index (one sample: the pixel's centre). Impostors are placed for `camera` first.
 // `between_rows` runs before each row; it throws to abandon the frame (a stop request).
+// With `crop`, only those pixels, into an image of the crop's size (docs/command-line.md, Crop).
 Image render(const Scene& scene, const CameraFrame& camera, int frame = 0,
-             const std::function<void()>& between_rows = {});
+             const std::function<void()>& between_rows = {}, const std::optional<PixelRect>& crop = std::nullopt);
 
-// Renders one frame as render() does, and also its linear colours (Image::linear): per pixel
+// Renders one frame (or its `crop`) as render() does, and also its linear colours (Image::linear): per pixel
 // the mean of its samples' colours as float, unclamped, and the fraction of its samples whose
 // primary ray hits an object (docs/command-line.md, HDR and alpha outputs).
 Image render_linear(const Scene& scene, const CameraFrame& camera, int frame = 0,
-                    const std::function<void()>& between_rows = {});
+                    const std::function<void()>& between_rows = {},
+                    const std::optional<PixelRect>& crop = std::nullopt);
 
 }  // namespace clr::reference

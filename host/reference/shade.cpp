@@ -1,6 +1,7 @@
 // Reference shading: what colour a ray sees (docs/scene-format.md, Conventions: Lighting and
 // shadows; docs/scene-format.md, Conventions: Mirrors).
 #include "reference/geometry.h"
+#include "reference/trace_observer.h"
 
 namespace clr::reference {
 
@@ -10,53 +11,73 @@ namespace {
 
 const Color kBlack{0, 0, 0};
 
+// The colour a ray returns, told to the observer when there is one.
+Color found(TraceObserver* observer, ColourSource source, const Color& colour) {
+    if (observer) observer->colour_found(source, colour);
+    return colour;
+}
+
 // 1 if nothing opaque lies between the point and the sun, else 0. The shadow ray skips the
 // sphere it starts on: it leaves it on the lit (outer) side, so it cannot meet it again.
-double sun_visibility(const Scene& scene, const SurfacePoint& surface, const detail::SunDirection& sun) {
+double sun_visibility(const Scene& scene, const SurfacePoint& surface, const detail::SunDirection& sun, int depth,
+                      TraceObserver* observer) {
     const Ray shadow_ray{surface.point, sun.l};
-    const Hit blocker = intersect(scene, shadow_ray, sun.distance, surface.id);
+    if (observer) observer->ray_cast(RayRole::Shadow, depth, shadow_ray, sun.distance);
+    const Hit blocker = intersect(scene, shadow_ray, sun.distance, surface.id, observer);
     return blocker.kind == HitKind::None ? 1.0 : 0.0;
 }
 
 // ambient * max(0, n.l) * s; the shadow ray is only worth casting when n.l > 0.
-Color lit_sphere_color(const Scene& scene, const Sphere& sphere, const SurfacePoint& surface) {
+Color lit_sphere_color(const Scene& scene, const Sphere& sphere, const SurfacePoint& surface, int depth,
+                       TraceObserver* observer) {
     const auto sun = detail::sun_direction(scene, surface.point);
-    if (!sun.exists) return kBlack;
+    if (!sun.exists) return found(observer, ColourSource::SphereLit, kBlack);
     const double cosine = dot(surface.normal, sun.l);
-    if (cosine <= 0) return kBlack;
-    return sphere.ambient * (cosine * sun_visibility(scene, surface, sun));
+    if (observer) observer->sun_seen(sun, cosine);
+    if (cosine <= 0) return found(observer, ColourSource::SphereLit, kBlack);
+    return found(observer, ColourSource::SphereLit,
+                 sphere.ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
 }
 
-Color billboard_color(const Billboard& billboard, const Hit& hit) {
-    if (!detail::is_textured(billboard)) return billboard.ambient;
+Color billboard_color(const Billboard& billboard, const Hit& hit, TraceObserver* observer) {
+    if (!detail::is_textured(billboard)) return found(observer, ColourSource::BillboardAmbient, billboard.ambient);
     // intersect() only returns opaque texels, so the texel's alpha needs no blending here.
-    return detail::texel_color(*billboard.image, detail::texel_at(*billboard.image, hit.a, hit.b));
+    return found(observer, ColourSource::BillboardTexel,
+                 detail::texel_color(*billboard.image, detail::texel_at(*billboard.image, hit.a, hit.b)));
 }
 
 // The colour of a surface that is not a mirror. Billboards are pictures: never lit.
-Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surface) {
-    if (hit.kind == HitKind::Billboard) return billboard_color(scene.billboards[hit.index], hit);
+Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surface, int depth,
+                    TraceObserver* observer) {
+    if (hit.kind == HitKind::Billboard) return billboard_color(scene.billboards[hit.index], hit, observer);
     const Sphere& sphere = scene.spheres[hit.index];
-    return scene.lit() ? lit_sphere_color(scene, sphere, surface) : sphere.ambient;
+    return scene.lit() ? lit_sphere_color(scene, sphere, surface, depth, observer)
+                       : found(observer, ColourSource::SphereAmbient, sphere.ambient);
 }
 
 }  // namespace
 
 // Mirrors make the path a chain of rays, so a loop over reflections replaces recursion.
-Color trace(const Scene& scene, const Ray& ray) {
+Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
     Ray current = ray;
     SurfaceId leaving;
     for (int reflections = 0;; ++reflections) {
-        const Hit hit = intersect(scene, current, kInfinity, leaving);
-        if (hit.kind == HitKind::None) return scene.background;
+        if (observer)
+            observer->ray_cast(reflections == 0 ? RayRole::Primary : RayRole::Reflected, reflections, current, kInfinity);
+        const Hit hit = intersect(scene, current, kInfinity, leaving, observer);
+        if (hit.kind == HitKind::None) return found(observer, ColourSource::Background, scene.background);
         const SurfacePoint surface = detail::surface_at(scene, current, hit);
-        if (!surface.is_mirror) return surface_color(scene, hit, surface);
-        if (!detail::sees_front(current, surface)) return kBlack;  // the back of a mirror
+        if (observer) observer->surface_reached(hit, surface);
+        if (!surface.is_mirror) return surface_color(scene, hit, surface, reflections, observer);
+        if (!detail::sees_front(current, surface))  // the back of a mirror
+            return found(observer, ColourSource::BackOfMirror, kBlack);
         // MaxDepth reflections are allowed; a ray that needs one more sees the background.
-        if (reflections >= scene.max_depth) return scene.background;
+        if (reflections >= scene.max_depth) return found(observer, ColourSource::DepthExhausted, scene.background);
         current = detail::reflect(current, surface);
         leaving = surface.id;
     }
 }
+
+Color trace(const Scene& scene, const Ray& ray) { return trace(scene, ray, nullptr); }
 
 }  // namespace clr::reference

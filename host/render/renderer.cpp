@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 #include "core/display_bytes.h"
 #include "core/errors.h"
@@ -52,7 +53,9 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
       screen_tiles_(options.screen_tiles),
       band_sizer_(options.band_seconds),
       fixed_band_rows_(options.band_rows),
-      between_bands_(options.between_bands) {
+      between_bands_(options.between_bands),
+      band_done_(options.band_done),
+      crop_(options.crop) {
     // Impostors start placed for the first key, so that the buffers have their frames' sizes.
     if (!scene_.camera_path.empty()) frame_.place_impostors(scene_.camera_path.front());
     compiled_ = compile_scene(frame_, origin_);
@@ -117,14 +120,14 @@ void Renderer::show(const CameraKey& key, const Vec3& origin) {
 Image Renderer::render(const CameraKey& key, int frame, FrameTiming* timing) {
     FrameCamera camera = frame_camera(scene_, key, frame);
     show(key, camera.origin);
-    return render_camera(camera, timing);
+    return render_camera(camera, timing, crop_);
 }
 
 void Renderer::warm_up() {
     const CameraKey& key = scene_.camera_path.front();
     FrameCamera thumbnail = make_frame_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, 64, 36, key.eye);
     show(key, thumbnail.origin);
-    render_camera(thumbnail, nullptr);
+    render_camera(thumbnail, nullptr, std::nullopt);  // the whole thumbnail: a crop is of the frame
 }
 
 void Renderer::recycle(Image&& image) { spare_pixels_ = std::move(image.rgba); }
@@ -147,10 +150,11 @@ std::uint8_t* Renderer::kernel_pixels(Image& image) const {
     return features_.float_output ? reinterpret_cast<std::uint8_t*>(image.linear.data()) : image.rgba.data();
 }
 
-double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, Image& image) {
+double Renderer::render_band(const ClrCamera& camera, const PixelRect& region, int first_row, int rows,
+                             Image& rows_image) {
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();
     std::size_t band_bytes = rows * row_bytes;
-    std::uint8_t* target = kernel_pixels(image) + first_row * row_bytes;
+    std::uint8_t* target = kernel_pixels(rows_image) + (first_row - region.y0) * row_bytes;
     bool in_place = render_in_place_;
     if (in_place)
         pixels_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR | CL_MEM_HOST_READ_ONLY,
@@ -160,18 +164,26 @@ double Renderer::render_band(const ClrCamera& camera, int first_row, int rows, I
     cl::Kernel& kernel = screen_tiles_ ? render_packets_.bind(camera, first_row, rows, scene_args_, pixels_, tile_args_)
                                        : render_.bind(camera, first_row, rows, scene_args_, pixels_);
     // render_packets: one work-item per screen tile that the band's rows touch; render: one
-    // per pixel.
-    cl::NDRange local, global;
+    // per pixel. A crop's columns are a global offset: the kernels read their column from
+    // get_global_id(0), so the full frame's tile grid stays as it is, and columns outside the
+    // crop are not rendered (nor written: render_camera() keeps only the crop's columns).
+    cl::NDRange offset, local, global;
     if (screen_tiles_) {
         std::size_t tile_rows = (first_row + rows - 1) / kClrTileSize - first_row / kClrTileSize + 1;
+        const int first_tile = region.x0 / kClrTileSize;
+        const int end_tile = (region.x1 + kClrTileSize - 1) / kClrTileSize;
+        offset = cl::NDRange(first_tile, 0);
         local = cl::NDRange(kTileGroupWidth, 1);
-        global = cl::NDRange(round_up(tile_args_.tiles_x, kTileGroupWidth), tile_rows);
+        global = cl::NDRange(round_up(end_tile - first_tile, kTileGroupWidth), tile_rows);
     } else {
+        offset = cl::NDRange(region.x0, 0);
         local = cl::NDRange(kGroupWidth, kGroupHeight);
-        global = cl::NDRange(round_up(camera.width, kGroupWidth), round_up(rows, kGroupHeight));
+        global = cl::NDRange(round_up(region.width(), kGroupWidth), round_up(rows, kGroupHeight));
     }
+    // The whole frame keeps the null offset it always had.
+    if (region.x0 == 0) offset = cl::NullRange;
     cl::Event done;
-    device_.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, local, nullptr, &done);
+    device_.queue().enqueueNDRangeKernel(kernel, offset, global, local, nullptr, &done);
     if (in_place) {
         // Mapping makes the kernel's writes visible in the image; the pointer is the image's.
         void* mapped = device_.queue().enqueueMapBuffer(pixels_, CL_TRUE, CL_MAP_READ, 0, band_bytes);
@@ -198,25 +210,56 @@ ScreenTiles Renderer::upload_screen_tiles(const FrameCamera& camera) {
     return tiles;
 }
 
+// Copies columns [x0, x0 + crop.width) of every row of `rows` (as wide as the frame) into `crop`:
+// its display bytes, or in the float output mode its linear values (the bytes follow from those).
+static void keep_columns(const Image& rows, int x0, Image& crop) {
+    const std::size_t crop_values = static_cast<std::size_t>(crop.width) * 4;
+    const std::size_t row_values = static_cast<std::size_t>(rows.width) * 4;
+    for (int row = 0; row < crop.height; ++row) {
+        const std::size_t from = row * row_values + static_cast<std::size_t>(x0) * 4;
+        if (!rows.linear.empty())
+            std::memcpy(crop.linear.data() + row * crop_values, rows.linear.data() + from, crop_values * sizeof(float));
+        else
+            std::memcpy(crop.rgba.data() + row * crop_values, rows.rgba.data() + from, crop_values);
+    }
+}
+
 // Every frame renders in bands of rows (BandSizer) so that between_bands_ runs several times a
 // second, and also when one band's pixel buffer exceeds the device's allocation limit, or its
 // allocation fails: then the limit halves until a band fits. Bands give the same bytes: every
 // pixel's samples depend on the pixel and the frame (clr_samples.h), not on its band.
-Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
+Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing, const std::optional<PixelRect>& crop) {
     const Stopwatch frame_time;
     const ClrCamera camera = view.device();
+    const PixelRect region = crop.value_or(PixelRect{0, camera.width, 0, camera.height});
+    if (!region.inside(camera.width, camera.height))
+        throw std::invalid_argument("crop " + format_pixel_rect(region) + " outside the " +
+                                    std::to_string(camera.width) + "x" + std::to_string(camera.height) + " frame");
+    const bool whole_rows = region.x0 == 0 && region.x1 == camera.width;
+    // The kernels write whole rows of the frame's width: a crop of fewer columns renders its
+    // rows into a frame-wide image first, and keeps its columns from there.
     Image image;
-    image.width = camera.width;
-    image.height = camera.height;
+    image.width = region.width();
+    image.height = region.height();
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
+    std::size_t image_bytes = static_cast<std::size_t>(image.width) * image.height * 4;
     // Every pixel is written below, so recycled storage of the right size needs no clearing;
     // new storage costs a page fault and a zero fill per page (docs/benchmarks.md).
-    if (spare_pixels_.size() == row_bytes * camera.height) image.rgba.swap(spare_pixels_);
+    if (spare_pixels_.size() == image_bytes) image.rgba.swap(spare_pixels_);
     spare_pixels_.clear();
-    image.rgba.resize(row_bytes * camera.height);
+    image.rgba.resize(image_bytes);
     if (features_.float_output) {
-        image.linear.resize(static_cast<std::size_t>(camera.width) * camera.height * 4);
+        image.linear.resize(static_cast<std::size_t>(image.width) * image.height * 4);
         row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();  // the kernel's rows
+    }
+    Image rows_image;
+    if (!whole_rows) {
+        rows_image.width = camera.width;
+        rows_image.height = region.height();
+        if (features_.float_output)
+            rows_image.linear.resize(static_cast<std::size_t>(camera.width) * region.height() * 4);
+        else
+            rows_image.rgba.resize(row_bytes * region.height());
     }
     if (row_bytes > max_buffer_bytes_)
         throw DeviceError("a row of " + std::to_string(camera.width) + " pixels needs " + std::to_string(row_bytes) +
@@ -234,7 +277,8 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
         work = row_work(objects, camera.width, camera.height);
     }
     band_sizer_.start_frame(std::move(work), camera.samples, camera.width);
-    double kernel_ms = render_bands(camera, image);
+    double kernel_ms = render_bands(camera, region, whole_rows ? image : rows_image);
+    if (!whole_rows) keep_columns(rows_image, region.x0, image);
     if (features_.float_output) fill_display_bytes(image);  // the kernel wrote floats only
     if (timing) {
         timing->kernel_ms = kernel_ms;
@@ -243,18 +287,19 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing) {
     return image;
 }
 
-double Renderer::render_bands(const ClrCamera& camera, Image& image) {
+double Renderer::render_bands(const ClrCamera& camera, const PixelRect& region, Image& rows_image) {
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();
-    int limit = static_cast<int>(std::min<std::size_t>(camera.height, max_buffer_bytes_ / row_bytes));
+    int limit = static_cast<int>(std::min<std::size_t>(region.height(), max_buffer_bytes_ / row_bytes));
     double kernel_ms = 0;
     bands_ = 0;
-    for (int first_row = 0; first_row < camera.height;) {
+    for (int first_row = region.y0; first_row < region.y1;) {
         if (between_bands_) between_bands_();
-        int rows = fixed_band_rows_ > 0 ? std::min({fixed_band_rows_, limit, camera.height - first_row})
-                                        : band_sizer_.next_rows(first_row, limit);
+        const int rows_left = region.y1 - first_row;
+        int rows = fixed_band_rows_ > 0 ? std::min({fixed_band_rows_, limit, rows_left})
+                                        : band_sizer_.next_rows(first_row, std::min(limit, rows_left));
         const Stopwatch band_time;
         try {
-            kernel_ms += render_band(camera, first_row, rows, image);
+            kernel_ms += render_band(camera, region, first_row, rows, rows_image);
         } catch (const cl::Error& error) {
             if (!is_out_of_memory(error) || rows == 1)
                 throw DeviceError(describe_cl_error(error, "rendering a frame on '" + device_.entry().device_name + "'"));
@@ -264,6 +309,7 @@ double Renderer::render_bands(const ClrCamera& camera, Image& image) {
         band_sizer_.band_done(first_row, rows, band_time.elapsed_seconds());
         first_row += rows;
         ++bands_;
+        if (band_done_) band_done_(static_cast<double>(first_row - region.y0) / region.height());
     }
     return kernel_ms;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 #include <string>
 
+#include "core/pixel_rect.h"
 #include "device/device_context.h"
 #include "render/band_sizer.h"
 #include "render/bvh.h"
@@ -43,6 +44,12 @@ struct RendererOptions {
     // compiled with the float output mode (FeatureSet::float_output); rgba then holds the
     // same bytes as without.
     bool float_output = false;
+    // Runs after each band with the fraction (0..1] of the frame's rows rendered (progress).
+    std::function<void(double)> band_done;
+    // Renders only these pixels of every frame, into an image of the rectangle's size; each
+    // pixel is byte for byte the full frame's (docs/command-line.md, Crop). Must lie inside
+    // the frame (std::invalid_argument otherwise).
+    std::optional<PixelRect> crop;
 };
 
 class Renderer {
@@ -79,13 +86,15 @@ private:
     // Moves the device geometry to `origin` (the frame camera's) and places the impostors for
     // `key`, uploading what changed.
     void show(const CameraKey& key, const Vec3& origin);
-    // Renders the frame seen by `camera`, the geometry already shown for it.
-    Image render_camera(const FrameCamera& camera, FrameTiming* timing);
-    // Renders rows [first_row, first_row + rows) into `image`; returns the kernel time in ms.
-    double render_band(const ClrCamera& camera, int first_row, int rows, Image& image);
-    // Renders every row of `image` in bands (band_sizer_ started for this frame); returns the
-    // summed kernel time in ms.
-    double render_bands(const ClrCamera& camera, Image& image);
+    // Renders the frame seen by `camera`, or its `crop`, the geometry already shown for it.
+    Image render_camera(const FrameCamera& camera, FrameTiming* timing, const std::optional<PixelRect>& crop);
+    // Renders the columns `region` names of rows [first_row, first_row + rows) of the frame into
+    // `rows_image`, whose row 0 is the frame's row region.y0 and which is as wide as the frame;
+    // returns the kernel time in ms.
+    double render_band(const ClrCamera& camera, const PixelRect& region, int first_row, int rows, Image& rows_image);
+    // Renders `region` of the frame in bands (band_sizer_ started for this frame) into
+    // `rows_image` (see render_band); returns the summed kernel time in ms.
+    double render_bands(const ClrCamera& camera, const PixelRect& region, Image& rows_image);
     void reserve_pixels(std::size_t bytes);
     // Bytes the kernel writes per pixel, and where it writes them in `image`.
     std::size_t pixel_bytes() const { return features_.float_output ? 4 * sizeof(float) : 4; }
@@ -116,6 +125,8 @@ private:
     BandSizer band_sizer_;
     int fixed_band_rows_ = 0;
     std::function<void()> between_bands_;
+    std::function<void(double)> band_done_;
+    std::optional<PixelRect> crop_;
     int bands_ = 1;
 };
 

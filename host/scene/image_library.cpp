@@ -7,6 +7,8 @@
 #include <system_error>
 #include <thread>
 
+#include <sys/stat.h>
+
 #include "core/interruption.h"
 #include "scene/bounded_file.h"
 
@@ -58,21 +60,33 @@ std::optional<ImageHeader> header_of_file(const std::string& path) {
     }
 }
 
+// Which file `path` names: its device and inode, so that two names of one file are read
+// once; the name itself when there is no such file (reading it then fails, under that name).
+std::string file_identity(const std::string& path) {
+    struct stat status {};
+    if (::stat(path.c_str(), &status) != 0) return "name " + path;
+    return "file " + std::to_string(status.st_dev) + ":" + std::to_string(status.st_ino);
+}
+
 }  // namespace
 
-ImageLibrary::ImageLibrary(const std::string& scene_path, bool placeholders, std::uint64_t memory_limit)
+ImageLibrary::ImageLibrary(const std::string& scene_path, bool placeholders, std::uint64_t memory_limit, bool decode)
     : scene_folder_(fs::path(scene_path).parent_path()),
       placeholders_(placeholders),
+      decode_(decode),
       cache_(ImageCache::from_environment()),
       budget_(memory_limit) {}
 
 void ImageLibrary::read_all(const std::vector<Node>& filenames) {
-    std::vector<std::string> paths;
-    std::vector<const Node*> named_by;  // the first value naming each path, for messages
+    std::vector<std::string> paths, identities;
+    std::vector<const Node*> named_by;  // the first value naming each file, for messages
     for (const Node& filename : filenames) {
         std::string path = path_of(filename);
-        if (entries_.try_emplace(path).second) {
+        std::string identity = file_identity(path);
+        if (entries_.try_emplace(identity).second) {
+            order_.push_back(identity);
             paths.push_back(std::move(path));
+            identities.push_back(std::move(identity));
             named_by.push_back(&filename);
         }
     }
@@ -81,16 +95,19 @@ void ImageLibrary::read_all(const std::vector<Node>& filenames) {
     for (std::size_t i = 0; i < paths.size(); ++i) reserve_memory(headers[i], *named_by[i]);
 
     std::vector<Entry> results(paths.size());
-    for_each_in_parallel(paths.size(), [&](std::size_t i) { results[i] = read(paths[i]); });
-    for (std::size_t i = 0; i < paths.size(); ++i) entries_[paths[i]] = std::move(results[i]);
+    for_each_in_parallel(paths.size(), [&](std::size_t i) { results[i] = read(paths[i], headers[i]); });
+    for (std::size_t i = 0; i < paths.size(); ++i) entries_[identities[i]] = std::move(results[i]);
 }
 
 std::shared_ptr<const Image> ImageLibrary::image_for(const Node& filename) {
     const std::string path = path_of(filename);
-    auto [entry, is_new] = entries_.try_emplace(path);
+    const std::string identity = file_identity(path);
+    auto [entry, is_new] = entries_.try_emplace(identity);
     if (is_new) {
-        reserve_memory(header_of_file(path), filename);
-        entry->second = read(path);
+        order_.push_back(identity);
+        const std::optional<ImageHeader> header = header_of_file(path);
+        reserve_memory(header, filename);
+        entry->second = read(path, header);
     }
     const Entry& image = entry->second;
     if (!image.failure.empty()) {
@@ -128,13 +145,41 @@ void ImageLibrary::reserve_memory(const std::optional<ImageHeader>& header, cons
                   " for a scene's decoded images (set " + kImageMemoryVariable + " to raise it)");
 }
 
-ImageLibrary::Entry ImageLibrary::read(const std::string& path) const {
+ImageLibrary::Entry ImageLibrary::read(const std::string& path, const std::optional<ImageHeader>& header) const {
+    if (!decode_) return read_header_only(path, header);
     try {
-        return {load_image_through_cache(path, cache_), ""};
+        return {load_image_through_cache(path, cache_), "", path, header};
     } catch (const ImageError& error) {
         const std::string reason = *error.what() ? error.what() : "unknown error";
-        return {placeholders_ ? make_placeholder_image(path) : nullptr, reason};
+        return {placeholders_ ? make_placeholder_image(path) : nullptr, reason, path, header};
     }
+}
+
+// A readable header passes. Without one, the image is decoded for the reason it fails: the
+// decoder stops at what the header reader could not read, so that costs little.
+ImageLibrary::Entry ImageLibrary::read_header_only(const std::string& path, const std::optional<ImageHeader>& header) const {
+    if (header) return {nullptr, "", path, header};
+    try {
+        load_image(path);
+        return {nullptr, "", path, header};
+    } catch (const ImageError& error) {
+        const std::string reason = *error.what() ? error.what() : "unknown error";
+        return {placeholders_ ? make_placeholder_image(path) : nullptr, reason, path, header};
+    }
+}
+
+std::vector<ImageFileInfo> ImageLibrary::files() const {
+    std::vector<ImageFileInfo> files;
+    for (const std::string& identity : order_) {
+        const Entry& entry = entries_.at(identity);
+        if (entry.header) {
+            files.push_back({entry.path, entry.header->format, entry.header->width, entry.header->height,
+                             entry.header->alpha_channel});
+        } else if (entry.image) {  // a placeholder
+            files.push_back({entry.path, "placeholder", entry.image->width, entry.image->height, false});
+        }
+    }
+    return files;
 }
 
 }  // namespace clr

@@ -264,6 +264,28 @@ ImageHeader header_of_size(long long width, long long height, bool sixteen_bit, 
     return {width, height, sixteen_bit, pixels * peak_bytes_per_pixel};
 }
 
+std::uint32_t big_endian_32(const Bytes& bytes, std::size_t at) {
+    return (std::uint32_t(bytes[at]) << 24) | (std::uint32_t(bytes[at + 1]) << 16) | (std::uint32_t(bytes[at + 2]) << 8) |
+           bytes[at + 3];
+}
+
+// Whether a PNG's texels may have alpha below 255, from its chunks before the pixel data: a
+// colour type with alpha (4 grey + alpha, 6 RGBA) in IHDR, or a tRNS chunk (a transparent
+// colour or palette alphas). Without either, every texel decodes opaque.
+bool png_has_alpha_channel(const Bytes& bytes) {
+    constexpr std::size_t kSignature = 8, kColourTypeAt = 25;
+    if (bytes.size() <= kColourTypeAt) return false;
+    if (bytes[kColourTypeAt] == 4 || bytes[kColourTypeAt] == 6) return true;
+    for (std::size_t at = kSignature; at + 8 <= bytes.size();) {
+        const std::uint64_t length = big_endian_32(bytes, at);
+        const std::string type(bytes.begin() + at + 4, bytes.begin() + at + 8);
+        if (type == "tRNS") return true;
+        if (type == "IDAT" || type == "IEND") return false;
+        at += 12 + length;  // length, type, data, CRC; 64-bit, so it cannot wrap
+    }
+    return false;
+}
+
 std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) return std::nullopt;
     const int length = static_cast<int>(bytes.size());
@@ -274,7 +296,11 @@ std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
     // stb_image holds the inflated samples and its output at once (two RGBA buffers, of 16-bit
     // samples for a 16-bit PNG), then its output and our 8-bit copy: 8 or 16 bytes a pixel at
     // the peak, as measured (docs/benchmarks.md, Figures behind design choices).
-    return header_of_size(width, height, sixteen_bit, sixteen_bit ? 4 * kRgba : 2 * kRgba);
+    ImageHeader header = header_of_size(width, height, sixteen_bit, sixteen_bit ? 4 * kRgba : 2 * kRgba);
+    const bool png = detect_format(bytes) == FileFormat::Png;
+    header.format = png ? "PNG" : "JPEG";
+    header.alpha_channel = png && png_has_alpha_channel(bytes);
+    return header;
 }
 
 std::optional<ImageHeader> read_ppm_header_only(const Bytes& bytes) {
@@ -283,7 +309,9 @@ std::optional<ImageHeader> read_ppm_header_only(const Bytes& bytes) {
         const PpmHeader header = read_ppm_header(numbers);
         // A raster larger than the file is refused as truncated when decoded.
         if (header.sample_count() > bytes.size() - numbers.position()) return std::nullopt;
-        return header_of_size(header.width, header.height, header.maxval > 255, kRgba);  // decoded in place
+        ImageHeader image_header = header_of_size(header.width, header.height, header.maxval > 255, kRgba);  // decoded in place
+        image_header.format = "PPM";
+        return image_header;
     } catch (const ImageError&) {
         return std::nullopt;
     }

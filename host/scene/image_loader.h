@@ -43,6 +43,8 @@ struct ImageHeader {
     long long width = 0, height = 0;
     bool sixteen_bit = false;
     std::uint64_t decoding_bytes = 0;
+    std::string format = {};     // "PNG", "JPEG" or "PPM"
+    bool alpha_channel = false;  // a PNG with alpha or a tRNS chunk: texels may be transparent
 };
 
 // The header of the image in `bytes`, read without decoding anything; nullopt when the

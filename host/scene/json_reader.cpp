@@ -6,6 +6,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/edit_distance.h"
 #include "core/errors.h"
 #include "core/printable_text.h"
 #include "scene/text_encoding.h"
@@ -19,7 +20,18 @@ namespace clr {
 // The file's own name comes from the command line and may hold a newline too.
 void Diagnostics::fail(const std::string& location, const std::string& detail) const {
     throw SceneError(printable(file), printable(shortened(location, kLongestLocation)),
-                     printable(shortened(detail, kLongestDetail)));
+                     printable(shortened(detail + origin_of(location), kLongestDetail)));
+}
+
+std::string Diagnostics::origin_of(const std::string& location) const {
+    // The last -D that set this value, or a value that holds it, set what is read now.
+    for (auto set = overridden.rbegin(); set != overridden.rend(); ++set) {
+        const std::string& pointer = set->first;
+        const bool inside = location.compare(0, pointer.size(), pointer) == 0 &&
+                            (location.size() == pointer.size() || location[pointer.size()] == '/');
+        if (inside) return " (set on the command line: -D " + set->second + ")";
+    }
+    return "";
 }
 
 void Diagnostics::warn(const std::string& location, const std::string& message) const {
@@ -28,7 +40,7 @@ void Diagnostics::warn(const std::string& location, const std::string& message) 
         ++unshown_warnings;
         return;
     }
-    const std::string text = printable(shortened(message, kLongestDetail));
+    const std::string text = printable(shortened(message + origin_of(location), kLongestDetail));
     warnings->push_back(location.empty() ? text : printable(shortened(location, kLongestLocation)) + ": " + text);
 }
 
@@ -37,6 +49,11 @@ void Diagnostics::summarise_warnings() const {
     warnings->push_back(std::to_string(unshown_warnings) + " more warnings not shown (only the first " +
                         std::to_string(kMostWarnings) + " are)");
     unshown_warnings = 0;
+}
+
+std::string lowercase_ascii(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
 }
 
 std::string json_pointer_token(const std::string& key) {
@@ -307,31 +324,6 @@ void Node::fail_type(const std::string& expected) const {
 // ---------------------------------------------------------------------------------------
 // ObjectReader
 
-namespace {
-
-std::string lowercase(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
-// Levenshtein distance: the fewest single-character insertions, deletions and
-// substitutions that turn one string into the other.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        current[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
-        }
-        std::swap(previous, current);
-    }
-    return previous[b.size()];
-}
-
-}  // namespace
-
 ObjectReader::ObjectReader(const Node& node, std::string what) : node_(node), what_(std::move(what)) {
     if (!node_.json().is_object()) node_.fail(node_.label() + " must be a JSON object { ... }, got " + node_.shown());
 }
@@ -347,7 +339,7 @@ std::optional<Node> ObjectReader::optional(const std::string& key) {
 }
 
 Node ObjectReader::required(const std::string& key, const std::string& hint) {
-    if (!has(key)) node_.fail(what_ + " is missing required key '" + key + "'" + hint);
+    if (!has(key)) node_.fail(what_ + " is missing required key '" + key + "'" + hint + mistake_note(key));
     return node_.member(key);
 }
 
@@ -364,22 +356,24 @@ void ObjectReader::warn_about_unknown_keys() const {
 }
 
 std::string ObjectReader::suggestion_for(const std::string& unknown_key) const {
-    // Close enough to be a typo: one edit for short keys, two for longer ones.
-    const std::size_t tolerance = unknown_key.size() <= 4 ? 1 : 2;
-    std::string best;
-    std::size_t best_distance = tolerance + 1;
-    for (const std::string& known : known_keys_) {
-        // The distance is at least the difference in length: a long key (a file may hold
-        // thousands of them, each megabytes long) is then never compared letter by letter.
-        const std::size_t shorter = std::min(unknown_key.size(), known.size());
-        if (std::max(unknown_key.size(), known.size()) - shorter > tolerance) continue;
-        const std::size_t distance = edit_distance(lowercase(unknown_key), lowercase(known));
-        if (distance < best_distance) {
-            best = known;
-            best_distance = distance;
-        }
-    }
+    if (const auto hint = hints_.find(lowercase_ascii(unknown_key)); hint != hints_.end()) return "; " + hint->second.text;
+    const std::string best = closest_spelling(unknown_key, {known_keys_.begin(), known_keys_.end()});
     return best.empty() ? "" : "; did you mean '" + best + "'?";
+}
+
+void ObjectReader::hint(const std::vector<std::string>& likely_mistakes, const std::string& right_key,
+                        const std::string& hint) {
+    for (const std::string& key : likely_mistakes) hints_[lowercase_ascii(key)] = {right_key, hint};
+}
+
+std::string ObjectReader::mistake_note(const std::string& right_key) const {
+    if (hints_.empty()) return "";
+    for (const auto& member : node_.json().items()) {
+        const auto hint = hints_.find(lowercase_ascii(member.key()));
+        if (hint != hints_.end() && hint->second.right_key == right_key && !known_keys_.count(member.key()))
+            return " (it has '" + member.key() + "': " + hint->second.text + ")";
+    }
+    return "";
 }
 
 }  // namespace clr

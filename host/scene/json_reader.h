@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
+#include <utility>
 #include <optional>
 #include <set>
 #include <string>
@@ -27,10 +29,15 @@ struct Diagnostics {
     std::string file;
     std::vector<std::string>* warnings = nullptr;
     mutable std::size_t unshown_warnings = 0;
+    // Values set on the command line (-D): the JSON pointer of each and the argument that
+    // set it. An error or warning about a value at or under one says so.
+    std::vector<std::pair<std::string, std::string>> overridden = {};
 
     [[noreturn]] void fail(const std::string& location, const std::string& detail) const;
     void warn(const std::string& location, const std::string& message) const;
     void summarise_warnings() const;
+    // " (set on the command line: -D ARG)" when a -D set the value at `location`, else "".
+    std::string origin_of(const std::string& location) const;
 };
 
 // Parses UTF-8 JSON text (a leading BOM, CRLF line endings and // or /* */ comments are
@@ -91,16 +98,34 @@ public:
     Node required(const std::string& key, const std::string& hint = "");
     // A key this reader recognises but does not use: if present, warns with `message`.
     void note_ignored(const std::string& key, const std::string& message);
-    // One warning for each member not asked for, suggesting a known key of similar spelling.
+    // One warning for each member not asked for, suggesting a known key of similar spelling,
+    // or the hint given for it.
     void warn_about_unknown_keys() const;
+    // For keys people write by mistake where the right key is spelt too differently for a
+    // suggestion ("fov" for "fov_angle"), or belongs elsewhere ("spp" under "clrender"): an
+    // unknown key among `likely_mistakes` (ignoring case) is warned about with `hint`, and
+    // an error that `right_key` is missing names it. Give hints before reading keys.
+    void hint(const std::vector<std::string>& likely_mistakes, const std::string& right_key, const std::string& hint);
+    // " (it has 'fov': did you mean 'fov_angle'?)" when the object holds a likely mistake for
+    // `right_key`, else "": for errors about a missing key.
+    std::string mistake_note(const std::string& right_key) const;
 
 private:
+    struct Hint {
+        std::string right_key;
+        std::string text;
+    };
+
     std::string suggestion_for(const std::string& unknown_key) const;
 
     Node node_;
     std::string what_;
     std::set<std::string> known_keys_;
+    std::map<std::string, Hint> hints_;  // by the mistaken key in lower case
 };
+
+// `text` with ASCII letters in lower case.
+std::string lowercase_ascii(std::string text);
 
 // A key as a JSON pointer reference token ("~" -> "~0", "/" -> "~1", RFC 6901).
 std::string json_pointer_token(const std::string& key);

@@ -82,6 +82,14 @@ struct SamplingSettings {
     unsigned seed = 0;          // varies the sample pattern; with the frame index it fixes it
 };
 
+// One image file a scene shows, as its header describes it (scene/image_library.h).
+struct ImageFileInfo {
+    std::string path;
+    std::string format;  // "PNG", "JPEG", "PPM", or "placeholder" (--placeholders)
+    long long width = 0, height = 0;
+    bool alpha_channel = false;  // texels may be transparent: only decoding tells
+};
+
 struct Scene {
     std::string path;  // the scene file, for messages and default output names
     std::string name;  // file name without folder and extension
@@ -105,6 +113,7 @@ struct Scene {
     std::vector<Impostor> impostors;  // "clrender"/"impostors"; shown after the billboards
 
     std::vector<std::string> warnings;  // unknown keys and similar, one line each
+    std::vector<ImageFileInfo> image_files;  // each distinct image file shown, once
 
     // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (docs/scene-format.md,
     // Conventions: Lighting and shadows).

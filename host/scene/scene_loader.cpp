@@ -16,6 +16,8 @@
 #include "scene/image_budget.h"
 #include "scene/image_library.h"
 #include "scene/json_reader.h"
+#include "scene/key_hints.h"
+#include "scene/scene_overrides.h"
 #include "core/printable_text.h"
 #include "scene/value_ranges.h"
 
@@ -99,9 +101,11 @@ void check_camera_key(const Scene& scene, std::size_t key, const std::string& ke
 // Returns the location of each camera key, for messages about the frames between keys.
 std::vector<std::string> read_camera(ObjectReader& file, Scene& scene, const Diagnostics& diagnostics) {
     const std::optional<PathPoints> eyes = read_path_points(file, "eye", "eyeLocations");
-    if (!eyes) file.node().fail("scene needs 'eye' (a camera position) or 'eyeLocations' (a camera path)");
+    if (!eyes)
+        file.node().fail("scene needs 'eye' (a camera position) or 'eyeLocations' (a camera path)" + file.mistake_note("eye"));
     const std::optional<PathPoints> lookats = read_path_points(file, "lookat", "lookatLocations");
-    if (!lookats) file.node().fail("scene needs 'lookat' (or 'lookatLocations', one per eye position)");
+    if (!lookats)
+        file.node().fail("scene needs 'lookat' (or 'lookatLocations', one per eye position)" + file.mistake_note("lookat"));
 
     check_lookat_count(*eyes, *lookats, diagnostics);
     const std::size_t key_count = eyes->points.size();
@@ -225,6 +229,7 @@ void check_type(ObjectReader& fields, const std::vector<std::string>& accepted, 
 
 Sphere read_sphere(const Node& node) {
     ObjectReader fields(node, "sphere");
+    hint_sphere_keys(fields);
     check_type(fields, {"sphere"}, "\"sphere\"");
     Sphere sphere;
     sphere.center = read_position(fields.required("center"));
@@ -261,6 +266,7 @@ void check_billboard_corners(const Billboard& billboard, const Node& node) {
 // is for the course's top-level "mirror" key, whose billboard is a mirror without saying so.
 std::pair<Billboard, std::optional<Node>> read_billboard(const Node& node, bool always_mirror) {
     ObjectReader fields(node, "billboard");
+    hint_billboard_keys(fields);
     check_type(fields, {"billboard", "billboards"}, "\"billboard\" (or \"billboards\")");
     Billboard billboard;
     billboard.upper_left = read_position(fields.required("UpperLeft"));
@@ -279,7 +285,8 @@ std::pair<Billboard, std::optional<Node>> read_billboard(const Node& node, bool 
     const std::optional<Node> filename = fields.optional("filename");
     if (filename && filename->string().empty()) filename->fail("filename must not be empty");
     if (!billboard.is_mirror && !filename && !billboard.has_ambient)
-        node.fail("billboard needs 'filename' (an image) or 'ambient' (a flat colour), unless IsMirror is 1");
+        node.fail("billboard needs 'filename' (an image) or 'ambient' (a flat colour), unless IsMirror is 1" +
+                  fields.mistake_note("filename") + fields.mistake_note("ambient"));
     check_billboard_corners(billboard, node);
     fields.warn_about_unknown_keys();
     // A mirror shows what it reflects, never its image (docs/scene-format.md, Conventions:
@@ -317,14 +324,15 @@ void read_objects(ObjectReader& file, Scene& scene, PendingBillboardImages& pend
 // --------------------------------------------------------------------------------------
 // Images
 
-void attach_images(const Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
+void attach_images(Scene& scene, const std::vector<PendingImage>& pending_images, const LoadOptions& options) {
     const std::uint64_t memory_limit = options.image_memory_limit ? *options.image_memory_limit
                                                                   : image_memory_limit_from_environment();
-    ImageLibrary library(scene.path, options.placeholder_images, memory_limit);
+    ImageLibrary library(scene.path, options.placeholder_images, memory_limit, options.decode_images);
     std::vector<Node> filenames;
     for (const PendingImage& pending : pending_images) filenames.push_back(pending.filename);
     library.read_all(filenames);
     for (const PendingImage& pending : pending_images) *pending.destination = library.image_for(pending.filename);
+    scene.image_files = library.files();
 }
 
 // --------------------------------------------------------------------------------------
@@ -403,6 +411,7 @@ void read_impostor_views(ObjectReader& fields, ImpostorViews& views) {
 
 Impostor read_impostor(const Node& node, ImpostorViews& views) {
     ObjectReader fields(node, "impostor");
+    hint_impostor_keys(fields);
     Impostor impostor;
     impostor.center = read_position(fields.required("center"));
     impostor.width = read_length(fields.required("width"));
@@ -412,7 +421,8 @@ Impostor read_impostor(const Node& node, ImpostorViews& views) {
     if (ambient) impostor.ambient = ambient->color();
     read_impostor_views(fields, views);
     if (views.own.back().views.empty() && views.set_of.back().empty() && !ambient)
-        node.fail("impostor needs 'views' (pictures), 'filename' (one picture) or 'ambient' (a flat colour)");
+        node.fail("impostor needs 'views' (pictures), 'filename' (one picture) or 'ambient' (a flat colour)" +
+                  fields.mistake_note("filename") + fields.mistake_note("ambient"));
     fields.warn_about_unknown_keys();
     return impostor;
 }
@@ -489,6 +499,7 @@ void read_extensions(ObjectReader& file, Scene& scene, ImpostorViews& impostor_v
     std::optional<Node> node = file.optional("clrender");
     if (!node) return;
     ObjectReader extensions(*node, "clrender settings");
+    hint_extension_keys(extensions);
     AnimationSettings& animation = scene.animation;
     if (auto fps = extensions.optional("fps")) {
         animation.fps = fps->number();
@@ -551,10 +562,20 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     Scene scene;
     scene.path = path;
     scene.name = fs::path(path).stem().string();
-    const Diagnostics diagnostics{path, &scene.warnings};
-    const Json document = parse_json_text(text, diagnostics);
+    Diagnostics diagnostics{path, &scene.warnings};
+    Json document = parse_json_text(text, diagnostics);
+    // -D values replace the file's before anything is read, so that they are checked as the
+    // file's own are. A document that is no object fails below, as it does without them.
+    if (document.is_object()) {
+        try {
+            diagnostics.overridden = apply_scene_overrides(document, options.overrides);
+        } catch (const UsageError& error) {
+            throw UsageError(printable(path) + ": " + error.what());
+        }
+    }
 
     ObjectReader file(Node(document, "", "scene", diagnostics), "scene");
+    hint_scene_keys(file);
     const std::vector<std::string> camera_key_locations = read_camera(file, scene, diagnostics);
     read_image_size(file, options, scene);
     check_pixel_span(file, scene);
@@ -571,6 +592,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
             throw SceneError(printable(path), "", "--spp must be from 1 to " + std::to_string(kMaxSamplesPerPixel));
         scene.sampling.samples_per_pixel = *options.samples_override;
     }
+    if (options.seed_override) scene.sampling.seed = *options.seed_override;
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.

@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/limits.h"
 #include "scene/scene.h"
+#include "scene/scene_overrides.h"
 
 namespace clr {
 
@@ -25,6 +27,14 @@ struct LoadOptions {
     std::optional<int> height_override;
     // Samples per pixel given on the command line (--spp); replaces the scene's.
     std::optional<int> samples_override;
+    // The sample pattern's seed given on the command line (--seed); replaces clrender.seed.
+    std::optional<unsigned> seed_override;
+    // Scene values given on the command line (-D), set in order before the scene is read;
+    // --size, --spp and --seed replace what they set.
+    std::vector<SceneOverride> overrides;
+    // false (--check): images are checked from their headers only, not decoded; the scene's
+    // image pointers stay null (placeholders aside) and Scene::image_files describes them.
+    bool decode_images = true;
     // Most bytes all the scene's images may take while they are decoded (scene/image_budget.h);
     // unset: CLRENDER_IMAGE_MEMORY_MIB, else kDefaultImageMemoryBytes.
     std::optional<std::uint64_t> image_memory_limit;

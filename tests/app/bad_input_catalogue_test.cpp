@@ -351,8 +351,6 @@ std::vector<BadInput> catalogue() {
          {"unknown OpenCL device '42'"}, "CLRENDER_DEVICE=42"},
 
         // --- Outputs
-        {"OutputInAMissingFolder", {{"scene.json", scene_with("")}}, {}, "scene.json -o missing/out.png -q", 4,
-         {"missing/out.png: cannot create a file in its folder: No such file or directory"}},
         {"OutputUnderAFile", {{"scene.json", scene_with("")}}, {}, "scene.json -o scene.json/out.png -q", 4,
          {"scene.json/out.png: cannot create a file in its folder: Not a directory"}},
         {"OutputIsAFolder", {{"scene.json", scene_with("")}}, {"out.png"}, "scene.json -o out.png -q", 4,
@@ -511,6 +509,80 @@ std::vector<BadInput> catalogue() {
         {"KernelIncludeOfNoFile", kernels_with_broken("intersect.cl", "\n#include \"common/nothing.cl\"\n"),
          kernel_folders(), "scene.json -q --kernel-dir kd", 3,
          {"kernels/intersect.cl:", "#include \"common/nothing.cl\" names no kernel source", "kd/common/nothing.cl"}},
+        // --- Outputs: missing folders are made only for a run that passes every check (none
+        // for a refused one), never through a file; "-" is standard output for --stats only
+        {"OutputFolderThroughAFile", {{"scene.json", scene_with("")}, {"a.png", "not a folder"}}, {},
+         "scene.json -q -o a.png/frames/x.png", 4,
+         {"a.png/frames/x.png: cannot create the folder 'a.png/frames': 'a.png' is not a folder"}},
+        {"NewOutputFolderWithAnUnknownDevice", {{"scene.json", scene_with("")}}, {},
+         "scene.json -q -o new/out.png --stats new/stats/run.json -d no-such-device", 3,
+         {"unknown OpenCL device 'no-such-device'"}},
+        {"NewFramesFolderWithAFrameOutOfRange", {{"path.json", animation_scene()}}, {},
+         "path.json -q --frames 99 -o 'frames/f_%04d.png'", 1, {"frame 99 is out of range"}},
+        {"ImageToStandardOutput", {{"scene.json", scene_with("")}}, {}, "scene.json -o -", 1,
+         {"-o -: clrender writes images and videos only to files", "./- for a file named '-'"}},
+        {"VideoToStandardOutput", {{"path.json", animation_scene()}}, {}, "path.json --video -", 1,
+         {"--video -: clrender writes images and videos only to files"}},
+        {"ResumeWithoutFramesToLookFor", {{"path.json", animation_scene()}}, {}, "path.json --resume", 1,
+         {"--resume needs -o with a frame pattern (or --frames without -o and --video)"}},
+        // --- The pixel explainer (--explain-pixel): a pixel outside the image, coordinates that
+        // are not X,Y, more than one frame, or an output file named with it (it writes none)
+        {"ExplainPixelOutsideTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json --reference --explain-pixel 8,0", 1,
+         {"--explain-pixel 8,0 is outside the 8x6 image (X from 0 to 7, Y from 0 to 5)"}},
+        {"ExplainPixelRowOutsideTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,6", 1,
+         {"--explain-pixel 0,6 is outside the 8x6 image"}},
+        {"ExplainPixelWithoutTheRow", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 3", 1,
+         {"--explain-pixel: expected X,Y with non-negative integers (column,row), got '3'"}, "", true},
+        {"ExplainPixelNegative", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel=-1,2", 1,
+         {"expected X,Y with non-negative integers (column,row), got '-1,2'"}, "", true},
+        {"ExplainPixelEmpty", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel ''", 1,
+         {"expected X,Y with non-negative integers (column,row), got ''"}, "", true},
+        {"ExplainPixelOfTwoFrames", {{"path.json", animation_scene()}}, {}, "path.json --explain-pixel 0,0 --frames 0-1", 1,
+         {"--explain-pixel explains one frame; --frames '0-1' names 2"}},
+        {"ExplainPixelWithAnOutput", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,0 -o x.png", 1,
+         {"--output excludes --explain-pixel"}, "", true},
+        // A device failure comes after the reference's part is computed: still only the error
+        // line, no half explanation before it.
+        {"ExplainPixelOnAnUnknownDevice", {{"scene.json", scene_with("")}}, {},
+         "scene.json --explain-pixel 0,0 -d nosuchdevice", 3, {"unknown OpenCL device 'nosuchdevice'"}},
+        // --- Progress and control: --progress, -t/--threads and --crop take only what they
+        // document; a crop must lie inside the image (after --size)
+        {"ProgressStyleUnknown", {{"scene.json", scene_with("")}}, {}, "scene.json --progress xml", 1,
+         {"--progress: xml not in {bar,none,json}"}, "", true},
+        {"ThreadsZero", {{"scene.json", scene_with("")}}, {}, "scene.json -t 0", 1, {"--threads: Value 0 not in range"},
+         "", true},
+        {"ThreadsNotANumber", {{"scene.json", scene_with("")}}, {}, "scene.json --threads many", 1,
+         {"--threads", "many"}, "", true},
+        {"CropEmptyRectangle", {{"scene.json", scene_with("")}}, {}, "scene.json --crop 4,4,0,6", 1,
+         {"--crop: expected x0,x1,y0,y1 with 0 <= x0 < x1 and 0 <= y0 < y1, got '4,4,0,6'"}, "", true},
+        {"CropThreeNumbers", {{"scene.json", scene_with("")}}, {}, "scene.json --crop 1,2,3", 1,
+         {"--crop: expected x0,x1,y0,y1", "got '1,2,3'"}, "", true},
+        {"CropNegative", {{"scene.json", scene_with("")}}, {}, "scene.json --crop=-1,4,0,6", 1,
+         {"--crop: expected x0,x1,y0,y1", "got '-1,4,0,6'"}, "", true},
+        {"CropEmptyValue", {{"scene.json", scene_with("")}}, {}, "scene.json --crop ''", 1,
+         {"--crop: the value is empty"}, "", true},
+        {"CropOutsideTheImage", {{"scene.json", scene_with("")}}, {}, "scene.json --crop 0,9,0,6", 1,
+         {"--crop 0,9,0,6 reaches outside the 8x6 image"}},
+        {"CropOutsideTheSizeOverride", {{"scene.json", scene_with("")}}, {}, "scene.json --size 4x4 --crop 0,8,0,6", 1,
+         {"--crop 0,8,0,6 reaches outside the 4x4 image"}},
+        // --- Scene overrides and checks: -D values are checked like the file's and say where
+        // they came from; a -D path that leads nowhere, a malformed -D or --seed, and a
+        // mistyped option are usage errors; --check fails as a render would, without a device
+        {"DefinedValueOutOfRange", {{"scene.json", scene_with("")}}, {}, "scene.json -q -D MaxDepth=65", 2,
+         {"scene.json: /MaxDepth: MaxDepth must be a whole number from 0 to 64 (got 65) (set on the command line: -D MaxDepth=65)"}},
+        {"DefineIntoAMissingArrayElement", {{"scene.json", sphere_scene(R"("radius": 1)")}}, {}, "scene.json -q -D spheres.1.radius=2",
+         1, {"scene.json: -D spheres.1.radius=2: /spheres has 1 element, so there is no element 1"}},
+        {"DefineThroughANumber", {{"scene.json", scene_with("")}}, {}, "scene.json -q -D /fov_angle/x=1", 1,
+         {"scene.json: -D /fov_angle/x=1: /fov_angle is a number, not an object or array, so it has no 'x'"}},
+        {"DefineWithoutAValue", {{"scene.json", scene_with("")}}, {}, "scene.json -q -D MaxDepth", 1,
+         {"-D MaxDepth: expected key=value"}, "", true},
+        {"SeedOutOfRange", {{"scene.json", scene_with("")}}, {}, "scene.json -q --seed 4294967296", 1, {"--seed"}, "", true},
+        {"MistypedOption", {{"scene.json", scene_with("")}}, {}, "scene.json --sp 4", 1,
+         {"unknown option '--sp'; did you mean --spp?"}, "", true},
+        {"CheckOfAMissingImage", {{"bad.json", image_scene("nowhere.png")}}, {}, "bad.json --check", 2,
+         {"bad.json: /billboards/0/filename: cannot read image", "nowhere.png': no such file"}},
+        {"CheckOfAnImageOverThePixelLimit", {{"bad.json", image_scene("huge.jpg")}, {"huge.jpg", jpeg_claiming_20000_squared()}},
+         {}, "bad.json --check", 2, {"bad.json: /billboards/0/filename:", "20000 x 20000 pixels is larger than the limit"}},
         // --- HDR and alpha outputs: --alpha only where the output has an alpha channel, EXR
         // frames never read back into a video
         {"AlphaWithAVideo", {{"path.json", animation_scene()}}, {}, "path.json -q --alpha -o f_%04d.png --video v.mp4", 1,
@@ -523,6 +595,8 @@ std::vector<BadInput> catalogue() {
          1, {"-o f_%04d.exr: EXR frames cannot be read back into a video (--assemble)"}},
         {"ResumeExrFramesIntoAVideo", {{"path.json", animation_scene()}}, {}, "path.json -q --resume -o f_%04d.exr --video v.mp4",
          1, {"-o f_%04d.exr: EXR frames cannot be read back into a video (--resume)"}},
+        {"ExplainPixelWithAlpha", {{"scene.json", scene_with("")}}, {}, "scene.json --explain-pixel 0,0 --alpha", 1,
+         {"--alpha excludes --explain-pixel"}, "", true},
     };
 }
 

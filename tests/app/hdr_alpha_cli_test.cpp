@@ -16,6 +16,7 @@
 #include "scene/image_loader.h"
 #include "scene/scene_loader.h"
 #include "support/command.h"
+#include "support/png_chunks.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -41,23 +42,25 @@ struct Exr {
     std::vector<float> rgba;  // 4 floats a pixel; A is 1 where the file has none
 };
 
-Exr read_exr(const std::string& path) {
+// Reads an EXR of width x height pixels (the scene's size unless a crop's).
+Exr read_exr(const std::string& path, int width = kWidth, int height = kHeight) {
     Imf::InputFile file(path.c_str());
     Exr exr;
     const Imath::Box2i window = file.header().dataWindow();
-    EXPECT_EQ(window.max.x - window.min.x + 1, kWidth);
-    EXPECT_EQ(window.max.y - window.min.y + 1, kHeight);
+    EXPECT_EQ(window.max.x - window.min.x + 1, width);
+    EXPECT_EQ(window.max.y - window.min.y + 1, height);
+    if (window.max.x - window.min.x + 1 != width || window.max.y - window.min.y + 1 != height) return exr;
     for (auto channel = file.header().channels().begin(); channel != file.header().channels().end(); ++channel) {
         exr.channels.push_back(channel.name());
         EXPECT_EQ(channel.channel().type, Imf::FLOAT) << channel.name();
     }
-    exr.rgba.assign(static_cast<std::size_t>(kWidth) * kHeight * 4, 0.0f);
+    exr.rgba.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
     Imf::FrameBuffer frame;
     const char* names[] = {"R", "G", "B", "A"};
     char* base = reinterpret_cast<char*>(exr.rgba.data());
     for (int c = 0; c < 4; ++c)
         frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 4 * sizeof(float),
-                                          4 * sizeof(float) * kWidth, 1, 1, c == 3 ? 1.0 : 0.0));
+                                          4 * sizeof(float) * width, 1, 1, c == 3 ? 1.0 : 0.0));
     file.setFrameBuffer(frame);
     file.readPixels(window.min.y, window.max.y);
     return exr;
@@ -185,6 +188,75 @@ TEST_F(HdrAlphaCli, ReferenceRendererWritesTheSameCoverage) {
     int differing = 0;
     for (std::size_t i = 3; i < kernels.rgba.size(); i += 4) differing += kernels.rgba[i] != reference.rgba[i];
     EXPECT_LT(differing, kWidth * kHeight / 20) << "only silhouette pixels may differ";
+}
+
+// Crops (docs/command-line.md, Crop): one of whole rows, and one whose columns start and end
+// inside screen tiles (16 pixels), so the kernels' global offset is exercised.
+struct Crop {
+    int x0, x1, y0, y1;
+    std::string argument() const {
+        return std::to_string(x0) + "," + std::to_string(x1) + "," + std::to_string(y0) + "," + std::to_string(y1);
+    }
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+};
+const Crop kCrops[] = {{13, 45, 7, 40}, {0, kWidth, 5, 29}};
+
+// The values of `crop`'s pixels in an image of the full frame (4 values a pixel).
+template <typename Value>
+std::vector<Value> rectangle_of(const std::vector<Value>& full, const Crop& crop) {
+    std::vector<Value> values;
+    for (int row = crop.y0; row < crop.y1; ++row)
+        for (int col = crop.x0; col < crop.x1; ++col)
+            for (int c = 0; c < 4; ++c) values.push_back(full[(static_cast<std::size_t>(row) * kWidth + col) * 4 + c]);
+    return values;
+}
+
+TEST_F(HdrAlphaCli, CropOfAnExrIsTheFullFramesRectangle) {
+    for (const char* renderer : {"", "--reference "}) {
+        for (const char* alpha : {"", "--alpha "}) {
+            const std::string options = std::string(renderer) + alpha;
+            SCOPED_TRACE(options);
+            render(options + "-o full.exr");
+            const Exr full = read_exr(folder_.file("full.exr"));
+            for (const Crop& crop : kCrops) {
+                SCOPED_TRACE(crop.argument());
+                render(options + "--crop " + crop.argument() + " -o crop.exr");
+                const Exr cropped = read_exr(folder_.file("crop.exr"), crop.width(), crop.height());
+                EXPECT_EQ(cropped.channels, full.channels);
+                ASSERT_EQ(cropped.rgba, rectangle_of(full.rgba, crop)) << "value for value, coverage included";
+            }
+        }
+    }
+}
+
+TEST_F(HdrAlphaCli, CropOfAnAlphaPngIsTheFullFramesRectangle) {
+    for (const char* renderer : {"", "--reference "}) {
+        SCOPED_TRACE(renderer);
+        render(std::string(renderer) + "--alpha -o full.png");
+        const auto full = load_image(folder_.file("full.png"));
+        for (const Crop& crop : kCrops) {
+            SCOPED_TRACE(crop.argument());
+            render(std::string(renderer) + "--alpha --crop " + crop.argument() + " -o crop.png");
+            const std::string bytes = read_bytes(folder_.file("crop.png"));
+            ASSERT_GT(bytes.size(), 26u);
+            EXPECT_EQ(bytes[25], 6) << "PNG colour type: RGBA";
+            const auto cropped = load_image(folder_.file("crop.png"));
+            ASSERT_EQ(cropped->width, crop.width());
+            ASSERT_EQ(cropped->height, crop.height());
+            ASSERT_EQ(cropped->rgba, rectangle_of(full->rgba, crop)) << "alpha included";
+        }
+    }
+}
+
+TEST_F(HdrAlphaCli, AlphaPngCarriesThePngMetadata) {
+    render("--alpha -o alpha.png");
+    const testing::PngDescription description = testing::read_png_description(folder_.file("alpha.png"));
+    ASSERT_TRUE(description.readable);
+    EXPECT_EQ(description.srgb_intent, 0) << "perceptual";
+    EXPECT_EQ(description.text.at("Scene"), "scene.json");
+    EXPECT_EQ(description.text.at("Size"), "64x48");
+    EXPECT_EQ(description.text.at("Samples per pixel"), "4");
 }
 
 TEST(HdrAlphaCliAnimation, FramesOfAnAnimationAsExr) {

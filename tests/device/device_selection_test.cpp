@@ -4,6 +4,9 @@
 #include "core/errors.h"
 #include "device/cl_errors.h"
 #include "device/device_selection.h"
+#include "render/renderer.h"
+#include "support/opencl_test_device.h"
+#include "support/random_scene.h"
 
 namespace clr {
 namespace {
@@ -48,6 +51,28 @@ TEST(DeviceSelection, ByCaseInsensitiveNameOrPlatformSubstring) {
     EXPECT_EQ(select_device(fake_devices(), "portable").index, 1) << "the first match wins";
 }
 
+TEST(DeviceSelection, CpuAndGpuSelectTheFirstDeviceOfThatType) {
+    EXPECT_EQ(select_device(fake_devices(), "cpu").index, 1);
+    EXPECT_EQ(select_device(fake_devices(), "GPU").index, 0);
+    std::vector<DeviceEntry> gpu_named_cpu = {entry(0, 0, 0, "Portable Computing Language", "gpu-emulation", "CPU"),
+                                              entry(1, 1, 0, "NVIDIA CUDA", "NVIDIA H100", "GPU")};
+    EXPECT_EQ(select_device(gpu_named_cpu, "gpu").index, 1) << "the type, not a name substring";
+}
+
+TEST(DeviceSelection, MissingTypeIsADeviceErrorListingWhatExists) {
+    auto cpus_only = fake_devices();
+    cpus_only.erase(cpus_only.begin());
+    try {
+        select_device(cpus_only, "gpu");
+        ADD_FAILURE() << "gpu was accepted without a GPU";
+    } catch (const DeviceError& error) {
+        std::string message = error.what();
+        EXPECT_NE(message.find("no OpenCL GPU device"), std::string::npos) << message;
+        EXPECT_NE(message.find("pthread-skylake"), std::string::npos) << message;
+        EXPECT_EQ(error.code(), kExitDevice);
+    }
+}
+
 TEST(DeviceSelection, UnknownSelectorsAreDeviceErrorsListingTheDevices) {
     for (const char* selector : {"3", "2:0", "0:5", "quantum", "1:x"}) {
         try {
@@ -69,6 +94,33 @@ TEST(DeviceSelection, ListingShowsIndicesAndPlatforms) {
     EXPECT_NE(listing.find("Platform 1: Portable Computing Language"), std::string::npos) << listing;
     EXPECT_NE(listing.find("[2] 1:1  cpu-other (CPU"), std::string::npos) << listing;
     EXPECT_NE(format_device_list({}).find("No OpenCL devices"), std::string::npos);
+}
+
+// -t on a driver that is not told the thread count by the environment: a sub-device of that
+// many compute units, which renders the same bytes.
+TEST(DeviceSelection, ASubDeviceOfOneComputeUnitRendersTheSameBytes) {
+    const DeviceEntry& whole = testing::test_device().entry();
+    const int units = compute_units(whole);
+    EXPECT_EQ(select_compute_units(whole, units).device(), whole.device()) << "as many as it has: the device itself";
+    EXPECT_THROW(select_compute_units(whole, units + 1), DeviceError);
+    if (units < 2) GTEST_SKIP() << "one compute unit: nothing to divide";
+    DeviceEntry part;
+    try {
+        part = select_compute_units(whole, 1);
+    } catch (const DeviceError& error) {
+        GTEST_SKIP() << "the driver cannot divide the device: " << error.what();
+    }
+    EXPECT_EQ(compute_units(part), 1);
+
+    Scene scene = testing::make_random_scene(5, 6, 6);
+    scene.camera_path = {{{3, 5, 30}, {0, 0, 0}}};
+    scene.width = 64;
+    scene.height = 48;
+    scene.sampling.samples_per_pixel = 4;
+    Renderer on_whole(testing::test_device(), scene);
+    DeviceContext part_context(part);
+    Renderer on_part(part_context, scene);
+    EXPECT_TRUE(on_part.render(scene.camera_path.front()).rgba == on_whole.render(scene.camera_path.front()).rgba);
 }
 
 TEST(DeviceSelection, RealDevicesAreListed) {

@@ -32,6 +32,53 @@ TEST(DriverSettings, SpecialisationIsOffUnlessTheUserChose) {
     EXPECT_EQ(std::string(std::getenv("POCL_WORK_GROUP_SPECIALIZATION")), "1");
 }
 
+TEST(DriverSettings, CacheOffTurnsPoclsKernelCacheOffUnlessTheUserChose) {
+    ScopedEnv unset("POCL_KERNEL_CACHE", nullptr);
+    {
+        ScopedEnv cache("CLRENDER_CACHE_DIR", "/tmp/somewhere");
+        apply_driver_settings();
+        EXPECT_EQ(std::getenv("POCL_KERNEL_CACHE"), nullptr) << "a cache folder leaves PoCL's cache alone";
+    }
+    ScopedEnv off("CLRENDER_CACHE_DIR", "off");
+    apply_driver_settings();
+    ASSERT_NE(std::getenv("POCL_KERNEL_CACHE"), nullptr);
+    EXPECT_EQ(std::string(std::getenv("POCL_KERNEL_CACHE")), "0");
+
+    ScopedEnv chosen("POCL_KERNEL_CACHE", "1");
+    apply_driver_settings();
+    EXPECT_EQ(std::string(std::getenv("POCL_KERNEL_CACHE")), "1");
+}
+
+// PoCL's cache entries: a folder per program. (PoCL leaves an empty temporary file there even
+// with its cache off: not an entry.)
+int kernel_entries(const std::string& pocl_cache) {
+    int folders = 0;
+    for (const auto& entry : fs::directory_iterator(pocl_cache)) folders += entry.is_directory();
+    return folders;
+}
+
+// Through the binary: with CLRENDER_CACHE_DIR=off a run leaves no kernel in PoCL's cache folder.
+TEST(DriverSettings, CacheOffLeavesPoclsCacheFolderEmpty) {
+    if (testing::test_device().entry().platform_name.find("Portable Computing Language") == std::string::npos)
+        GTEST_SKIP() << "the test device is not PoCL";
+    TempFolder folder;
+    folder.write("scene.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+      "width": 40, "height": 30, "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0, 0]}]})");
+    fs::create_directory(folder.file("pocl"));
+    const std::string pocl = "POCL_CACHE_DIR='" + folder.file("pocl") + "'";
+    auto off = run_clrender("-q scene.json -o out.png", folder.path(),
+                            "env -u POCL_KERNEL_CACHE " + pocl + " CLRENDER_CACHE_DIR=off");
+    ASSERT_EQ(off.exit_code, 0) << off.output;
+    EXPECT_EQ(kernel_entries(folder.file("pocl")), 0) << "PoCL cached kernels with the cache off";
+
+    // The check above can fail: the same run with a cache folder fills PoCL's.
+    fs::create_directory(folder.file("clrender"));
+    auto on = run_clrender("-q scene.json -o out.png", folder.path(),
+                           "env -u POCL_KERNEL_CACHE " + pocl + " CLRENDER_CACHE_DIR='" + folder.file("clrender") + "'");
+    ASSERT_EQ(on.exit_code, 0) << on.output;
+    EXPECT_GT(kernel_entries(folder.file("pocl")), 0);
+}
+
 // PoCL keeps each work-group function it compiles in its cache folder, one folder per variant
 // (local size, and for specialised ones global offset and grid size): a cold run that also
 // stores its program binary must leave exactly one, the generic one.

@@ -165,7 +165,14 @@ TEST(HostileScene, ThousandsOfLongUnknownKeysLoadQuickly) {
     for (int i = 0; i < 20000; ++i) json[std::string(1000, 'k') + std::to_string(i)] = 0;
     const auto start = std::chrono::steady_clock::now();
     EXPECT_NO_THROW(parse(json));
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
+    // A bound, not a timing: letter-by-letter comparison of these keys is billions of steps
+    // (minutes). AddressSanitizer's build runs several times slower, and CI's machine is shared.
+#ifdef __SANITIZE_ADDRESS__
+    const auto bound = std::chrono::seconds(30);
+#else
+    const auto bound = std::chrono::seconds(3);
+#endif
+    EXPECT_LT(std::chrono::steady_clock::now() - start, bound);
 }
 
 }  // namespace

@@ -1,0 +1,101 @@
+#include "app/check_summary.h"
+
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "core/printable_text.h"
+#include "render/feature_set.h"
+#include "scene/camera_path.h"
+
+namespace clr {
+namespace {
+
+std::string count_of(std::size_t n, const std::string& one, const std::string& many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", seconds);
+    return text;
+}
+
+std::string frames_line(const Scene& scene) {
+    const int frames = animation_frame_count(scene);
+    if (!scene.is_animated()) return "1 (a still)";
+    const char* interpolation = scene.animation.interpolation == Interpolation::Linear ? "linear" : "catmull-rom";
+    return std::to_string(frames) + " (" + seconds_text(frames / scene.animation.fps) + " s at " +
+           seconds_text(scene.animation.fps) + " fps, " + std::to_string(scene.camera_path.size()) + " camera keys, " +
+           interpolation + ")";
+}
+
+template <typename Object>
+std::string objects_line(const std::vector<Object>& objects) {
+    std::size_t mirrors = 0;
+    for (const Object& object : objects) mirrors += object.is_mirror;
+    return std::to_string(objects.size()) + (mirrors ? " (" + count_of(mirrors, "mirror", "mirrors") + ")" : "");
+}
+
+std::string images_line(const Scene& scene) {
+    if (scene.image_files.empty()) return "none";
+    long long pixels = 0;
+    std::map<std::string, int> formats;
+    for (const ImageFileInfo& file : scene.image_files) {
+        pixels += file.width * file.height;
+        ++formats[file.format];
+    }
+    std::string line = count_of(scene.image_files.size(), "file", "files") + ", " + std::to_string(pixels) +
+                       " pixels in all (";
+    const char* separator = "";
+    for (const auto& [format, count] : formats) {
+        line += separator + std::to_string(count) + " " + format;
+        separator = ", ";
+    }
+    return line + ")";
+}
+
+// The images are not decoded, so whether a texel is transparent is known only for images
+// that cannot hold alpha: the feature is off when no image can, and open otherwise.
+std::string features_line(const Scene& scene, bool double_precision) {
+    FeatureSet features = FeatureSet::of(scene);
+    features.textures = !scene.image_files.empty();
+    std::size_t with_alpha = 0;
+    for (const ImageFileInfo& file : scene.image_files) with_alpha += file.alpha_channel;
+    const std::vector<std::pair<const char*, bool>> named = {
+        {"spheres", features.spheres}, {"billboards", features.billboards}, {"textures", features.textures},
+        {"sun", features.sun},         {"mirrors", features.mirrors},       {"bvh", features.bvh},
+        {"double", double_precision},
+    };
+    std::string line;
+    for (const auto& [name, on] : named) {
+        if (on) line += (line.empty() ? "" : " ") + std::string(name);
+    }
+    if (line.empty()) line = "none (background only)";
+    if (with_alpha > 0)
+        line += "; alpha: unknown until decoded (" + count_of(with_alpha, "image has", "images have") +
+                " an alpha channel or a transparent colour)";
+    return line;
+}
+
+}  // namespace
+
+std::string check_summary(const Scene& scene, bool double_precision) {
+    std::ostringstream out;
+    const int spp = scene.sampling.samples_per_pixel;
+    out << "scene:      " << printable(scene.path) << "\n";
+    out << "size:       " << scene.width << " x " << scene.height << ", " << count_of(spp, "sample", "samples")
+        << " per pixel\n";
+    out << "frames:     " << frames_line(scene) << "\n";
+    out << "spheres:    " << objects_line(scene.spheres) << "\n";
+    out << "billboards: " << objects_line(scene.billboards) << "\n";
+    out << "impostors:  " << scene.impostors.size() << "\n";
+    out << "images:     " << printable(images_line(scene)) << "\n";
+    out << "features:   " << features_line(scene, double_precision) << "\n";
+    out << "warnings:   " << scene.warnings.size()
+        << (scene.warnings.empty() ? "" : " (on standard error, above)") << "\n";
+    return out.str();
+}
+
+}  // namespace clr

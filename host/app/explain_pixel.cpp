@@ -1,0 +1,99 @@
+#include "app/explain_pixel.h"
+
+#include <string>
+#include <vector>
+
+#include "app/frame_selection.h"
+#include "app/pixel_narrator.h"
+#include "core/errors.h"
+#include "core/printable_text.h"
+#include "reference/impostors.h"
+#include "reference/reference.h"
+#include "scene/camera_path.h"
+
+namespace clr {
+namespace {
+
+// The frame --frames names, 0 when it is left out: an explanation is of one frame.
+int explained_frame(const Options& options, const Scene& scene) {
+    if (options.frames.empty()) return 0;
+    const std::vector<int> frames = parse_frame_list(options.frames, animation_frame_count(scene));
+    if (frames.size() != 1)
+        throw UsageError("--explain-pixel explains one frame; --frames '" + options.frames + "' names " +
+                         std::to_string(frames.size()));
+    return frames.front();
+}
+
+void check_inside(const Options::PixelPosition& pixel, const Scene& scene) {
+    if (pixel.x < scene.width && pixel.y < scene.height) return;
+    throw UsageError("--explain-pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) +
+                     " is outside the " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                     " image (X from 0 to " + std::to_string(scene.width - 1) + ", Y from 0 to " +
+                     std::to_string(scene.height - 1) + ")");
+}
+
+void describe_camera(const Scene& scene, const CameraKey& key, const reference::CameraFrame& camera, std::ostream& out) {
+    out << "\n== Camera (docs/scene-format.md, Conventions: Camera) ==\n";
+    out << "Eye = " << explain_vector(key.eye) << ", LookAt = " << explain_vector(key.lookat)
+        << ", Up = " << explain_vector(scene.up) << ", field of view " << explain_number(scene.fov_degrees)
+        << " degrees\n";
+    out << "w = unit(Eye - LookAt) = " << explain_vector(camera.w) << "\n";
+    out << "u = unit(Up x w) = " << explain_vector(camera.u) << "\n";
+    out << "v = w x u = " << explain_vector(camera.v) << "\n";
+    out << "image plane at distance D = 1: half width hw = " << explain_number(camera.half_width)
+        << ", half height hh = " << explain_number(camera.half_height) << " (tan(fov/2) across the larger side)\n";
+}
+
+std::string bytes_text(const std::uint8_t bytes[3]) {
+    return std::to_string(bytes[0]) + " " + std::to_string(bytes[1]) + " " + std::to_string(bytes[2]);
+}
+
+// The kernels' bytes for the pixel: the whole frame rendered as a plain run renders it.
+void describe_kernel_bytes(const KernelRendererFactory& kernel_renderer, const CameraKey& key, int frame,
+                           const Options::PixelPosition& pixel, const std::uint8_t reference_bytes[3], std::ostream& out) {
+    if (!kernel_renderer) {
+        out << "OpenCL kernels: not run (--reference)\n";
+        return;
+    }
+    std::unique_ptr<FrameRenderer> renderer = kernel_renderer();
+    const Image image = renderer->render(key, frame, nullptr);
+    const std::uint8_t kernel_bytes[3] = {image.at(pixel.x, pixel.y, 0), image.at(pixel.x, pixel.y, 1),
+                                          image.at(pixel.x, pixel.y, 2)};
+    const bool same = kernel_bytes[0] == reference_bytes[0] && kernel_bytes[1] == reference_bytes[1] &&
+                      kernel_bytes[2] == reference_bytes[2];
+    out << "bytes the OpenCL kernels write (" << printable(renderer->device_name()) << "): " << bytes_text(kernel_bytes)
+        << (same ? " (the same)" : " (they differ: float rounding near an edge, see docs/explain-pixel.md)") << "\n";
+}
+
+}  // namespace
+
+void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
+                   std::ostream& out) {
+    const Options::PixelPosition pixel = *options.explain_pixel;
+    check_inside(pixel, scene);
+    const int frame = explained_frame(options, scene);
+    const CameraKey key = camera_at_frame(scene, frame);
+    const reference::CameraFrame camera = reference::camera_of(scene, key);
+    // The reference traces impostors as billboards placed for this camera, as render() does.
+    const Scene placed = reference::with_impostors_placed(scene, camera);
+
+    out << "Pixel X,Y = " << pixel.x << "," << pixel.y << " (column j = " << pixel.x << ", row i = " << pixel.y
+        << " from the top) of frame " << frame << " of " << scene.path << ": " << scene.width << "x" << scene.height
+        << ", " << scene.sampling.samples_per_pixel << " sample(s) per pixel, "
+        << (scene.lit() ? "lit by the sun" : "unlit (ambient colours)") << ", MaxDepth " << scene.max_depth << "\n";
+    out << "Numbers from the double-precision reference (%.9g).\n";
+    describe_camera(scene, key, camera, out);
+
+    PixelNarrator narrator(placed, static_cast<int>(scene.billboards.size()), camera, pixel.x, pixel.y, out);
+    const Color colour = reference::pixel_colour(placed, camera, frame, pixel.x, pixel.y, &narrator);
+    const std::uint8_t bytes[3] = {reference::to_byte(colour.x), reference::to_byte(colour.y),
+                                   reference::to_byte(colour.z)};
+
+    out << "\n== Result ==\n";
+    out << "pixel colour = mean of " << scene.sampling.samples_per_pixel
+        << " sample(s) = " << explain_vector(colour) << "\n";
+    out << "bytes the reference writes, round(clamp(c, 0, 1) * 255): " << bytes_text(bytes) << "\n";
+    describe_kernel_bytes(kernel_renderer, key, frame, pixel, bytes, out);
+}
+
+}  // namespace clr

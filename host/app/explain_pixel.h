@@ -1,0 +1,25 @@
+// --explain-pixel X,Y: how one pixel is computed, step by step, in the lecture's notation,
+// from the double reference's own code path, beside the bytes the OpenCL kernels give it
+// (docs/explain-pixel.md).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <ostream>
+
+#include "app/frame_renderer.h"
+#include "app/options.h"
+#include "scene/scene.h"
+
+namespace clr {
+
+// Makes the renderer whose bytes are shown beside the reference's (the OpenCL kernels); null
+// when only the reference is wanted (--reference).
+using KernelRendererFactory = std::function<std::unique_ptr<FrameRenderer>()>;
+
+// Writes the explanation of options.explain_pixel to `out`. Throws UsageError for a pixel
+// outside the image or --frames naming other than one frame; DeviceError from the kernels.
+void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
+                   std::ostream& out);
+
+}  // namespace clr

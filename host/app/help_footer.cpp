@@ -1,0 +1,38 @@
+#include "app/help_footer.h"
+
+namespace clr {
+
+// Every variable a getenv() in host/ reads, but the PATH and HOME every program reads, is
+// listed here: tests/app/install_test.cpp compares the two lists.
+std::string help_footer() {
+    return R"(Environment:
+  CLRENDER_DEVICE            Default for -d, the OpenCL device
+  CLRENDER_CACHE_DIR         Folder of the program and image caches, or 'off'; default
+                             $XDG_CACHE_HOME/clrender, else ~/.cache/clrender
+  XDG_CACHE_HOME             See CLRENDER_CACHE_DIR
+  CLRENDER_FFMPEG            Video encoder program; default ffmpeg on PATH
+  CLRENDER_FFPROBE           Video checker program; default the ffprobe beside the encoder,
+                             else on PATH
+  CLRENDER_ENCODER_TIMEOUT   Seconds an encoder may make no progress; default 60
+  CLRENDER_IMAGE_MEMORY_MIB  Limit on a scene's decoded images in MiB; default 2048
+
+Exit status:
+  0    Done
+  1    Usage: an unknown or malformed option, contradictory options, a frame out of range
+  2    The scene file or an input image: missing, unreadable or invalid
+  3    OpenCL: no such device, a failed build or run, the device's memory exhausted
+  4    An output: cannot be written, would replace an input, a full disk, a failed encoder
+  5    Internal error: a bug in clrender; please report it
+  6    Out of memory: the machine's memory or threads ran out
+  128+N  Interrupted by signal N: 130 for SIGINT (Ctrl-C), 143 for SIGTERM, 129 for SIGHUP
+
+Examples:
+  clrender scene.json                          Render scene.png in the current folder
+  clrender scene.json -o big.png --size 1920x1080 --spp 16
+                                               Larger, with 16 samples per pixel
+  clrender path.json -o 'f_%04d.png' --video path.mp4 --frames 0-99
+                                               Frames 0 to 99 of a camera path, and their video
+)";
+}
+
+}  // namespace clr

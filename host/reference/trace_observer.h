@@ -1,0 +1,62 @@
+// A hook into the reference renderer that is told each step of a pixel's computation: the
+// samples, every ray cast, every surface tested and why it was kept or rejected, the sun term,
+// mirror bounces and the colour each ray returns. `clrender --explain-pixel` prints these steps
+// (docs/explain-pixel.md), so its numbers are the reference's own and can never disagree with
+// the reference image. The reference calls an observer only when one is given: without one it
+// computes exactly what it did before.
+#pragma once
+
+#include "reference/geometry.h"
+
+namespace clr::reference {
+
+// Why a ray was cast.
+enum class RayRole {
+    Primary,    // from the eye through a sample of the pixel
+    Reflected,  // leaving a mirror
+    Shadow,     // from a lit point towards the sun
+};
+
+// How trace() arrived at the colour a ray returns.
+enum class ColourSource {
+    Background,        // the ray hit nothing
+    DepthExhausted,    // a mirror would reflect once more than MaxDepth allows: the background
+    BackOfMirror,      // black
+    SphereAmbient,     // an unlit sphere's colour
+    SphereLit,         // ambient * max(0, n.l) * s
+    BillboardAmbient,  // a flat billboard's colour
+    BillboardTexel,    // the texel under (alpha, beta)
+};
+
+class TraceObserver {
+public:
+    virtual ~TraceObserver() = default;
+
+    // A sample of the pixel at image point (col + ox, row + oy); `witness_direction` is the
+    // witness point minus the eye (the image plane at distance 1), `ray` the ray through it.
+    virtual void sample_started(int /*sample*/, int /*samples*/, double /*ox*/, double /*oy*/,
+                                const Vec3& /*witness_direction*/, const Ray& /*ray*/) {}
+    virtual void sample_finished(int /*sample*/, const Color& /*colour*/) {}
+
+    // A nearest-hit search over (0, t_max) begins; `depth` counts the reflections so far.
+    virtual void ray_cast(RayRole /*role*/, int /*depth*/, const Ray& /*ray*/, double /*t_max*/) {}
+    // Sphere `index` tested against a nearest distance of `t_max`: the quadratic's roots and
+    // the t intersect() took from them (kInfinity: rejected).
+    virtual void sphere_tested(int /*index*/, const detail::SphereRoots& /*roots*/, double /*t_max*/,
+                               double /*t*/) {}
+    // Billboard `index` tested against a nearest distance of `t_max`; `accepted` is whether it
+    // became the nearest hit.
+    virtual void billboard_tested(int /*index*/, const detail::PlaneHit& /*plane*/, double /*t_max*/,
+                                  bool /*accepted*/) {}
+    // What the search found (kind None: nothing).
+    virtual void nearest_found(const Hit& /*hit*/) {}
+
+    // The surface a hit landed on.
+    virtual void surface_reached(const Hit& /*hit*/, const detail::SurfacePoint& /*surface*/) {}
+    // The direction to the sun from a lit point and the cosine n.l.
+    virtual void sun_seen(const detail::SunDirection& /*sun*/, double /*cosine*/) {}
+    // The colour the ray returns, and why.
+    virtual void colour_found(ColourSource /*source*/, const Color& /*colour*/) {}
+};
+
+}  // namespace clr::reference
