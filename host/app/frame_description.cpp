@@ -18,9 +18,9 @@ std::string vector_text(const Vec3& v) {
 
 }  // namespace
 
-ImageText describe_frame(const Scene& scene, int frame) {
+ImageText describe_frame(const Scene& scene, int frame, const std::optional<PixelRect>& crop) {
     const CameraKey camera = camera_at_frame(scene, frame);
-    return {
+    ImageText text = {
         {"Software", std::string("clrender ") + CLRENDER_VERSION},
         {"Scene", std::filesystem::path(scene.path).filename().string()},
         {"Size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
@@ -32,6 +32,8 @@ ImageText describe_frame(const Scene& scene, int frame) {
         {"Up", vector_text(scene.up)},
         {"Field of view", number_text(scene.fov_degrees)},
     };
+    if (crop) text.insert(text.begin() + 3, {"Crop", format_pixel_rect(*crop)});
+    return text;
 }
 
 }  // namespace clr

@@ -201,7 +201,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 
     const FrameSize size = frame_size(options, scene);
     FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged,
-                   [&scene](int frame) { return describe_frame(scene, frame); });
+                   [&scene, &options](int frame) { return describe_frame(scene, frame, options.crop); });
     Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     shown = &progress;
     const Stopwatch render_time;

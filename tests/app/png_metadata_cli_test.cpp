@@ -67,5 +67,26 @@ TEST(PngMetadataCli, AStillIsFrameZeroAndNamesTheSceneWithoutItsFolder) {
     expect_vector(description.text["Up"], {0, 0.5, 0});
 }
 
+TEST(PngMetadataCli, ACropSaysWhichRectangleOfTheFrameItIs) {
+    TempFolder folder;
+    folder.write("anim.json", kAnimation);
+    auto result = run_clrender("anim.json -q --frames 0 --crop 2,9,1,5 -o 'c_%04d.png'", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    testing::PngDescription description = read_png_description(folder.file("c_0000.png"));
+    ASSERT_TRUE(description.readable);
+    EXPECT_EQ(description.text["Size"], "16x12") << "the whole frame's size";
+    EXPECT_EQ(description.text["Crop"], "2,9,1,5");
+}
+
+TEST(PngMetadataCli, AFullFrameNamesNoCrop) {
+    TempFolder folder;
+    folder.write("anim.json", kAnimation);
+    auto result = run_clrender("anim.json -q --frames 0 -o 'c_%04d.png'", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    testing::PngDescription description = read_png_description(folder.file("c_0000.png"));
+    ASSERT_TRUE(description.readable);
+    EXPECT_EQ(description.text.count("Crop"), 0u);
+}
+
 }  // namespace
 }  // namespace clr
