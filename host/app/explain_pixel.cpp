@@ -1,5 +1,6 @@
 #include "app/explain_pixel.h"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,17 +49,20 @@ std::string bytes_text(const std::uint8_t bytes[3]) {
     return std::to_string(bytes[0]) + " " + std::to_string(bytes[1]) + " " + std::to_string(bytes[2]);
 }
 
-// The kernels' bytes for the pixel: the whole frame rendered as a plain run renders it.
+// The kernels' bytes for the pixel, from a renderer that renders just that pixel (a 1x1 crop of
+// the frame) as a plain run renders it.
 void describe_kernel_bytes(const KernelRendererFactory& kernel_renderer, const CameraKey& key, int frame,
-                           const Options::PixelPosition& pixel, const std::uint8_t reference_bytes[3], std::ostream& out) {
+                           const std::uint8_t reference_bytes[3], std::ostream& out) {
     if (!kernel_renderer) {
         out << "OpenCL kernels: not run (--reference)\n";
         return;
     }
     std::unique_ptr<FrameRenderer> renderer = kernel_renderer();
     const Image image = renderer->render(key, frame, nullptr);
-    const std::uint8_t kernel_bytes[3] = {image.at(pixel.x, pixel.y, 0), image.at(pixel.x, pixel.y, 1),
-                                          image.at(pixel.x, pixel.y, 2)};
+    if (image.width != 1 || image.height != 1)
+        throw std::logic_error("the kernels' image of one pixel is " + std::to_string(image.width) + "x" +
+                               std::to_string(image.height));  // a bug: exit 5
+    const std::uint8_t kernel_bytes[3] = {image.at(0, 0, 0), image.at(0, 0, 1), image.at(0, 0, 2)};
     const bool same = kernel_bytes[0] == reference_bytes[0] && kernel_bytes[1] == reference_bytes[1] &&
                       kernel_bytes[2] == reference_bytes[2];
     out << "bytes the OpenCL kernels write (" << printable(renderer->device_name()) << "): " << bytes_text(kernel_bytes)
@@ -93,7 +97,7 @@ void explain_pixel(const Options& options, const Scene& scene, const KernelRende
     out << "pixel colour = mean of " << scene.sampling.samples_per_pixel
         << " sample(s) = " << explain_vector(colour) << "\n";
     out << "bytes the reference writes, round(clamp(c, 0, 1) * 255): " << bytes_text(bytes) << "\n";
-    describe_kernel_bytes(kernel_renderer, key, frame, pixel, bytes, out);
+    describe_kernel_bytes(kernel_renderer, key, frame, bytes, out);
 }
 
 }  // namespace clr

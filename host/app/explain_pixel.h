@@ -15,7 +15,7 @@ namespace clr {
 
 // Makes the renderer whose bytes are shown beside the reference's (the OpenCL kernels); null
 // when only the reference is wanted (--reference).
-using KernelRendererFactory = std::function<std::unique_ptr<FrameRenderer>()>;
+using KernelRendererFactory = std::function<std::unique_ptr<FrameRenderer>()>;  // renders the pixel alone (a 1x1 crop)
 
 // Writes the explanation of options.explain_pixel to `out`. Throws UsageError for a pixel
 // outside the image or --frames naming other than one frame; DeviceError from the kernels.

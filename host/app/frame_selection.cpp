@@ -51,7 +51,12 @@ void check_in_range(long long frame, int frame_count) {
     const std::string frames = frame_count == 1 ? "1 frame (0)"
                                                 : std::to_string(frame_count) + " frames (0-" +
                                                       std::to_string(frame_count - 1) + ")";
-    throw UsageError("frame " + std::to_string(frame) + " is out of range: the animation has " + frames);
+    // parse_number() saturates at INT_MAX + 1: a larger frame is named by that bound, not by a
+    // number the user did not type.
+    const std::string named = frame > std::numeric_limits<int>::max()
+                                  ? "a frame past " + std::to_string(std::numeric_limits<int>::max())
+                                  : "frame " + std::to_string(frame);
+    throw UsageError(named + " is out of range: the animation has " + frames);
 }
 
 // A frame-number placeholder within a path.

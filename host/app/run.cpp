@@ -300,7 +300,13 @@ int run(const Options& options) {
     throw_if_interrupted();
     if (options.explain_pixel) {  // prints, writes no files (docs/explain-pixel.md)
         KernelRendererFactory kernel_renderer;
-        if (!options.reference) kernel_renderer = [&] { return make_renderer(options, scene, devices, {}, false); };
+        // The kernels render only the explained pixel: a 1x1 crop has the full frame's bytes
+        // there (docs/command-line.md, Crop), at a fraction of a full frame's cost.
+        Options one_pixel = options;
+        one_pixel.crop = PixelRect{options.explain_pixel->x, options.explain_pixel->x + 1, options.explain_pixel->y,
+                                   options.explain_pixel->y + 1};
+        if (!options.reference)
+            kernel_renderer = [&] { return make_renderer(one_pixel, scene, devices, {}, false); };
         std::ostringstream explanation;  // whole or nothing: a device failure leaves no half explanation
         explain_pixel(options, scene, kernel_renderer, explanation);
         std::cout << explanation.str() << std::flush;

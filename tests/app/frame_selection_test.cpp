@@ -65,6 +65,10 @@ TEST(FrameSelection, RejectsFramesPastTheEnd) {
     EXPECT_EQ(usage_error_of("1", 1), "frame 1 is out of range: the animation has 1 frame (0)");
     // A number too large for an int is reported as out of range, not wrapped around.
     EXPECT_NE(usage_error_of("99999999999999999999", 11).find("out of range"), std::string::npos);
+    // ... and named by the bound, not by the saturated number it never typed.
+    EXPECT_EQ(usage_error_of("99999999999", 11),
+              "a frame past 2147483647 is out of range: the animation has 11 frames (0-10)");
+    EXPECT_EQ(usage_error_of("2147483647", 11), "frame 2147483647 is out of range: the animation has 11 frames (0-10)");
     EXPECT_EQ(parse_frame_list("10", 11), std::vector<int>({10}));
 }
 
