@@ -86,6 +86,20 @@ TEST(WriteFaults, FileSizeLimitIsAnOutputError) {
     EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"still.json", "still.png"})) << "temporary file left";
 }
 
+// The same for OpenEXR (linear floats, about 1.4 MB here): it is encoded in memory and written
+// through the same atomic file, so the earlier image survives and no temporary file stays.
+TEST(WriteFaults, FileSizeLimitOnAnExrIsAnOutputError) {
+    TempFolder folder;
+    folder.write("still.json", kStill);
+    folder.write("still.exr", kEarlier);
+    const testing::CommandResult result =
+        testing::run_clrender("still.json -q --reference -o still.exr", folder.path(), "ulimit -f 2;");
+    EXPECT_EQ(result.exit_code, 4) << result.output;
+    EXPECT_NE(result.output.find("still.exr: write failed: File too large"), std::string::npos) << result.output;
+    EXPECT_EQ(read_bytes(folder.file("still.exr")), kEarlier);
+    EXPECT_EQ(names_in(folder.path()), (std::set<std::string>{"still.json", "still.exr"})) << "temporary file left";
+}
+
 // Standard error is a pipe whose reader has already closed it: every message fails with
 // EPIPE. The render must still finish and write its frames; losing messages is no failure.
 TEST(WriteFaults, ClosedStandardErrorDoesNotStopTheRender) {
