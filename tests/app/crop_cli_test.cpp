@@ -10,6 +10,7 @@
 #include "output/image_writer.h"
 #include "scene/image_loader.h"
 #include "support/command.h"
+#include "support/image_rect.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -19,6 +20,8 @@ namespace fs = std::filesystem;
 using testing::read_bytes;
 using testing::run_clrender;
 using testing::TempFolder;
+using testing::cut;
+using testing::paste;
 
 // Spheres (one a mirror), a textured billboard with holes, a floor, sun and shadows; 83x51, so
 // that neither side is a multiple of the 16-pixel screen tiles.
@@ -42,25 +45,6 @@ void write_scene(const TempFolder& folder, const std::string& name, const std::s
     folder.write(name, text);
     fs::copy_file(std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/cutout.png", folder.file("cutout.png"),
                   fs::copy_options::overwrite_existing);
-}
-
-// Copies `part` into `whole` at the rectangle's place.
-void paste(Image& whole, const Image& part, const PixelRect& rect) {
-    for (int row = 0; row < rect.height(); ++row)
-        for (int col = 0; col < rect.width(); ++col)
-            for (int c = 0; c < 4; ++c)
-                whole.rgba[((static_cast<std::size_t>(rect.y0 + row)) * whole.width + rect.x0 + col) * 4 + c] =
-                    part.at(col, row, c);
-}
-
-Image cut(const Image& full, const PixelRect& rect) {
-    Image part;
-    part.width = rect.width();
-    part.height = rect.height();
-    for (int row = rect.y0; row < rect.y1; ++row)
-        for (int col = rect.x0; col < rect.x1; ++col)
-            for (int c = 0; c < 4; ++c) part.rgba.push_back(full.at(col, row, c));
-    return part;
 }
 
 TEST(CropCli, FourCropsTilingTheFrameAreTheFullFramesBytes) {

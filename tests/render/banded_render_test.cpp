@@ -16,19 +16,7 @@ namespace {
 
 // Several samples per pixel, textured billboards, sun, shadows and mirrors: everything whose
 // result could depend on where a band starts.
-Scene test_scene() {
-    Scene scene = testing::make_random_scene(77, 8, 8);
-    scene.camera_path = {{{3, 5, 30}, {0, 0, 0}}};
-    scene.width = 90;
-    scene.height = 61;  // neither a multiple of 7 nor of the 16-row screen tiles
-    scene.sampling.samples_per_pixel = 4;
-    scene.has_sun = true;
-    scene.sun_location = {20, 40, 30};
-    scene.spheres[0].is_mirror = true;
-    scene.spheres[1].is_mirror = true;
-    scene.billboards[1].is_mirror = true;
-    return scene;
-}
+Scene test_scene() { return testing::make_sunlit_mirror_scene(); }
 
 constexpr int kFrame = 3;  // an animation frame: its own sample pattern
 

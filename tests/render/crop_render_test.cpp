@@ -8,39 +8,19 @@
 
 #include "reference/reference.h"
 #include "render/renderer.h"
+#include "support/image_rect.h"
 #include "support/opencl_test_device.h"
 #include "support/random_scene.h"
 
 namespace clr {
 namespace {
 
+using testing::cut;
+
 // Several samples per pixel, textured billboards with holes, sun, shadows and mirrors.
-Scene test_scene() {
-    Scene scene = testing::make_random_scene(77, 8, 8);
-    scene.camera_path = {{{3, 5, 30}, {0, 0, 0}}};
-    scene.width = 90;
-    scene.height = 61;
-    scene.sampling.samples_per_pixel = 4;
-    scene.has_sun = true;
-    scene.sun_location = {20, 40, 30};
-    scene.spheres[0].is_mirror = true;
-    scene.spheres[1].is_mirror = true;
-    scene.billboards[1].is_mirror = true;
-    return scene;
-}
+Scene test_scene() { return testing::make_sunlit_mirror_scene(); }
 
 constexpr int kFrame = 5;  // an animation frame: its own sample pattern
-
-// The pixels of `rect` cut from `full`, as an image of the rectangle's size.
-Image cut(const Image& full, const PixelRect& rect) {
-    Image part;
-    part.width = rect.width();
-    part.height = rect.height();
-    for (int row = rect.y0; row < rect.y1; ++row)
-        for (int col = rect.x0; col < rect.x1; ++col)
-            for (int c = 0; c < 4; ++c) part.rgba.push_back(full.at(col, row, c));
-    return part;
-}
 
 // Rectangles on and off the tile grid: one pixel, single rows and columns, the corners, a tile
 // exactly, and the whole frame.

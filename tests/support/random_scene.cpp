@@ -54,6 +54,20 @@ Scene make_random_scene(std::uint32_t seed, int spheres, int billboards) {
     return scene;
 }
 
+Scene make_sunlit_mirror_scene() {
+    Scene scene = make_random_scene(77, 8, 8);
+    scene.camera_path = {{{3, 5, 30}, {0, 0, 0}}};
+    scene.width = 90;
+    scene.height = 61;
+    scene.sampling.samples_per_pixel = 4;
+    scene.has_sun = true;
+    scene.sun_location = {20, 40, 30};
+    scene.spheres[0].is_mirror = true;
+    scene.spheres[1].is_mirror = true;
+    scene.billboards[1].is_mirror = true;
+    return scene;
+}
+
 std::vector<reference::Ray> make_random_rays(const Scene& scene, std::uint32_t seed, int count) {
     Random random(seed ^ 0x9e3779b9u);
     std::vector<reference::Ray> rays;
