@@ -133,8 +133,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                  "Encode the frames that -o names (rendered earlier, e.g. split across processes) into --video "
                  "instead of rendering");
     app.add_flag("--resume", options.resume,
-                 "Skip frames whose file (from the -o pattern) already exists, e.g. after an interrupted run; "
-                 "a video still gets every frame (existing ones are read back)");
+                 "Skip frames whose file (from the -o pattern, or the one image of a still or --frames N) is "
+                 "finished: a PNG whose description is this render's, or any PPM or EXR file; e.g. after an "
+                 "interrupted run; a video still gets every frame (existing ones are read back)");
     app.add_option("--quality", options.quality, "MP4 quality as x264 CRF, 0 (best) to 51; default 18")
         ->check(CLI::Range(0, 51));
     app.add_flag("--list-devices", options.list_devices, "Print the OpenCL platforms and devices, then exit");
@@ -193,6 +194,27 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_flag("--alpha", options.alpha,
                  "Write an alpha channel: the fraction of each pixel's samples that hit an object, so the "
                  "background is transparent (PNG: straight alpha; EXR: premultiplied); not with a video or .ppm");
+
+    // Joining tiles (docs/command-line.md, Joining tiles): one file per --join, so that the scene
+    // is never taken as a tile whatever the order; repeatable. What it contradicts is refused
+    // once the whole command line is parsed.
+    app.add_option("--join", options.join,
+                   "Make the image from TILE, a PNG that --crop wrote for this same render, instead of rendering; "
+                   "repeatable, one tile each; the tiles must cover the frame exactly once (exit 2 naming the tile "
+                   "otherwise); the image is byte for byte a one-process render's")
+        ->type_name("TILE")
+        ->expected(1)
+        ->allow_extra_args(false)  // CLI11 lets a vector option take the arguments after it
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    app.final_callback([&app, &options] {
+        for (const std::string& tile : options.join)
+            if (tile.empty()) throw CLI::ValidationError("--join", "the value is empty; give a tile file");
+        if (options.join.empty()) return;
+        for (const char* other : {"--crop", "--assemble", "--resume", "--video", "--explain-pixel"})
+            if (app.count(other) > 0)
+                throw CLI::ValidationError(std::string(other) + " cannot be used with --join, which makes one image "
+                                           "from tiles rendered earlier (with --crop) and renders nothing");
+    });
 
     try {
         app.parse(argc, argv);

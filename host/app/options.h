@@ -17,7 +17,7 @@ struct Options {
     std::string video_path;      // --video: .mp4 or .gif
     std::string frames;          // --frames: "7", "0-99", "5,7,10-20"; empty: every frame
     bool assemble = false;       // --assemble: encode the frames named by -o instead of rendering
-    bool resume = false;         // --resume: frames whose file (-o pattern) exists are not rendered again
+    bool resume = false;         // --resume: frames whose file is finished are not rendered again
     int quality = 18;            // --quality: x264 CRF of MP4 videos (0 best .. 51 worst)
     std::string device;          // selector; empty: CLRENDER_DEVICE, else the first CPU device
     std::optional<int> width;    // --size
@@ -50,6 +50,9 @@ struct Options {
     std::optional<unsigned> seed;          // --seed: the sample pattern's seed (clrender.seed)
     bool strict = false;                   // --strict: a warning fails the run (exit 2)
     bool check = false;                    // --check: validate and summarise, no device, nothing written
+    // Joining tiles (docs/command-line.md, Joining tiles): --join TILE, repeatable; the image
+    // is made from these --crop tiles instead of rendered.
+    std::vector<std::string> join;
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome

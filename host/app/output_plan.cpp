@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <set>
 
+#include "app/finished_frames.h"
 #include "app/frame_selection.h"
+#include "app/tile_join.h"
 #include "core/errors.h"
 #include "output/image_writer.h"
 #include "output/output_folders.h"
@@ -136,6 +138,7 @@ void check_targets(const Options& options, const Scene& scene, OutputPlan& plan)
 
     OutputRoles roles;
     add_scene_inputs(scene, roles);
+    for (const std::string& tile : options.join) roles.add_input("tile (--join)", tile);
     add_images(options, plan, roles);
     if (!plan.video_path.empty()) roles.add_output("video (--video)", plan.video_path);
     if (!plan.stats_path.empty()) roles.add_output("--stats report", plan.stats_path);
@@ -162,11 +165,6 @@ std::string OutputPlan::image_path(int frame) const {
     return image_is_pattern ? frame_path(image_target, frame) : image_target;
 }
 
-bool OutputPlan::frame_on_disk(int frame) const {
-    std::error_code ignored;
-    return image_is_pattern && std::filesystem::is_regular_file(image_path(frame), ignored);
-}
-
 OutputPlan plan_outputs(const Options& options, const Scene& scene) {
     OutputPlan plan;
     plan.frame_count = animation_frame_count(scene);
@@ -176,12 +174,14 @@ OutputPlan plan_outputs(const Options& options, const Scene& scene) {
         plan.frames = parse_frame_list(options.frames, plan.frame_count);
     }
     plan_standard_output(options, plan);
+    check_join_request(options, plan);  // before the images' and video's checks, which ask for other things
     plan_images(options, scene, plan);
     plan_video(options, scene, plan);
     plan.assemble = options.assemble;
-    if (options.resume && !plan.image_is_pattern)
-        throw UsageError("--resume needs -o with a frame pattern (or --frames without -o and --video): it skips "
-                         "the frames whose files exist");
+    if (options.resume && !plan.image_is_pattern && !(plan.frames.size() == 1 && !plan.image_target.empty()))
+        throw UsageError("--resume needs -o with a frame pattern (or --frames without -o and --video), or a run "
+                         "that writes one image: it skips the frames whose files are finished");
+    find_finished_frames(options, scene, plan);
     if (plan.assemble && (!plan.image_is_pattern || plan.video_path.empty() || options.video_path.empty()))
         throw UsageError("--assemble needs -o with the frame pattern to read and --video with the video to write");
     check_targets(options, scene, plan);

@@ -4,6 +4,7 @@
 // folder (output_roles.h, output_target.h), in a folder where a file can be created.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ struct OutputPlan {
         std::vector<std::string> folders;  // outermost first
     };
     std::vector<MissingFolders> missing_folders;
+    // --resume: the frames whose file is finished (finished_frames.h), and a warning for each
+    // file under a frame's name that is rendered again; printed before rendering.
+    std::set<int> finished_frames;
+    std::vector<std::string> warnings;
 
     // The image file of `frame`, or empty when no image is written.
     std::string image_path(int frame) const;
@@ -41,10 +46,14 @@ struct OutputPlan {
     // report, once both are written; frames of a pattern each as soon as they are finished
     // (so that --resume finds them after an interruption).
     bool image_waits_for_stats() const { return !image_is_pattern; }
-    // --resume: whether `frame` was written already, i.e. its file is a regular file (or a
-    // link to one). A folder or FIFO under a frame's name is no frame: it is planned as an
-    // output, and refused as one, instead of being skipped and leaving the frame missing.
-    bool frame_on_disk(int frame) const;
+    // --resume: whether `frame` was written already by a render like this run's
+    // (finished_frames.h). A folder or FIFO under a frame's name is no frame: it is planned as
+    // an output, and refused as one, instead of being skipped and leaving the frame missing.
+    bool frame_on_disk(int frame) const { return finished_frames.count(frame) > 0; }
+    // --resume with one image (a still, a tile, one frame) that is finished: nothing to render.
+    bool only_image_finished() const {
+        return frames.size() == 1 && video_path.empty() && frame_on_disk(frames.front());
+    }
 };
 
 // Throws UsageError for contradictory or incomplete requests, OutputError when a video is

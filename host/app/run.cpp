@@ -18,6 +18,8 @@
 #include "app/linear_outputs.h"
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
+#include "app/description_check.h"
+#include "app/tile_join.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "core/stopwatch.h"
@@ -53,6 +55,8 @@ struct RunReport {
     double write_ms = 0;
     double total_ms = 0;
     std::vector<FrameRecord> frames;
+    std::size_t tiles_joined = 0;  // --join
+    bool image_was_finished = false;  // --resume found the one image finished: nothing written but the stats
 };
 
 std::string stats_text(const RunReport& report) {
@@ -240,6 +244,7 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
     for (int frame : plan.frames) {
         throw_if_interrupted();
         progress.frame_started(frame);
+        check_frame_description(plan.image_path(frame), frame, describe_frame(scene, frame, options.crop));
         sink.push(frame, read_frame(plan, size, frame), true);
         progress.frame_done();
     }
@@ -256,13 +261,23 @@ void print_default_frames(const OutputPlan& plan) {
     std::cerr << "; no video for a --frames selection (--video makes one)\n";
 }
 
-void print_summary(const OutputPlan& plan, const RunReport& report) {
-    if (plan.default_frame_digits > 0)
+// The "wrote" line of the image or frames; none for an image that --resume found finished
+// (run() says that, also with -q).
+void print_images_written(const OutputPlan& plan, const RunReport& report) {
+    if (report.image_was_finished) return;
+    if (report.tiles_joined > 0)
+        std::cerr << "clrender: wrote " << printable(plan.image_path(plan.frames.front())) << " (joined from "
+                  << report.tiles_joined << " tiles)\n";
+    else if (plan.default_frame_digits > 0)
         print_default_frames(plan);
     else if (!plan.image_target.empty() && !plan.assemble)
         std::cerr << "clrender: wrote "
                   << printable(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
                   << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
+}
+
+void print_summary(const OutputPlan& plan, const RunReport& report) {
+    print_images_written(plan, report);
     if (!plan.video_path.empty())
         std::cerr << "clrender: wrote " << printable(plan.video_path) << " (" << plan.frames.size() << " frames)\n";
     double kernel_ms = 0;
@@ -284,8 +299,9 @@ int run(const Options& options) {
     RunReport report;
     DeviceList devices;
     // --check never opens an OpenCL platform: it must work where there is none.
-    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check)
-        devices = list_devices_meanwhile();
+    // --join renders nothing; --resume of a finished image neither: it lists them when it renders.
+    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check && options.join.empty())
+        devices = options.resume ? std::async(std::launch::deferred, list_devices) : list_devices_meanwhile();
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
     if (options.print_frame_count) {
@@ -315,16 +331,25 @@ int run(const Options& options) {
     }
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
     check_linear_outputs(options, plan);
+    for (const std::string& warning : plan.warnings) std::cerr << "clrender: warning: " << printable(warning) << "\n";
     throw_if_interrupted();
 
     // A still's image or an animation's video, and the stats, are renamed into place together,
     // once all are written: a failure in any leaves the earlier files as they were. Frames of
     // a pattern are in place already (docs/animation.md).
     StagedOutputs staged;
-    if (plan.assemble)
+    if (!options.join.empty()) {
+        report.device = "none (joining tiles)";
+        staged.add(write_joined_image(options, scene, plan));
+        report.tiles_joined = options.join.size();
+    } else if (plan.assemble) {
         assemble_frames(options, scene, plan, report, staged);
-    else
+    } else if (options.resume && plan.only_image_finished()) {  // a requeued farm task, say
+        report.device = "none (nothing to render)";
+        report.image_was_finished = true;
+    } else {
         render_frames(options, scene, plan, report, devices, staged);
+    }
     report.total_ms = run_time.elapsed_ms();
     if (!plan.stats_path.empty()) staged.add(write_stats(plan.stats_path, report));
     throw_if_interrupted();
@@ -332,6 +357,9 @@ int run(const Options& options) {
     // the earlier files as they were, as a --stats file that cannot be written does.
     if (plan.stats_to_standard_output) print_stats(report);
     staged.commit_all();
+    if (report.image_was_finished)  // also with -q: the farm's log shows why the task did nothing
+        std::cerr << "clrender: " << printable(plan.image_path(plan.frames.front()))
+                  << " is finished (--resume); nothing to render\n";
     if (!options.quiet) print_summary(plan, report);
     return kExitOk;
 }

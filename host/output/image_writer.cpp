@@ -88,9 +88,9 @@ struct PngTextStorage {
 void set_png_description(png_structp png, png_infop info, const ImageText& text, PngTextStorage& storage) {
     png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     if (text.empty()) return;
-    for (const auto& [keyword, value] : text) {
-        storage.strings.push_back(text_chunk_safe(keyword).substr(0, 79));
-        storage.strings.push_back(text_chunk_safe(value));
+    for (const auto& [keyword, value] : png_text_as_written(text)) {
+        storage.strings.push_back(keyword);
+        storage.strings.push_back(value);
     }
     storage.chunks.resize(text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
@@ -159,6 +159,12 @@ void check_image(const std::string& path, const Image& image) {
 }
 
 }  // namespace
+
+ImageText png_text_as_written(const ImageText& text) {
+    ImageText written;
+    for (const auto& [keyword, value] : text) written.emplace_back(text_chunk_safe(keyword).substr(0, 79), text_chunk_safe(value));
+    return written;
+}
 
 ImageFormat image_format_for(const std::string& path) {
     const std::string extension = lowercase_extension(path);

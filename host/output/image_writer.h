@@ -23,6 +23,10 @@ ImageFormat image_format_for(const std::string& path);
 // and EXR have no place for it here. Keywords are 1 to 79 printable ASCII characters.
 using ImageText = std::vector<std::pair<std::string, std::string>>;
 
+// `text` as a PNG holds it (the \xNN escapes, keywords cut to 79 characters): what a reader of
+// the file finds, to compare with (png_reader.h).
+ImageText png_text_as_written(const ImageText& text);
+
 // Writes the RGBA image (alpha is dropped unless image.write_alpha: then a PNG is RGBA; an EXR
 // writes image.linear, with A when image.write_alpha). A PNG, RGB or RGBA, is marked as sRGB
 // (an sRGB chunk, perceptual intent) and carries `text`. Throws OutputError naming the path

@@ -92,12 +92,20 @@ TEST(DefaultFrames, ResumeSkipsTheFramesWritten) {
     TempFolder folder;
     folder.write("anim.json", animation());
     ASSERT_EQ(run_clrender("anim.json -q --frames 0-2", folder.path()).exit_code, 0);
-    folder.write("anim_0000.png", "kept: --resume does not render it again");
+    const std::string frame_2 = read_bytes(folder.file("anim_0002.png"));
+    const auto written = fs::last_write_time(folder.file("anim_0002.png"));
+    const std::string frame_0 = read_bytes(folder.file("anim_0000.png"));
+    folder.write("anim_0000.png", "not a PNG: rendered again");
     fs::remove(folder.file("anim_0001.png"));
     auto result = run_clrender("anim.json -q --frames 0-2 --resume", folder.path());
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_EQ(read_bytes(folder.file("anim_0000.png")), "kept: --resume does not render it again");
+    EXPECT_EQ(read_bytes(folder.file("anim_0000.png")), frame_0);
+    EXPECT_NE(result.output.find("clrender: warning: anim_0000.png: cannot be read (not a PNG file); rendering it again"),
+              std::string::npos)
+        << result.output;
     EXPECT_TRUE(fs::is_regular_file(folder.file("anim_0001.png")));
+    EXPECT_EQ(fs::last_write_time(folder.file("anim_0002.png")), written) << "a finished frame is not written again";
+    EXPECT_EQ(read_bytes(folder.file("anim_0002.png")), frame_2);
 }
 
 }  // namespace
