@@ -205,10 +205,25 @@ fi
 exec 9>"$farm_dir/.lock" || die "cannot write in the farm folder $farm_dir" 4
 flock -n 9 || die "another slurm-render.sh is submitting to $farm_dir right now"
 
+# "JOB REASON" (or squeue's format $2) for each job of a comma list still pending or running.
+# A job that Slurm has forgotten (MinJobAge after it ended) is no longer queued; any other
+# squeue error fails.
+still_queued() {
+    local job answer
+    for job in ${1//,/ }; do
+        if ! answer=$(squeue -h -j "$job" -o "${2:-%i %r}" 2>&1); then
+            grep -q 'Invalid job id' <<<"$answer" || { echo "$answer"; return 1; }
+            answer=""
+        fi
+        [ -n "$answer" ] && echo "$answer"
+    done
+    return 0
+}
 # An earlier submission of this farm that is still queued or running would render the same
 # files at the same time; its final job that can never start (a task failed) is cancelled.
 if [ -s "$farm_dir/jobs" ]; then
     read -r old_jobs <"$farm_dir/jobs"
+    earlier=$(still_queued "$old_jobs" '%i %T %r') || die "cannot ask Slurm about the earlier run: $earlier" 9
     while read -r job state reason; do
         [ -z "$job" ] && continue
         if [ "$reason" = DependencyNeverSatisfied ]; then
@@ -216,7 +231,7 @@ if [ -s "$farm_dir/jobs" ]; then
         else
             die "an earlier farm run of this output is still in the queue (job $job: $state): wait for it, or scancel ${old_jobs//,/ }"
         fi
-    done < <(squeue -h -j "$old_jobs" -o '%i %T %r' 2>/dev/null)
+    done <<<"$earlier"
 fi
 
 mkdir -p "$farm_dir/tiles" "$farm_dir/frames"
@@ -246,19 +261,25 @@ final_script() {
 # shellcheck disable=SC2086  # --sbatch holds several options, split as a shell would
 submit() { sbatch --parsable --chdir="$PWD" --job-name="clrender-$name" $sbatch_options "$@"; }
 
+# Slurm reads % in a log name as a placeholder (%a: the task); %% is a literal %.
+logs="${farm_dir//%/%%}/logs"
 count=${#task_commands[@]}
-array_job=$(array_script | submit --array="0-$((count - 1))" --output="$farm_dir/logs/task_%a.log" --open-mode=append) ||
+jobs=""
+# Interrupted between the two submissions, the array would run with nobody to assemble it.
+trap 'say "interrupted: cancelling the jobs queued so far${jobs:+ ($jobs)}"; [ -n "$jobs" ] && scancel ${jobs//,/ }; exit 130' INT TERM
+array_job=$(array_script | submit --array="0-$((count - 1))" --output="$logs/task_%a.log" --open-mode=append) ||
     die "sbatch refused the job array (see its message above)" 9
 array_job="${array_job%%;*}"
 jobs="$array_job"; final_job=""
 if [ -n "$final_command" ]; then
     final_job=$(final_script | submit --dependency="afterok:$array_job" --kill-on-invalid-dep=yes \
-        --output="$farm_dir/logs/final.log" --open-mode=append) || {
+        --output="$logs/final.log" --open-mode=append) || {
         scancel "$array_job"; die "sbatch refused the final job (see its message above); cancelled job $array_job" 9; }
     final_job="${final_job%%;*}"
     jobs="$array_job,$final_job"
 fi
 echo "$jobs" >"$farm_dir/jobs"
+trap - INT TERM
 say "job array $array_job: $count task(s) ($(head -1 "$farm_dir/tasks")$([ "$count" -gt 1 ] && echo " ... $(tail -1 "$farm_dir/tasks")"))"
 [ -n "$final_job" ] && say "job $final_job: writes $final_output once every task succeeded"
 say "logs: $farm_dir/logs (tail -f $farm_dir/logs/*.log)"
@@ -267,8 +288,17 @@ echo "$jobs"
 
 # ---- --wait: until no job of the run is queued, then the outcome of each -------------------
 trap 'say "interrupted: the jobs keep running (squeue -j $jobs; scancel ${jobs//,/ } stops them)"; exit 130' INT TERM
+unreachable_since=""
 while :; do
-    queued=$(squeue -h -j "$jobs" -o '%i %r' 2>/dev/null) || { sleep 5; continue; }
+    # squeue may fail for a while (slurmctld restarting); five minutes without an answer end
+    # the wait, not the jobs.
+    if ! queued=$(still_queued "$jobs"); then
+        [ -n "$unreachable_since" ] || unreachable_since=$SECONDS
+        [ $((SECONDS - unreachable_since)) -lt 300 ] ||
+            die "squeue has not answered for 5 minutes ($queued); the jobs $jobs may still run" 9
+        sleep 5; continue
+    fi
+    unreachable_since=""
     [ -z "$queued" ] && break
     # A final job whose tasks failed can never start: cancel it (--kill-on-invalid-dep does the
     # same where the cluster allows it).
