@@ -125,6 +125,11 @@ frame_list() {
          END{printf "%s%s\n", a, (a==b?"":"-" b)}'
 }
 
+# The formats clrender writes (docs/command-line.md, Outputs), checked here so that a typo
+# fails now and not in every task.
+case "${output,,}" in ""|*.png|*.ppm|*.exr) ;; *) die "-o $output: clrender writes .png, .ppm or .exr images" ;; esac
+case "${video,,}" in ""|*.mp4|*.gif) ;; *) die "--video $video: clrender writes .mp4 or .gif videos" ;; esac
+
 # ---- the outputs: those of the same command in one process (docs/command-line.md, Outputs) -
 if [ "$frame_count" -gt 1 ]; then
     [ -z "$tiles" ] || die "--tiles splits a still; $scene is an animation of $frame_count frames, split by --tasks"
@@ -138,6 +143,7 @@ if [ "$frame_count" -gt 1 ]; then
     final_output="${video:-${output:-${name}_NNNN.png}}"
 else
     [ -z "$tasks" ] || die "--tasks splits an animation's frames; $scene is a still, split by --tiles"
+    [ -z "$frames" ] || { expand_frames "$frames" >/dev/null || exit 1; }
     final_output="${output:-$name.png}"
     case "${final_output,,}" in
         *.exr) die "-o $final_output: tiles are joined as PNG; render an EXR still in one process" ;;
@@ -305,7 +311,7 @@ while :; do
     if [ -n "$final_job" ] && grep -q "^$final_job DependencyNeverSatisfied" <<<"$queued"; then
         scancel "$final_job"
     fi
-    sleep 2
+    sleep 1
 done
 
 # The state of every task of the array, and of the final job.

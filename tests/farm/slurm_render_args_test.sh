@@ -75,6 +75,9 @@ expect_refusal 1 "tiles are joined as PNG" demo/demo.json -o still.exr
 expect_refusal 1 "the image has only 10 rows" --tiles 11 demo/demo.json --size 20x10
 expect_refusal 1 "give a frame pattern" demo/showcase.json -o one.png
 expect_refusal 1 "is not within the animation's frames 0-95" demo/showcase.json --frames 90-99
+expect_refusal 1 "is not within the animation's frames 0-0" demo/demo.json --frames 3
+expect_refusal 1 "clrender writes .png, .ppm or .exr images" demo/demo.json -o still.bmp
+expect_refusal 1 "clrender writes .mp4 or .gif videos" demo/showcase.json --video flight.avi
 # clrender's own checks, with its exit codes: an option it does not know, a broken scene.
 expect_refusal 1 "--spp" demo/demo.json --spp 0
 expect_refusal 2 "missing.json" demo/missing.json
