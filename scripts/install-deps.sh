@@ -25,6 +25,8 @@ packages=(
   clang libclang-rt-14-dev libjpeg62-turbo-dev
   # scripts/oclgrind.sh: the OpenCL simulator that checks every memory access of the kernels
   oclgrind
+  # the render farm's tests (tests/farm/): a two-node Slurm cluster on this machine
+  slurmctld slurmd slurm-client munge
   # scripts/install-intel-opencl.sh: pip downloads Intel's CPU OpenCL runtime (wheels from
   # PyPI, the one thing Debian does not package) for scripts/second-opencl.sh
   python3 python3-pip

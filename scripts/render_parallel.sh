@@ -6,7 +6,7 @@
 #   scripts/render_parallel.sh SCENE OUT_DIR [JOBS]
 #
 # Writes OUT_DIR/frame_0000.png ... and OUT_DIR/video.mp4. $CLRENDER names the clrender
-# binary (default: build/clrender beside this script). See docs/animation.md.
+# binary (default: build/clrender beside this script). See docs/farm.md.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 clrender="${CLRENDER:-$root/build/clrender}"

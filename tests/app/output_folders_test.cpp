@@ -1,6 +1,6 @@
 // Outputs in folders that do not exist yet: made for images, frame patterns, videos and the
 // --stats report, with the umask's permissions, only once the run's checks have passed; and
-// the recipes that name new folders (clrender's own frame-pattern hint, docs/animation.md's
+// the recipes that name new folders (clrender's own frame-pattern hint, docs/farm.md's
 // GNU parallel recipe) work as written in a fresh folder.
 #include <gtest/gtest.h>
 
@@ -119,12 +119,12 @@ TEST(OutputFolders, TheFramePatternHintWorksAsWritten) {
         EXPECT_TRUE(fs::is_regular_file(folder.file(name))) << name;
 }
 
-// The shell block of docs/animation.md's "Splitting a render across processes or machines",
-// run as written (clrender on PATH, the scene as scene.json) in a folder without out/: the
+// The shell block of docs/farm.md's "Several processes without Slurm: GNU parallel", run as
+// written (clrender on PATH, the scene as scene.json) in a folder without out/: the
 // parallel jobs all make out/ at once.
 std::string documented_parallel_recipe() {
-    const std::string doc = read_bytes(std::string(CLRENDER_SOURCE_DIR) + "/docs/animation.md");
-    const std::size_t section = doc.find("## Splitting a render across processes or machines");
+    const std::string doc = read_bytes(std::string(CLRENDER_SOURCE_DIR) + "/docs/farm.md");
+    const std::size_t section = doc.find("## Several processes without Slurm: GNU parallel");
     const std::size_t start = doc.find("```sh\n", section);
     const std::size_t end = doc.find("```", start + 6);
     if (section == std::string::npos || start == std::string::npos || end == std::string::npos) return "";
