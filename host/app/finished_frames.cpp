@@ -46,7 +46,7 @@ void find_finished_frames(const Options& options, const Scene& scene, OutputPlan
         std::error_code ignored;
         if (!std::filesystem::is_regular_file(path, ignored)) continue;  // missing, or refused as an output
         if (image_format_for(path) == ImageFormat::Png) {
-            expected.text = describe_frame(scene, frame, options.crop);
+            expected.text = describe_frame(scene, frame, options);
             if (const std::optional<std::string> reason = why_not_finished(path, expected)) {
                 plan.warnings.push_back(path + ": " + *reason + "; rendering it again");
                 continue;

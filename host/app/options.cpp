@@ -68,6 +68,7 @@ void add_scene_check_options(CLI::App& app, Options& options, SceneCheckOptions&
                    "-D /eye=[0,0,5]; the value is JSON, else a string. Repeatable, applied in order; --size, --spp "
                    "and --seed win over it")
         ->expected(1)
+        ->allow_extra_args(false)  // one value each: `-D k=v scene.json` must not take the scene as a -D
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     app.add_option("--seed", values.seed, "Seed of the sample pattern (0 to 4294967295); overrides clrender.seed")
         ->check(CLI::Range(0LL, 4294967295LL));

@@ -205,7 +205,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 
     const FrameSize size = frame_size(options, scene);
     FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged,
-                   [&scene, &options](int frame) { return describe_frame(scene, frame, options.crop); });
+                   [&scene, &options](int frame) { return describe_frame(scene, frame, options); });
     Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     shown = &progress;
     const Stopwatch render_time;
@@ -244,7 +244,7 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
     for (int frame : plan.frames) {
         throw_if_interrupted();
         progress.frame_started(frame);
-        check_frame_description(plan.image_path(frame), frame, describe_frame(scene, frame, options.crop));
+        check_frame_description(plan.image_path(frame), frame, describe_frame(scene, frame, options));
         sink.push(frame, read_frame(plan, size, frame), true);
         progress.frame_done();
     }

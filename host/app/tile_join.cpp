@@ -58,7 +58,7 @@ private:
 // The tile's rectangle of the frame, from its description, after checking that the tile was
 // made by this render (everything but Crop) and is a crop of the frame at its Crop's size.
 PixelRect checked_tile_rect(const std::string& tile, const PngHeader& header, const Scene& scene, int frame,
-                            bool alpha) {
+                            const Options& options) {
     if (header.text.empty())
         throw SceneError(tile, "", "the tile has no clrender description (PNG text chunks); --join takes the PNG "
                                    "tiles that clrender --crop writes");
@@ -68,7 +68,7 @@ PixelRect checked_tile_rect(const std::string& tile, const PngHeader& header, co
                                    "clrender --crop wrote");
     const std::optional<PixelRect> rect = parse_pixel_rect(*crop);
     if (!rect) throw SceneError(tile, "", "the tile's Crop '" + *crop + "' is not x0,x1,y0,y1");
-    if (const auto difference = first_difference(without_key(header.text, "Crop"), describe_frame(scene, frame)))
+    if (const auto difference = first_difference(without_key(header.text, "Crop"), describe_frame(scene, frame, options)))
         throw SceneError(tile, "", "the tile is of another render: " + difference_sentence(*difference, "tile"));
     if (header.width != rect->width() || header.height != rect->height())
         throw SceneError(tile, "", "the tile is " + size_text(header.width, header.height) + ", its Crop " + *crop +
@@ -77,7 +77,7 @@ PixelRect checked_tile_rect(const std::string& tile, const PngHeader& header, co
         throw SceneError(tile, "", "the tile's Crop " + *crop + " reaches outside the " +
                                        size_text(scene.width, scene.height) + " frame");
     if (!header.clrender_form) throw SceneError(tile, "", "the tile is not an 8-bit RGB or RGBA PNG as clrender writes");
-    if (header.alpha != alpha)
+    if (header.alpha != options.alpha)
         throw SceneError(tile, "", header.alpha ? "the tile has an alpha channel (rendered with --alpha); join it with --alpha"
                                                 : "the tile has no alpha channel, and --alpha writes one: render the "
                                                   "tiles with --alpha");
@@ -106,18 +106,19 @@ void check_join_request(const Options& options, const OutputPlan& plan) {
                          "linear ones; write a .png or .ppm, or render the EXR in one process");
 }
 
-Image join_tiles(const std::vector<std::string>& tiles, const Scene& scene, int frame, bool alpha) {
+Image join_tiles(const Options& options, const Scene& scene, int frame) {
+    const std::vector<std::string>& tiles = options.join;
     Image image;
     image.width = scene.width;
     image.height = scene.height;
-    image.write_alpha = alpha;
+    image.write_alpha = options.alpha;
     image.rgba.resize(static_cast<std::size_t>(scene.width) * scene.height * 4);
     Coverage coverage(scene.width, scene.height);
     for (std::size_t i = 0; i < tiles.size(); ++i) {
         throw_if_interrupted();
         const std::string& tile = tiles[i];
         try {
-            const PixelRect rect = checked_tile_rect(tile, read_png_header(tile), scene, frame, alpha);
+            const PixelRect rect = checked_tile_rect(tile, read_png_header(tile), scene, frame, options);
             if (const auto overlap = coverage.cover(rect, i)) {
                 const std::string& earlier = tiles[overlap->earlier_tile];
                 throw SceneError(tile, "", "the tile overlaps " + earlier +
@@ -140,10 +141,10 @@ Image join_tiles(const std::vector<std::string>& tiles, const Scene& scene, int 
 
 std::unique_ptr<AtomicFile> write_joined_image(const Options& options, const Scene& scene, const OutputPlan& plan) {
     const int frame = plan.frames.front();
-    const Image image = join_tiles(options.join, scene, frame, options.alpha);
+    const Image image = join_tiles(options, scene, frame);
     throw_if_interrupted();
     make_missing_folders(plan);
-    return write_image_uncommitted(plan.image_path(frame), image, describe_frame(scene, frame));
+    return write_image_uncommitted(plan.image_path(frame), image, describe_frame(scene, frame, options));
 }
 
 }  // namespace clr

@@ -22,10 +22,11 @@ namespace clr {
 // EXR (tiles hold display bytes, not linear colours).
 void check_join_request(const Options& options, const OutputPlan& plan);
 
-// Reads, checks and pastes `tiles` into frame `frame` of the scene; `alpha`: the tiles and the
-// image have an alpha channel (--alpha). Throws SceneError (exit 2) naming the tile at fault,
-// or "--join" for pixels that no tile covers; Interrupted between tiles.
-Image join_tiles(const std::vector<std::string>& tiles, const Scene& scene, int frame, bool alpha);
+// Reads, checks and pastes the tiles of options.join into frame `frame` of the scene; with
+// options.alpha the tiles and the image have an alpha channel. Throws SceneError (exit 2)
+// naming the tile at fault, or "--join" for pixels that no tile covers; Interrupted between
+// tiles.
+Image join_tiles(const Options& options, const Scene& scene, int frame);
 
 // join_tiles for the run's one image, written (complete, not yet renamed: staged_outputs.h)
 // with the PNG description a render of it writes.

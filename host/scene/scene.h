@@ -112,6 +112,10 @@ struct Scene {
     std::vector<Billboard> billboards;
     std::vector<Impostor> impostors;  // "clrender"/"impostors"; shown after the billboards
 
+    // What decides the pixels, as a label for image descriptions (scene/scene_digest.h); ""
+    // when the images were not decoded (--check).
+    std::string digest;
+
     std::vector<std::string> warnings;  // unknown keys and similar, one line each
     std::vector<ImageFileInfo> image_files;  // each distinct image file shown, once
 

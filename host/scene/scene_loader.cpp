@@ -17,6 +17,7 @@
 #include "scene/image_library.h"
 #include "scene/json_reader.h"
 #include "scene/key_hints.h"
+#include "scene/scene_digest.h"
 #include "scene/scene_overrides.h"
 #include "core/printable_text.h"
 #include "scene/value_ranges.h"
@@ -597,6 +598,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
     load_scene_images(scene, billboard_images, impostor_views, options);
+    if (options.decode_images) scene.digest = scene_digest(document, scene);
     diagnostics.summarise_warnings();
     return scene;
 }

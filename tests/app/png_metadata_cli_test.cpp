@@ -88,5 +88,48 @@ TEST(PngMetadataCli, AFullFrameNamesNoCrop) {
     EXPECT_EQ(description.text.count("Crop"), 0u);
 }
 
+// The scene digest follows what decides the pixels (the scene's values, its images' bytes), not
+// where the scene is: a copy elsewhere has the same digest, an edited texture another.
+TEST(PngMetadataCli, TheSceneDigestChangesWithTheSceneAndItsImagesOnly) {
+    TempFolder folder;
+    const std::string scene = R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 40,
+      "width": 8, "height": 6, "billboards": [{"UpperLeft": [-1, 1, 0], "LowerLeft": [-1, -1, 0],
+      "UpperRight": [1, 1, 0], "filename": "t.ppm"}]})";
+    std::filesystem::create_directories(folder.file("a"));
+    std::filesystem::create_directories(folder.file("b"));
+    folder.write("a/s.json", scene);
+    folder.write("a/t.ppm", "P3 1 1 255 200 10 10\n");
+    folder.write("b/s.json", scene);
+    folder.write("b/t.ppm", "P3 1 1 255 200 10 10\n");
+    auto digest = [&](const std::string& json, const std::string& png) {
+        EXPECT_EQ(run_clrender(json + " -q --reference -o " + png, folder.path()).exit_code, 0);
+        return read_png_description(folder.file(png)).text["Scene digest"];
+    };
+    const std::string first = digest("a/s.json", "a1.png");
+    EXPECT_EQ(first.size(), 16u);
+    EXPECT_EQ(digest("b/s.json", "b1.png"), first) << "the same scene in another folder";
+    EXPECT_EQ(digest("a/s.json", "a2.png"), first) << "the same scene again";
+    folder.write("b/t.ppm", "P3 1 1 255 10 200 10\n");
+    EXPECT_NE(digest("b/s.json", "b2.png"), first) << "an edited texture";
+    EXPECT_NE(digest("a/s.json -D DefaultColor=[0,0,1]", "a3.png"), first) << "a -D value";
+}
+
+// Pixels of another arithmetic say so, so that --resume, --join and --assemble never take them
+// for the default float kernels' (the same pixels may differ in the last rounding).
+TEST(PngMetadataCli, DoubleKernelsAndTheReferenceSayHowThePixelsWereComputed) {
+    TempFolder folder;
+    folder.write("anim.json", kAnimation);
+    ASSERT_EQ(run_clrender("anim.json -q --frames 0 -o 'f_%04d.png'", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("anim.json -q --frames 0 --precision double -o 'd_%04d.png'", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("anim.json -q --frames 0 --reference -o 'r_%04d.png'", folder.path()).exit_code, 0);
+    auto plain = read_png_description(folder.file("f_0000.png")).text;
+    auto twice = read_png_description(folder.file("d_0000.png")).text;
+    auto reference = read_png_description(folder.file("r_0000.png")).text;
+    EXPECT_EQ(plain.count("Precision") + plain.count("Renderer"), 0u) << "the default names neither";
+    EXPECT_EQ(twice["Precision"], "double");
+    EXPECT_EQ(twice.count("Renderer"), 0u);
+    EXPECT_EQ(reference["Renderer"], "host reference");
+}
+
 }  // namespace
 }  // namespace clr

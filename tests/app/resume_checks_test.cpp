@@ -69,6 +69,34 @@ TEST(ResumeChecks, AStillOfAnotherSampleCountIsRenderedAgain) {
     EXPECT_TRUE(read_bytes(folder.file("still.png")) == read_bytes(folder.file("fresh.png")));
 }
 
+TEST(ResumeChecks, AStillOfDoubleKernelsIsRenderedAgainByTheFloatOnes) {
+    TempFolder folder;
+    folder.write("scene.json", kStill);
+    ASSERT_EQ(run_clrender("scene.json -q --precision double -o still.png", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("scene.json -q -o fresh.png", folder.path()).exit_code, 0);
+    auto result = run_clrender("scene.json -q -o still.png --resume", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(result.output, "clrender: warning: still.png: made by another render (Precision: double in the file, "
+                             "none in this run); rendering it again\n");
+    EXPECT_TRUE(read_bytes(folder.file("still.png")) == read_bytes(folder.file("fresh.png")));
+}
+
+// An edit that the other keys do not show (a colour) changes the scene's digest.
+TEST(ResumeChecks, AStillOfAnEditedSceneIsRenderedAgain) {
+    TempFolder folder;
+    std::string edited = kStill;
+    edited.replace(edited.find("[0.9, 0.3, 0.2]"), 15, "[0.1, 0.8, 0.2]");
+    folder.write("scene.json", kStill);
+    ASSERT_EQ(run_clrender("scene.json -q -o still.png", folder.path()).exit_code, 0);
+    folder.write("scene.json", edited);
+    ASSERT_EQ(run_clrender("scene.json -q -o fresh.png", folder.path()).exit_code, 0);
+    auto result = run_clrender("scene.json -q -o still.png --resume", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(contains(result.output, "clrender: warning: still.png: made by another render (Scene digest: "))
+        << result.output;
+    EXPECT_TRUE(read_bytes(folder.file("still.png")) == read_bytes(folder.file("fresh.png")));
+}
+
 TEST(ResumeChecks, ATruncatedPngIsRenderedAgain) {
     TempFolder folder;
     folder.write("scene.json", kStill);
