@@ -3,7 +3,8 @@
 # (tests/farm/slurm_cluster.sh) renders through scripts/slurm-render.sh, and every result is
 # compared byte for byte with the same command run in one process. Then one task's node dies
 # in the middle of its frames, and a second run of the same command finishes the work without
-# rendering any finished frame again.
+# rendering any finished frame again; and Slurm requeues a running task, which then skips what
+# its first run finished.
 #
 #   slurm_farm_test.sh CLRENDER SOURCE_DIR
 #
@@ -122,6 +123,31 @@ one scenes/demo/showcase.json --frames 0-47 --size 640x360 --spp 32 --video one/
 check "the finished farm's video is the one-process video" same_file dies/flight.mp4 one/flight.mp4
 ls -A dies/flight.farm/frames | grep -q '^\.clrender-' && fail "the dead node's temporary file was left after the rerun"
 echo "farm figures: first run ${first_seconds} s (node1 killed), finishing run ${second_seconds} s, $finished frames kept"
+
+# ---- 4. Slurm runs a task twice (requeued mid-chunk): the second run skips what the first did -
+twice_run=(--wait --tasks 1 --sbatch "--requeue" scenes/demo/showcase.json --frames 0-47 --size 640x360 --spp 32
+           --video twice/flight.mp4)
+farm "${twice_run[@]}" >twice-run.out 2>twice-run.err &
+twice=$!
+for _ in $(seq 1 600); do
+    [ "$(cat twice/flight.farm/logs/task_0.log 2>/dev/null | grep -c '"frames_done"')" -ge 3 ] && break
+    sleep 0.2
+done
+array=$(cut -d, -f1 twice/flight.farm/jobs)
+scontrol requeue "${array}_0" || fail "scontrol requeue ${array}_0"
+# A requeued job waits two minutes before it may start again; once it is pending, start it now.
+for _ in $(seq 1 150); do
+    [ "$(squeue -h -j "${array}_0" -o %T 2>/dev/null)" = PENDING ] &&
+        scontrol update jobid="${array}_0" StartTime=now 2>/dev/null && break
+    sleep 0.2
+done
+(cd twice/flight.farm/frames && stat -c '%n %i %Y' ./*.png) >requeued-before.txt
+wait $twice || fail "a run whose task Slurm requeued succeeds (exit $?): $(cat twice-run.err)"
+grep -q '^clrender farm: task 0 on node[12], job [0-9_]*, run 2,' twice/flight.farm/logs/task_0.log ||
+    fail "the requeued task ran a second time (its log says run 2)"
+(cd twice/flight.farm/frames && stat -c '%n %i %Y' $(cut -d' ' -f1 ../../../requeued-before.txt)) >requeued-after.txt
+cmp -s requeued-before.txt requeued-after.txt || fail "the requeued task rendered frames of its first run again"
+check "the requeued farm's video is the one-process video" same_file twice/flight.mp4 one/flight.mp4
 
 [ $failures -eq 0 ] || { echo "$failures check(s) failed" >&2; exit 1; }
 echo "passed"
