@@ -4,6 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "render/frustum_clip.h"
 
 namespace clr {
 namespace {
@@ -41,17 +44,51 @@ public:
         // the image, then pixel coordinates of which pixel centres are the integers.
         double sx = dot(rel, right_) / (dot(right_, right_) * depth);
         double sy = dot(rel, up_) / (dot(up_, up_) * depth);
-        double col = (sx + 1) * width_ / 2 - 0.5;
-        double row = (1 - sy) * height_ / 2 - 0.5;
+        widen(bounds, (sx + 1) * width_ / 2 - 0.5, (1 - sy) * height_ / 2 - 0.5);
+    }
+
+    // Widens `bounds` by the projection of the part of convex polygon `corners` that rays can
+    // reach: the part inside the view frustum, widened by kClipMarginPixels on every side and
+    // with its apex moved back by a small fraction of the polygon's distance, more than float
+    // rounding of the kernels' positions could move it. A polygon that comes that close to
+    // the eye covers the whole screen. For objects that reach behind the eye plane.
+    void add_clipped(const std::vector<Vec3>& corners, PixelBounds& bounds) const {
+        std::vector<ViewPoint> polygon;
+        double distance = 0;
+        for (const Vec3& corner : corners) {
+            Vec3 rel = corner - eye_;
+            polygon.push_back({dot(rel, right_) / dot(right_, right_), dot(rel, up_) / dot(up_, up_), dot(rel, forward_)});
+            distance = std::max(distance, length(rel));
+        }
+        const ClipFrustum frustum{2.0 * kClipMarginPixels / width_, 2.0 * kClipMarginPixels / height_,
+                                  kNearEyeFraction * distance};
+        for (const ViewPoint& p : clip_to_frustum(polygon, frustum)) {
+            bounds.in_front = true;
+            if (!(p.z > frustum.apex_back)) {
+                bounds.whole_screen = true;
+                return;
+            }
+            widen(bounds, (p.x / p.z + 1) * width_ / 2 - 0.5, (1 - p.y / p.z) * height_ / 2 - 0.5);
+        }
+    }
+
+    const Vec3& eye() const { return eye_; }
+
+private:
+    // Clipping keeps what lies within this many pixels outside the screen: far more than the
+    // kernels' float rays can stray from the exact ones.
+    static constexpr double kClipMarginPixels = 4;
+    // A polygon that passes within this fraction of its distance from the eye counts as
+    // touching it (float positions are exact to about 6e-8 of their distance).
+    static constexpr double kNearEyeFraction = 1e-5;
+
+    static void widen(PixelBounds& bounds, double col, double row) {
         bounds.col_min = std::min(bounds.col_min, col);
         bounds.col_max = std::max(bounds.col_max, col);
         bounds.row_min = std::min(bounds.row_min, row);
         bounds.row_max = std::max(bounds.row_max, row);
     }
 
-    const Vec3& eye() const { return eye_; }
-
-private:
     Vec3 eye_, forward_, right_, up_;
     int width_, height_;
 };
@@ -62,13 +99,25 @@ struct Candidate {
     PixelBounds bounds;
 };
 
-// A sphere lies inside its axis-aligned box, whose projection bounds the sphere's.
+// Whether an object reaches behind the eye plane: then its corners' projection says nothing,
+// and its bounds are those of its part inside the view frustum.
+bool reaches_behind_eye(const PixelBounds& bounds) { return bounds.whole_screen && bounds.in_front; }
+
+// A sphere lies inside its axis-aligned box, whose projection bounds the sphere's. Reaching
+// behind the eye, the box's faces are clipped: a ray from outside the box enters through one.
 Candidate sphere_candidate(const Sphere& sphere, std::uint32_t index, const Projector& projector) {
     Candidate candidate{index, std::max(0.0, length(sphere.center - projector.eye()) - sphere.radius), {}};
-    for (int corner = 0; corner < 8; ++corner) {
-        Vec3 offset{corner & 1 ? sphere.radius : -sphere.radius, corner & 2 ? sphere.radius : -sphere.radius,
-                    corner & 4 ? sphere.radius : -sphere.radius};
-        projector.add(sphere.center + offset, candidate.bounds);
+    auto corner = [&](int bits) {
+        return sphere.center + Vec3{bits & 1 ? sphere.radius : -sphere.radius, bits & 2 ? sphere.radius : -sphere.radius,
+                                    bits & 4 ? sphere.radius : -sphere.radius};
+    };
+    for (int bits = 0; bits < 8; ++bits) projector.add(corner(bits), candidate.bounds);
+    if (!reaches_behind_eye(candidate.bounds)) return candidate;
+    candidate.bounds = {};
+    for (int axis = 0; axis < 3; ++axis) {
+        const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
+        for (int side : {0, 1 << axis})
+            projector.add_clipped({corner(side), corner(side | u), corner(side | u | v), corner(side | v)}, candidate.bounds);
     }
     return candidate;
 }
@@ -80,9 +129,13 @@ Candidate billboard_candidate(const Billboard& billboard, std::uint32_t index, c
     Vec3 normal = normalize(cross(edge_a, edge_b));
     double plane_distance = std::fabs(dot(projector.eye() - billboard.upper_left, normal));
     Candidate candidate{index | CLR_TILE_BILLBOARD, plane_distance, {}};
-    for (const Vec3& corner : {billboard.upper_left, billboard.upper_right, billboard.lower_left,
-                               billboard.upper_right + edge_b})
-        projector.add(corner, candidate.bounds);
+    const std::vector<Vec3> corners = {billboard.upper_left, billboard.upper_right, billboard.upper_right + edge_b,
+                                       billboard.lower_left};
+    for (const Vec3& corner : corners) projector.add(corner, candidate.bounds);
+    if (reaches_behind_eye(candidate.bounds)) {
+        candidate.bounds = {};
+        projector.add_clipped(corners, candidate.bounds);
+    }
     return candidate;
 }
 
