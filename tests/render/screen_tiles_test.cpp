@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 #include "render/frame_camera.h"
@@ -70,6 +71,41 @@ TEST(ScreenTiles, ObjectWhollyBehindTheEyeIsNotListed) {
     FrameGeometry frame(scene);
     ScreenTiles tiles = bin_screen_tiles(frame, frame_camera(scene, scene.camera_path.front(), 0));
     EXPECT_TRUE(tiles.items.empty());
+}
+
+// The kernel stops a row once its hits are nearer than the next object's bound: every list
+// must run nearest first, and no bound may exceed its object's distance from the eye.
+TEST(ScreenTiles, ListsRunNearestFirstWithBoundsBelowTheObjectsDistances) {
+    Scene scene = testing::make_scene({0.5, 1, 6}, {0, 0, -10}, {0, 1, 0}, 60, 160, 96);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> spot(-12, 12), depth(-30, 2), size(0.2, 2);
+    for (int i = 0; i < 300; ++i) {
+        const Vec3 at{spot(random), spot(random) / 2, depth(random)};
+        scene.spheres.push_back(testing::make_sphere(at, size(random), {1, 1, 1}));
+        const double s = size(random);
+        scene.billboards.push_back(testing::make_billboard(at + Vec3{-s, s, 1}, at + Vec3{-s, -s, 1}, at + Vec3{s, s, 1.5}, {1, 1, 1}));
+    }
+    FrameGeometry frame(scene);
+    FrameCamera camera = frame_camera(scene, scene.camera_path.front(), 0);
+    ScreenTiles tiles = bin_screen_tiles(frame, camera);
+    const Vec3 eye = camera.eye_in_scene();
+    ASSERT_GT(tiles.items.size(), 600u);
+    for (int t = 0; t < tiles.tiles_x * tiles.tiles_y; ++t)
+        for (std::uint32_t k = tiles.offsets[t]; k < tiles.offsets[t + 1]; ++k) {
+            if (k > tiles.offsets[t]) {
+                EXPECT_LE(tiles.nearest[k - 1], tiles.nearest[k]) << "tile " << t << " entry " << k;
+            }
+            const std::uint32_t index = tiles.items[k] & ~CLR_TILE_BILLBOARD;
+            double distance;
+            if (tiles.items[k] & CLR_TILE_BILLBOARD) {
+                const Billboard& b = frame.billboard(index);
+                const Vec3 normal = normalize(cross(b.upper_right - b.upper_left, b.lower_left - b.upper_left));
+                distance = std::fabs(dot(eye - b.upper_left, normal));
+            } else {
+                distance = length(frame.spheres()[index].center - eye) - frame.spheres()[index].radius;
+            }
+            EXPECT_LE(tiles.nearest[k], distance) << "tile " << t << " entry " << k;
+        }
 }
 
 TEST(FrustumClip, KeepsOnlyThePartInsideTheWidenedFrustum) {
