@@ -20,15 +20,22 @@ constexpr int kGrowth = 4;
 }  // namespace
 
 std::vector<double> row_work(const ScreenTiles& tiles, int width, int height) {
-    std::vector<double> work(height, width);
+    // Each item adds to a run of rows: counted as a start and an end (over 300,000 items at
+    // 100,000 spheres), then summed over the rows once.
+    std::vector<double> change(static_cast<std::size_t>(height) + 1, 0);
     for (int tile = 0; tile + 1 < static_cast<int>(tiles.offsets.size()); ++tile) {
         int tile_top = tile / std::max(1, tiles.tiles_x) * kClrTileSize;
         for (std::uint32_t item = tiles.offsets[tile]; item < tiles.offsets[tile + 1]; ++item) {
             int first = std::max(tile_top, static_cast<int>(tiles.rows[item] >> 16));
             int last = std::min({tile_top + kClrTileSize - 1, static_cast<int>(tiles.rows[item] & 0xffff), height - 1});
-            for (int row = first; row <= last; ++row) work[row] += kClrTileSize;
+            if (first > last) continue;
+            change[first] += kClrTileSize;
+            change[last + 1] -= kClrTileSize;
         }
     }
+    std::vector<double> work(height, width);
+    double running = 0;
+    for (int row = 0; row < height; ++row) work[row] += running += change[row];
     return work;
 }
 

@@ -3,98 +3,22 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
+#include <cstring>
+
+#include "core/radix_sort.h"
+#include "render/object_bounds.h"
 
 namespace clr {
 namespace {
 
-// The pixel rectangle an object may cover, in (fractional) pixel coordinates, or the
-// whole screen when the object reaches behind the eye (its projection is then unbounded), or
-// nothing when it lies wholly behind the eye.
-struct PixelBounds {
-    double col_min = std::numeric_limits<double>::infinity(), col_max = -col_min;
-    double row_min = col_min, row_max = -col_min;
-    bool whole_screen = false;
-    bool in_front = false;  // some point is not clearly behind the eye
-};
-
-class Projector {
-public:
-    explicit Projector(const FrameCamera& camera)
-        : eye_(camera.eye_in_scene()), forward_(camera.forward), right_(camera.right), up_(camera.up),
-          width_(camera.width), height_(camera.height) {}
-
-    // Widens `bounds` by the projection of `point`. A point less than a small fraction of the
-    // scene's distance in front of the eye counts as behind it. An object whose points are all
-    // clearly behind the eye plane (by more than float rounding could move them) is never met:
-    // every primary ray travels forwards, so every hit has a positive depth, and so would any
-    // point of the object's convex hull that a ray could reach.
-    void add(const Vec3& point, PixelBounds& bounds) const {
-        Vec3 rel = point - eye_;
-        double depth = dot(rel, forward_);
-        if (!(depth < -1e-6 * length(rel))) bounds.in_front = true;
-        if (!(depth > 1e-7 * length(rel))) {
-            bounds.whole_screen = true;
-            return;
-        }
-        // Inverse of the kernels' camera_ray: screen coordinates sx, sy in [-1, 1] across
-        // the image, then pixel coordinates of which pixel centres are the integers.
-        double sx = dot(rel, right_) / (dot(right_, right_) * depth);
-        double sy = dot(rel, up_) / (dot(up_, up_) * depth);
-        double col = (sx + 1) * width_ / 2 - 0.5;
-        double row = (1 - sy) * height_ / 2 - 0.5;
-        bounds.col_min = std::min(bounds.col_min, col);
-        bounds.col_max = std::max(bounds.col_max, col);
-        bounds.row_min = std::min(bounds.row_min, row);
-        bounds.row_max = std::max(bounds.row_max, row);
-    }
-
-    const Vec3& eye() const { return eye_; }
-
-private:
-    Vec3 eye_, forward_, right_, up_;
-    int width_, height_;
-};
-
-struct Candidate {
-    std::uint32_t item;
-    double nearest;
-    PixelBounds bounds;
-};
-
-// A sphere lies inside its axis-aligned box, whose projection bounds the sphere's.
-Candidate sphere_candidate(const Sphere& sphere, std::uint32_t index, const Projector& projector) {
-    Candidate candidate{index, std::max(0.0, length(sphere.center - projector.eye()) - sphere.radius), {}};
-    for (int corner = 0; corner < 8; ++corner) {
-        Vec3 offset{corner & 1 ? sphere.radius : -sphere.radius, corner & 2 ? sphere.radius : -sphere.radius,
-                    corner & 4 ? sphere.radius : -sphere.radius};
-        projector.add(sphere.center + offset, candidate.bounds);
-    }
-    return candidate;
-}
-
-// A parallelogram projects inside the hull of its corners; no hit is nearer than its plane.
-Candidate billboard_candidate(const Billboard& billboard, std::uint32_t index, const Projector& projector) {
-    Vec3 edge_a = billboard.upper_right - billboard.upper_left;
-    Vec3 edge_b = billboard.lower_left - billboard.upper_left;
-    Vec3 normal = normalize(cross(edge_a, edge_b));
-    double plane_distance = std::fabs(dot(projector.eye() - billboard.upper_left, normal));
-    Candidate candidate{index | CLR_TILE_BILLBOARD, plane_distance, {}};
-    for (const Vec3& corner : {billboard.upper_left, billboard.upper_right, billboard.lower_left,
-                               billboard.upper_right + edge_b})
-        projector.add(corner, candidate.bounds);
-    return candidate;
-}
-
 // Pixel rows first..last, packed as the kernels read them (ScreenTiles::rows).
 std::uint32_t pack_rows(int first, int last) { return static_cast<std::uint32_t>(first) << 16 | static_cast<std::uint32_t>(last); }
 
-// The tiles a candidate may cover, and its pixel rows, widened by one pixel so that rounding
-// in the kernels' float rays can never put a pixel outside its object's tiles or rows.
-bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range,
+// The tiles an object with `bounds` may cover, and its pixel rows, widened by one pixel so that
+// rounding in the kernels' float rays can never put a pixel outside its object's tiles or rows.
+bool tile_range(const PixelBounds& b, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range,
                 std::uint32_t& rows) {
-    const PixelBounds& b = candidate.bounds;
-    if (!b.in_front) return false;  // wholly behind the eye: trees behind the camera in a forest
+    if (!b.in_front) return false;  // behind the eye or outside the view: trees behind the camera in a forest
     if (b.whole_screen) {
         range = {0, tiles.tiles_x - 1, 0, tiles.tiles_y - 1};
         rows = pack_rows(0, height - 1);
@@ -110,46 +34,76 @@ bool tile_range(const Candidate& candidate, const ScreenTiles& tiles, int width,
     return true;
 }
 
+// An object that some tile lists.
+struct Placed {
+    std::uint32_t item;
+    float nearest;  // ScreenTiles::nearest
+    std::uint32_t rows;
+    std::array<int, 4> range;  // tile columns first, last, tile rows first, last
+};
+
+// The objects of a frame that some tile lists, and the order in which the tiles list them.
+class Placement {
+public:
+    Placement(const ScreenTiles& tiles, const FrameCamera& camera) : tiles_(tiles), camera_(camera) {}
+
+    void add(std::uint32_t item, double nearest, const PixelBounds& bounds) {
+        std::array<int, 4> range;
+        std::uint32_t rows;
+        if (!tile_range(bounds, tiles_, camera_.width, camera_.height, range, rows)) return;
+        // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
+        // one, and the kernel must never skip an object that its float ray does hit first.
+        const float bound = static_cast<float>(nearest * (1 - 1e-5));
+        // The order key: the bound's bits (a float >= 0 orders as its bits do), then the
+        // object's place in the frame, so that every tile's list is nearest first in a
+        // deterministic order.
+        std::uint32_t bits;
+        std::memcpy(&bits, &bound, sizeof bits);
+        order_.push_back(static_cast<std::uint64_t>(bits) << 32 | placed_.size());
+        placed_.push_back({item, bound, rows, range});
+    }
+
+    // The placed objects, nearest first.
+    std::vector<Placed> nearest_first() {
+        radix_sort(order_);
+        std::vector<Placed> sorted;
+        sorted.reserve(placed_.size());
+        for (std::uint64_t key : order_) sorted.push_back(placed_[static_cast<std::uint32_t>(key)]);
+        return sorted;
+    }
+
+private:
+    const ScreenTiles& tiles_;
+    const FrameCamera& camera_;
+    std::vector<Placed> placed_;
+    std::vector<std::uint64_t> order_;
+};
+
 }  // namespace
 
 ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& camera) {
-    Projector projector(camera);
-    std::vector<Candidate> candidates;
-    candidates.reserve(frame.object_count());
-    for (std::size_t i = 0; i < frame.spheres().size(); ++i)
-        candidates.push_back(sphere_candidate(frame.spheres()[i], static_cast<std::uint32_t>(i), projector));
-    for (std::size_t i = 0; i < frame.billboard_count(); ++i)
-        candidates.push_back(billboard_candidate(frame.billboard(i), static_cast<std::uint32_t>(i), projector));
-    // Nearest first, ties by item, so every tile's list is in a deterministic near-to-far order.
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.nearest != b.nearest ? a.nearest < b.nearest : a.item < b.item;
-    });
-
     ScreenTiles tiles;
     tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
     tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
-    // Two passes over flat arrays (count per tile, then fill in candidate order), without a
-    // list per tile: a frame bins anew, and a vector per tile (thousands at 1080p) would be
-    // allocated and freed every frame (docs/benchmarks.md).
-    struct Placed {
-        std::uint32_t item;
-        float bound;
-        std::array<int, 4> range;
-        std::uint32_t rows;
-    };
-    std::vector<Placed> placed;
-    placed.reserve(candidates.size());
-    std::vector<std::uint32_t> counts(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y + 1, 0);
-    for (const Candidate& candidate : candidates) {
-        std::array<int, 4> range;
-        std::uint32_t rows;
-        if (!tile_range(candidate, tiles, camera.width, camera.height, range, rows)) continue;
-        // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
-        // one, and the kernel must never skip an object that its float ray does hit first.
-        placed.push_back({candidate.item, static_cast<float>(candidate.nearest * (1 - 1e-5)), range, rows});
-        for (int ty = range[2]; ty <= range[3]; ++ty)
-            for (int tx = range[0]; tx <= range[1]; ++tx) ++counts[ty * tiles.tiles_x + tx];
+    const ObjectBounds bounds(camera);
+    Placement placement(tiles, camera);
+    for (std::size_t i = 0; i < frame.spheres().size(); ++i) {
+        const Sphere& sphere = frame.spheres()[i];
+        placement.add(static_cast<std::uint32_t>(i), bounds.sphere_distance(sphere), bounds.sphere(sphere));
     }
+    for (std::size_t i = 0; i < frame.billboard_count(); ++i) {
+        const Billboard& billboard = frame.billboard(i);
+        placement.add(static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD, bounds.billboard_distance(billboard),
+                      bounds.billboard(billboard));
+    }
+    // Two passes over flat arrays (count per tile, then fill nearest first), without a list
+    // per tile: a frame bins anew, and a vector per tile (thousands at 1080p) would be
+    // allocated and freed every frame (docs/benchmarks.md).
+    const std::vector<Placed> sorted = placement.nearest_first();
+    std::vector<std::uint32_t> counts(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y + 1, 0);
+    for (const Placed& p : sorted)
+        for (int ty = p.range[2]; ty <= p.range[3]; ++ty)
+            for (int tx = p.range[0]; tx <= p.range[1]; ++tx) ++counts[ty * tiles.tiles_x + tx];
     tiles.offsets.resize(counts.size());
     std::uint32_t total = 0;
     for (std::size_t t = 0; t < counts.size(); ++t) {
@@ -160,12 +114,12 @@ ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& came
     tiles.nearest.resize(total);
     tiles.rows.resize(total);
     std::vector<std::uint32_t> next(tiles.offsets.begin(), tiles.offsets.end() - 1);
-    for (const Placed& p : placed)
+    for (const Placed& p : sorted)
         for (int ty = p.range[2]; ty <= p.range[3]; ++ty)
             for (int tx = p.range[0]; tx <= p.range[1]; ++tx) {
                 std::uint32_t slot = next[ty * tiles.tiles_x + tx]++;
                 tiles.items[slot] = p.item;
-                tiles.nearest[slot] = p.bound;
+                tiles.nearest[slot] = p.nearest;
                 tiles.rows[slot] = p.rows;
             }
     return tiles;

@@ -1,0 +1,26 @@
+#include "core/radix_sort.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace clr {
+
+void radix_sort(std::vector<std::uint64_t>& keys) {
+    constexpr int kDigitBits = 16;
+    constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
+    if (keys.size() < 2) return;
+    std::vector<std::uint64_t> scratch(keys.size());
+    std::vector<std::uint32_t> starts(kBuckets);
+    for (int shift = 0; shift < 64; shift += kDigitBits) {
+        auto digit = [shift](std::uint64_t key) { return static_cast<std::size_t>(key >> shift) & (kBuckets - 1); };
+        std::fill(starts.begin(), starts.end(), 0);
+        for (std::uint64_t key : keys) ++starts[digit(key)];
+        if (starts[digit(keys.front())] == keys.size()) continue;  // one digit for all: already in order
+        std::uint32_t total = 0;
+        for (std::uint32_t& start : starts) total += std::exchange(start, total);
+        for (std::uint64_t key : keys) scratch[starts[digit(key)]++] = key;
+        keys.swap(scratch);
+    }
+}
+
+}  // namespace clr

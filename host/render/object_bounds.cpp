@@ -1,0 +1,152 @@
+#include "render/object_bounds.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "render/frustum_clip.h"
+
+namespace clr {
+namespace {
+
+// Clipping keeps what lies within this many pixels outside the screen: far more than the
+// kernels' float rays can stray from the exact ones.
+constexpr double kClipMarginPixels = 4;
+// A polygon that passes within this fraction of its distance from the eye counts as touching
+// it (float positions are exact to about 6e-8 of their distance).
+constexpr double kNearEyeFraction = 1e-5;
+
+// Whether bounds made of corners say that an object reaches behind the eye plane: then the
+// corners' projection says nothing, and its bounds are those of its part inside the frustum.
+bool reaches_behind_eye(const PixelBounds& bounds) { return bounds.whole_screen && bounds.in_front; }
+
+}  // namespace
+
+ObjectBounds::ObjectBounds(const FrameCamera& camera)
+    : eye_(camera.eye_in_scene()), forward_(camera.forward), right_(camera.right), up_(camera.up),
+      right_scaled_(camera.right / dot(camera.right, camera.right)), up_scaled_(camera.up / dot(camera.up, camera.up)),
+      width_(camera.width), height_(camera.height) {}
+
+// Widens `bounds` by the point at camera coordinates x, y (scaled: the screen's edges at
+// x / depth = +-1) and depth: the inverse of the kernels' camera_ray, screen coordinates sx,
+// sy in [-1, 1] across the image, then pixel coordinates.
+void ObjectBounds::widen(PixelBounds& bounds, double x, double y, double depth) const {
+    const double col = (x / depth + 1) * width_ / 2 - 0.5;
+    const double row = (1 - y / depth) * height_ / 2 - 0.5;
+    bounds.col_min = std::min(bounds.col_min, col);
+    bounds.col_max = std::max(bounds.col_max, col);
+    bounds.row_min = std::min(bounds.row_min, row);
+    bounds.row_max = std::max(bounds.row_max, row);
+}
+
+// Widens `bounds` by the projection of `point`. A point less than a small fraction of the
+// scene's distance in front of the eye counts as behind it. An object whose points are all
+// clearly behind the eye plane (by more than float rounding could move them) is never met:
+// every primary ray travels forwards, so every hit has a positive depth, and so would any
+// point of the object's convex hull that a ray could reach.
+void ObjectBounds::add(const Vec3& point, PixelBounds& bounds) const {
+    Vec3 rel = point - eye_;
+    double depth = dot(rel, forward_);
+    if (!(depth < -1e-6 * length(rel))) bounds.in_front = true;
+    if (!(depth > 1e-7 * length(rel))) {
+        bounds.whole_screen = true;
+        return;
+    }
+    widen(bounds, dot(rel, right_scaled_), dot(rel, up_scaled_), depth);
+}
+
+// Widens `bounds` by the projection of the part of convex polygon `corners` that rays can
+// reach: the part inside the view frustum, widened by kClipMarginPixels on every side and with
+// its apex moved back by a small fraction of the polygon's distance, more than float rounding
+// of the kernels' positions could move it. A polygon that comes that close to the eye covers
+// the whole screen. For objects that reach behind the eye plane.
+void ObjectBounds::add_clipped(const Vec3* corners, int count, PixelBounds& bounds) const {
+    std::vector<ViewPoint> polygon;
+    double distance = 0;
+    for (int i = 0; i < count; ++i) {
+        Vec3 rel = corners[i] - eye_;
+        polygon.push_back({dot(rel, right_scaled_), dot(rel, up_scaled_), dot(rel, forward_)});
+        distance = std::max(distance, length(rel));
+    }
+    const ClipFrustum frustum{2.0 * kClipMarginPixels / width_, 2.0 * kClipMarginPixels / height_,
+                              kNearEyeFraction * distance};
+    for (const ViewPoint& p : clip_to_frustum(polygon, frustum)) {
+        bounds.in_front = true;
+        if (!(p.z > frustum.apex_back)) {
+            bounds.whole_screen = true;
+            return;
+        }
+        widen(bounds, p.x, p.y, p.z);
+    }
+}
+
+// Whether every corner of the axis-aligned box of half size `half_size` around `center` lies
+// clearly in front of the eye: deeper than add() asks, with room for rounding to spare.
+bool ObjectBounds::box_clearly_in_front(const Vec3& center, double half_size) const {
+    const Vec3 rel = center - eye_;
+    const double least_depth =
+        dot(rel, forward_) - half_size * (std::fabs(forward_.x) + std::fabs(forward_.y) + std::fabs(forward_.z));
+    return least_depth > 1e-6 * (length(rel) + half_size * std::sqrt(3.0));
+}
+
+PixelBounds ObjectBounds::sphere(const Sphere& sphere) const {
+    PixelBounds bounds;
+    const double r = sphere.radius;
+    if (box_clearly_in_front(sphere.center, r)) {
+        // The box's corners in camera coordinates: the centre's, plus or minus the radius
+        // along each axis (a few additions instead of projecting every corner anew).
+        const Vec3 rel = sphere.center - eye_;
+        const Vec3 center{dot(rel, right_scaled_), dot(rel, up_scaled_), dot(rel, forward_)};
+        const std::array<Vec3, 3> axes = {Vec3{right_scaled_.x, up_scaled_.x, forward_.x} * r,
+                                          Vec3{right_scaled_.y, up_scaled_.y, forward_.y} * r,
+                                          Vec3{right_scaled_.z, up_scaled_.z, forward_.z} * r};
+        for (int bits = 0; bits < 8; ++bits) {
+            const Vec3 p = center + (bits & 1 ? axes[0] : -axes[0]) + (bits & 2 ? axes[1] : -axes[1]) +
+                           (bits & 4 ? axes[2] : -axes[2]);
+            widen(bounds, p.x, p.y, p.z);
+        }
+        bounds.in_front = true;
+        return bounds;
+    }
+    auto corner = [&](int bits) {
+        return sphere.center + Vec3{bits & 1 ? r : -r, bits & 2 ? r : -r, bits & 4 ? r : -r};
+    };
+    for (int bits = 0; bits < 8; ++bits) add(corner(bits), bounds);
+    if (!reaches_behind_eye(bounds)) return bounds;
+    // Reaching behind the eye: the box's faces are clipped (a ray from outside the box enters
+    // through one; from inside, every direction meets one).
+    bounds = {};
+    for (int axis = 0; axis < 3; ++axis) {
+        const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
+        for (int side : {0, 1 << axis}) {
+            const std::array<Vec3, 4> face = {corner(side), corner(side | u), corner(side | u | v), corner(side | v)};
+            add_clipped(face.data(), 4, bounds);
+        }
+    }
+    return bounds;
+}
+
+PixelBounds ObjectBounds::billboard(const Billboard& billboard) const {
+    PixelBounds bounds;
+    const std::array<Vec3, 4> corners = {billboard.upper_left, billboard.upper_right,
+                                         billboard.upper_right + (billboard.lower_left - billboard.upper_left),
+                                         billboard.lower_left};
+    for (const Vec3& corner : corners) add(corner, bounds);
+    if (reaches_behind_eye(bounds)) {
+        bounds = {};
+        add_clipped(corners.data(), 4, bounds);
+    }
+    return bounds;
+}
+
+double ObjectBounds::sphere_distance(const Sphere& sphere) const {
+    return std::max(0.0, length(sphere.center - eye_) - sphere.radius);
+}
+
+double ObjectBounds::billboard_distance(const Billboard& billboard) const {
+    Vec3 normal = normalize(cross(billboard.upper_right - billboard.upper_left, billboard.lower_left - billboard.upper_left));
+    return std::fabs(dot(eye_ - billboard.upper_left, normal));
+}
+
+}  // namespace clr
