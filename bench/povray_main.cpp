@@ -51,8 +51,11 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        exit_code = app.exit(error);
-        return std::nullopt;
+        if (error.get_exit_code() == 0) {  // --help: CLI11 prints it
+            exit_code = app.exit(error);
+            return std::nullopt;
+        }
+        throw UsageError(error.what());  // clrender's exit code for a bad command line, not CLI11's
     }
     return options;
 }

@@ -204,6 +204,9 @@ struct BadConversion {
 TEST(PovrayConverter, BadInputFailsAndWritesNothing) {
     const std::vector<BadConversion> cases = {
         {"missing scene", "missing.json out.pov", 2, "missing.json"},
+        {"no output named", shell_quoted(kDemo), 1, "output is required"},
+        {"samples out of range", shell_quoted(kDemo) + " out.pov --spp 0", 1, "--spp: Value 0 not in range 1 to 4096"},
+        {"unknown option", shell_quoted(kDemo) + " out.pov --bogus", 1, "--bogus"},
         {"bad size", shell_quoted(kDemo) + " out.pov --size 0x10", 1, "--size: expected WIDTHxHEIGHT"},
         {"override fails validation", shell_quoted(kDemo) + " out.pov -D spheres.0.radius=-1", 2,
          "/spheres/0/radius: radius must be > 0"},
