@@ -19,6 +19,8 @@ packages=(
   parallel
   # clrender_bench's Embree peer (scripts/bench.sh, docs/benchmarks.md)
   libembree-dev
+  # scripts/bench_povray.sh and its test: POV-Ray renders clrender's scenes for comparison
+  povray
   # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and the libraries its
   # seed generator writes PNGs and JPEGs with. (gcc's ASan and UBSan runtimes, which
   # scripts/sanitize.sh uses, come with build-essential.)
