@@ -16,9 +16,16 @@ work="$(mktemp -d /tmp/clrender-farm-test.XXXXXX)"
 cluster="$work/cluster"
 failures=0
 
+# Every daemon the test started is stopped, and the test fails if one is left.
 cleanup() {
+    local status=$?
     bash "$source_dir/tests/farm/slurm_cluster.sh" stop "$cluster"
+    if pgrep -f -a "$cluster" >&2; then
+        echo "FAILED: processes of the test cluster are still running (above)" >&2
+        status=1
+    fi
     rm -rf "$work"
+    exit $status
 }
 trap cleanup EXIT
 
