@@ -60,8 +60,9 @@ real billboard_distance(__global const ClrBillboard* billboard, __global const u
     if (!(ab.x >= 0.0f && ab.x <= 1.0f && ab.y >= 0.0f && ab.y <= 1.0f))
         return INFINITY;
 #if CLR_FEATURE_ALPHA
-    /* A texel with alpha below 255 is a hole: the ray goes on as if nothing were here. */
-    if ((billboard->flags & CLR_SURFACE_HOLES) && billboard_texel(billboard, texels, ab.x, ab.y).w < 255)
+    /* A texel with alpha below CLR_OPAQUE_ALPHA is a hole: the ray goes on as if nothing were
+     * here. */
+    if ((billboard->flags & CLR_SURFACE_HOLES) && billboard_texel(billboard, texels, ab.x, ab.y).w < CLR_OPAQUE_ALPHA)
         return INFINITY;
 #endif
     return t;

@@ -4,7 +4,7 @@
 // A KernelSignature<Params...> names a kernel and its parameters; TypedKernel<Signature>
 // creates that kernel from any program and binds it from exactly one value of each of
 // Params, in order: a missing, extra or differently typed value is a compile error. A
-// parameter type with a `for_each_arg(visit)` member (an argument group, such as the six
+// parameter type with a `for_each_arg(visit)` member (an argument group, such as the seven
 // scene parameters every tracing kernel takes) stands for the several parameters it visits.
 // The names serve the test that compares every signature with the kernel's own parameter
 // list (tests/device/kernel_signatures_test.cpp).

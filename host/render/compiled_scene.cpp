@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "render/coverage_mask.h"
 #include "render/device_structs.h"
 
 namespace clr {
@@ -26,7 +27,7 @@ ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
 }
 
 // Appends each distinct image's texels once, however many billboards and views show it, and
-// scans it for transparency once.
+// scans it for transparency once, into its flag and its coverage bits.
 void pack_texture(const Image* image, CompiledScene& compiled) {
     if (!image || compiled.textures.count(image)) return;
     // The kernels address texels with 32-bit offsets (ClrBillboard.texel_offset, and uint
@@ -44,6 +45,7 @@ void pack_texture(const Image* image, CompiledScene& compiled) {
     slot.height = image->height;
     slot.holes = image->has_transparency();
     compiled.texels.insert(compiled.texels.end(), image->rgba.begin(), image->rgba.end());
+    append_coverage(image->rgba, first_texel, compiled.coverage);
     compiled.textures.emplace(image, slot);
 }
 

@@ -1,5 +1,6 @@
 // The seam between the scene model and the device: a frame's geometry flattened into the
-// shared structs of kernels/shared/clr_types.h, the texel buffer and the feature set.
+// shared structs of kernels/shared/clr_types.h, the texel buffer, its coverage mask and the
+// feature set.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,8 @@ struct CompiledScene {
     std::vector<ClrSphere> spheres;
     std::vector<ClrBillboard> billboards;  // the frame's billboards, in FrameGeometry's order
     std::vector<std::uint8_t> texels;  // RGBA bytes of every image a billboard or view may show
+    // One bit per texel of `texels`, set where it stops rays (render/coverage_mask.h).
+    std::vector<std::uint32_t> coverage;
     std::map<const Image*, TextureSlot> textures;  // each image's place in `texels`
     ClrSceneInfo info{};
     FeatureSet features;

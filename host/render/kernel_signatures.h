@@ -21,6 +21,7 @@ struct SceneArgs {
     cl::Buffer spheres;     // ClrSphere[info.sphere_count]
     cl::Buffer billboards;  // ClrBillboard[info.billboard_count]
     cl::Buffer texels;      // uchar4, every billboard image one after another
+    cl::Buffer coverage;    // uint: bit k % 32 of word k / 32 is set where texel k stops rays
     ClrSceneInfo info{};
     cl::Buffer bvh_nodes;  // ClrBvhNode (read only with CLR_FEATURE_BVH)
     cl::Buffer bvh_items;  // uint object indices of the BVH's leaves
@@ -30,6 +31,7 @@ struct SceneArgs {
         visit("spheres", spheres);
         visit("billboards", billboards);
         visit("texels", texels);
+        visit("coverage", coverage);
         visit("info", info);
         visit("bvh_nodes", bvh_nodes);
         visit("bvh_items", bvh_items);

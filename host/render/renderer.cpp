@@ -79,7 +79,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         else
             render_ = TypedKernel<RenderSignature>(program_, kRender);
         scene_args_.texels = upload(device_.context(), compiled_.texels);
+        // Only kernels with alpha tests read the coverage bits (render_packets, with
+        // CLR_FEATURE_ALPHA); others get the one-word stand-in.
+        scene_args_.coverage = upload(device_.context(), features_.alpha ? compiled_.coverage : std::vector<std::uint32_t>{});
         compiled_.texels = {};  // on the device now; frames only move positions
+        compiled_.coverage = {};
         if (features_.bvh) bvh_ = build_bvh(frame_);  // otherwise empty: never read
         upload_geometry();
         uploaded_ = true;

@@ -1,7 +1,9 @@
 /* The scene buffers every stage reads, as kernel and function parameters: a function that
  * looks at the scene takes CLR_SCENE_PARAMS and passes CLR_SCENE_ARGS on. Counts stay
  * run-time values (ClrSceneInfo), so one compiled program serves every scene of a kind. The
- * host binds them in this order (Renderer::bind_scene). */
+ * host binds them in this order (SceneArgs, render/kernel_signatures.h). `coverage` holds one
+ * bit per texel, set where the texel stops rays (host/render/coverage_mask.h); only the
+ * packet kernel reads it, and only with CLR_FEATURE_ALPHA. */
 #ifndef CLR_COMMON_SCENE_PARAMS_CL
 #define CLR_COMMON_SCENE_PARAMS_CL
 
@@ -9,8 +11,8 @@
 
 #define CLR_SCENE_PARAMS                                                                      \
     __global const ClrSphere *spheres, __global const ClrBillboard *billboards,              \
-        __global const uchar4 *texels, ClrSceneInfo info, __global const ClrBvhNode *bvh_nodes, \
-        __global const uint *bvh_items
-#define CLR_SCENE_ARGS spheres, billboards, texels, info, bvh_nodes, bvh_items
+        __global const uchar4 *texels, __global const uint *coverage, ClrSceneInfo info,     \
+        __global const ClrBvhNode *bvh_nodes, __global const uint *bvh_items
+#define CLR_SCENE_ARGS spheres, billboards, texels, coverage, info, bvh_nodes, bvh_items
 
 #endif /* CLR_COMMON_SCENE_PARAMS_CL */

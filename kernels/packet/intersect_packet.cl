@@ -14,6 +14,7 @@
 #include "common/scene_params.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
+#include "packet/texels16.cl"
 #include "shared/clr_types.h"
 
 /* The 16 lanes' column offsets within the packet. */
@@ -70,34 +71,14 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, D
 #define CLR_MASK16(m) (m)
 #endif
 
-#if CLR_FEATURE_ALPHA || CLR_FEATURE_TEXTURES
-/* billboard_texel() for 16 points (a, b) of one billboard, as 32-bit words (RGBA bytes).
- * Lanes outside the billboard (`inside` false) read its first texel instead. The index is the
- * scalar formula in 16 lanes; the loads are a gather. */
-CLR_PACKET_INLINE uint16 billboard_texels16(__global const ClrBillboard* billboard, __global const uchar4* texels, real16 a, real16 b,
-                          mask16 inside)
-{
-    int width = billboard->texture_width;
-    int height = billboard->texture_height;
-    a = select((real16)(0.0f), a, inside); /* no float-to-int conversion of NaN or inf */
-    b = select((real16)(0.0f), b, inside);
-    /* Vector bounds, not the scalar-bound overload clamp(int16, int, int): both are standard,
-     * but Oclgrind 21.10 gives garbage in lanes 1-15 of the scalar-bound integer
-     * clamp/min/max, which then gathers far outside the texel buffer (docs/opencl-devices.md). */
-    int16 col = clamp(convert_int16(floor(a * (real)width)), (int16)(0), (int16)(width - 1));
-    int16 row = clamp(convert_int16(floor(b * (real)height)), (int16)(0), (int16)(height - 1));
-    uint16 i = billboard->texel_offset + convert_uint16(row) * (uint)width + convert_uint16(col);
-    __global const uint* w = (__global const uint*)texels;
-    return (uint16)(w[i.s0], w[i.s1], w[i.s2], w[i.s3], w[i.s4], w[i.s5], w[i.s6], w[i.s7], w[i.s8], w[i.s9],
-                    w[i.sa], w[i.sb], w[i.sc], w[i.sd], w[i.se], w[i.sf]);
-}
-#endif
-
 /* billboard_distance() for 16 rays from one origin (t_max = infinity). When `want_texels`
  * and the billboard shows its image, *texel receives each hit lane's texel (for flat
- * shading), read at the same (a, b) as the alpha test and as billboard_color(). */
-CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billboard, __global const uchar4* texels, real3 origin,
-                            Directions16 d, int want_texels, uint16* texel)
+ * shading), read at the same (a, b) as the alpha test and as billboard_color(): with
+ * CLR_FEATURE_ALPHA its index in the texel buffer, which the caller reads only for the
+ * winning hit, and the alpha test reads the coverage bits; otherwise the texel itself. */
+CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billboard, __global const uchar4* texels,
+                                              __global const uint* coverage, real3 origin, Directions16 d,
+                                              int want_texels, uint16* texel)
 {
     real3 normal = convert_real3(billboard->normal.xyz);
     real3 corner = convert_real3(billboard->corner.xyz);
@@ -120,17 +101,24 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
     textured = want_texels && (flags & CLR_SURFACE_TEXTURED) != 0;
 #endif
     if ((holes || textured) && any(inside)) {
-        uint16 words = billboard_texels16(billboard, texels, a, b, inside);
-        *texel = words;
-        if (holes) /* a texel with alpha below 255 is a hole */
-            inside = inside && CLR_MASK16(convert_int16(CLR_RGBA_CHANNEL(words, 3u) == 255u));
+        uint16 i = billboard_texel_indices16(billboard, a, b, inside);
+#if CLR_FEATURE_ALPHA
+        if (holes) /* a texel with alpha below CLR_OPAQUE_ALPHA is a hole */
+            inside = inside && CLR_MASK16(covered16(coverage, i));
+        if (textured)
+            *texel = i;
+#else
+        *texel = texel_words16(texels, i);
+#endif
     }
 #endif
     return select((real16)(INFINITY), t, inside);
 }
 
 /* Colours of 16 lanes as flat shading gives them for surface `kind`, `index`: a sphere's
- * ambient or an untextured billboard's colour, or texel_color() of each lane's texel. */
+ * ambient or an untextured billboard's colour, or texel_color() of each lane's texel. With
+ * CLR_FEATURE_ALPHA, `texel` holds texel indices, and a textured billboard's lanes get its
+ * flat colour here: take_texel_colors16() gives the winners theirs after the loop. */
 CLR_PACKET_INLINE Colors16 flat_colors16(int kind, int index, uint16 texel, CLR_SCENE_PARAMS)
 {
     float3 color = (float3)(0.0f);
@@ -138,7 +126,7 @@ CLR_PACKET_INLINE Colors16 flat_colors16(int kind, int index, uint16 texel, CLR_
 #if CLR_FEATURE_BILLBOARDS
     if (kind == CLR_HIT_BILLBOARD) {
         color = billboards[index].color.xyz;
-#if CLR_FEATURE_TEXTURES
+#if CLR_FEATURE_TEXTURES && !CLR_FEATURE_ALPHA
         textured = (billboards[index].flags & CLR_SURFACE_TEXTURED) != 0;
 #endif
     }
@@ -168,7 +156,7 @@ CLR_PACKET_INLINE real16 item_distance16(int kind, int index, real3 origin, Dire
     real16 t = (real16)(INFINITY);
 #if CLR_FEATURE_BILLBOARDS
     if (kind == CLR_HIT_BILLBOARD)
-        t = billboard_distance16(&billboards[index], texels, origin, d, want_texels, texel);
+        t = billboard_distance16(&billboards[index], texels, coverage, origin, d, want_texels, texel);
 #endif
 #if CLR_FEATURE_SPHERES
     if (kind == CLR_HIT_SPHERE)
@@ -195,6 +183,9 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
     colors->g = (float16)(info.background.y);
     colors->b = (float16)(info.background.z);
 #endif
+#if CLR_LOOP_COLORS && CLR_FEATURE_ALPHA
+    uint16 best_texel = (uint16)(CLR_NO_TEXEL); /* each lane's winning texel, read after the loop */
+#endif
     for (uint k = tile.first; k < tile.end; ++k) {
         if (all(best->t < tile.nearest[k]))
             break;
@@ -203,7 +194,11 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
             continue;
         int kind = item_kind(tile.items[k]);
         int index = item_index(tile.items[k]);
+#if CLR_FEATURE_ALPHA
+        uint16 texel = (uint16)(CLR_NO_TEXEL);
+#else
         uint16 texel = (uint16)(0u);
+#endif
         real16 t = item_distance16(kind, index, origin, d, CLR_LOOP_COLORS, &texel, CLR_SCENE_ARGS);
         mask16 beats = hits_beat16(t, kind, index, best->t, best->kind, best->index);
         int16 beats_int = convert_int16(beats);
@@ -216,7 +211,13 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
         colors->g = select(colors->g, flat.g, beats_int);
         colors->b = select(colors->b, flat.b, beats_int);
 #endif
+#if CLR_LOOP_COLORS && CLR_FEATURE_ALPHA
+        best_texel = select(best_texel, texel, beats_int);
+#endif
     }
+#if CLR_LOOP_COLORS && CLR_FEATURE_ALPHA
+    take_texel_colors16(best_texel, texels, colors);
+#endif
 }
 
 #endif /* CLR_PACKET_INTERSECT_PACKET_CL */

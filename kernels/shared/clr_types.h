@@ -24,7 +24,12 @@ typedef cl_uint clr_uint;
 /* Surface flags (ClrSphere.flags, ClrBillboard.flags). */
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
-#define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below 255 */
+#define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below CLR_OPAQUE_ALPHA */
+
+/* The only alpha at which a texel stops rays; any lower alpha is a hole that rays pass
+ * through (docs/scene-format.md, Conventions: Billboards). The texels' alpha tests and the
+ * coverage masks built from them (host/render/coverage_mask.h) both decide by it. */
+#define CLR_OPAQUE_ALPHA 255u
 
 /* Screen tiles for primary rays (host/render/screen_tiles.h): a tile is
  * kClrTileSize x kClrTileSize pixels, and a tile item is an object index, with this bit set
