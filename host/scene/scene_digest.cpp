@@ -7,10 +7,12 @@
 
 namespace clr {
 
-std::string scene_digest(const Json& document, const Scene& scene) {
+std::string scene_digest(const std::string& scene_text, const std::vector<SceneOverride>& overrides, const Scene& scene) {
     try {
         Sha256 hash;
-        hash.add_field(std::string("clrender scene digest 1")).add_field(document.dump());
+        hash.add_field(std::string("clrender scene digest 2")).add_field(scene_text);
+        hash.add_number(overrides.size());
+        for (const SceneOverride& override : overrides) hash.add_field(override.argument);
         for (const ImageFileInfo& file : scene.image_files) {  // each file once, in the scene's order
             hash.add_field(file.format);
             if (file.format == "placeholder") continue;  // a missing file: its checkerboard is fixed

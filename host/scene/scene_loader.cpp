@@ -598,7 +598,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
     load_scene_images(scene, billboard_images, impostor_views, options);
-    if (options.decode_images) scene.digest = scene_digest(document, scene);
+    if (options.decode_images) scene.digest = scene_digest(text, options.overrides, scene);
     diagnostics.summarise_warnings();
     return scene;
 }

@@ -196,6 +196,19 @@ TEST(InputFiles, RepeatedKeysDeepDownCostMemoryLinearInTheFile) {
     EXPECT_TRUE(has_warning(scene, "2989 more duplicate keys (the last value of each is used)")) << scene.warnings.size();
 }
 
+// The scene digest (scene/scene_digest.h) hashes the file's text: writing the parsed document
+// out would recurse once per level and overflow the stack on a scene that nests deeply in a
+// key clrender ignores, which is a valid scene (a warning).
+TEST(InputFiles, DeepNestingInAnIgnoredKeyIsDigestedWithoutRecursion) {
+    std::string text = minimal_scene().dump();
+    text.pop_back();
+    const int depth = 400000;
+    text += ", \"x\": " + std::string(depth, '[') + std::string(depth, ']') + "}";
+    const Scene scene = parse_scene(text, "test.json");
+    EXPECT_EQ(scene.digest.size(), 16u);
+    EXPECT_NE(scene.digest, parse_scene(minimal_scene().dump(), "test.json").digest);
+}
+
 TEST(InputFiles, FirstRepeatedKeysAreStillNamed) {
     const Scene scene = parse_scene(R"({"eye": [0, 0, 5], "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0],
                                         "fov_angle": 60, "width": 4, "height": 3})",
