@@ -8,6 +8,7 @@
 #include "common/rgba_words.cl"
 #include "common/scene_params.cl"
 #include "packet/intersect_packet.cl"
+#include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
 #include "shared/clr_samples.h"
@@ -126,7 +127,7 @@ CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hit
 /* Sun without mirrors: the loop's flat colours, with lanes on spheres lit one by one. */
 CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    if (!any(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
+    if (!any_lanes16(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
         return flat;
     return traced_colors16(eye, d, hits, &flat, CLR_SCENE_ARGS);
 }
