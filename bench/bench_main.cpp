@@ -20,6 +20,7 @@
 #include "bench/bench_stats.h"
 #include "bench/clrender_side.h"
 #include "core/errors.h"
+#include "core/stopwatch.h"
 #include "device/device_selection.h"
 #include "output/image_writer.h"
 #include "render/frame_camera.h"
@@ -115,6 +116,11 @@ bool keep_if_slow(double ms, std::vector<double>& samples) {
 // its own frame (Embree's task scheduler does), take a core from the other side's next frame:
 // clrender's 16+16 rate then came out either ~430 or ~230 Mrays/s from run to run.
 constexpr int kBlockFrames = 3;
+// clrender's untimed frames before its block last at least this long: one frame of 3 ms
+// (the small scenes) ended while Embree's threads still spun, and its timed frames ran on
+// one core of two, twice as slow, in some runs and not in others (docs/benchmarks.md,
+// Packet fixed costs). Embree's own block still follows clrender's frames at once.
+constexpr double kClrenderSettleMs = 30;
 
 // Both sides warm up, then render their timed frames in alternating blocks, so that whatever
 // else the machine does meanwhile slows both alike and their ratio holds, while neither side's
@@ -144,7 +150,8 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     for (int timed = 0; timed < settings.repeat; timed += kBlockFrames) {
         int block = std::min(kBlockFrames, settings.repeat - timed);
         if (!clr_done) {
-            clr.render_frame();  // untimed: the other side's threads may still be about
+            // Untimed: the other side's threads may still be about.
+            for (const Stopwatch settle; settle.elapsed_ms() < kClrenderSettleMs;) clr.render_frame();
             for (int i = 0; i < block; ++i) {
                 ClrenderFrame frame = clr.render_frame();
                 row.clr_kernel_ms.push_back(frame.kernel_ms);

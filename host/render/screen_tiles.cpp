@@ -14,18 +14,27 @@ namespace {
 // Pixel rows first..last, packed as the kernels read them (ScreenTiles::rows).
 std::uint32_t pack_rows(int first, int last) { return static_cast<std::uint32_t>(first) << 16 | static_cast<std::uint32_t>(last); }
 
-// The tiles an object with `bounds` may cover, and its pixel rows, widened by one pixel so that
-// rounding in the kernels' float rays can never put a pixel outside its object's tiles or rows.
-bool tile_range(const PixelBounds& b, const ScreenTiles& tiles, int width, int height, std::array<int, 4>& range,
-                std::uint32_t& rows) {
+// How far outside an object's bounds a pixel centre may lie and still be listed. With one
+// sample per pixel its ray passes through the centre; with several, anywhere in the pixel,
+// up to half a pixel from it. On top, a quarter of a pixel for rounding: thousands of times
+// what the kernels' float rays and positions can move a silhouette (about 1e-4 pixel at 1920
+// columns, 0.04 for a sphere of radius 1e6 a unit away). The margin had been one to two
+// pixels: every row of a sphere a few pixels across tested it about twice as often as it
+// could be seen (docs/benchmarks.md, Packet fixed costs).
+double pixel_margin(int samples) { return (samples > 1 ? 0.5 : 0.0) + 0.25; }
+
+// The tiles an object with `bounds` may cover, and its pixel rows: those whose pixel centres
+// (the integers) lie within `margin` pixels of the bounds.
+bool tile_range(const PixelBounds& b, const ScreenTiles& tiles, int width, int height, double margin,
+                std::array<int, 4>& range, std::uint32_t& rows) {
     if (!b.in_front) return false;  // behind the eye or outside the view: trees behind the camera in a forest
     if (b.whole_screen) {
         range = {0, tiles.tiles_x - 1, 0, tiles.tiles_y - 1};
         rows = pack_rows(0, height - 1);
         return true;
     }
-    double col_min = std::floor(b.col_min) - 1, col_max = std::ceil(b.col_max) + 1;
-    double row_min = std::floor(b.row_min) - 1, row_max = std::ceil(b.row_max) + 1;
+    double col_min = std::ceil(b.col_min - margin), col_max = std::floor(b.col_max + margin);
+    double row_min = std::ceil(b.row_min - margin), row_max = std::floor(b.row_max + margin);
     if (col_max < 0 || row_max < 0 || col_min > width - 1 || row_min > height - 1) return false;
     auto pixel_of = [](double pixel, int count) { return static_cast<int>(std::clamp(pixel, 0.0, double(count) - 1)); };
     range = {pixel_of(col_min, width) / kClrTileSize, pixel_of(col_max, width) / kClrTileSize,
@@ -50,7 +59,8 @@ public:
     void add(std::uint32_t item, double nearest, const PixelBounds& bounds) {
         std::array<int, 4> range;
         std::uint32_t rows;
-        if (!tile_range(bounds, tiles_, camera_.width, camera_.height, range, rows)) return;
+        if (!tile_range(bounds, tiles_, camera_.width, camera_.height, pixel_margin(camera_.samples), range, rows))
+            return;
         // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
         // one, and the kernel must never skip an object that its float ray does hit first.
         const float bound = static_cast<float>(nearest * (1 - 1e-5));

@@ -12,6 +12,7 @@
 #include "common/rgba_words.cl"
 #include "common/scene_items.cl"
 #include "common/scene_params.cl"
+#include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
 #include "packet/texels16.cl"
@@ -52,7 +53,7 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, D
     real16 b = -dot16(oc, d);
     real16 cx = oc.x + b * d.x, cy = oc.y + b * d.y, cz = oc.z + b * d.z;
     real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
-    if (!any(discriminant >= 0.0f))
+    if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
     real c = dot3(oc, oc) - radius * radius;
     real16 q = b + copysign(sqrt(discriminant), b);
@@ -100,7 +101,7 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
 #if CLR_FEATURE_TEXTURES
     textured = want_texels && (flags & CLR_SURFACE_TEXTURED) != 0;
 #endif
-    if ((holes || textured) && any(inside)) {
+    if ((holes || textured) && any_lanes16(inside)) {
         uint16 i = billboard_texel_indices16(billboard, a, b, inside);
 #if CLR_FEATURE_ALPHA
         if (holes) /* a texel with alpha below CLR_OPAQUE_ALPHA is a hole */
@@ -187,7 +188,7 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
     uint16 best_texel = (uint16)(CLR_NO_TEXEL); /* each lane's winning texel, read after the loop */
 #endif
     for (uint k = tile.first; k < tile.end; ++k) {
-        if (all(best->t < tile.nearest[k]))
+        if (all_lanes16(best->t < tile.nearest[k]))
             break;
         uint rows = tile.rows[k]; /* first << 16 | last pixel row the object may cover */
         if ((uint)row < (rows >> 16) || (uint)row > (rows & 0xffffu))

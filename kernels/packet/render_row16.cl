@@ -8,6 +8,7 @@
 #include "common/rgba_words.cl"
 #include "common/scene_params.cl"
 #include "packet/intersect_packet.cl"
+#include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
 #include "shared/clr_samples.h"
@@ -21,15 +22,27 @@
 #define CLR_PIXEL uchar4
 #endif
 
+/* color_to_byte() of 16 channel values: the conversion truncates, which for the
+ * non-negative clamp(c, 0, 1) * 255 + 0.5 is the floor color_to_byte() takes. PoCL computes
+ * floor() of 16 lanes in a dozen instructions; with three channels that was a tenth of a
+ * small scene's frame (docs/benchmarks.md, Packet fixed costs). */
+CLR_PACKET_INLINE uint16 display_bytes16(float16 c)
+{
+    return convert_uint16(clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+
 /* The display bytes of 16 pixels, packed as RGBA words (alpha 255): color_to_byte() of the
- * mean of their samples' colours (the sums r, g, b over `samples`). */
+ * mean of their samples' colours (the sums r, g, b over `samples`). One sample's sum is its
+ * mean: dividing by 1 changes no bit, and three divisions are a packet's dearest arithmetic. */
 CLR_PACKET_INLINE uint16 display_pixels16(float16 r, float16 g, float16 b, int samples)
 {
-    float n = (float)samples;
-    uint16 rb = convert_uint16(floor(clamp(r / n, 0.0f, 1.0f) * 255.0f + 0.5f));
-    uint16 gb = convert_uint16(floor(clamp(g / n, 0.0f, 1.0f) * 255.0f + 0.5f));
-    uint16 bb = convert_uint16(floor(clamp(b / n, 0.0f, 1.0f) * 255.0f + 0.5f));
-    return CLR_RGBA_OPAQUE(rb, gb, bb);
+    if (samples != 1) {
+        float n = (float)samples;
+        r = r / n;
+        g = g / n;
+        b = b / n;
+    }
+    return CLR_RGBA_OPAQUE(display_bytes16(r), display_bytes16(g), display_bytes16(b));
 }
 
 /* Writes the first `lanes` of 16 packed pixels to out[0 .. lanes - 1]. */
@@ -114,7 +127,7 @@ CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hit
 /* Sun without mirrors: the loop's flat colours, with lanes on spheres lit one by one. */
 CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    if (!any(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
+    if (!any_lanes16(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
         return flat;
     return traced_colors16(eye, d, hits, &flat, CLR_SCENE_ARGS);
 }

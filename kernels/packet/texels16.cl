@@ -6,6 +6,7 @@
 
 #include "common/math.cl"
 #include "common/rgba_words.cl"
+#include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "shared/clr_types.h"
 
@@ -63,7 +64,7 @@ CLR_PACKET_INLINE int16 covered16(__global const uint* coverage, uint16 i)
 CLR_PACKET_INLINE void take_texel_colors16(uint16 texel_index, __global const uchar4* texels, Colors16* colors)
 {
     int16 shows = texel_index != (uint16)(CLR_NO_TEXEL);
-    if (!any(shows))
+    if (!any_lanes16(shows))
         return;
     uint16 words = texel_words16(texels, select((uint16)(0u), texel_index, shows));
     colors->r = select(colors->r, convert_float16(CLR_RGBA_CHANNEL(words, 0u)) * (1.0f / 255.0f), shows);

@@ -73,6 +73,46 @@ TEST(ScreenTiles, ObjectWhollyBehindTheEyeIsNotListed) {
     EXPECT_TRUE(tiles.items.empty());
 }
 
+// The pixel rows (first, last) that the lists give `item`, and the tile columns listing it.
+struct Listing {
+    int first_row = -1, last_row = -1;
+    std::set<int> tile_columns;
+};
+
+Listing listing_of(const ScreenTiles& tiles, std::uint32_t item) {
+    Listing listing;
+    listing.tile_columns = tile_columns_listing(tiles, item);
+    for (std::size_t k = 0; k < tiles.items.size(); ++k)
+        if (tiles.items[k] == item) {
+            listing.first_row = static_cast<int>(tiles.rows[k] >> 16);
+            listing.last_row = static_cast<int>(tiles.rows[k] & 0xffffu);
+        }
+    return listing;
+}
+
+// A square at depth 10 from x, y = -1 to 1 in side_scene(): columns (+-0.1 + 1) * 160 - 0.5,
+// 143.5 to 175.5, rows (1 -+ 0.2) * 80 - 0.5, 63.5 to 95.5. With one sample a pixel's ray
+// passes through its centre: rows 64 to 95 and columns 144 to 175 (tiles 9 and 10) see the
+// square, and no other row or tile needs to test it. With several samples its rays spread
+// over the whole pixel: rows 63 and 96, columns 143 (tile 8) and 176 (tile 11) touch it too.
+TEST(ScreenTiles, ListsOnlyThePixelsWhoseRaysCanMeetTheObject) {
+    Scene scene = side_scene();
+    scene.billboards.push_back(testing::make_billboard({-1, 1, -10}, {-1, -1, -10}, {1, 1, -10}, {1, 0, 0}));
+    FrameGeometry frame(scene);
+    const Listing centres = listing_of(bin_screen_tiles(frame, frame_camera(scene, scene.camera_path.front(), 0)),
+                                       0 | CLR_TILE_BILLBOARD);
+    EXPECT_EQ(centres.first_row, 64);
+    EXPECT_EQ(centres.last_row, 95);
+    EXPECT_EQ(centres.tile_columns, (std::set<int>{9, 10}));
+
+    scene.sampling.samples_per_pixel = 4;
+    const Listing spread = listing_of(bin_screen_tiles(frame, frame_camera(scene, scene.camera_path.front(), 0)),
+                                      0 | CLR_TILE_BILLBOARD);
+    EXPECT_EQ(spread.first_row, 63);
+    EXPECT_EQ(spread.last_row, 96);
+    EXPECT_EQ(spread.tile_columns, (std::set<int>{8, 9, 10, 11}));
+}
+
 // The kernel stops a row once its hits are nearer than the next object's bound: every list
 // must run nearest first, and no bound may exceed its object's distance from the eye.
 TEST(ScreenTiles, ListsRunNearestFirstWithBoundsBelowTheObjectsDistances) {
