@@ -8,6 +8,8 @@ packages=(
   build-essential cmake pkg-config
   ocl-icd-opencl-dev opencl-clhpp-headers pocl-opencl-icd clinfo
   nlohmann-json3-dev libstb-dev libcli11-dev libpng-dev zlib1g-dev
+  # ISA-L's igzip: the PNG outputs' fast deflate
+  libisal-dev
   # SHA-256 (libcrypto) for the keys and checksums of the caches
   libssl-dev
   # EXR output (-o frame.exr): OpenEXR 3 and its CMake config

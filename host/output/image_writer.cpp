@@ -3,7 +3,6 @@
 #include "output/image_writer.h"
 
 #include <png.h>
-#include <zlib.h>
 
 #include <csetjmp>
 #include <new>
@@ -21,6 +20,7 @@
 #include "output/atomic_file.h"
 #include "output/exr_writer.h"
 #include "output/file_extension.h"
+#include "output/png_pixel_data.h"
 
 namespace clr {
 namespace {
@@ -34,11 +34,11 @@ std::vector<std::uint8_t> rgb_without_alpha(const Image& image) {
     return rgb;
 }
 
-// PNG through libpng, set for speed: RGB, 8 bits, every row with the "Up" filter, deflated
-// at level 1 with run-length matching: several times faster than stb_image_write (all five
-// filters tried per row, its own deflate), even with stb held to one filter, and rendered
-// frames come out smaller than stb's level 8 (docs/benchmarks.md, Figures behind design
-// choices).
+// PNG through libpng, set for speed: RGB, 8 bits, every row with the "Up" filter, the rows
+// deflated by ISA-L's igzip (png_pixel_data.h), which libpng writes as IDAT chunks beside its
+// own header, colour and text chunks. libpng's zlib at level 1 with run-length matching took
+// most of a 1080p frame's writing time; igzip takes a quarter of that or less, for files as
+// small (docs/benchmarks.md, Figures behind design choices).
 //
 // libpng reports errors by longjmp, so encoding runs in a function with nothing to unwind
 // into memory, and the file is written afterwards (where an OutputError may be thrown). libpng
@@ -102,8 +102,20 @@ void set_png_description(png_structp png, png_infop info, const ImageText& text,
     png_set_text(png, info, storage.chunks.data(), static_cast<int>(storage.chunks.size()));  // libpng copies them
 }
 
+// IDAT chunks of at most this many bytes: far below PNG's 2^31 limit for any image, and a
+// reader's buffer for one stays small.
+constexpr std::size_t kMaxDataChunk = std::size_t{1} << 20;
+
+void write_pixel_chunks(png_structp png, const std::vector<std::uint8_t>& pixel_data) {
+    static const png_byte kIdat[5] = "IDAT";
+    for (std::size_t offset = 0; offset < pixel_data.size(); offset += kMaxDataChunk)
+        png_write_chunk(png, kIdat, pixel_data.data() + offset, std::min(kMaxDataChunk, pixel_data.size() - offset));
+}
+
 // Returns libpng's message, or an empty string when `output` holds the whole PNG.
-std::string encode_png(const Image& image, const ImageText& text, PngOutput& output) {
+// `pixel_data` is png_pixel_data(image), made before: nothing in here may throw.
+std::string encode_png(const Image& image, const ImageText& text, const std::vector<std::uint8_t>& pixel_data,
+                       PngOutput& output) {
     PngTextStorage text_storage;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -119,23 +131,27 @@ std::string encode_png(const Image& image, const ImageText& text, PngOutput& out
     const int color_type = image.write_alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB;  // --alpha: straight alpha
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                  color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
-    png_set_compression_level(png, 1);
-    png_set_compression_strategy(png, Z_RLE);
     set_png_description(png, info, text, text_storage);
-    png_write_info(png, info);
-    if (!image.write_alpha) png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows are RGBA in memory: libpng drops the alpha byte
-    const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 4;
-    for (int row = 0; row < image.height; ++row)
-        png_write_row(png, const_cast<png_bytep>(image.rgba.data() + row * row_bytes));
-    png_write_end(png, nullptr);
+    png_write_info(png, info);  // signature, IHDR, sRGB, tEXt
+    write_pixel_chunks(png, pixel_data);
+    // png_write_end() would refuse: libpng did not write the IDAT chunks itself.
+    static const png_byte kIend[5] = "IEND";
+    png_write_chunk(png, kIend, nullptr, 0);
     png_destroy_write_struct(&png, &info);
     return "";
 }
 
 void write_png(AtomicFile& file, const Image& image, const ImageText& text) {
+    std::vector<std::uint8_t> pixel_data;
+    try {
+        pixel_data = png_pixel_data(image);
+    } catch (const std::bad_alloc&) {
+        throw;  // out of memory has its own exit code
+    } catch (const std::exception& error) {
+        throw OutputError(file.final_path() + ": the PNG encoder failed (" + error.what() + ")");
+    }
     PngOutput output;
-    const std::string problem = encode_png(image, text, output);
+    const std::string problem = encode_png(image, text, pixel_data, output);
     if (!problem.empty()) throw OutputError(file.final_path() + ": the PNG encoder failed (" + problem + ")");
     file.write(output.bytes.data(), output.bytes.size());
 }

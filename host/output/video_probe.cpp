@@ -1,8 +1,8 @@
 // Why -count_frames: it decodes every frame, so corrupt data counts as missing frames, and it
 // is exact for both our MP4 (H.264) and GIF settings, identical frames included. Counting
 // packets (-count_packets) is about four times cheaper but only reads the container: a
-// truncated H.264 packet still counts. Decoding 96 frames of 1280x720 costs about half a
-// second (docs/animation.md).
+// truncated H.264 packet still counts. Decoding costs about 7 ms of CPU a frame of 1280x720
+// (docs/animation.md, How the video is checked and how a stuck encoder is stopped).
 #include "output/video_probe.h"
 
 #include <fcntl.h>
@@ -22,6 +22,7 @@
 #include <sys/wait.h>
 
 #include "core/errors.h"
+#include "core/usable_cpus.h"
 #include "output/child_process.h"
 #include "output/program_lookup.h"
 
@@ -42,9 +43,12 @@ struct FileDescriptor {
     }
 };
 
+// ffprobe decodes on one thread unless told otherwise; the check runs after the last frame,
+// when the renderer and the encoder are done, so it gets every CPU clrender may use.
 std::vector<std::string> prober_arguments(const std::string& prober, const std::string& video) {
-    return {prober, "-v", "error", "-select_streams", "v:0", "-count_frames",
-            "-show_entries", "stream=nb_read_frames", "-of", "default=noprint_wrappers=1:nokey=1", video};
+    return {prober, "-v", "error", "-threads", std::to_string(usable_cpu_count()), "-select_streams", "v:0",
+            "-count_frames", "-show_entries", "stream=nb_read_frames", "-of", "default=noprint_wrappers=1:nokey=1",
+            video};
 }
 
 // The whole of `text` as a count, or nullopt ("N/A" when no video stream was found).
