@@ -110,8 +110,17 @@ void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Ve
     for (std::size_t i = 0; i < scene.billboards.size(); ++i)
         compiled.billboards[i].corner = corner_of(scene.billboards[i], origin);
     compiled.billboards.resize(frame.billboard_count());
-    for (std::size_t i = frame.first_impostor(); i < frame.billboard_count(); ++i)
-        compiled.billboards[i] = compile_billboard(frame.billboard(i), texture_of(frame.billboard(i), compiled), origin);
+    const std::size_t first = frame.first_impostor();
+    compiled.impostor_textures.resize(frame.billboard_count() - first, {nullptr, nullptr});
+    for (std::size_t i = first; i < frame.billboard_count(); ++i) {
+        const Billboard& billboard = frame.billboard(i);
+        auto& [image, texture] = compiled.impostor_textures[i - first];
+        if (image != billboard.image.get()) {
+            image = billboard.image.get();
+            texture = texture_of(billboard, compiled);
+        }
+        compiled.billboards[i] = compile_billboard(billboard, texture, origin);
+    }
     compiled.info.sun = to_float4(scene.sun_location - origin);
     compiled.info.billboard_count = static_cast<int>(compiled.billboards.size());
 }

@@ -51,25 +51,39 @@ int choose_view(const Impostor& impostor, const PlacementCamera& camera) {
     return best;
 }
 
-Billboard place_impostor(const Impostor& impostor, const PlacementCamera& camera) {
+void place_impostor(const Impostor& impostor, const PlacementCamera& camera, Billboard& placed) {
     Vec3 to_eye = camera.eye - impostor.center;
     Facing3 frame = impostor.facing == Facing::Upright ? upright_frame(to_eye, camera) : free_frame(to_eye, camera);
     Vec3 half_right = frame.r * (impostor.width / 2);
     Vec3 half_up = frame.s * (impostor.height / 2);
-    Billboard billboard;
-    billboard.upper_left = impostor.center - half_right + half_up;
-    billboard.upper_right = impostor.center + half_right + half_up;
-    billboard.lower_left = impostor.center - half_right - half_up;
+    placed.upper_left = impostor.center - half_right + half_up;
+    placed.upper_right = impostor.center + half_right + half_up;
+    placed.lower_left = impostor.center - half_right - half_up;
     int view = choose_view(impostor, camera);
-    if (view >= 0) billboard.image = impostor.views[static_cast<std::size_t>(view)].image;
-    billboard.has_ambient = view < 0;
-    billboard.ambient = impostor.ambient;
+    const Image* shown = view >= 0 ? impostor.views[static_cast<std::size_t>(view)].image.get() : nullptr;
+    // Copying a shared_ptr is an atomic increment and its release an atomic decrement: with
+    // thousands of impostors sharing a few images these were most of the placement's time
+    // (docs/benchmarks.md, Impostor frames). Most frames keep each impostor's view.
+    if (placed.image.get() != shown) {
+        if (view >= 0)
+            placed.image = impostor.views[static_cast<std::size_t>(view)].image;
+        else
+            placed.image.reset();
+    }
+    placed.has_ambient = view < 0;
+    placed.ambient = impostor.ambient;
+    placed.is_mirror = false;
+}
+
+Billboard place_impostor(const Impostor& impostor, const PlacementCamera& camera) {
+    Billboard billboard;
+    place_impostor(impostor, camera, billboard);
     return billboard;
 }
 
 void place_impostors(const Scene& scene, const PlacementCamera& camera, std::vector<Billboard>& placed) {
     placed.resize(scene.impostors.size());
-    for (std::size_t i = 0; i < scene.impostors.size(); ++i) placed[i] = place_impostor(scene.impostors[i], camera);
+    for (std::size_t i = 0; i < scene.impostors.size(); ++i) place_impostor(scene.impostors[i], camera, placed[i]);
 }
 
 }  // namespace clr

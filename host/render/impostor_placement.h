@@ -25,6 +25,9 @@ int choose_view(const Impostor& impostor, const PlacementCamera& camera);
 
 // The billboard `impostor` is for one frame: front normal towards the eye, image upright.
 Billboard place_impostor(const Impostor& impostor, const PlacementCamera& camera);
+// The same, written over `placed` (the same impostor's billboard of an earlier frame, or a
+// default one): its image is only reassigned when the view shown changes.
+void place_impostor(const Impostor& impostor, const PlacementCamera& camera, Billboard& placed);
 
 // The scene's impostors placed for `camera`, in order, into `placed` (whose storage is reused
 // from frame to frame).

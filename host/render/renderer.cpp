@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <future>
 #include <stdexcept>
 
 #include "core/display_bytes.h"
@@ -105,12 +106,20 @@ void Renderer::upload_geometry() {
 
 // Only positions change from frame to frame; impostors also turn, and then their billboards
 // and the BVH over them are made anew.
-void Renderer::show(const CameraKey& key, const Vec3& origin) {
+void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera* binned_for) {
+    binned_tiles_.reset();
     bool turns = !scene_.impostors.empty();
     if (uploaded_ && origin == origin_ && !turns) return;
     uploaded_ = false;
     origin_ = origin;
     if (turns) frame_.place_impostors(key);
+    // Binning reads only the placed geometry and the camera, so it runs beside compiling and
+    // uploading, while the device's threads wait for the frame: on 10k impostors the two take
+    // about 0.9 and 0.6 ms (docs/benchmarks.md, Impostor frames). The future's destructor
+    // waits for it, also when an upload throws.
+    std::future<ScreenTiles> tiles;
+    if (binned_for && screen_tiles_)
+        tiles = std::async(std::launch::async, [this, binned_for] { return bin_screen_tiles(frame_, *binned_for); });
     compile_frame(compiled_, frame_, origin_);
     if (turns && features_.bvh) bvh_ = build_bvh(frame_);
     try {
@@ -119,11 +128,12 @@ void Renderer::show(const CameraKey& key, const Vec3& origin) {
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
     uploaded_ = true;
+    if (tiles.valid()) binned_tiles_ = tiles.get();
 }
 
 Image Renderer::render(const CameraKey& key, int frame, FrameTiming* timing) {
     FrameCamera camera = frame_camera(scene_, key, frame);
-    show(key, camera.origin);
+    show(key, camera.origin, &camera);
     return render_camera(camera, timing, crop_);
 }
 
@@ -205,7 +215,8 @@ double Renderer::render_band(const ClrCamera& camera, const PixelRect& region, i
 }
 
 ScreenTiles Renderer::upload_screen_tiles(const FrameCamera& camera) {
-    ScreenTiles tiles = bin_screen_tiles(frame_, camera);
+    ScreenTiles tiles = binned_tiles_ ? std::move(*binned_tiles_) : bin_screen_tiles(frame_, camera);
+    binned_tiles_.reset();
     tile_args_.offsets = upload(device_.context(), tiles.offsets);
     tile_args_.items = upload(device_.context(), tiles.items);
     tile_args_.nearest = upload(device_.context(), tiles.nearest);

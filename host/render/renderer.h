@@ -17,6 +17,7 @@
 #include "render/frame_geometry.h"
 #include "render/frame_timing.h"
 #include "render/kernel_signatures.h"
+#include "render/screen_tiles.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -84,8 +85,9 @@ public:
 
 private:
     // Moves the device geometry to `origin` (the frame camera's) and places the impostors for
-    // `key`, uploading what changed.
-    void show(const CameraKey& key, const Vec3& origin);
+    // `key`, uploading what changed. Given `binned_for` (the frame's camera, with screen tiles),
+    // also bins the frame's screen tiles for it into binned_tiles_, meanwhile on another thread.
+    void show(const CameraKey& key, const Vec3& origin, const FrameCamera* binned_for = nullptr);
     // Renders the frame seen by `camera`, or its `crop`, the geometry already shown for it.
     Image render_camera(const FrameCamera& camera, FrameTiming* timing, const std::optional<PixelRect>& crop);
     // Renders the columns `region` names of rows [first_row, first_row + rows) of the frame into
@@ -114,6 +116,7 @@ private:
     TypedKernel<RenderPacketsSignature> render_packets_;  // with screen tiles
     TypedKernel<RenderSignature> render_;                 // without
     TileArgs tile_args_;  // the last frame's screen tiles
+    std::optional<ScreenTiles> binned_tiles_;  // binned by show() for the next render_camera()
     SceneArgs scene_args_;  // the scene's buffers on the device
     Bvh bvh_;
     cl::Buffer pixels_;

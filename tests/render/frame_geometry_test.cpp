@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "render/impostor_placement.h"
 #include "support/scene_builder.h"
 
@@ -46,6 +48,28 @@ TEST(FrameGeometry, SceneBillboardsThenImpostorsPlacedForTheKey) {
     frame.place_impostors(other);
     EXPECT_TRUE(same_corners(frame.billboard(1), place_impostor(scene.impostors[0], PlacementCamera(other, scene.up))));
     EXPECT_FALSE(same_corners(frame.billboard(1), place_impostor(scene.impostors[0], camera))) << "it must turn";
+}
+
+
+// Placing over the previous frame's billboards keeps an image only while its view stays
+// the one shown: a turn of the camera past another view shows that view's image.
+TEST(FrameGeometry, PlacedAgainShowsTheNewKeysView) {
+    Scene scene = testing::make_scene({0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 60, 32, 24);
+    Impostor impostor = impostor_at({0, 0, 0}, Facing::Upright);
+    auto left = std::make_shared<Image>();
+    auto right = std::make_shared<Image>();
+    impostor.views = {{{-1, 0, 0}, left}, {{1, 0, 0}, right}};
+    scene.impostors = {impostor};
+
+    FrameGeometry frame(scene);
+    frame.place_impostors({{-9, 0, 1}, {0, 0, 0}});
+    EXPECT_EQ(frame.billboard(0).image, left);
+    frame.place_impostors({{9, 0, 1}, {0, 0, 0}});
+    EXPECT_EQ(frame.billboard(0).image, right) << "the view from the new eye";
+    frame.place_impostors({{8, 0, -1}, {0, 0, 0}});
+    EXPECT_EQ(frame.billboard(0).image, right);
+    frame.place_impostors({{-8, 0, -1}, {0, 0, 0}});
+    EXPECT_EQ(frame.billboard(0).image, left);
 }
 
 }  // namespace
