@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "core/huge_pages.h"
+
 namespace clr {
 namespace {
 
@@ -71,7 +73,7 @@ EntryCheck read_cache_entry(int descriptor, const CacheEntryKind& kind, const Sh
         !header_fits(header, kind, key, static_cast<std::uint64_t>(info.st_size)))
         return EntryCheck::Bad;
     entry.detail = header.detail;
-    entry.payload.resize(header.payload_size);
+    resize_with_huge_pages(entry.payload, header.payload_size);
     if (!read_exactly(descriptor, entry.payload.data(), entry.payload.size()) ||
         sha256(entry.payload.data(), entry.payload.size()) != header.payload_digest) {
         entry.payload = {};
