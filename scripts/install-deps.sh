@@ -12,6 +12,8 @@ packages=(
   libisal-dev
   # SHA-256 (libcrypto) for the keys and checksums of the caches
   libssl-dev
+  # XXH3 for the checksums of the caches' entry payloads
+  libxxhash-dev
   # EXR output (-o frame.exr): OpenEXR 3 and its CMake config
   libopenexr-dev
   googletest libgtest-dev

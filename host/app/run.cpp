@@ -1,5 +1,6 @@
 #include "app/run.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -9,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 #include <system_error>
+#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "app/frame_description.h"
@@ -23,6 +25,7 @@
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "core/stopwatch.h"
+#include "core/worker_threads.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
 #include "core/errors.h"
@@ -31,6 +34,7 @@
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
 #include "scene/camera_path.h"
+#include "scene/image_cache.h"
 #include "scene/image_loader.h"
 #include "scene/scene_loader.h"
 
@@ -300,8 +304,15 @@ int run(const Options& options) {
     DeviceList devices;
     // --check never opens an OpenCL platform: it must work where there is none.
     // --join renders nothing; --resume of a finished image neither: it lists them when it renders.
-    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check && options.join.empty())
+    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check && options.join.empty()) {
+        // What would wait for the driver's dlopen on the listing thread, done before it starts:
+        // the image loader's threads (core/worker_threads.h) and the image cache's first key.
+        if (!options.resume) {
+            WorkerThreads::shared().start(std::max(1u, std::thread::hardware_concurrency()) - 1);
+            ImageCache::prepare_keys();
+        }
         devices = options.resume ? std::async(std::launch::deferred, list_devices) : list_devices_meanwhile();
+    }
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
     if (options.print_frame_count) {

@@ -3,8 +3,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+
+#include "core/huge_pages.h"
+#include "core/payload_checksum.h"
 
 namespace clr {
 namespace {
@@ -18,12 +22,18 @@ struct EntryHeader {
     std::array<std::uint32_t, 2> detail;
     std::uint64_t payload_size;
     Sha256Digest key;
-    Sha256Digest payload_digest;
+    PayloadChecksum payload_checksum;
+    unsigned char reserved[16];  // zero
     Sha256Digest header_digest;  // of every byte above
 };
 static_assert(sizeof(EntryHeader) == kCacheEntryHeaderBytes, "the header is written and read as raw bytes");
 
-constexpr std::uint32_t kLayoutVersion = 1;
+// 2: the payload's checksum is XXH3-128 (core/payload_checksum.h), no longer SHA-256.
+constexpr std::uint32_t kLayoutVersion = 2;
+
+// The payload is read and checksummed a block at a time, so that each block is checked while
+// it is still in the CPU's cache.
+constexpr std::size_t kReadBlock = std::size_t(1) << 20;
 
 Sha256Digest digest_of_header(const EntryHeader& header) {
     return sha256(&header, offsetof(EntryHeader, header_digest));
@@ -71,9 +81,18 @@ EntryCheck read_cache_entry(int descriptor, const CacheEntryKind& kind, const Sh
         !header_fits(header, kind, key, static_cast<std::uint64_t>(info.st_size)))
         return EntryCheck::Bad;
     entry.detail = header.detail;
-    entry.payload.resize(header.payload_size);
-    if (!read_exactly(descriptor, entry.payload.data(), entry.payload.size()) ||
-        sha256(entry.payload.data(), entry.payload.size()) != header.payload_digest) {
+    resize_with_huge_pages(entry.payload, header.payload_size);
+    PayloadChecksummer checksum;
+    for (std::size_t done = 0; done < entry.payload.size();) {
+        const std::size_t block = std::min(kReadBlock, entry.payload.size() - done);
+        if (!read_exactly(descriptor, entry.payload.data() + done, block)) {
+            entry.payload = {};
+            return EntryCheck::Bad;
+        }
+        checksum.add(entry.payload.data() + done, block);
+        done += block;
+    }
+    if (checksum.finish() != header.payload_checksum) {
         entry.payload = {};
         return EntryCheck::Bad;
     }
@@ -89,7 +108,7 @@ bool write_cache_entry(int descriptor, const CacheEntryKind& kind, const Sha256D
     header.detail = detail;
     header.payload_size = size;
     header.key = key;
-    header.payload_digest = sha256(payload, size);
+    header.payload_checksum = payload_checksum(payload, size);
     header.header_digest = digest_of_header(header);
     return write_exactly(descriptor, &header, sizeof header) && write_exactly(descriptor, payload, size);
 }

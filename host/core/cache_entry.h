@@ -1,7 +1,7 @@
 // One entry file of a clrender cache: a fixed 128-byte header, then the payload (decoded pixels,
 // a program binary). Everything is checked before anything is used: the header carries its own
-// SHA-256, the key it was stored for and the SHA-256 of the payload, and its sizes must match the
-// file's before anything is allocated. A damaged, truncated, foreign or misnamed entry therefore
+// SHA-256, the key it was stored for and the payload's checksum (core/payload_checksum.h), and
+// its sizes must match the file's before anything is allocated. A damaged, truncated, foreign or misnamed entry therefore
 // never reaches a caller.
 #pragma once
 

@@ -1,9 +1,11 @@
 #include "render/compiled_scene.h"
 
 #include <cstdint>
+#include <set>
 #include <string>
 
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "render/coverage_mask.h"
 #include "render/device_structs.h"
 
@@ -49,6 +51,20 @@ void pack_texture(const Image* image, CompiledScene& compiled) {
     compiled.textures.emplace(image, slot);
 }
 
+// The texel buffer at its final size before the first image goes in: growing it image by image
+// copied the packed texels again at each doubling and faulted in every page of each new block.
+void reserve_texels(const Scene& scene, CompiledScene& compiled) {
+    std::set<const Image*> images;
+    for (const Billboard& billboard : scene.billboards)
+        if (!billboard.is_mirror && billboard.image) images.insert(billboard.image.get());
+    for (const Impostor& impostor : scene.impostors)
+        for (const ImpostorView& view : impostor.views)
+            if (view.image) images.insert(view.image.get());
+    std::size_t bytes = 0;
+    for (const Image* image : images) bytes += image->rgba.size();
+    reserve_with_huge_pages(compiled.texels, bytes);
+}
+
 const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& compiled) {
     if (!billboard.image || billboard.is_mirror) return nullptr;  // a mirror ignores its image
     return &compiled.textures.at(billboard.image.get());
@@ -87,6 +103,7 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);
     for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(compile_sphere(sphere, origin));
+    reserve_texels(scene, compiled);
     for (const Billboard& billboard : scene.billboards) {
         if (!billboard.is_mirror) pack_texture(billboard.image.get(), compiled);
         compiled.billboards.push_back(compile_billboard(billboard, texture_of(billboard, compiled), origin));

@@ -30,7 +30,20 @@ std::string stb_identity() {
            "." + std::to_string(file.st_mtim.tv_nsec);
 }
 
+const std::string& decoder_identity() {
+    static const std::string identity = stb_identity();
+    return identity;
+}
+
 }  // namespace
+
+void ImageCache::prepare_keys() noexcept {
+    try {
+        decoder_identity();
+        Sha256().finish();
+    } catch (const std::exception&) {
+    }
+}
 
 ImageCache ImageCache::from_environment() { return ImageCache(cache_folder_from_environment()); }
 
@@ -38,7 +51,7 @@ ImageCache::ImageCache(std::string cache_folder, std::uint64_t size_limit)
     : entries_(std::move(cache_folder), "images", image_entries(size_limit), size_limit) {}
 
 ImageCache::Key ImageCache::key(const std::vector<unsigned char>& file_bytes) {
-    static const std::string decoder = stb_identity();
+    const std::string& decoder = decoder_identity();
     return Sha256()
         .add_field(std::string("clrender decoded image"))
         .add_number(kFormatVersion)

@@ -44,6 +44,11 @@ public:
     std::string folder() const { return entries_.folder(); }
 
     static Key key(const std::vector<unsigned char>& file_bytes);
+    // Does the one-time work of the first key now, on this thread: the decoder's identity asks
+    // the dynamic loader, and libcrypto initialises itself, both of which wait for a dlopen
+    // under way on another thread (the OpenCL driver's, tens of milliseconds). Never throws:
+    // a failure here is met again, and handled, by key().
+    static void prepare_keys() noexcept;
     // The entry's file for `key`.
     std::string path(const Key& key) const { return entries_.path(key); }
 

@@ -4,12 +4,12 @@
 #include <atomic>
 #include <exception>
 #include <functional>
-#include <system_error>
 #include <thread>
 
 #include <sys/stat.h>
 
 #include "core/interruption.h"
+#include "core/worker_threads.h"
 #include "scene/bounded_file.h"
 
 namespace clr {
@@ -17,8 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Runs work(0) .. work(count - 1) on all cores; rethrows the first exception (in index
-// order) once every thread is done, e.g. out of memory.
+// Runs work(0) .. work(count - 1) on all cores (core/worker_threads.h); rethrows the first
+// exception (in index order) once every thread is done, e.g. out of memory. Where no thread
+// could be started, this one does all the work, which is slower but the same.
 void for_each_in_parallel(std::size_t count, const std::function<void(std::size_t)>& work) {
     std::vector<std::exception_ptr> errors(count);
     std::atomic<std::size_t> next{0};
@@ -32,17 +33,9 @@ void for_each_in_parallel(std::size_t count, const std::function<void(std::size_
             }
         }
     };
+    if (count == 0) return;
     const std::size_t thread_count = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), count);
-    std::vector<std::thread> helpers;
-    try {
-        for (std::size_t t = 1; t < thread_count; ++t) helpers.emplace_back(worker);
-    } catch (const std::system_error&) {
-        // No more threads (a process limit, no memory for a stack): those started and this
-        // one share the work, which is slower but the same. Unjoined threads would end the
-        // process.
-    }
-    worker();
-    for (std::thread& helper : helpers) helper.join();
+    WorkerThreads::shared().run(thread_count - 1, worker);
     for (const std::exception_ptr& error : errors) {
         if (error) std::rethrow_exception(error);
     }

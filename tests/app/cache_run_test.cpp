@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/payload_checksum.h"
 #include "core/sha256.h"
 #include "support/command.h"
 #include "support/small_disk.h"
@@ -50,8 +51,8 @@ void craft_entry(const std::string& entry, const std::string& payload) {
     std::string header = read_bytes(entry).substr(0, kHeaderBytes);
     const std::uint64_t size = payload.size();
     header.replace(24, 8, reinterpret_cast<const char*>(&size), 8);
-    const Sha256Digest payload_digest = sha256(payload.data(), payload.size());
-    header.replace(64, 32, reinterpret_cast<const char*>(payload_digest.data()), 32);
+    const PayloadChecksum checksum = payload_checksum(payload.data(), payload.size());
+    header.replace(64, 16, reinterpret_cast<const char*>(checksum.data()), 16);
     const Sha256Digest header_digest = sha256(header.data(), 96);
     header.replace(96, 32, reinterpret_cast<const char*>(header_digest.data()), 32);
     std::ofstream(entry, std::ios::binary | std::ios::trunc) << header << payload;
