@@ -38,6 +38,16 @@ cl::Buffer upload(const cl::Context& context, const std::vector<T>& data) {
     return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, size, const_cast<void*>(bytes));
 }
 
+// The texel buffer over `storage` itself where it has texels: a device that works in host
+// memory (PoCL) then reads them where they are, instead of copying 20 MB into fresh pages on
+// every start (docs/benchmarks.md, Against POV-Ray); another may still copy or cache them,
+// which the spec allows. The caller keeps `storage` alive and unwritten while the buffer lives.
+cl::Buffer use_in_place(const cl::Context& context, PageAlignedVector<std::uint8_t>& storage) {
+    if (storage.empty()) return upload(context, std::vector<std::uint8_t>{});
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_USE_HOST_PTR | CL_MEM_HOST_NO_ACCESS, storage.size(),
+                      storage.data());
+}
+
 // Whether the device works in host memory (CPU devices such as PoCL's): then the kernel
 // writes into the image itself, through a buffer over its storage, instead of into a
 // device buffer whose every byte is then copied once more (docs/benchmarks.md).
@@ -79,11 +89,12 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
             render_packets_ = TypedKernel<RenderPacketsSignature>(program_, kRenderPackets);
         else
             render_ = TypedKernel<RenderSignature>(program_, kRender);
-        scene_args_.texels = upload(device_.context(), compiled_.texels);
+        texel_storage_ = std::move(compiled_.texels);
+        scene_args_.texels = use_in_place(device_.context(), texel_storage_);
         // Only kernels with alpha tests read the coverage bits (render_packets, with
         // CLR_FEATURE_ALPHA); others get the one-word stand-in.
         scene_args_.coverage = upload(device_.context(), features_.alpha ? compiled_.coverage : std::vector<std::uint32_t>{});
-        compiled_.texels = {};  // on the device now; frames only move positions
+        compiled_.texels = {};  // the buffer's now; frames only move positions
         compiled_.coverage = {};
         if (features_.bvh) bvh_ = build_bvh(frame_);  // otherwise empty: never read
         upload_geometry();

@@ -12,9 +12,9 @@
 namespace clr {
 namespace {
 
-template <typename T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+template <typename Vector>
+bool same_bytes(const Vector& a, const Vector& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
 }
 
 void expect_same_device_form(const CompiledScene& a, const CompiledScene& b) {
