@@ -74,5 +74,21 @@ TEST(CompiledScene, ANewFrameWithTurnedImpostorsEqualsCompilingIt) {
     }
 }
 
+// The renderer gives the texels to the device in place (CL_MEM_USE_HOST_PTR), which PoCL takes
+// without a copy only at its CL_DEVICE_MEM_BASE_ADDR_ALIGN (128 bytes); malloc's large blocks
+// start 16 bytes into a page. Page alignment covers every device met so far.
+TEST(CompiledScene, TexelsStartOnAPage) {
+    Scene scene = testing::make_random_scene(262, 3, 3);
+    scene.impostors = {two_view_impostor({0, 0, 0})};
+    // Large enough that malloc would map it on its own (and not page-aligned).
+    auto big = testing::make_image(1024, 600, [](int, int) { return std::array<std::uint8_t, 4>{1, 2, 3, 255}; });
+    scene.impostors[0].views[0].image = big;
+    FrameGeometry frame(scene);
+    frame.place_impostors({{20, 2, 1}, {0, 0, 0}});
+    const CompiledScene compiled = compile_scene(frame);
+    ASSERT_GE(compiled.texels.size(), big->rgba.size());
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(compiled.texels.data()) % 4096, 0u);
+}
+
 }  // namespace
 }  // namespace clr
