@@ -62,7 +62,7 @@ void reserve_texels(const Scene& scene, CompiledScene& compiled) {
             if (view.image) images.insert(view.image.get());
     std::size_t bytes = 0;
     for (const Image* image : images) bytes += image->rgba.size();
-    reserve_with_huge_pages(compiled.texels, bytes);
+    compiled.texels.reserve(bytes);  // untouched: advised first where huge pages may serve
 }
 
 const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& compiled) {

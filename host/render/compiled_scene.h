@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/feature_set.h"
+#include "render/page_aligned_allocator.h"
 #include "render/frame_geometry.h"
 #include "scene/scene.h"
 #include "shared/clr_types.h"
@@ -24,7 +25,9 @@ struct TextureSlot {
 struct CompiledScene {
     std::vector<ClrSphere> spheres;
     std::vector<ClrBillboard> billboards;  // the frame's billboards, in FrameGeometry's order
-    std::vector<std::uint8_t> texels;  // RGBA bytes of every image a billboard or view may show
+    // RGBA bytes of every image a billboard or view may show; page-aligned, so that a device can
+    // read them where they are (Renderer keeps them as the texel buffer's host memory).
+    PageAlignedVector<std::uint8_t> texels;
     // One bit per texel of `texels`, set where it stops rays (render/coverage_mask.h).
     std::vector<std::uint32_t> coverage;
     std::map<const Image*, TextureSlot> textures;  // each image's place in `texels`

@@ -7,6 +7,7 @@
 
 #include "core/display_bytes.h"
 #include "core/errors.h"
+#include "core/huge_pages.h"
 #include "core/stopwatch.h"
 #include "device/cl_errors.h"
 #include "device/kernel_sources.h"
@@ -36,6 +37,16 @@ cl::Buffer upload(const cl::Context& context, const std::vector<T>& data) {
     const void* bytes = data.empty() ? &kUnused : data.data();
     std::size_t size = data.empty() ? sizeof(T) : data.size() * sizeof(T);
     return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, size, const_cast<void*>(bytes));
+}
+
+// The texel buffer over `storage` itself where it has texels: a device that works in host
+// memory (PoCL) then reads them where they are, instead of copying 20 MB into fresh pages on
+// every start (docs/benchmarks.md, Against POV-Ray); another may still copy or cache them,
+// which the spec allows. The caller keeps `storage` alive and unwritten while the buffer lives.
+cl::Buffer use_in_place(const cl::Context& context, PageAlignedVector<std::uint8_t>& storage) {
+    if (storage.empty()) return upload(context, std::vector<std::uint8_t>{});
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_USE_HOST_PTR | CL_MEM_HOST_NO_ACCESS, storage.size(),
+                      storage.data());
 }
 
 // Whether the device works in host memory (CPU devices such as PoCL's): then the kernel
@@ -79,11 +90,12 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
             render_packets_ = TypedKernel<RenderPacketsSignature>(program_, kRenderPackets);
         else
             render_ = TypedKernel<RenderSignature>(program_, kRender);
-        scene_args_.texels = upload(device_.context(), compiled_.texels);
+        texel_storage_ = std::move(compiled_.texels);
+        scene_args_.texels = use_in_place(device_.context(), texel_storage_);
         // Only kernels with alpha tests read the coverage bits (render_packets, with
         // CLR_FEATURE_ALPHA); others get the one-word stand-in.
         scene_args_.coverage = upload(device_.context(), features_.alpha ? compiled_.coverage : std::vector<std::uint32_t>{});
-        compiled_.texels = {};  // on the device now; frames only move positions
+        compiled_.texels = {};  // the buffer's now; frames only move positions
         compiled_.coverage = {};
         if (features_.bvh) bvh_ = build_bvh(frame_);  // otherwise empty: never read
         upload_geometry();
@@ -259,10 +271,11 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing, cons
     std::size_t row_bytes = static_cast<std::size_t>(camera.width) * 4;
     std::size_t image_bytes = static_cast<std::size_t>(image.width) * image.height * 4;
     // Every pixel is written below, so recycled storage of the right size needs no clearing;
-    // new storage costs a page fault and a zero fill per page (docs/benchmarks.md).
+    // new storage costs a page fault and a zero fill per page (docs/benchmarks.md), or per
+    // 2 MiB where huge pages serve (8.3 MB at 1080p).
     if (spare_pixels_.size() == image_bytes) image.rgba.swap(spare_pixels_);
     spare_pixels_.clear();
-    image.rgba.resize(image_bytes);
+    resize_with_huge_pages(image.rgba, image_bytes);
     if (features_.float_output) {
         image.linear.resize(static_cast<std::size_t>(image.width) * image.height * 4);
         row_bytes = static_cast<std::size_t>(camera.width) * pixel_bytes();  // the kernel's rows

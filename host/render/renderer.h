@@ -117,6 +117,9 @@ private:
     TypedKernel<RenderSignature> render_;                 // without
     TileArgs tile_args_;  // the last frame's screen tiles
     std::optional<ScreenTiles> binned_tiles_;  // binned by show() for the next render_camera()
+    // The texel buffer's host memory (CL_MEM_USE_HOST_PTR): alive and unwritten as long as
+    // scene_args_.texels, which is declared after it and so released before it.
+    PageAlignedVector<std::uint8_t> texel_storage_;
     SceneArgs scene_args_;  // the scene's buffers on the device
     Bvh bvh_;
     cl::Buffer pixels_;

@@ -12,9 +12,9 @@
 namespace clr {
 namespace {
 
-template <typename T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+template <typename Vector>
+bool same_bytes(const Vector& a, const Vector& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
 }
 
 void expect_same_device_form(const CompiledScene& a, const CompiledScene& b) {
@@ -72,6 +72,22 @@ TEST(CompiledScene, ANewFrameWithTurnedImpostorsEqualsCompilingIt) {
         EXPECT_NE(compiled.billboards[i].normal.s[0], first_frame[i].normal.s[0]) << "impostor " << i;
         EXPECT_NE(compiled.billboards[i].texel_offset, first_frame[i].texel_offset) << "impostor " << i;
     }
+}
+
+// The renderer gives the texels to the device in place (CL_MEM_USE_HOST_PTR), which PoCL takes
+// without a copy only at its CL_DEVICE_MEM_BASE_ADDR_ALIGN (128 bytes); malloc's large blocks
+// start 16 bytes into a page. Page alignment covers every device met so far.
+TEST(CompiledScene, TexelsStartOnAPage) {
+    Scene scene = testing::make_random_scene(262, 3, 3);
+    scene.impostors = {two_view_impostor({0, 0, 0})};
+    // Large enough that malloc would map it on its own (and not page-aligned).
+    auto big = testing::make_image(1024, 600, [](int, int) { return std::array<std::uint8_t, 4>{1, 2, 3, 255}; });
+    scene.impostors[0].views[0].image = big;
+    FrameGeometry frame(scene);
+    frame.place_impostors({{20, 2, 1}, {0, 0, 0}});
+    const CompiledScene compiled = compile_scene(frame);
+    ASSERT_GE(compiled.texels.size(), big->rgba.size());
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(compiled.texels.data()) % 4096, 0u);
 }
 
 }  // namespace
