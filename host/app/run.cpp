@@ -1,6 +1,5 @@
 #include "app/run.h"
 
-#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -10,7 +9,6 @@
 #include <iostream>
 #include <sstream>
 #include <system_error>
-#include <thread>
 #include <nlohmann/json.hpp>
 
 #include "app/frame_description.h"
@@ -25,6 +23,7 @@
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "core/stopwatch.h"
+#include "core/usable_cpus.h"
 #include "core/worker_threads.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
@@ -308,7 +307,7 @@ int run(const Options& options) {
         // What would wait for the driver's dlopen on the listing thread, done before it starts:
         // the image loader's threads (core/worker_threads.h) and the image cache's first key.
         if (!options.resume) {
-            WorkerThreads::shared().start(std::max(1u, std::thread::hardware_concurrency()) - 1);
+            WorkerThreads::shared().start(static_cast<std::size_t>(usable_cpu_count()) - 1);
             ImageCache::prepare_keys();
         }
         devices = options.resume ? std::async(std::launch::deferred, list_devices) : list_devices_meanwhile();

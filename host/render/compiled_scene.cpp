@@ -5,7 +5,6 @@
 #include <string>
 
 #include "core/errors.h"
-#include "core/huge_pages.h"
 #include "render/coverage_mask.h"
 #include "render/device_structs.h"
 
@@ -62,7 +61,9 @@ void reserve_texels(const Scene& scene, CompiledScene& compiled) {
             if (view.image) images.insert(view.image.get());
     std::size_t bytes = 0;
     for (const Image* image : images) bytes += image->rgba.size();
-    compiled.texels.reserve(bytes);  // untouched: advised first where huge pages may serve
+    // Past the addressable texels pack_texture() names the image that overflows; reserving
+    // that much first would only turn its clear error into running out of memory.
+    if (bytes / 4 <= kMaxPackedTexels) compiled.texels.reserve(bytes);  // untouched: huge pages advised
 }
 
 const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& compiled) {

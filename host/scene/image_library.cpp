@@ -4,11 +4,11 @@
 #include <atomic>
 #include <exception>
 #include <functional>
-#include <thread>
 
 #include <sys/stat.h>
 
 #include "core/interruption.h"
+#include "core/usable_cpus.h"
 #include "core/worker_threads.h"
 #include "scene/bounded_file.h"
 
@@ -34,7 +34,7 @@ void for_each_in_parallel(std::size_t count, const std::function<void(std::size_
         }
     };
     if (count == 0) return;
-    const std::size_t thread_count = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), count);
+    const std::size_t thread_count = std::min<std::size_t>(usable_cpu_count(), count);
     WorkerThreads::shared().run(thread_count - 1, worker);
     for (const std::exception_ptr& error : errors) {
         if (error) std::rethrow_exception(error);
