@@ -176,8 +176,9 @@ std::pair<std::uint32_t, std::uint32_t> coverage_words(const ClrBillboard& billb
 // byte. Each image spans as many pixels as it has texels, so every ray meets a texel's centre
 // (float and double agree on which texel), over a one-colour backdrop.
 TEST(CoverageMask, WindowedAndGatheredBitsDecideAsTheReference) {
-    const std::vector<std::pair<int, int>> sizes = {{32, 32}, {5, 7}, {32, 32}, {40, 40}};
-    const std::vector<int> first_columns = {2, 36, 43, 77};
+    // Packed one after another: 1,600 texels end on a word's edge, 35 do not.
+    const std::vector<std::pair<int, int>> sizes = {{40, 40}, {32, 32}, {5, 7}, {32, 32}, {3, 3}};
+    const std::vector<int> first_columns = {1, 43, 77, 84, 118};
     const int width = 128, height = 48, top_row = 4;
     // 90 degrees across 128 columns from 64 units away: a pixel is one unit on the plane z = 0.
     Scene scene = testing::make_scene({0, 0, 64}, {0, 0, 0}, {0, 1, 0}, 90, width, height);
@@ -202,10 +203,11 @@ TEST(CoverageMask, WindowedAndGatheredBitsDecideAsTheReference) {
         auto [first, last] = coverage_words(compiled.billboards[k]);
         spans.push_back(last - first + 1);
     }
-    EXPECT_EQ(spans[0], CLR_COVERAGE_WINDOW_WORDS) << "a 32x32 image from a word's start fills the window";
-    EXPECT_LT(spans[1], CLR_COVERAGE_WINDOW_WORDS);
-    EXPECT_EQ(spans[2], CLR_COVERAGE_WINDOW_WORDS + 1) << "the second 32x32 image starts mid-word: gathered";
-    EXPECT_GT(spans[3], CLR_COVERAGE_WINDOW_WORDS);
+    EXPECT_GT(spans[0], CLR_COVERAGE_WINDOW_WORDS) << "gathered";
+    EXPECT_EQ(spans[1], CLR_COVERAGE_WINDOW_WORDS) << "a 32x32 image from a word's start fills the window";
+    EXPECT_LT(spans[2], CLR_COVERAGE_WINDOW_WORDS);
+    EXPECT_EQ(spans[3], CLR_COVERAGE_WINDOW_WORDS + 1) << "the second 32x32 image starts mid-word: gathered";
+    EXPECT_LT(spans[4], CLR_COVERAGE_WINDOW_WORDS) << "the last image with holes: its window reads the padding";
 
     const Image reference = testing::render_with_reference(scene);
     int holes = 0;
