@@ -185,7 +185,7 @@ TEST(CoverageMask, WindowedAndGatheredBitsDecideAsTheReference) {
     scene.background = {0.1, 0.2, 0.3};
     for (std::size_t k = 0; k < sizes.size(); ++k) {
         std::mt19937 random(static_cast<std::uint32_t>(k) + 40);
-        auto image = testing::make_image(sizes[k].first, sizes[k].second, [&random](int col, int row) {
+        auto image = testing::make_image(sizes[k].first, sizes[k].second, [&random](int, int) {
             return Texel{std::uint8_t(random() & 255), std::uint8_t(random() & 255), std::uint8_t(random() & 255),
                          kEdgeAlphas[random() % 4]};
         });
