@@ -23,11 +23,14 @@ std::vector<double> row_work(const ScreenTiles& tiles, int width, int height) {
     // Each item adds to a run of rows: counted as a start and an end (over 300,000 items at
     // 100,000 spheres), then summed over the rows once.
     std::vector<double> change(static_cast<std::size_t>(height) + 1, 0);
-    for (int tile = 0; tile + 1 < static_cast<int>(tiles.offsets.size()); ++tile) {
-        int tile_top = tile / std::max(1, tiles.tiles_x) * kClrTileSize;
-        for (std::uint32_t item = tiles.offsets[tile]; item < tiles.offsets[tile + 1]; ++item) {
+    const int tile_count = static_cast<int>(tiles.offsets.size()) - 1;
+    for (int tile_row_start = 0, tile_top = 0; tile_row_start < tile_count;
+         tile_row_start += std::max(1, tiles.tiles_x), tile_top += kClrTileSize) {
+        const int tile_bottom = std::min(tile_top + kClrTileSize, height) - 1;
+        const int tile_row_end = std::min(tile_count, tile_row_start + std::max(1, tiles.tiles_x));
+        for (std::uint32_t item = tiles.offsets[tile_row_start]; item < tiles.offsets[tile_row_end]; ++item) {
             int first = std::max(tile_top, static_cast<int>(tiles.rows[item] >> 16));
-            int last = std::min({tile_top + kClrTileSize - 1, static_cast<int>(tiles.rows[item] & 0xffff), height - 1});
+            int last = std::min(tile_bottom, static_cast<int>(tiles.rows[item] & 0xffff));
             if (first > last) continue;
             change[first] += kClrTileSize;
             change[last + 1] -= kClrTileSize;

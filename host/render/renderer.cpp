@@ -212,8 +212,14 @@ double Renderer::render_band(const ClrCamera& camera, const PixelRect& region, i
     device_.queue().enqueueNDRangeKernel(kernel, offset, global, local, nullptr, &done);
     if (in_place) {
         // Mapping makes the kernel's writes visible in the image; the pointer is the image's.
-        void* mapped = device_.queue().enqueueMapBuffer(pixels_, CL_TRUE, CL_MAP_READ, 0, band_bytes);
-        if (mapped != target) std::memcpy(target, mapped, band_bytes);
+        // Where it is (as on PoCL), map and unmap are queued at once and the host waits once.
+        cl::Event mapped_event;
+        void* mapped = device_.queue().enqueueMapBuffer(pixels_, CL_FALSE, CL_MAP_READ, 0, band_bytes, nullptr,
+                                                        &mapped_event);
+        if (mapped != target) {
+            mapped_event.wait();
+            std::memcpy(target, mapped, band_bytes);
+        }
         cl::Event unmapped;
         device_.queue().enqueueUnmapMemObject(pixels_, mapped, nullptr, &unmapped);
         unmapped.wait();  // the driver is done with the image before it leaves the renderer

@@ -4,8 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <optional>
 
+#include "core/parallel_for.h"
 #include "core/radix_sort.h"
+#include "core/usable_cpus.h"
 #include "render/object_bounds.h"
 
 namespace clr {
@@ -51,43 +55,86 @@ struct Placed {
     std::array<int, 4> range;  // tile columns first, last, tile rows first, last
 };
 
-// The objects of a frame that some tile lists, and the order in which the tiles list them.
-class Placement {
-public:
-    Placement(const ScreenTiles& tiles, const FrameCamera& camera) : tiles_(tiles), camera_(camera) {}
+// Frames with this many objects bin on every usable core: below, handing the work to other
+// threads costs more than it saves (a course frame bins five objects in microseconds).
+constexpr std::size_t kParallelFrom = 16384;
+// Objects per task while placing; bands of tile rows per thread while listing.
+constexpr std::size_t kPlaceChunk = 4096;
+constexpr int kBandsPerThread = 4;
 
-    void add(std::uint32_t item, double nearest, const PixelBounds& bounds) {
-        std::array<int, 4> range;
-        std::uint32_t rows;
-        if (!tile_range(bounds, tiles_, camera_.width, camera_.height, pixel_margin(camera_.samples), range, rows))
-            return;
-        // Stored slightly low: a float32 hit distance may fall a few ulps short of the true
-        // one, and the kernel must never skip an object that its float ray does hit first.
-        const float bound = static_cast<float>(nearest * (1 - 1e-5));
-        // The order key: the bound's bits (a float >= 0 orders as its bits do), then the
-        // object's place in the frame, so that every tile's list is nearest first in a
-        // deterministic order.
-        std::uint32_t bits;
-        std::memcpy(&bits, &bound, sizeof bits);
-        order_.push_back(static_cast<std::uint64_t>(bits) << 32 | placed_.size());
-        placed_.push_back({item, bound, rows, range});
+// Object `index` of the frame (its spheres, then its billboards) as the tiles list it, or
+// nothing when no tile does.
+std::optional<Placed> place(const FrameGeometry& frame, std::size_t index, const ObjectBounds& bounds,
+                            const ScreenTiles& tiles, const FrameCamera& camera) {
+    const std::size_t spheres = frame.spheres().size();
+    std::uint32_t item;
+    double nearest;
+    PixelBounds pixels;
+    if (index < spheres) {
+        const Sphere& sphere = frame.spheres()[index];
+        item = static_cast<std::uint32_t>(index);
+        nearest = bounds.sphere_distance(sphere);
+        pixels = bounds.sphere(sphere);
+    } else {
+        const Billboard& billboard = frame.billboard(index - spheres);
+        item = static_cast<std::uint32_t>(index - spheres) | CLR_TILE_BILLBOARD;
+        nearest = bounds.billboard_distance(billboard);
+        pixels = bounds.billboard(billboard);
     }
+    Placed placed;
+    if (!tile_range(pixels, tiles, camera.width, camera.height, pixel_margin(camera.samples), placed.range, placed.rows))
+        return std::nullopt;
+    placed.item = item;
+    // Stored slightly low: a float32 hit distance may fall a few ulps short of the true one,
+    // and the kernel must never skip an object that its float ray does hit first.
+    placed.nearest = static_cast<float>(nearest * (1 - 1e-5));
+    return placed;
+}
 
-    // The placed objects, nearest first.
-    std::vector<Placed> nearest_first() {
-        radix_sort(order_);
-        std::vector<Placed> sorted;
-        sorted.reserve(placed_.size());
-        for (std::uint64_t key : order_) sorted.push_back(placed_[static_cast<std::uint32_t>(key)]);
-        return sorted;
-    }
+// The order in which tiles list a placed object: its bound's bits (a float >= 0 orders as its
+// bits do), then its index in the frame, so that every tile's list is nearest first in a
+// deterministic order.
+std::uint64_t order_key(const Placed& placed, std::size_t index) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &placed.nearest, sizeof bits);
+    return static_cast<std::uint64_t>(bits) << 32 | index;
+}
 
-private:
-    const ScreenTiles& tiles_;
-    const FrameCamera& camera_;
-    std::vector<Placed> placed_;
-    std::vector<std::uint64_t> order_;
-};
+// The frame's objects that some tile lists, nearest first.
+std::vector<Placed> nearest_first(const FrameGeometry& frame, const ScreenTiles& tiles, const FrameCamera& camera,
+                                  std::size_t threads) {
+    const ObjectBounds bounds(camera);
+    const std::size_t objects = frame.object_count();
+    // Each chunk of objects places into its own slots and keys; the sort makes one order of them.
+    std::unique_ptr<Placed[]> by_index(new Placed[objects]);  // written before read: no zero fill
+    std::vector<std::vector<std::uint64_t>> chunk_keys((objects + kPlaceChunk - 1) / kPlaceChunk);
+    parallel_for(chunk_keys.size(), threads, [&](std::size_t chunk) {
+        const std::size_t end = std::min(objects, (chunk + 1) * kPlaceChunk);
+        for (std::size_t index = chunk * kPlaceChunk; index < end; ++index) {
+            if (std::optional<Placed> placed = place(frame, index, bounds, tiles, camera)) {
+                by_index[index] = *placed;
+                chunk_keys[chunk].push_back(order_key(*placed, index));
+            }
+        }
+    });
+    std::vector<std::uint64_t> keys;
+    for (const std::vector<std::uint64_t>& chunk : chunk_keys) keys.insert(keys.end(), chunk.begin(), chunk.end());
+    radix_sort(keys);
+    std::vector<Placed> sorted(keys.size());
+    parallel_for(chunk_keys.size(), threads, [&](std::size_t chunk) {
+        const std::size_t end = std::min(keys.size(), (chunk + 1) * kPlaceChunk);
+        for (std::size_t k = chunk * kPlaceChunk; k < end; ++k) sorted[k] = by_index[static_cast<std::uint32_t>(keys[k])];
+    });
+    return sorted;
+}
+
+// Calls visit(placed, tile) for each tile of tile rows [first_row, end_row) that lists `placed`.
+template <typename Visit>
+void for_each_tile_in_rows(const Placed& placed, int tiles_x, int first_row, int end_row, Visit visit) {
+    const int row_begin = std::max(placed.range[2], first_row), row_end = std::min(placed.range[3] + 1, end_row);
+    for (int ty = row_begin; ty < row_end; ++ty)
+        for (int tx = placed.range[0]; tx <= placed.range[1]; ++tx) visit(ty * tiles_x + tx);
+}
 
 }  // namespace
 
@@ -95,25 +142,23 @@ ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& came
     ScreenTiles tiles;
     tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
     tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
-    const ObjectBounds bounds(camera);
-    Placement placement(tiles, camera);
-    for (std::size_t i = 0; i < frame.spheres().size(); ++i) {
-        const Sphere& sphere = frame.spheres()[i];
-        placement.add(static_cast<std::uint32_t>(i), bounds.sphere_distance(sphere), bounds.sphere(sphere));
-    }
-    for (std::size_t i = 0; i < frame.billboard_count(); ++i) {
-        const Billboard& billboard = frame.billboard(i);
-        placement.add(static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD, bounds.billboard_distance(billboard),
-                      bounds.billboard(billboard));
-    }
+    const std::size_t threads = frame.object_count() >= kParallelFrom ? static_cast<std::size_t>(usable_cpu_count()) : 1;
+    const std::vector<Placed> sorted = nearest_first(frame, tiles, camera, threads);
     // Two passes over flat arrays (count per tile, then fill nearest first), without a list
     // per tile: a frame bins anew, and a vector per tile (thousands at 1080p) would be
-    // allocated and freed every frame (docs/benchmarks.md).
-    const std::vector<Placed> sorted = placement.nearest_first();
+    // allocated and freed every frame (docs/benchmarks.md). Each task takes a band of tile rows
+    // and writes only its tiles' counts and slots, in the one nearest-first order.
+    const int bands = static_cast<int>(std::min<std::size_t>(threads * kBandsPerThread, tiles.tiles_y));
+    auto band_rows = [&](std::size_t band, int& first, int& end) {
+        first = static_cast<int>(band * tiles.tiles_y / bands);
+        end = static_cast<int>((band + 1) * tiles.tiles_y / bands);
+    };
     std::vector<std::uint32_t> counts(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y + 1, 0);
-    for (const Placed& p : sorted)
-        for (int ty = p.range[2]; ty <= p.range[3]; ++ty)
-            for (int tx = p.range[0]; tx <= p.range[1]; ++tx) ++counts[ty * tiles.tiles_x + tx];
+    parallel_for(bands, threads, [&](std::size_t band) {
+        int first, end;
+        band_rows(band, first, end);
+        for (const Placed& p : sorted) for_each_tile_in_rows(p, tiles.tiles_x, first, end, [&](int t) { ++counts[t]; });
+    });
     tiles.offsets.resize(counts.size());
     std::uint32_t total = 0;
     for (std::size_t t = 0; t < counts.size(); ++t) {
@@ -124,14 +169,17 @@ ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& came
     tiles.nearest.resize(total);
     tiles.rows.resize(total);
     std::vector<std::uint32_t> next(tiles.offsets.begin(), tiles.offsets.end() - 1);
-    for (const Placed& p : sorted)
-        for (int ty = p.range[2]; ty <= p.range[3]; ++ty)
-            for (int tx = p.range[0]; tx <= p.range[1]; ++tx) {
-                std::uint32_t slot = next[ty * tiles.tiles_x + tx]++;
+    parallel_for(bands, threads, [&](std::size_t band) {
+        int first, end;
+        band_rows(band, first, end);
+        for (const Placed& p : sorted)
+            for_each_tile_in_rows(p, tiles.tiles_x, first, end, [&](int t) {
+                std::uint32_t slot = next[t]++;
                 tiles.items[slot] = p.item;
                 tiles.nearest[slot] = p.nearest;
                 tiles.rows[slot] = p.rows;
-            }
+            });
+    });
     return tiles;
 }
 

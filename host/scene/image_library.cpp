@@ -1,15 +1,12 @@
 #include "scene/image_library.h"
 
-#include <algorithm>
-#include <atomic>
-#include <exception>
 #include <functional>
 
 #include <sys/stat.h>
 
 #include "core/interruption.h"
+#include "core/parallel_for.h"
 #include "core/usable_cpus.h"
-#include "core/worker_threads.h"
 #include "scene/bounded_file.h"
 
 namespace clr {
@@ -17,28 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Runs work(0) .. work(count - 1) on all cores (core/worker_threads.h); rethrows the first
-// exception (in index order) once every thread is done, e.g. out of memory. Where no thread
-// could be started, this one does all the work, which is slower but the same.
+// Runs work(0) .. work(count - 1) on all cores (core/parallel_for.h), each first checking for
+// Ctrl-C: while many images decode, stop after those under way.
 void for_each_in_parallel(std::size_t count, const std::function<void(std::size_t)>& work) {
-    std::vector<std::exception_ptr> errors(count);
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i; (i = next++) < count;) {
-            try {
-                throw_if_interrupted();  // Ctrl-C while many images decode: stop after those under way
-                work(i);
-            } catch (...) {
-                errors[i] = std::current_exception();
-            }
-        }
-    };
-    if (count == 0) return;
-    const std::size_t thread_count = std::min<std::size_t>(usable_cpu_count(), count);
-    WorkerThreads::shared().run(thread_count - 1, worker);
-    for (const std::exception_ptr& error : errors) {
-        if (error) std::rethrow_exception(error);
-    }
+    parallel_for(count, static_cast<std::size_t>(usable_cpu_count()), [&](std::size_t i) {
+        throw_if_interrupted();
+        work(i);
+    });
 }
 
 // The header of the image file at `path`; nullopt when the file or its header cannot be

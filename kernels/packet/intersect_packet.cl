@@ -9,6 +9,7 @@
 
 #include "common/hit_order.cl"
 #include "common/math.cl"
+#include "common/prefetch.cl"
 #include "common/rgba_words.cl"
 #include "common/scene_items.cl"
 #include "common/scene_params.cl"
@@ -105,9 +106,17 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
         uint16 i = billboard_texel_indices16(billboard, a, b, inside);
 #if CLR_FEATURE_ALPHA
         if (holes) /* a texel with alpha below CLR_OPAQUE_ALPHA is a hole */
-            inside = inside && CLR_MASK16(covered16(coverage, i));
-        if (textured)
+            inside = inside && CLR_MASK16(covered16(coverage, billboard, i));
+        if (textured) {
             *texel = i;
+            /* The winners' texels are read after the loop: fetch their cache lines now. A row
+             * of 16 pixels crossing one billboard reads few texel lines (one per texel row it
+             * crosses), so three lanes' lines stand for all 16. */
+            __global const uint* words = (__global const uint*)texels;
+            CLR_PREFETCH(words + i.s0);
+            CLR_PREFETCH(words + i.s7);
+            CLR_PREFETCH(words + i.sf);
+        }
 #else
         *texel = texel_words16(texels, i);
 #endif
@@ -166,6 +175,17 @@ CLR_PACKET_INLINE real16 item_distance16(int kind, int index, real3 origin, Dire
     return t;
 }
 
+#if CLR_FEATURE_ALPHA
+/* Fetches the cache line of the first coverage bits of `item` if it is a billboard, ahead of
+ * its alpha test: a forest's tile lists hundreds of billboards whose bits are not in cache. */
+CLR_PACKET_INLINE void prefetch_coverage(uint item, __global const ClrBillboard* billboards,
+                                         __global const uint* coverage)
+{
+    if (item_kind(item) == CLR_HIT_BILLBOARD)
+        CLR_PREFETCH(coverage + (billboards[item_index(item)].texel_offset >> 5));
+}
+#endif
+
 /* The nearest hits of 16 primary rays among the objects binned to their screen tile, skipping
  * those whose pixel rows leave out this `row`. The loop ends once every lane's hit is nearer
  * than every object left (the tile's items come nearest first). Hits are ranked by
@@ -195,6 +215,10 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
             continue;
         int kind = item_kind(tile.items[k]);
         int index = item_index(tile.items[k]);
+#if CLR_FEATURE_ALPHA
+        if (k + 2 < tile.end) /* the coverage bits of the billboard two items on */
+            prefetch_coverage(tile.items[k + 2], billboards, coverage);
+#endif
 #if CLR_FEATURE_ALPHA
         uint16 texel = (uint16)(CLR_NO_TEXEL);
 #else

@@ -42,16 +42,38 @@ CLR_PACKET_INLINE uint16 texel_words16(__global const uchar4* texels, uint16 i)
  * 2^32 - 1, compiled_scene.cpp). */
 #define CLR_NO_TEXEL 0xffffffffu
 
-/* Whether the texels at indices i stop rays: bit i % 32 of coverage word i / 32, which the
- * host set exactly where the texel's alpha is CLR_OPAQUE_ALPHA (the test billboard_distance()
- * makes on the texel itself). 16 loads from a buffer 32 times smaller than the texels'. */
-CLR_PACKET_INLINE int16 covered16(__global const uint* coverage, uint16 i)
+/* v[i & 15] in each lane. LLVM makes one permute instruction of it (vpermd on AVX-512), not
+ * 16 loads, when v is in registers. */
+CLR_PACKET_INLINE uint16 permute16(uint16 v, uint16 i)
 {
+    i &= (uint16)(15u);
+    return (uint16)(v[i.s0], v[i.s1], v[i.s2], v[i.s3], v[i.s4], v[i.s5], v[i.s6], v[i.s7], v[i.s8], v[i.s9],
+                    v[i.sa], v[i.sb], v[i.sc], v[i.sd], v[i.se], v[i.sf]);
+}
+
+/* Whether the texels at indices i of `billboard`'s image stop rays: bit i % 32 of coverage
+ * word i / 32, which the host set exactly where the texel's alpha is CLR_OPAQUE_ALPHA (the
+ * test billboard_distance() makes on the texel itself). When the image's bits lie within
+ * CLR_COVERAGE_WINDOW_WORDS words, two vector loads read them all and permutes pick each
+ * lane's word; a larger image's words come by a gather of 16 loads, whose latency was a
+ * tenth of a small scene's frame (docs/benchmarks.md, Prefetching and coverage windows). */
+CLR_PACKET_INLINE int16 covered16(__global const uint* coverage, __global const ClrBillboard* billboard, uint16 i)
+{
+    uint first = billboard->texel_offset >> 5;
+    uint texels = (uint)billboard->texture_width * (uint)billboard->texture_height;
+    uint last = (billboard->texel_offset + texels - 1u) >> 5;
     uint16 word = i >> 5u;
-    uint16 words = (uint16)(coverage[word.s0], coverage[word.s1], coverage[word.s2], coverage[word.s3],
-                            coverage[word.s4], coverage[word.s5], coverage[word.s6], coverage[word.s7],
-                            coverage[word.s8], coverage[word.s9], coverage[word.sa], coverage[word.sb],
-                            coverage[word.sc], coverage[word.sd], coverage[word.se], coverage[word.sf]);
+    uint16 words;
+    if (last - first < CLR_COVERAGE_WINDOW_WORDS) { /* the host pads the buffer for this read */
+        uint16 in_window = word - (uint16)(first);
+        uint16 low = vload16(0, coverage + first), high = vload16(1, coverage + first);
+        words = select(permute16(low, in_window), permute16(high, in_window), in_window >= 16u);
+    } else {
+        words = (uint16)(coverage[word.s0], coverage[word.s1], coverage[word.s2], coverage[word.s3],
+                         coverage[word.s4], coverage[word.s5], coverage[word.s6], coverage[word.s7],
+                         coverage[word.s8], coverage[word.s9], coverage[word.sa], coverage[word.sb],
+                         coverage[word.sc], coverage[word.sd], coverage[word.se], coverage[word.sf]);
+    }
     /* A one-bit mask per lane, not (words >> (i & 31)) & 1, which PoCL computes right but
      * which, inlined here, lost 12% of a textured frame's hits under Oclgrind 21.10
      * (docs/opencl-devices.md). */

@@ -31,6 +31,11 @@ typedef cl_uint clr_uint;
  * coverage masks built from them (host/render/coverage_mask.h) both decide by it. */
 #define CLR_OPAQUE_ALPHA 255u
 
+/* The packet kernel reads a billboard's coverage bits (host/render/coverage_mask.h) as the
+ * CLR_COVERAGE_WINDOW_WORDS words from its image's first word when they hold all of the
+ * image's bits (images of up to 32x32 texels), so that many words follow the last image's. */
+#define CLR_COVERAGE_WINDOW_WORDS 32u
+
 /* Screen tiles for primary rays (host/render/screen_tiles.h): a tile is
  * kClrTileSize x kClrTileSize pixels, and a tile item is an object index, with this bit set
  * for billboards. */

@@ -23,6 +23,15 @@ TEST(RadixSort, OrdersRandomKeysAsStdSort) {
     expect_sorted_as_std_sort(keys);
 }
 
+TEST(RadixSort, OrdersFewKeysAsStdSortOnBothSidesOfTheRadixThreshold) {
+    std::mt19937_64 random(11);
+    for (std::size_t count : {2u, 5u, 4095u, 4096u, 4097u}) {
+        std::vector<std::uint64_t> keys(count);
+        for (std::uint64_t& key : keys) key = random() >> (count % 3 * 20);
+        expect_sorted_as_std_sort(keys);
+    }
+}
+
 TEST(RadixSort, OrdersKeysThatShareDigitsAndRepeat) {
     // As the screen tiles make them: a float's bits above, a small index below; many equal
     // distances, and digits that no key varies (those passes are skipped).

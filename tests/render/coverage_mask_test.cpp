@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "render/compiled_scene.h"
@@ -155,11 +156,78 @@ TEST(CoverageMask, BitsMatchPackedTexelAlphasAcrossImagesAndWords) {
     CompiledScene compiled = compile_scene(frame);
     const std::size_t texels = compiled.texels.size() / 4;
     ASSERT_EQ(texels, 35u + 33u) << "each image packed once";
-    ASSERT_EQ(compiled.coverage.size(), 3u);
-    for (std::size_t k = 0; k < 3 * 32; ++k) {
+    ASSERT_EQ(compiled.coverage.size(), 3u + CLR_COVERAGE_WINDOW_WORDS) << "the kernel's window read past the last word";
+    for (std::size_t k = 0; k < compiled.coverage.size() * 32; ++k) {
         const bool bit = (compiled.coverage[k / 32] >> (k % 32)) & 1u;
         EXPECT_EQ(bit, k < texels && compiled.texels[4 * k + 3] == 255) << "texel " << k;
     }
+}
+
+// An image's coverage words as the packet kernel addresses them: its first and last word.
+std::pair<std::uint32_t, std::uint32_t> coverage_words(const ClrBillboard& billboard) {
+    const std::uint64_t texels = std::uint64_t(billboard.texture_width) * std::uint64_t(billboard.texture_height);
+    return {billboard.texel_offset / 32, static_cast<std::uint32_t>((billboard.texel_offset + texels - 1) / 32)};
+}
+
+// The packet kernel reads an image's coverage bits as one window of CLR_COVERAGE_WINDOW_WORDS
+// words when they lie within it, and gathers them word by word otherwise: images exactly as
+// large as the window, smaller, straddling one word more and much larger all show the holes
+// of their edge alphas as the reference and the general kernel (texel alphas) do, byte for
+// byte. Each image spans as many pixels as it has texels, so every ray meets a texel's centre
+// (float and double agree on which texel), over a one-colour backdrop.
+TEST(CoverageMask, WindowedAndGatheredBitsDecideAsTheReference) {
+    // Packed one after another: 1,600 texels end on a word's edge, 35 do not.
+    const std::vector<std::pair<int, int>> sizes = {{40, 40}, {32, 32}, {5, 7}, {32, 32}, {3, 3}};
+    const std::vector<int> first_columns = {1, 43, 77, 84, 118};
+    const int width = 128, height = 48, top_row = 4;
+    // 90 degrees across 128 columns from 64 units away: a pixel is one unit on the plane z = 0.
+    Scene scene = testing::make_scene({0, 0, 64}, {0, 0, 0}, {0, 1, 0}, 90, width, height);
+    scene.background = {0.1, 0.2, 0.3};
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+        std::mt19937 random(static_cast<std::uint32_t>(k) + 40);
+        auto image = testing::make_image(sizes[k].first, sizes[k].second, [&random](int, int) {
+            return Texel{std::uint8_t(random() & 255), std::uint8_t(random() & 255), std::uint8_t(random() & 255),
+                         kEdgeAlphas[random() % 4]};
+        });
+        const double left = first_columns[k] - width / 2.0, top = height / 2.0 - top_row;
+        scene.billboards.push_back(testing::make_billboard({left, top, 0}, {left, top - sizes[k].second, 0},
+                                                           {left + sizes[k].first, top, 0}, {1, 0, 1}, image));
+    }
+    auto backdrop = testing::make_image(1, 1, [](int, int) { return Texel{60, 120, 200, 255}; });
+    scene.billboards.push_back(testing::make_billboard({-80, 40, -1}, {-80, -40, -1}, {80, 40, -1}, {0, 1, 1}, backdrop));
+
+    FrameGeometry frame(scene);
+    const CompiledScene compiled = compile_scene(frame);
+    std::vector<std::uint32_t> spans;
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+        auto [first, last] = coverage_words(compiled.billboards[k]);
+        spans.push_back(last - first + 1);
+    }
+    EXPECT_GT(spans[0], CLR_COVERAGE_WINDOW_WORDS) << "gathered";
+    EXPECT_EQ(spans[1], CLR_COVERAGE_WINDOW_WORDS) << "a 32x32 image from a word's start fills the window";
+    EXPECT_LT(spans[2], CLR_COVERAGE_WINDOW_WORDS);
+    EXPECT_EQ(spans[3], CLR_COVERAGE_WINDOW_WORDS + 1) << "the second 32x32 image starts mid-word: gathered";
+    EXPECT_LT(spans[4], CLR_COVERAGE_WINDOW_WORDS) << "the last image with holes: its window reads the padding";
+
+    const Image reference = testing::render_with_reference(scene);
+    int holes = 0;
+    for (int row = 0; row < height; ++row)
+        for (int col = 0; col < width; ++col) holes += reference.at(col, row, 2) == 200;
+    ASSERT_GT(holes, 2000) << "the backdrop shows around and through the images";
+    const Image tiles = testing::render_with_kernels(scene);
+    RendererOptions brute_force;
+    brute_force.features = FeatureSet::all();
+    brute_force.screen_tiles = false;
+    EXPECT_TRUE(tiles.rgba == reference.rgba);
+    EXPECT_TRUE(tiles.rgba == testing::render_with_kernels(scene, brute_force).rgba);
+    for (std::size_t k = 0; k < sizes.size(); ++k)  // every texel shown, the holes included
+        for (int row = 0; row < sizes[k].second; ++row)
+            for (int col = 0; col < sizes[k].first; ++col) {
+                const bool opaque = scene.billboards[k].image->at(col, row, 3) == 255;
+                const int x = first_columns[k] + col, y = top_row + row;
+                ASSERT_EQ(tiles.at(x, y, 2), opaque ? scene.billboards[k].image->at(col, row, 2) : 200)
+                    << "image " << k << " texel (" << col << ", " << row << ")";
+            }
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sched.h>
+
 #include <cmath>
 #include <random>
 #include <set>
@@ -146,6 +148,58 @@ TEST(ScreenTiles, ListsRunNearestFirstWithBoundsBelowTheObjectsDistances) {
             }
             EXPECT_LE(tiles.nearest[k], distance) << "tile " << t << " entry " << k;
         }
+}
+
+// The object's place in the frame: its spheres, then its billboards.
+std::size_t frame_index(const FrameGeometry& frame, std::uint32_t item) {
+    const std::size_t index = item & ~CLR_TILE_BILLBOARD;
+    return (item & CLR_TILE_BILLBOARD) ? frame.spheres().size() + index : index;
+}
+
+// A frame of 20,000 objects bins on every usable core (bands of tile rows, chunks of objects):
+// its lists are those one CPU makes, byte for byte, and each runs nearest first, ties in the
+// frame's order, so that no thread's timing can change a tile's list.
+TEST(ScreenTiles, ManyObjectsBinOnAllCoresAsOnOne) {
+    Scene scene = testing::make_scene({0, 0, 6}, {0, 0, -10}, {0, 1, 0}, 60, 640, 360);
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> spot(-20, 20), depth(-40, 0), size(0.05, 0.6);
+    for (int i = 0; i < 10000; ++i) {
+        const Vec3 at{spot(random), spot(random) / 2, depth(random)};
+        scene.spheres.push_back(testing::make_sphere(at, size(random), {1, 1, 1}));
+        const double s = size(random);
+        scene.billboards.push_back(testing::make_billboard(at + Vec3{-s, s, 0}, at + Vec3{-s, -s, 0}, at + Vec3{s, s, 0}, {1, 1, 1}));
+    }
+    scene.spheres.push_back(testing::make_sphere({0.1, 0, -45}, 0.5, {1, 1, 1}));  // as far as
+    scene.spheres.push_back(testing::make_sphere({-0.1, 0, -45}, 0.5, {1, 1, 1}));  // each other
+    FrameGeometry frame(scene);
+    const FrameCamera camera = frame_camera(scene, scene.camera_path.front(), 0);
+    const ScreenTiles all = bin_screen_tiles(frame, camera);
+    ASSERT_GT(all.items.size(), 20000u);
+    int ties = 0;
+    for (int t = 0; t < all.tiles_x * all.tiles_y; ++t)
+        for (std::uint32_t k = all.offsets[t] + 1; k < all.offsets[t + 1]; ++k) {
+            const bool nearer = all.nearest[k - 1] < all.nearest[k];
+            const bool tie_in_order = all.nearest[k - 1] == all.nearest[k] &&
+                                      frame_index(frame, all.items[k - 1]) < frame_index(frame, all.items[k]);
+            ASSERT_TRUE(nearer || tie_in_order) << "tile " << t << " entry " << k;
+            ties += tie_in_order;
+        }
+    EXPECT_GT(ties, 0) << "the two spheres as far from the eye share tiles";
+
+    cpu_set_t allowed, one;
+    ASSERT_EQ(::sched_getaffinity(0, sizeof allowed, &allowed), 0);
+    if (CPU_COUNT(&allowed) < 2) GTEST_SKIP() << "one usable CPU: the lists above were made on it";
+    int first_cpu = 0;
+    while (!CPU_ISSET(first_cpu, &allowed)) ++first_cpu;
+    CPU_ZERO(&one);
+    CPU_SET(first_cpu, &one);
+    ASSERT_EQ(::sched_setaffinity(0, sizeof one, &one), 0);
+    const ScreenTiles single = bin_screen_tiles(frame, camera);
+    ASSERT_EQ(::sched_setaffinity(0, sizeof allowed, &allowed), 0);
+    EXPECT_TRUE(single.offsets == all.offsets);
+    EXPECT_TRUE(single.items == all.items);
+    EXPECT_TRUE(single.nearest == all.nearest);
+    EXPECT_TRUE(single.rows == all.rows);
 }
 
 TEST(FrustumClip, KeepsOnlyThePartInsideTheWidenedFrustum) {
