@@ -87,7 +87,9 @@ TEST(BandSizer, BandsEndOnScreenTileRows) {
     std::vector<Band> bands = split_frame(sizer, row_work(3, 1920, 1080), 4, 1920, [](int) { return 0.004; });
     ASSERT_GT(bands.size(), 3u);
     for (std::size_t i = 0; i + 1 < bands.size(); ++i) {
-        if (bands[i].rows >= 16) EXPECT_EQ((bands[i].first + bands[i].rows) % 16, 0) << "band " << i;
+        if (bands[i].rows >= 16) {
+            EXPECT_EQ((bands[i].first + bands[i].rows) % 16, 0) << "band " << i;
+        }
     }
 }
 
