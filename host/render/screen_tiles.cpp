@@ -128,7 +128,7 @@ std::vector<Placed> nearest_first(const FrameGeometry& frame, const ScreenTiles&
     return sorted;
 }
 
-// Calls visit(placed, tile) for each tile of tile rows [first_row, end_row) that lists `placed`.
+// Calls visit(tile) for each tile of tile rows [first_row, end_row) that lists `placed`.
 template <typename Visit>
 void for_each_tile_in_rows(const Placed& placed, int tiles_x, int first_row, int end_row, Visit visit) {
     const int row_begin = std::max(placed.range[2], first_row), row_end = std::min(placed.range[3] + 1, end_row);
