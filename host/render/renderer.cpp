@@ -4,6 +4,7 @@
 #include <cstring>
 #include <future>
 #include <stdexcept>
+#include <system_error>
 
 #include "core/display_bytes.h"
 #include "core/errors.h"
@@ -128,10 +129,15 @@ void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera*
     // Binning reads only the placed geometry and the camera, so it runs beside compiling and
     // uploading, while the device's threads wait for the frame: on 10k impostors the two take
     // about 0.9 and 0.6 ms (docs/benchmarks.md, Impostor frames). The future's destructor
-    // waits for it, also when an upload throws.
+    // waits for it, also when an upload throws. A process that cannot start the thread bins
+    // in render_camera() instead, as a still frame does (run.cpp lists devices the same way).
     std::future<ScreenTiles> tiles;
-    if (binned_for && screen_tiles_)
-        tiles = std::async(std::launch::async, [this, binned_for] { return bin_screen_tiles(frame_, *binned_for); });
+    if (binned_for && screen_tiles_) {
+        try {
+            tiles = std::async(std::launch::async, [this, binned_for] { return bin_screen_tiles(frame_, *binned_for); });
+        } catch (const std::system_error&) {
+        }
+    }
     compile_frame(compiled_, frame_, origin_);
     if (turns && features_.bvh) bvh_ = build_bvh(frame_);
     try {
