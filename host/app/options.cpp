@@ -106,6 +106,8 @@ std::string did_you_mean_option(const CLI::App& app) {
 
 }  // namespace
 
+bool parse_image_size(const std::string& text, int& width, int& height) { return parse_size(text, width, height); }
+
 ParsedOptions parse_options(int argc, const char* const* argv) {
     ParsedOptions parsed;
     Options& options = parsed.options;

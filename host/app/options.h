@@ -63,4 +63,7 @@ struct ParsedOptions {
 };
 ParsedOptions parse_options(int argc, const char* const* argv);
 
+// --size's "WIDTHxHEIGHT" with positive integers (of at most six digits); false otherwise.
+bool parse_image_size(const std::string& text, int& width, int& height);
+
 }  // namespace clr

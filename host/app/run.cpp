@@ -374,4 +374,16 @@ int run(const Options& options) {
     return kExitOk;
 }
 
+Scene load_scene_for_run(const Options& options) { return load(options); }
+
+Image render_one_frame(const Options& options, const Scene& scene, int frame) {
+    check_crop(options, scene);
+    DeviceList devices;
+    if (!options.reference) devices = std::async(std::launch::deferred, list_devices);
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, {}, false);
+    Image image = renderer->render(camera_at_frame(scene, frame), frame, nullptr);
+    renderer->store_built_programs();
+    return image;
+}
+
 }  // namespace clr
