@@ -53,6 +53,9 @@ struct Options {
     // Joining tiles (docs/command-line.md, Joining tiles): --join TILE, repeatable; the image
     // is made from these --crop tiles instead of rendered.
     std::vector<std::string> join;
+    // Streaming to tev (docs/command-line.md): HOST:PORT of a running tev viewer that shows
+    // each rendered frame; empty: none.
+    std::string display_server;
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome
