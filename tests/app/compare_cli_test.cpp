@@ -169,12 +169,19 @@ TEST(CompareCli, ADamagedOrTruncatedPngIsAnInputError) {
     std::string damaged = png;
     damaged[data + 20] = static_cast<char>(damaged[data + 20] ^ 0x01);  // one bit of the pixel data
     rendered.folder.write("damaged.png", damaged);
+    // The pixel data intact, its chunk's CRC wrong: a decoder that skips checksums takes it.
+    const std::size_t length = (static_cast<unsigned char>(png[data - 4]) << 24) |
+                               (static_cast<unsigned char>(png[data - 3]) << 16) |
+                               (static_cast<unsigned char>(png[data - 2]) << 8) | static_cast<unsigned char>(png[data - 1]);
+    std::string bad_crc = png;
+    bad_crc[data + 4 + length] = static_cast<char>(bad_crc[data + 4 + length] ^ 0x01);
+    rendered.folder.write("bad_crc.png", bad_crc);
     rendered.folder.write("short.png", png.substr(0, png.size() / 2));
     rendered.folder.write("empty.png", "");
     rendered.folder.write("text.png", "not an image at all\n");
     fs::create_directory(rendered.folder.file("folder.png"));
     ASSERT_EQ(::mkfifo(rendered.folder.file("fifo.png").c_str(), 0600), 0);  // must not block the read
-    for (const char* name : {"damaged.png", "short.png", "empty.png", "text.png", "folder.png", "fifo.png"}) {
+    for (const char* name : {"damaged.png", "bad_crc.png", "short.png", "empty.png", "text.png", "folder.png", "fifo.png"}) {
         const auto compared = run_clrender(std::string("compare scene.json ") + name, rendered.folder.path());
         EXPECT_EQ(compared.exit_code, 2) << name << ": " << compared.output;
         EXPECT_NE(compared.output.find(std::string("clrender: error: ") + name + ": cannot read the image"),
