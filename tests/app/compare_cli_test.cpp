@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -267,6 +268,30 @@ TEST(CompareCli, OneFrameOfACameraPath) {
     EXPECT_EQ(other.exit_code, 7) << other.output;
     const auto outside = run_clrender("compare path.json f1.png --frames 3", folder.path());
     EXPECT_EQ(outside.exit_code, 1) << outside.output;
+}
+
+// Ctrl-C while the render for a comparison runs: exit 130 at once, no heat map and no
+// temporary file left, IMAGE untouched.
+TEST(CompareCli, InterruptedWhileRenderingLeavesNothing) {
+    TempFolder folder;
+    folder.write("scene.json", kScene);
+    std::string ppm = "P6\n800 600\n255\n";
+    ppm.append(static_cast<std::size_t>(800) * 600 * 3, '\x40');
+    folder.write("image.ppm", ppm);
+    // The single-threaded reference at 64 samples a pixel takes many seconds for this size.
+    folder.write("interrupt.sh", "cd '" + folder.path() + "'\n'" + CLRENDER_BINARY +
+                                     "' compare scene.json image.ppm --reference --size 800x600 --spp 64 -o heat.png "
+                                     "2> stderr.txt &\n"
+                                     "pid=$!\n"
+                                     "sleep 1\n"
+                                     "kill -INT $pid\n"
+                                     "wait $pid\n"
+                                     "echo $? > code.txt\n");
+    ASSERT_EQ(std::system(("bash '" + folder.file("interrupt.sh") + "'").c_str()), 0);
+    EXPECT_EQ(read_bytes(folder.file("code.txt")), "130\n") << read_bytes(folder.file("stderr.txt"));
+    EXPECT_NE(read_bytes(folder.file("stderr.txt")).find("interrupted by SIGINT"), std::string::npos);
+    EXPECT_EQ(folder.entry_count(), 5);  // scene, image, script, stderr and code: no heat map, no temporary file
+    EXPECT_EQ(read_bytes(folder.file("image.ppm")), ppm);
 }
 
 }  // namespace
