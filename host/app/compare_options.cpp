@@ -81,8 +81,8 @@ ParsedCompare parse_compare_options(int argc, const char* const* argv) {
                  "when no pixel differs by more than the tolerance, 7 when some do",
                  "clrender compare"};
     app.formatter(std::make_shared<HelpFormatter>());
-    app.add_option("scene", request.render.scene_path, "Scene file (.json or .js)")->required();
-    app.add_option("image", request.image_path, "Image to compare the render with (PNG, JPEG or PPM), of the "
+    app.add_option("SCENE", request.render.scene_path, "Scene file (.json or .js)")->required();
+    app.add_option("IMAGE", request.image_path, "Image to compare the render with (PNG, JPEG or PPM), of the "
                                                 "render's size")
         ->required();
     app.add_option("-o,--output", request.heat_map_path,
@@ -97,8 +97,8 @@ ParsedCompare parse_compare_options(int argc, const char* const* argv) {
     add_render_options(app, request.render, values);
     try {
         app.parse(argc, argv);
-        for (const auto& [name, value] : {std::pair{"scene", &request.render.scene_path},
-                                          std::pair{"image", &request.image_path},
+        for (const auto& [name, value] : {std::pair{"SCENE", &request.render.scene_path},
+                                          std::pair{"IMAGE", &request.image_path},
                                           std::pair{"--output", &request.heat_map_path},
                                           std::pair{"--frames", &request.render.frames},
                                           std::pair{"--device", &request.render.device},
