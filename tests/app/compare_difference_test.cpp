@@ -16,7 +16,12 @@ Image filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t
     Image image;
     image.width = width;
     image.height = height;
-    for (int i = 0; i < width * height; ++i) image.rgba.insert(image.rgba.end(), {r, g, b, 255});
+    image.rgba.resize(static_cast<std::size_t>(width) * height * 4, 255);
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        image.rgba[i] = r;
+        image.rgba[i + 1] = g;
+        image.rgba[i + 2] = b;
+    }
     return image;
 }
 
