@@ -24,6 +24,7 @@ Exit status:
   4    An output: cannot be written, would replace an input, a full disk, a failed encoder
   5    Internal error: a bug in clrender; please report it
   6    Out of memory: the machine's memory or threads ran out
+  7    clrender compare: the render and the image differ beyond the tolerance
   128+N  Interrupted by signal N: 130 for SIGINT (Ctrl-C), 143 for SIGTERM, 129 for SIGHUP
 
 Examples:
@@ -32,6 +33,8 @@ Examples:
                                                Larger, with 16 samples per pixel
   clrender path.json -o 'f_%04d.png' --video path.mp4 --frames 0-99
                                                Frames 0 to 99 of a camera path, and their video
+  clrender compare scene.json mine.png -o diff.png
+                                               Compare a render with mine.png (clrender compare --help)
 )";
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/completion_words.h"
+#include "app/display_server.h"
 #include "app/help_footer.h"
 #include "app/help_formatter.h"
 #include "app/version_text.h"
@@ -105,6 +106,8 @@ std::string did_you_mean_option(const CLI::App& app) {
 }
 
 }  // namespace
+
+bool parse_image_size(const std::string& text, int& width, int& height) { return parse_size(text, width, height); }
 
 ParsedOptions parse_options(int argc, const char* const* argv) {
     ParsedOptions parsed;
@@ -207,6 +210,11 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
         ->expected(1)
         ->allow_extra_args(false)  // CLI11 lets a vector option take the arguments after it
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    // Streaming to tev (docs/command-line.md, Streaming to tev).
+    app.add_option("--display-server", options.display_server,
+                   "Show each frame in a running tev viewer at HOST:PORT (e.g. localhost:14158) as it is rendered; "
+                   "a viewer that cannot be reached is a warning, never a failure")
+        ->type_name("HOST:PORT");
     app.final_callback([&app, &options] {
         for (const std::string& tile : options.join)
             if (tile.empty()) throw CLI::ValidationError("--join", "the value is empty; give a tile file");
@@ -229,7 +237,15 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                                   {"--size", &size},
                                   {"--stats", &options.stats_path},
                                   {"--kernel-dir", &options.kernel_dir},
-                                  {"--crop", &crop}});
+                                  {"--crop", &crop},
+                                  {"--display-server", &options.display_server}});
+        if (!options.display_server.empty()) {
+            try {
+                parse_display_address(options.display_server);
+            } catch (const UsageError& error) {
+                throw CLI::ValidationError(error.what());
+            }
+        }
         if (!size.empty()) {
             int width = 0, height = 0;
             if (!parse_size(size, width, height))

@@ -53,6 +53,9 @@ struct Options {
     // Joining tiles (docs/command-line.md, Joining tiles): --join TILE, repeatable; the image
     // is made from these --crop tiles instead of rendered.
     std::vector<std::string> join;
+    // Streaming to tev (docs/command-line.md): HOST:PORT of a running tev viewer that shows
+    // each rendered frame; empty: none.
+    std::string display_server;
 };
 
 // Parses argv. Returns the options, or an exit code when parsing alone decided the outcome
@@ -62,5 +65,8 @@ struct ParsedOptions {
     std::optional<int> exit_code;
 };
 ParsedOptions parse_options(int argc, const char* const* argv);
+
+// --size's "WIDTHxHEIGHT" with positive integers (of at most six digits); false otherwise.
+bool parse_image_size(const std::string& text, int& width, int& height);
 
 }  // namespace clr

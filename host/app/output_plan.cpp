@@ -79,16 +79,6 @@ void plan_standard_output(const Options& options, OutputPlan& plan) {
     if (!plan.stats_to_standard_output) plan.stats_path = options.stats_path;
 }
 
-// Every file the scene reads: the scene and its images (placeholders keep the missing path).
-void add_scene_inputs(const Scene& scene, OutputRoles& roles) {
-    roles.add_input("scene file", scene.path);
-    for (const Billboard& billboard : scene.billboards)
-        if (billboard.image) roles.add_input("texture", billboard.image->path);
-    for (const Impostor& impostor : scene.impostors)
-        for (const ImpostorView& view : impostor.views)
-            if (view.image) roles.add_input("impostor image", view.image->path);
-}
-
 // Image outputs, and the frames that --assemble and --resume read back instead.
 void add_images(const Options& options, const OutputPlan& plan, OutputRoles& roles) {
     if (plan.image_target.empty()) return;
@@ -154,6 +144,15 @@ void check_targets(const Options& options, const Scene& scene, OutputPlan& plan)
 }
 
 }  // namespace
+
+void add_scene_inputs(const Scene& scene, OutputRoles& roles) {
+    roles.add_input("scene file", scene.path);
+    for (const Billboard& billboard : scene.billboards)
+        if (billboard.image) roles.add_input("texture", billboard.image->path);
+    for (const Impostor& impostor : scene.impostors)
+        for (const ImpostorView& view : impostor.views)
+            if (view.image) roles.add_input("impostor image", view.image->path);
+}
 
 std::string OutputPlan::image_path(int frame) const {
     if (image_target.empty()) return "";

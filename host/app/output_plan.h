@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/options.h"
+#include "output/output_roles.h"
 #include "scene/scene.h"
 
 namespace clr {
@@ -61,6 +62,10 @@ struct OutputPlan {
 // or another output, is not a regular file, or its folder cannot take a new file. Removes
 // the temporary files that crashed runs left in the output folders (temp_files.h).
 OutputPlan plan_outputs(const Options& options, const Scene& scene);
+
+// Registers every file the scene reads as an input: the scene and its images (placeholders
+// keep the missing path), so that no output replaces one.
+void add_scene_inputs(const Scene& scene, OutputRoles& roles);
 
 // Makes the plan's missing output folders. Called once every check of the run has passed (the
 // device chosen and the program built), so that a refused run leaves no empty folder behind.

@@ -19,6 +19,7 @@
 #include "app/opencl_frame_renderer.h"
 #include "app/reference_frame_renderer.h"
 #include "app/description_check.h"
+#include "app/display_server.h"
 #include "app/tile_join.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
@@ -209,6 +210,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     const FrameSize size = frame_size(options, scene);
     FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged,
                    [&scene, &options](int frame) { return describe_frame(scene, frame, options); });
+    DisplayStream display(options.display_server, scene.name, size.width, size.height);  // --display-server
     Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     shown = &progress;
     const Stopwatch render_time;
@@ -224,6 +226,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
         if (std::optional<Image> written = sink.take_finished()) renderer->recycle(std::move(*written));
         Image image = renderer->render(camera_at_frame(scene, frame), frame, &record.timing);
         report.frames.push_back(record);
+        display.show(image);
         prepare_linear_frame(image, options, plan, scene);
         sink.push(frame, std::move(image));
         progress.frame_done();
@@ -372,6 +375,18 @@ int run(const Options& options) {
                   << " is finished (--resume); nothing to render\n";
     if (!options.quiet) print_summary(plan, report);
     return kExitOk;
+}
+
+Scene load_scene_for_run(const Options& options) { return load(options); }
+
+Image render_one_frame(const Options& options, const Scene& scene, int frame) {
+    check_crop(options, scene);
+    DeviceList devices;
+    if (!options.reference) devices = std::async(std::launch::deferred, list_devices);
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, {}, false);
+    Image image = renderer->render(camera_at_frame(scene, frame), frame, nullptr);
+    renderer->store_built_programs();
+    return image;
 }
 
 }  // namespace clr

@@ -15,6 +15,7 @@ enum ExitCode : int {
     kExitOutput = 4,  // output file or encoder error
     kExitInternal = 5,     // a failure clrender does not expect: a bug to report
     kExitOutOfMemory = 6,  // the machine's memory (or threads) ran out: not the scene's fault, not the device's
+    kExitImagesDiffer = 7,  // clrender compare: the render and the image differ beyond the tolerance
 };
 
 class Error : public std::runtime_error {

@@ -100,7 +100,7 @@ TEST(Help, ListsTheDocumentedExitCodes) {
     std::set<std::string> listed = section_keys(help_section(help.output, "Exit status:"));
     if (listed.erase("128+N") == 1) listed.insert("128 + signal");
     EXPECT_EQ(listed, documented_exit_codes());
-    EXPECT_EQ(listed.size(), 8u);
+    EXPECT_EQ(listed.size(), 9u);
 }
 
 TEST(Help, EndsWithExamplesThatRunClrender) {
@@ -108,7 +108,7 @@ TEST(Help, EndsWithExamplesThatRunClrender) {
     const auto examples = help_section(help.output, "Examples:");
     int commands = 0;
     for (const std::string& line : examples) commands += line.rfind("  clrender ", 0) == 0;
-    EXPECT_EQ(commands, 3) << help.output;
+    EXPECT_EQ(commands, 4) << help.output;
 }
 
 TEST(Help, KeepsTheCompletionWordsOptionHidden) {
