@@ -60,6 +60,7 @@ void plan_video(const Options& options, const Scene& scene, OutputPlan& plan) {
     if (plan.video_path.empty() && options.output_path.empty() && options.frames.empty())
         plan.video_path = scene.name + ".mp4";
     if (plan.video_path.empty()) return;
+    plan.video_name = plan.video_path;
     video_format_for(plan.video_path);
     plan.encoder = find_encoder();  // before any rendering: a missing encoder must not waste a render
 }
@@ -146,7 +147,10 @@ void check_targets(const Options& options, const Scene& scene, OutputPlan& plan)
     for (const std::string& target : one_target_per_folder) {
         std::vector<std::string> missing = missing_folders_of(target);
         if (missing.empty()) {
-            prepare_output_folder(target);
+            if (options.check || options.plan)
+                probe_output_folder(target);
+            else
+                prepare_output_folder(target);
         } else {
             plan.missing_folders.push_back({target, std::move(missing)});
         }
