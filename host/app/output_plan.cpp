@@ -13,7 +13,9 @@
 #include "output/output_roles.h"
 #include "output/output_target.h"
 #include "output/temp_files.h"
+#include "output/encoder_timeout.h"
 #include "output/video_encoder.h"
+#include "output/video_probe.h"
 #include "scene/camera_path.h"
 
 namespace clr {
@@ -63,6 +65,10 @@ void plan_video(const Options& options, const Scene& scene, OutputPlan& plan) {
     plan.video_name = plan.video_path;
     video_format_for(plan.video_path);
     plan.encoder = find_encoder();  // before any rendering: a missing encoder must not waste a render
+    // The encoder's settings and checker too (the encoder asks for them again when it starts),
+    // so that --check finds them without a device.
+    encoder_stall_timeout();
+    find_video_prober(plan.encoder);
 }
 
 // "-" as an output name: --stats - writes the report to standard output, where nothing else

@@ -30,6 +30,7 @@
 #include "app/progress.h"
 #include "core/errors.h"
 #include "device/device_selection.h"
+#include "device/kernel_sources.h"
 #include "device/driver_settings.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
@@ -279,6 +280,14 @@ void check_read_back_files(const Options& options, const Scene& scene, const Out
     }
 }
 
+// --kernel-dir's sources are read and their includes resolved before a device builds them: a
+// missing file is found without one.
+void check_kernel_sources(const Options& options, const OutputPlan& plan) {
+    const bool renders = options.join.empty() && !plan.assemble && !(options.resume && plan.only_image_finished());
+    if (!options.kernel_dir.empty() && !options.reference && renders)
+        assemble_program_source(kRenderTilesProgram.entry, options.kernel_dir);
+}
+
 // Prints --check's summary or --plan's JSON on standard output, checking that it got there.
 int print_check_result(const std::string& text) {
     std::cout << text << std::flush;
@@ -377,6 +386,7 @@ int run(const Options& options) {
     check_linear_outputs(options, plan);
     for (const std::string& warning : plan.warnings) std::cerr << "clrender: warning: " << printable(warning) << "\n";
     throw_if_interrupted();
+    if (options.check || options.plan) check_kernel_sources(options, plan);
     // --plan does not read the files the run reads back: a farm plans the run before they exist.
     if (options.plan) return print_check_result(plan_json(options, scene, plan));
     if (options.check) {

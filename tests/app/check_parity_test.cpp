@@ -38,6 +38,7 @@ struct BadCommand {
     int exit_code;        // the render's, checked independently of --check's
     const char* message;  // a part of the render's message
     bool planned = true;  // false: refused only when the run reads files back, which --plan does not
+    const char* environment = "";
 };
 
 const std::vector<BadCommand> kBadCommands = {
@@ -57,10 +58,12 @@ const std::vector<BadCommand> kBadCommands = {
     {"still.json -o -", 1, "-o -: clrender writes images and videos only to files"},
     {"still.json --crop 0,20,0,5", 1, "--crop 0,20,0,5 reaches outside the 16x12 image"},
     {"still.json --join t.png -o 'x_%04d.png'", 1, "--join makes one image"},
-    {"still.json -o still.json", 4, "still.json"},
+    {"still.json --stats still.json", 4, "still.json"},
     {"still.json -o file.txt/x.png", 4, "file.txt/x.png"},
     {"still.json -o s.png --stats s.png", 4, "s.png"},
-    {"anim.json --video v.mp4 --frames 1", 4, "no-such-ffmpeg"},
+    {"anim.json --video v.mp4 --frames 1", 4, "no-such-ffmpeg", true, "CLRENDER_FFMPEG=no-such-ffmpeg"},
+    {"anim.json --video v.mp4 --frames 1", 4, "no-such-ffprobe", true, "CLRENDER_FFPROBE=no-such-ffprobe"},
+    {"anim.json --video v.gif", 1, "CLRENDER_ENCODER_TIMEOUT must be a number", true, "CLRENDER_ENCODER_TIMEOUT=soon"},
     {"cut.json", 2, "cut.png"},
     {"still.json --join missing.png", 2, "missing.png", false},
     {"anim.json --assemble -o 'f_%04d.png' --video v.mp4", 2, "f_0000.png", false},
@@ -83,19 +86,18 @@ TEST(CheckParity, CheckAndPlanRefuseWhatTheRenderRefusesWithItsMessageAndExitCod
     folder.write("cut.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
       "width": 8, "height": 6, "billboards": [{"UpperLeft": [-1, 1, 0], "LowerLeft": [-1, -1, 0],
       "UpperRight": [1, 1, 0], "filename": "cut.png"}]})");
-    const std::string environment = "CLRENDER_FFMPEG=no-such-ffmpeg";
     const std::set<std::string> before = entries_of(folder.path());
     for (const BadCommand& bad : kBadCommands) {
-        SCOPED_TRACE(bad.arguments);
-        const auto render = run_clrender(std::string(bad.arguments) + " -q --reference", folder.path(), environment);
+        SCOPED_TRACE(std::string(bad.environment) + " " + bad.arguments);
+        const auto render = run_clrender(std::string(bad.arguments) + " -q --reference", folder.path(), bad.environment);
         ASSERT_EQ(render.exit_code, bad.exit_code) << render.output;
         ASSERT_NE(render.output.find(bad.message), std::string::npos) << render.output;
         EXPECT_EQ(entries_of(folder.path()), before) << "the refused render changed the folder";
-        const auto check = run_clrender(std::string(bad.arguments) + " -q --reference --check", folder.path(), environment);
+        const auto check = run_clrender(std::string(bad.arguments) + " -q --reference --check", folder.path(), bad.environment);
         EXPECT_EQ(check.exit_code, render.exit_code) << check.output;
         EXPECT_EQ(check.output, render.output);
         EXPECT_EQ(entries_of(folder.path()), before) << "--check changed the folder";
-        const auto plan = run_clrender(std::string(bad.arguments) + " -q --reference --plan", folder.path(), environment);
+        const auto plan = run_clrender(std::string(bad.arguments) + " -q --reference --plan", folder.path(), bad.environment);
         if (bad.planned) {
             EXPECT_EQ(plan.exit_code, render.exit_code) << plan.output;
             EXPECT_EQ(plan.output, render.output);
@@ -119,6 +121,26 @@ TEST(CheckParity, CheckRefusesAPixelOutsideTheImageAsTheExplainerDoes) {
     const auto plan = run_clrender("still.json --explain-pixel 1,1 --plan", folder.path());
     EXPECT_EQ(plan.exit_code, 1);
     EXPECT_NE(plan.output.find("--plan excludes --explain-pixel"), std::string::npos) << plan.output;
+}
+
+// --kernel-dir's files are read before a device builds them: a folder without them fails the
+// check as it fails a render on a device.
+TEST(CheckParity, CheckFindsAKernelFolderWithoutTheKernels) {
+    TempFolder folder;
+    folder.write("still.json", kStill);
+    fs::create_directories(folder.file("kernels"));
+    const auto render = run_clrender("still.json -q --kernel-dir kernels -o s.png", folder.path());
+    if (render.output.find("no OpenCL device") != std::string::npos) GTEST_SKIP() << "no OpenCL device here";
+    ASSERT_EQ(render.exit_code, 3) << render.output;
+    ASSERT_NE(render.output.find("render_tiles.cl"), std::string::npos) << render.output;
+    for (const char* mode : {"--check", "--plan"}) {
+        const auto check = run_clrender(std::string("still.json -q --kernel-dir kernels -o s.png ") + mode, folder.path());
+        EXPECT_EQ(check.exit_code, 3) << mode;
+        EXPECT_EQ(check.output, render.output) << mode;
+    }
+    // The project's own kernels pass.
+    const std::string kernels = std::string(CLRENDER_SOURCE_DIR) + "/kernels";
+    EXPECT_EQ(run_clrender("still.json --kernel-dir '" + kernels + "' --check", folder.path()).exit_code, 0);
 }
 
 // A check leaves no file behind, not even the temporary files of a crashed run that a render

@@ -149,8 +149,7 @@ TEST(SceneOverridesCli, CheckSummarisesWithoutAnyOpenClPlatformAndWritesNothing)
                              "frames:     10 (2.5 s at 4 fps, 3 camera keys, linear)\n", "spheres:    2 (1 mirror)\n",
                              "billboards: 2\n", "impostors:  0\n",
                              "images:     1 file, 65536 pixels in all (1 PNG)\n",
-                             "features:   spheres billboards textures sun mirrors; alpha: unknown until decoded (1 "
-                             "image has an alpha channel or a transparent colour)\n",
+                             "features:   spheres billboards textures alpha sun mirrors\n",
                              "warnings:   1 (on standard error, above)\n"})
         EXPECT_NE(result.output.find(line), std::string::npos) << "missing '" << line << "' in:\n" << result.output;
     EXPECT_NE(result.output.find("clrender: warning: s.json: /extra: unknown key (ignored)"), std::string::npos)

@@ -118,12 +118,12 @@ TEST(PlanCli, AStillSplitsByRowsOfTheRenderedRectangle) {
 }
 
 // With --resume the plan says which frames are finished (read back, not written), as the
-// render then finds them.
+// render then finds them: a frame of this very render (the reference's, as this run's).
 TEST(PlanCli, ResumeMarksTheFinishedFrames) {
     TempFolder folder;
     folder.write("anim.json", kAnimation);
     ASSERT_EQ(run_clrender("anim.json --frames 1 -o 'f_%04d.png' -q --reference", folder.path()).exit_code, 0);
-    const json plan = plan_of("anim.json --frames 0-2 -o 'f_%04d.png' --resume", folder);
+    const json plan = plan_of("anim.json --frames 0-2 -o 'f_%04d.png' --resume --reference", folder);
     EXPECT_EQ(plan["writes"], json({"f_0000.png", "f_0002.png"}));
     EXPECT_EQ(plan["reads_back"], json({"f_0001.png"}));
     EXPECT_EQ(plan["images"][1]["written"], false);
