@@ -73,36 +73,35 @@ done
 # in): one it made, marked by this file, or an empty folder, which it marks. A folder of the
 # user's files is refused, and so is a marked folder whose entries lead elsewhere by links.
 marker=".clrender-farm"
-# Prints the farm folder's physical path (links resolved), made and marked; exit 1 with a
-# message for a folder that is not the farm's.
-farm_folder() {
+# The farm folder's physical path (links resolved, made or not), once it is known to be the
+# farm's: missing, empty, or marked. Exit 1 with a message for any other; writes nothing.
+farm_folder_path() {
     local named="$1" real entry
     if [ -L "$named" ] && [ ! -e "$named" ]; then
         die "--farm-dir $named: a symbolic link to nothing; name a folder" 1
     fi
     if [ -e "$named" ] && [ ! -d "$named" ]; then die "--farm-dir $named: not a folder" 1; fi
-    if [ ! -e "$named" ]; then
-        mkdir -p -- "$named" || die "cannot make the farm folder $named" 4
-        real="$(cd -P -- "$named" && pwd)" || die "cannot enter the farm folder $named" 4
-        printf 'clrender farm folder, made by scripts/slurm-render.sh (docs/farm.md, The farm folder)\n' \
-            >"$real/$marker" || die "cannot write in the farm folder $named" 4
-    else
-        real="$(cd -P -- "$named" && pwd)" || die "cannot enter the farm folder $named" 4
+    real="$(realpath -m -- "$named")" || die "--farm-dir $named: cannot resolve the path" 1
+    if [ -d "$real" ]; then
         if [ -L "$real/$marker" ] || { [ -e "$real/$marker" ] && [ ! -f "$real/$marker" ]; }; then
             die "--farm-dir $named: $real/$marker is not a regular file; this is not a farm folder" 1
-        elif [ ! -f "$real/$marker" ]; then
-            [ -z "$(ls -A -- "$real")" ] ||
-                die "$named is a folder that the farm did not make (no $marker file in it) and it is not empty: the farm keeps its logs, frames and tiles only in a folder of its own; give --farm-dir a new or empty folder" 1
-            printf 'clrender farm folder, marked by scripts/slurm-render.sh (docs/farm.md, The farm folder)\n' \
-                >"$real/$marker" || die "cannot write in the farm folder $named" 4
+        elif [ ! -f "$real/$marker" ] && [ -n "$(ls -A -- "$real")" ]; then
+            die "$named is a folder that the farm did not make (no $marker file in it) and it is not empty: the farm keeps its logs, frames and tiles only in a folder of its own; give --farm-dir a new or empty folder" 1
         fi
+        for entry in logs tiles frames jobs tasks .lock; do
+            [ ! -L "$real/$entry" ] ||
+                die "the farm folder $named has a symbolic link $entry: the farm writes only inside its own folder; remove the link" 1
+        done
     fi
-    for entry in logs tiles frames jobs tasks .lock; do
-        [ ! -L "$real/$entry" ] ||
-            die "the farm folder $named has a symbolic link $entry: the farm writes only inside its own folder; remove the link" 1
-    done
-    mkdir -p -- "$real/logs" || die "cannot write in the farm folder $named" 4
     printf '%s\n' "$real"
+}
+# Makes the farm folder at its physical path and marks it (it is new or empty, or marked).
+make_farm_folder() {
+    local real="$1"
+    mkdir -p -- "$real/logs" || die "cannot make the farm folder $real" 4
+    [ -f "$real/$marker" ] ||
+        printf 'clrender farm folder, made by scripts/slurm-render.sh (docs/farm.md, The farm folder)\n' \
+            >"$real/$marker" || die "cannot write in the farm folder $real" 4
 }
 
 # ---- clrender's options: the ones the farm decides itself are taken out --------------------
@@ -202,8 +201,7 @@ if [ -z "$farm_dir" ]; then
     farm_dir="${final_output%.*}.farm"  # out/flight.mp4: out/flight.farm
     [ "$still" -eq 0 ] && [ -z "$video" ] && farm_dir="$name.farm"  # frames only: no one output names it
 fi
-farm_dir_named="$farm_dir"
-farm_dir="$(farm_folder "$farm_dir")" || exit $?
+farm_dir="$(farm_folder_path "$farm_dir")" || exit $?
 
 # ---- the tasks and the final job ------------------------------------------------------------
 # Words for the batch script, each as the shell reads it back: plain when it is made of safe
@@ -264,13 +262,16 @@ fi
 # -o that tiles cannot make) is refused now, not after every task has rendered.
 final_command=""
 if [ ${#final_words[@]} -gt 0 ]; then
-    plan_of "${final_words[@]:1}" >/dev/null || {
+    # (its warnings are the user's command's, shown above: only a refusal is shown)
+    final_errors="$(plan_of "${final_words[@]:1}" 2>&1 >/dev/null)" || {
         status=$?
+        echo "$final_errors" >&2
         die "the farm's final job ($( [ "$still" -eq 0 ] && echo "clrender --assemble, which encodes the video from the frames" || echo "clrender --join, which joins the tiles")) would refuse this command (above); render it in one process" $status
     }
     final_command="$(quote "${final_words[@]}" --progress json)"
 fi
 
+make_farm_folder "$farm_dir"
 exec 9>"$farm_dir/.lock" || die "cannot write in the farm folder $farm_dir" 4
 flock -n 9 || die "another slurm-render.sh is submitting to $farm_dir right now"
 

@@ -106,6 +106,7 @@ run_farm --tasks 4 demo/showcase.json --frames 3 --size 32x18 -o 'a#b/f.png' || 
 expect_refusal 1 "--alpha: the video v.mp4 would have no alpha channel" demo/showcase.json --alpha --video v.mp4
 expect_refusal 1 "EXR frames cannot be read back into a video" demo/showcase.json -o 'f_%04d.exr' --video v.mp4
 expect_refusal 1 "the farm's final job (clrender --assemble" demo/showcase.json -o 'f_%04d.exr' --video v.mp4
+[ ! -e "$work/run/v.farm" ] || fail "a run that the final job would refuse made its farm folder"
 expect_refusal 1 "is an EXR" demo/demo.json -o still.exr
 # A device that no device here matches: clrender's message and exit code, unless the nodes are
 # said to have devices this node lacks.
