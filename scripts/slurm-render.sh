@@ -218,7 +218,7 @@ frame_list() {
     awk 'NR==1{a=b=$1;next} $1==b+1{b=$1;next} {printf "%s%s,", a, (a==b?"":"-" b); a=b=$1}
          END{printf "%s%s\n", a, (a==b?"":"-" b)}'
 }
-task_commands=(); task_names=(); final_words=()
+task_commands=(); task_names=(); final_words=(); first_task_words=()
 common=("$clrender" "$scene" "${pass[@]}")
 # A task renders with the CPUs Slurm gave it, not with every core of a node that others share.
 threads_line='t=${SLURM_CPUS_PER_TASK:-${SLURM_CPUS_ON_NODE:-}}; threads=(); [ -n "$t" ] && [ -z "${CLRENDER_DEVICE:-}" ] && threads=(-t "$t")'
@@ -243,7 +243,9 @@ if [ "$still" -eq 0 ]; then
     for ((i = 0; i < n; i++)); do
         from=$((i * ${#selected[@]} / n)); to=$(((i + 1) * ${#selected[@]} / n))
         list=$(printf '%s\n' "${selected[@]:from:to-from}" | frame_list)
-        task_commands+=("$(quote "${common[@]}" --progress json --frames "$list" "${outputs[@]}" --resume)")
+        words=("${common[@]}" --progress json --frames "$list" "${outputs[@]}" --resume)
+        [ $i -eq 0 ] && first_task_words=("${words[@]}")
+        task_commands+=("$(quote "${words[@]}")")
         task_names+=("frames $list")
     done
     [ -n "$video" ] && final_words=("${common[@]}" "${frames_given[@]}" --assemble "${outputs[@]}" --video "$video")
@@ -252,7 +254,9 @@ else
     for ((i = 0; i < k; i++)); do
         band0=$((y0 + i * height / k)); band1=$((y0 + (i + 1) * height / k))
         tile="$farm_dir/tiles/tile_$((i + 1))_of_${k}.png"
-        task_commands+=("$(quote "${common[@]}" --progress json "${frames_given[@]}" --crop "$x0,$x1,$band0,$band1" -o "$tile" --resume)")
+        words=("${common[@]}" --progress json "${frames_given[@]}" --crop "$x0,$x1,$band0,$band1" -o "$tile" --resume)
+        [ $i -eq 0 ] && first_task_words=("${words[@]}")
+        task_commands+=("$(quote "${words[@]}")")
         task_names+=("tile $((i + 1)) of $k, rows $band0-$((band1 - 1))")
         joins+=(--join "$tile")
     done
@@ -260,6 +264,13 @@ else
 fi
 # The final job is clrender too: what it would refuse (EXR frames read back by --assemble, an
 # -o that tiles cannot make) is refused now, not after every task has rendered.
+# A task is clrender on part of the work: the first is planned too (the others differ from it
+# only in their frames or rows).
+task_errors="$(plan_of "${first_task_words[@]:1}" 2>&1 >/dev/null)" || {
+    status=$?
+    echo "$task_errors" >&2
+    die "the farm's first task would refuse this command (above); render it in one process" $status
+}
 final_command=""
 if [ ${#final_words[@]} -gt 0 ]; then
     # (its warnings are the user's command's, shown above: only a refusal is shown)
