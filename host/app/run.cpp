@@ -288,6 +288,13 @@ void check_kernel_sources(const Options& options, const OutputPlan& plan) {
         assemble_program_source(kRenderTilesProgram.entry, options.kernel_dir);
 }
 
+// A stream buffer that takes everything and keeps nothing: --check runs the explainer for its
+// checks, and its text (which can be large) is not wanted.
+struct DiscardingBuffer : std::streambuf {
+    int overflow(int c) override { return traits_type::not_eof(c); }
+    std::streamsize xsputn(const char*, std::streamsize count) override { return count; }
+};
+
 // Prints --check's summary or --plan's JSON on standard output, checking that it got there.
 int print_check_result(const std::string& text) {
     std::cout << text << std::flush;
@@ -363,7 +370,8 @@ int run(const Options& options) {
     check_crop(options, scene);
     throw_if_interrupted();
     if (options.explain_pixel && options.check) {  // the explainer's own checks, without the kernels
-        std::ostringstream discarded;
+        DiscardingBuffer nowhere;
+        std::ostream discarded(&nowhere);
         explain_pixel(options, scene, {}, discarded);
         return print_check_result(check_summary(scene, options.double_precision));
     }
