@@ -349,7 +349,7 @@ int run(const Options& options) {
     const Stopwatch run_time;
     RunReport report;
     DeviceList devices;
-    // --check never opens an OpenCL platform: it must work where there is none.
+    // --check and --plan never open an OpenCL platform: they must work where there is none.
     // --join renders nothing; --resume of a finished image neither: it lists them when it renders.
     if (!options.reference && !options.assemble && !options.print_frame_count && !options.check && !options.plan &&
         options.join.empty()) {
