@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # scripts/slurm-render.sh without a cluster (docs/farm.md): sbatch, squeue, scontrol and
 # scancel are stand-ins that record what they are asked and keep the batch scripts. The test
-# checks what is refused before anything is queued, that the tasks split the work exactly (each
+# checks what is refused before anything is queued (clrender's refusals, with its messages and
+# exit codes, as `clrender --plan` reports them; a device no device here matches; a farm folder
+# that is not the farm's), that the tasks split the work exactly (each
 # frame once, each row once), that clrender's options reach every task unchanged, and, running
 # the recorded batch scripts here one after another, that the result is byte for byte the
 # one-process render.
