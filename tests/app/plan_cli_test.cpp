@@ -154,6 +154,16 @@ TEST(PlanCli, TheDeviceIsTheSelectorAsGivenAndNoPlatformIsOpened) {
     EXPECT_EQ(plan_of("still.json --reference -d 0", folder)["device"], nullptr);
 }
 
+// A plan or summary that cannot reach standard output is an output error, not a success.
+TEST(PlanCli, AFullStandardOutputIsAnOutputError) {
+    TempFolder folder;
+    folder.write("still.json", kStill);
+    for (const char* mode : {"--plan", "--check"}) {
+        EXPECT_EQ(run_clrender(std::string("still.json ") + mode + " >/dev/full", folder.path()).exit_code, 4) << mode;
+        EXPECT_EQ(run_clrender(std::string("still.json ") + mode + " >/dev/null", folder.path()).exit_code, 0) << mode;
+    }
+}
+
 // --list-devices -d: the device a render would pick, or the render's refusal.
 TEST(PlanCli, ListDevicesWithASelectorNamesTheDeviceOrRefusesAsARender) {
     TempFolder folder;
