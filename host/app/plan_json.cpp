@@ -5,25 +5,18 @@
 namespace clr {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;  // the keys in the order written here, for people reading the plan
 
 json or_null(const std::string& text) { return text.empty() ? json(nullptr) : json(text); }
-
-// The rectangle of the frame the run renders (the crop, else the whole frame), for a program
-// that cuts it into bands of rows.
-json rendered_rect(const Options& options, const Scene& scene) {
-    const PixelRect rect = options.crop ? *options.crop : PixelRect{0, scene.width, 0, scene.height};
-    return {{"x0", rect.x0}, {"x1", rect.x1}, {"y0", rect.y0}, {"y1", rect.y1}};
-}
 
 // How the run's work divides: an animation by frames, a still by rows; --join and --assemble
 // render nothing.
 json split(const Options& options, const Scene& scene, const OutputPlan& plan) {
     if (!options.join.empty() || plan.assemble) return {{"by", "none"}};
     if (plan.frame_count > 1) return {{"by", "frames"}, {"frames", plan.frames}};
-    json rows = rendered_rect(options, scene);
-    rows["by"] = "rows";
-    return rows;
+    // The rectangle the run renders (the crop, else the whole frame), to cut into bands of rows.
+    const PixelRect rect = options.crop ? *options.crop : PixelRect{0, scene.width, 0, scene.height};
+    return {{"by", "rows"}, {"x0", rect.x0}, {"x1", rect.x1}, {"y0", rect.y0}, {"y1", rect.y1}};
 }
 
 }  // namespace
