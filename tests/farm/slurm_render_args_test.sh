@@ -248,6 +248,12 @@ run_tasks_here
 [ "$before" = "$(stat -c '%Y %i' "$work/run/out/v.farm/frames/"*.png | md5sum)" ] || fail "a task run twice rendered its frames again"
 cmp -s "$work/run/out/v.mp4" "$work/run/one.mp4" || fail "a task run twice changed the video"
 
+# A --frames selection without -o and --video: clrender's own default names, no final job.
+run_farm --tasks 2 demo/showcase.json --frames 4-7 --size 32x18 && run_tasks_here
+[ "$(submitted)" -eq 1 ] || fail "frames under the default names need no final job"
+(cd "$work/run" && ls showcase_*.png 2>/dev/null | tr '\n' ' ') | grep -qx "showcase_0004.png showcase_0005.png showcase_0006.png showcase_0007.png " ||
+    fail "the default frame names are clrender's: $(ls "$work/run")"
+
 # A scene whose name holds a placeholder: the farm's own frame and tile names hold none, so the
 # frames go where the final job reads them.
 run_farm_named() {
