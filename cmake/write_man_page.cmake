@@ -21,5 +21,8 @@ endif()
 # codes' heading: make it the page's EXIT STATUS section rather than a part of ENVIRONMENT.
 file(READ "${OUTPUT}.tmp" page)
 string(REPLACE ".SS \"Exit status:\"" ".SH \"EXIT STATUS\"" page "${page}")
+# An option's name on a line of its own, its description below, also when the name is shorter
+# than the indent (`--plan`), where the formatter would start the description beside it.
+string(REGEX REPLACE "\\.TP\n(\\\\fB\\\\-[^\n]*)\n" ".TP\n\\1\n.br\n" page "${page}")
 file(WRITE "${OUTPUT}" "${page}")
 file(REMOVE "${OUTPUT}.tmp")

@@ -3,14 +3,17 @@
 # folder on the filesystem that the nodes share:
 #
 #   bash scripts/slurm-render.sh [--wait] [--tasks N] [--tiles K] [--sbatch "OPTIONS"]
-#                                [--farm-dir DIR] SCENE [clrender options]
+#                                [--farm-dir DIR] [--no-device-check] SCENE [clrender options]
 #
 # An animation becomes one job array whose tasks render contiguous chunks of frames
 # (clrender --frames ... --resume), and, when a video is wanted, one job that waits for all of
 # them (afterok) and encodes it (clrender --assemble). A still becomes K row bands (clrender
 # --crop ... --resume), one array task each, and one job that joins them (clrender --join).
 # The results are byte for byte those of `clrender SCENE [clrender options]` in one process.
-# Running the same command again renders only what is missing.
+# Running the same command again renders only what is missing. What is rendered and written is
+# what `clrender SCENE [clrender options] --plan` plans; whatever clrender would refuse is
+# refused before anything is queued. The farm writes its bookkeeping only in a farm folder,
+# one that it made (marked by a .clrender-farm file) or an empty one.
 #
 # Exit codes: 0 submitted (with --wait: every job succeeded); 1 usage; 2-6 clrender refused the
 # command before anything was submitted (its own exit codes); 8 with --wait, a job failed (the
@@ -21,15 +24,16 @@ set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 me="slurm-render"
 
-usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2; }
+usage() { sed -n '2,21p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2; }
 die() { echo "$me: error: $1" >&2; exit "${2:-1}"; }
 say() { echo "$me: $*" >&2; }
 
 # ---- the script's own options, then SCENE, then clrender's --------------------------------
-wait_for_jobs=0; tasks=""; tiles=""; sbatch_options=""; farm_dir=""; farm_dir_given=0
+wait_for_jobs=0; tasks=""; tiles=""; sbatch_options=""; farm_dir=""; farm_dir_given=0; device_check=1
 while [ $# -gt 0 ]; do
     case "$1" in
         --wait) wait_for_jobs=1; shift ;;
+        --no-device-check) device_check=0; shift ;;
         --tasks|--tiles|--sbatch|--farm-dir)
             [ $# -ge 2 ] || die "$1 needs a value"
             case "$1" in
@@ -64,6 +68,42 @@ for program in sbatch squeue scontrol scancel flock; do
     command -v "$program" >/dev/null || die "$program is not installed: run this on the cluster's login node" 9
 done
 
+# ---- the farm folder --------------------------------------------------------------------------
+# The only folder the farm writes its bookkeeping in (and the only one it would ever delete
+# in): one it made, marked by this file, or an empty folder, which it marks. A folder of the
+# user's files is refused, and so is a marked folder whose entries lead elsewhere by links.
+marker=".clrender-farm"
+# The farm folder's physical path (links resolved, made or not), once it is known to be the
+# farm's: missing, empty, or marked. Exit 1 with a message for any other; writes nothing.
+farm_folder_path() {
+    local named="$1" real entry
+    if [ -L "$named" ] && [ ! -e "$named" ]; then
+        die "--farm-dir $named: a symbolic link to nothing; name a folder" 1
+    fi
+    if [ -e "$named" ] && [ ! -d "$named" ]; then die "--farm-dir $named: not a folder" 1; fi
+    real="$(realpath -m -- "$named")" || die "--farm-dir $named: cannot resolve the path" 1
+    if [ -d "$real" ]; then
+        if [ -L "$real/$marker" ] || { [ -e "$real/$marker" ] && [ ! -f "$real/$marker" ]; }; then
+            die "--farm-dir $named: $real/$marker is not a regular file; this is not a farm folder" 1
+        elif [ ! -f "$real/$marker" ] && [ -n "$(ls -A -- "$real")" ]; then
+            die "$named is a folder that the farm did not make (no $marker file in it) and it is not empty: the farm keeps its logs, frames and tiles only in a folder of its own; give --farm-dir a new or empty folder" 1
+        fi
+        for entry in logs tiles frames jobs tasks .lock; do
+            [ ! -L "$real/$entry" ] ||
+                die "the farm folder $named has a symbolic link $entry: the farm writes only inside its own folder; remove the link" 1
+        done
+    fi
+    printf '%s\n' "$real"
+}
+# Makes the farm folder at its physical path and marks it (it is new or empty, or marked).
+make_farm_folder() {
+    local real="$1"
+    mkdir -p -- "$real/logs" || die "cannot make the farm folder $real" 4
+    [ -f "$real/$marker" ] ||
+        printf 'clrender farm folder, made by scripts/slurm-render.sh (docs/farm.md, The farm folder)\n' \
+            >"$real/$marker" || die "cannot write in the farm folder $real" 4
+}
+
 # ---- clrender's options: the ones the farm decides itself are taken out --------------------
 # Which options take a value is asked of clrender itself (its completion list names a value's
 # type after the option), so that a value is never mistaken for an option.
@@ -72,7 +112,7 @@ while read -r name type _; do
     [ -n "$type" ] && takes_value["$name"]=1
 done < <("$clrender" --completion-words)
 
-pass=(); output=""; video=""; frames=""; threads_chosen=0
+pass=(); given_outputs=(); threads_chosen=0
 while [ $# -gt 0 ]; do
     option="$1"; value=""; has_value=0
     case "$option" in
@@ -85,11 +125,9 @@ while [ $# -gt 0 ]; do
     fi
     shift
     case "$option" in
-        -o|--output) output="$value" ;;
-        --video) video="$value" ;;
-        --frames) frames="$value" ;;
+        -o|--output|--video|--frames) given_outputs+=("$option" "$value") ;;  # the farm sets them per job
         --resume|--progress|-q|--quiet) ;;  # every task resumes and logs --progress json
-        --stats|--assemble|--join|--crop|--explain-pixel|--check|--frame-count|--list-devices|--version|-h|--help)
+        --stats|--assemble|--join|--crop|--explain-pixel|--check|--plan|--frame-count|--list-devices|--version|-h|--help)
             die "$option cannot be used on the farm: it splits the work itself (docs/farm.md)" ;;
         *)
             case "$option" in -t|--threads|-d|--device|--reference) threads_chosen=1 ;; esac
@@ -97,57 +135,63 @@ while [ $# -gt 0 ]; do
     esac
 done
 
-# ---- what the scene is: clrender checks it (and every option) before anything is queued ----
-summary="$("$clrender" "$scene" "${pass[@]}" --check)" || exit $?
-size=$(sed -n 's/^size: *\([0-9]*\) x \([0-9]*\),.*/\1 \2/p' <<<"$summary")
-frame_count=$(sed -n 's/^frames: *\([0-9]*\).*/\1/p' <<<"$summary")
-read -r width height <<<"$size"
-[ -n "${height:-}" ] && [ -n "$frame_count" ] || die "cannot read the size and frames from clrender --check" 5
+# ---- what the run is: clrender plans it (and checks everything a render checks without a
+# device) before anything is queued; the farm takes the frames, names and sizes from the plan,
+# never from its own reading of the options (docs/farm.md, What the farm asks clrender).
+# The plan as shell assignments; lists one item a line.
+read_plan() {
+    python3 -c '
+import json, shlex, sys
+plan = json.load(sys.stdin)
+def say(name, value):
+    print(name + "=" + shlex.quote("" if value is None else str(value)))
+say("still", 1 if plan["still"] else 0)
+say("frame_count", plan["frame_count"])
+say("planned_frames", "\n".join(str(f) for f in plan["frames"]))
+say("frame_pattern", plan["frame_pattern"])
+say("first_image", plan["images"][0]["path"] if plan["images"] else None)
+say("video", plan["video"])
+say("device", plan["device"])
+split = plan["split"]
+say("split_by", split["by"])
+if split["by"] == "rows":
+    say("x0", split["x0"]); say("x1", split["x1"]); say("y0", split["y0"]); say("y1", split["y1"])
+'
+}
+# `clrender ... --plan` for a command; its refusal (message, exit code) is the script's.
+plan_of() {
+    local json status
+    json="$("$clrender" "$@" --plan)"; status=$?
+    [ $status -eq 0 ] || return $status
+    read_plan <<<"$json" || die "cannot read clrender's --plan output" 5
+}
+plan="$(plan_of "$scene" "${pass[@]}" "${given_outputs[@]}")" || exit $?
+eval "$plan"
+mapfile -t selected <<<"$planned_frames"
 name="$(basename "$scene")"; name="${name%.*}"
 
-# "5,7,10-20" as a list of frames, each checked against the animation.
-expand_frames() {
-    local part first last
-    IFS=',' read -ra parts <<<"$1"
-    for part in "${parts[@]}"; do
-        if [[ "$part" =~ ^([0-9]+)-([0-9]+)$ ]]; then first=$((10#${BASH_REMATCH[1]})); last=$((10#${BASH_REMATCH[2]}))
-        elif [[ "$part" =~ ^[0-9]+$ ]]; then first=$((10#$part)); last=$first
-        else die "--frames $1: expected frames such as 7, 0-99 or 5,7,10-20"; fi
-        [ "$first" -le "$last" ] && [ "$last" -lt "$frame_count" ] ||
-            die "--frames $1: $part is not within the animation's frames 0-$((frame_count - 1))"
-        seq "$first" "$last"
-    done | sort -nu
-}
-
-# Frames as the shortest --frames list: "0-9,12".
-frame_list() {
-    awk 'NR==1{a=b=$1;next} $1==b+1{b=$1;next} {printf "%s%s,", a, (a==b?"":"-" b); a=b=$1}
-         END{printf "%s%s\n", a, (a==b?"":"-" b)}'
-}
-
-# The formats clrender writes (docs/command-line.md, Outputs), checked here so that a typo
-# fails now and not in every task.
-case "${output,,}" in ""|*.png|*.ppm|*.exr) ;; *) die "-o $output: clrender writes .png, .ppm or .exr images" ;; esac
-case "${video,,}" in ""|*.mp4|*.gif) ;; *) die "--video $video: clrender writes .mp4 or .gif videos" ;; esac
+# ---- the device: a -d (or CLRENDER_DEVICE) that names no device here is refused now, with
+# clrender's message, unless --no-device-check says the nodes have devices this node lacks.
+if [ -n "$device" ] && [ $device_check -eq 1 ]; then
+    answer="$("$clrender" --list-devices -d "$device" 2>&1 >/dev/null)"; status=$?
+    if [ $status -ne 0 ]; then
+        if grep -q "no OpenCL device found" <<<"$answer"; then
+            say "note: this node has no OpenCL device, so -d '$device' is checked on the nodes only"
+        else
+            echo "$answer" >&2
+            die "-d '$device' names no device on this node; if the compute nodes have it, add --no-device-check" "$status"
+        fi
+    fi
+fi
 
 # ---- the outputs: those of the same command in one process (docs/command-line.md, Outputs) -
-if [ "$frame_count" -gt 1 ]; then
+if [ "$still" -eq 0 ]; then
     [ -z "$tiles" ] || die "--tiles splits a still; $scene is an animation of $frame_count frames, split by --tasks"
-    # (a subshell: a wrong list exits it with the message, and this script with its status)
-    selection=$(if [ -n "$frames" ]; then expand_frames "$frames"; else seq 0 $((frame_count - 1)); fi) || exit 1
-    mapfile -t selected <<<"$selection"
-    [ -z "$video" ] && [ -z "$output" ] && [ -z "$frames" ] && video="$name.mp4"
-    if [ -n "$output" ] && ! [[ "$output" =~ %0?[0-9]*d|\# ]] && [ ${#selected[@]} -gt 1 ]; then
-        die "-o $output: the farm writes ${#selected[@]} frames; give a frame pattern such as frames/${name}_%04d.png"
-    fi
-    final_output="${video:-${output:-${name}_NNNN.png}}"
+    final_output="${video:-${frame_pattern:-$first_image}}"
 else
     [ -z "$tasks" ] || die "--tasks splits an animation's frames; $scene is a still, split by --tiles"
-    [ -z "$frames" ] || { expand_frames "$frames" >/dev/null || exit 1; }
-    final_output="${output:-$name.png}"
-    case "${final_output,,}" in
-        *.exr) die "-o $final_output: tiles are joined as PNG; render an EXR still in one process" ;;
-    esac
+    final_output="$first_image"
+    height=$((y1 - y0)); width=$((x1 - x0))
     k=${tiles:-8}
     [ "$k" -le "$height" ] || die "--tiles $k: the image has only $height rows"
 fi
@@ -155,10 +199,9 @@ fi
 # ---- the farm folder: logs, tiles, the frames of a video, the jobs of the last submission --
 if [ -z "$farm_dir" ]; then
     farm_dir="${final_output%.*}.farm"  # out/flight.mp4: out/flight.farm
-    [ "$frame_count" -gt 1 ] && [ -z "$video" ] && farm_dir="$name.farm"  # frames only: no one output names it
+    [ "$still" -eq 0 ] && [ -z "$video" ] && farm_dir="$name.farm"  # frames only: no one output names it
 fi
-mkdir -p "$farm_dir/logs" || die "cannot make the farm folder $farm_dir" 4
-farm_dir="$(cd "$farm_dir" && pwd)"
+farm_dir="$(farm_folder_path "$farm_dir")" || exit $?
 
 # ---- the tasks and the final job ------------------------------------------------------------
 # Words for the batch script, each as the shell reads it back: plain when it is made of safe
@@ -170,44 +213,76 @@ quote() {
         else printf "'%s' " "${word//\'/\'\\\'\'}"; fi
     done
 }
-task_commands=(); task_names=(); final_command=""
-common=("$clrender" "$scene" "${pass[@]}" --progress json)
+# Frames as the shortest --frames list: "0-9,12".
+frame_list() {
+    awk 'NR==1{a=b=$1;next} $1==b+1{b=$1;next} {printf "%s%s,", a, (a==b?"":"-" b); a=b=$1}
+         END{printf "%s%s\n", a, (a==b?"":"-" b)}'
+}
+task_commands=(); task_names=(); final_words=(); first_task_words=()
+common=("$clrender" "$scene" "${pass[@]}")
 # A task renders with the CPUs Slurm gave it, not with every core of a node that others share.
 threads_line='t=${SLURM_CPUS_PER_TASK:-${SLURM_CPUS_ON_NODE:-}}; threads=(); [ -n "$t" ] && [ -z "${CLRENDER_DEVICE:-}" ] && threads=(-t "$t")'
 [ $threads_chosen -eq 1 ] && threads_line='threads=()'
+frames_given=(); for ((i = 0; i < ${#given_outputs[@]}; i += 2)); do
+    [ "${given_outputs[i]}" = --frames ] && frames_given=(--frames "${given_outputs[i + 1]}")
+done
+output_given=(); for ((i = 0; i < ${#given_outputs[@]}; i += 2)); do
+    case "${given_outputs[i]}" in -o|--output) output_given=(-o "${given_outputs[i + 1]}") ;; esac
+done
 
-if [ "$frame_count" -gt 1 ]; then
-    pattern="$output"
-    if [ -z "$pattern" ] && [ -n "$video" ]; then
-        digits=${#frame_count}; [ "$digits" -lt 4 ] && digits=4
-        pattern="$farm_dir/frames/${name}_%0${digits}d.png"
+if [ "$still" -eq 0 ]; then
+    # The frames go where the same command in one process writes them: the -o pattern, the
+    # default names of a --frames selection, or (a video only) the farm folder, under a name
+    # that holds no placeholder but the frame number's.
+    outputs=("${output_given[@]}")
+    if [ -n "$video" ] && [ ${#output_given[@]} -eq 0 ]; then
+        last=$((frame_count - 1)); digits=${#last}; [ "$digits" -lt 4 ] && digits=4
+        outputs=(-o "$farm_dir/frames/frame_%0${digits}d.png")
     fi
     n=${tasks:-16}; [ "$n" -gt ${#selected[@]} ] && n=${#selected[@]}
     for ((i = 0; i < n; i++)); do
         from=$((i * ${#selected[@]} / n)); to=$(((i + 1) * ${#selected[@]} / n))
         list=$(printf '%s\n' "${selected[@]:from:to-from}" | frame_list)
-        outputs=(); [ -n "$pattern" ] && outputs=(-o "$pattern")
-        task_commands+=("$(quote "${common[@]}" --frames "$list" "${outputs[@]}" --resume)")
+        words=("${common[@]}" --progress json --frames "$list" "${outputs[@]}" --resume)
+        [ $i -eq 0 ] && first_task_words=("${words[@]}")
+        task_commands+=("$(quote "${words[@]}")")
         task_names+=("frames $list")
     done
-    if [ -n "$video" ]; then
-        assemble_frames=(); [ -n "$frames" ] && assemble_frames=(--frames "$frames")
-        final_command="$(quote "${common[@]}" "${assemble_frames[@]}" --assemble -o "$pattern" --video "$video")"
-    fi
+    [ -n "$video" ] && final_words=("${common[@]}" "${frames_given[@]}" --assemble "${outputs[@]}" --video "$video")
 else
-    one_frame=(); [ -n "$frames" ] && one_frame=(--frames "$frames")
     joins=()
     for ((i = 0; i < k; i++)); do
-        y0=$((i * height / k)); y1=$(((i + 1) * height / k))
-        tile="$farm_dir/tiles/${name}_tile_$((i + 1))_of_${k}.png"
-        task_commands+=("$(quote "${common[@]}" "${one_frame[@]}" --crop "0,$width,$y0,$y1" -o "$tile" --resume)")
-        task_names+=("tile $((i + 1)) of $k, rows $y0-$((y1 - 1))")
+        band0=$((y0 + i * height / k)); band1=$((y0 + (i + 1) * height / k))
+        tile="$farm_dir/tiles/tile_$((i + 1))_of_${k}.png"
+        words=("${common[@]}" --progress json "${frames_given[@]}" --crop "$x0,$x1,$band0,$band1" -o "$tile" --resume)
+        [ $i -eq 0 ] && first_task_words=("${words[@]}")
+        task_commands+=("$(quote "${words[@]}")")
+        task_names+=("tile $((i + 1)) of $k, rows $band0-$((band1 - 1))")
         joins+=(--join "$tile")
     done
-    final_outputs=(); [ -n "$output" ] && final_outputs=(-o "$output")
-    final_command="$(quote "${common[@]}" "${one_frame[@]}" "${joins[@]}" "${final_outputs[@]}")"
+    final_words=("${common[@]}" "${frames_given[@]}" "${joins[@]}" "${output_given[@]}")
+fi
+# The final job is clrender too: what it would refuse (EXR frames read back by --assemble, an
+# -o that tiles cannot make) is refused now, not after every task has rendered.
+# A task is clrender on part of the work: the first is planned too (the others differ from it
+# only in their frames or rows).
+task_errors="$(plan_of "${first_task_words[@]:1}" 2>&1 >/dev/null)" || {
+    status=$?
+    echo "$task_errors" >&2
+    die "the farm's first task would refuse this command (above); render it in one process" $status
+}
+final_command=""
+if [ ${#final_words[@]} -gt 0 ]; then
+    # (its warnings are the user's command's, shown above: only a refusal is shown)
+    final_errors="$(plan_of "${final_words[@]:1}" 2>&1 >/dev/null)" || {
+        status=$?
+        echo "$final_errors" >&2
+        die "the farm's final job ($( [ "$still" -eq 0 ] && echo "clrender --assemble, which encodes the video from the frames" || echo "clrender --join, which joins the tiles")) would refuse this command (above); render it in one process" $status
+    }
+    final_command="$(quote "${final_words[@]}" --progress json)"
 fi
 
+make_farm_folder "$farm_dir"
 exec 9>"$farm_dir/.lock" || die "cannot write in the farm folder $farm_dir" 4
 flock -n 9 || die "another slurm-render.sh is submitting to $farm_dir right now"
 

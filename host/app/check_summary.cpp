@@ -56,27 +56,20 @@ std::string images_line(const Scene& scene) {
     return line + ")";
 }
 
-// The images are not decoded, so whether a texel is transparent is known only for images
-// that cannot hold alpha: the feature is off when no image can, and open otherwise.
+// The images are decoded as for a render, so the transparency test (alpha) is known: it is
+// compiled in when a shown image has a texel with alpha below 255.
 std::string features_line(const Scene& scene, bool double_precision) {
-    FeatureSet features = FeatureSet::of(scene);
-    features.textures = !scene.image_files.empty();
-    std::size_t with_alpha = 0;
-    for (const ImageFileInfo& file : scene.image_files) with_alpha += file.alpha_channel;
+    const FeatureSet features = FeatureSet::of(scene);
     const std::vector<std::pair<const char*, bool>> named = {
         {"spheres", features.spheres}, {"billboards", features.billboards}, {"textures", features.textures},
-        {"sun", features.sun},         {"mirrors", features.mirrors},       {"bvh", features.bvh},
-        {"double", double_precision},
+        {"alpha", features.alpha},     {"sun", features.sun},               {"mirrors", features.mirrors},
+        {"bvh", features.bvh},         {"double", double_precision},
     };
     std::string line;
     for (const auto& [name, on] : named) {
         if (on) line += (line.empty() ? "" : " ") + std::string(name);
     }
-    if (line.empty()) line = "none (background only)";
-    if (with_alpha > 0)
-        line += "; alpha: unknown until decoded (" + count_of(with_alpha, "image has", "images have") +
-                " an alpha channel or a transparent colour)";
-    return line;
+    return line.empty() ? "none (background only)" : line;
 }
 
 }  // namespace

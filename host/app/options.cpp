@@ -48,7 +48,7 @@ void refuse_empty_values(const CLI::App& app, const std::vector<std::pair<std::s
 // in --help and the man page.)
 void refuse_outputs_with_explain_pixel(const CLI::App& app) {
     if (app.count("--explain-pixel") == 0) return;
-    for (const char* output : {"--output", "--video", "--stats", "--assemble", "--resume", "--crop", "--alpha"})
+    for (const char* output : {"--output", "--video", "--stats", "--assemble", "--resume", "--crop", "--alpha", "--plan"})
         if (app.count(output) > 0)
             throw CLI::ValidationError(std::string(output) + " excludes --explain-pixel: the explainer writes no files");
 }
@@ -75,8 +75,11 @@ void add_scene_check_options(CLI::App& app, Options& options, SceneCheckOptions&
         ->check(CLI::Range(0LL, 4294967295LL));
     app.add_flag("--strict", options.strict, "Treat every warning as an error (exit 2, nothing written)");
     app.add_flag("--check", options.check,
-                 "Check the scene and its images' headers and print a summary, without an OpenCL device; "
-                 "writes nothing");
+                 "Check the scene, its images and the outputs as a render would, without an OpenCL device, and "
+                 "print a summary; fails as the render would fail; writes nothing");
+    app.add_flag("--plan", options.plan,
+                 "Check as --check does, then print what the render would do as JSON: its frames, image size, "
+                 "every file it writes and how it splits (frames or rows), for a render farm; writes nothing");
 }
 
 void read_scene_check_options(const SceneCheckOptions& values, Options& options) {
@@ -142,7 +145,9 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
                  "interrupted run; a video still gets every frame (existing ones are read back)");
     app.add_option("--quality", options.quality, "MP4 quality as x264 CRF, 0 (best) to 51; default 18")
         ->check(CLI::Range(0, 51));
-    app.add_flag("--list-devices", options.list_devices, "Print the OpenCL platforms and devices, then exit");
+    app.add_flag("--list-devices", options.list_devices,
+                 "Print the OpenCL platforms and devices, then exit; with -d only the device it picks (exit 3 when "
+                 "none)");
     app.add_flag("--frame-count", options.print_frame_count,
                  "Print the number of frames of the scene's animation (1 for a still), then exit");
     app.add_option("-d,--device", options.device,
@@ -275,7 +280,7 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
         parsed.exit_code = 1;
         return parsed;
     }
-    if (options.device.empty()) {
+    if (options.device.empty() && !options.list_devices) {
         if (const char* env = std::getenv("CLRENDER_DEVICE")) options.device = env;
     }
     return parsed;

@@ -50,6 +50,7 @@ struct Options {
     std::optional<unsigned> seed;          // --seed: the sample pattern's seed (clrender.seed)
     bool strict = false;                   // --strict: a warning fails the run (exit 2)
     bool check = false;                    // --check: validate and summarise, no device, nothing written
+    bool plan = false;                     // --plan: validate as --check, print the run's plan as JSON
     // Joining tiles (docs/command-line.md, Joining tiles): --join TILE, repeatable; the image
     // is made from these --crop tiles instead of rendered.
     std::vector<std::string> join;

@@ -13,7 +13,9 @@
 #include "output/output_roles.h"
 #include "output/output_target.h"
 #include "output/temp_files.h"
+#include "output/encoder_timeout.h"
 #include "output/video_encoder.h"
+#include "output/video_probe.h"
 #include "scene/camera_path.h"
 
 namespace clr {
@@ -60,8 +62,13 @@ void plan_video(const Options& options, const Scene& scene, OutputPlan& plan) {
     if (plan.video_path.empty() && options.output_path.empty() && options.frames.empty())
         plan.video_path = scene.name + ".mp4";
     if (plan.video_path.empty()) return;
+    plan.video_name = plan.video_path;
     video_format_for(plan.video_path);
     plan.encoder = find_encoder();  // before any rendering: a missing encoder must not waste a render
+    // The encoder's settings and checker too (the encoder asks for them again when it starts),
+    // so that --check finds them without a device.
+    encoder_stall_timeout();
+    find_video_prober(plan.encoder);
 }
 
 // "-" as an output name: --stats - writes the report to standard output, where nothing else
@@ -136,7 +143,10 @@ void check_targets(const Options& options, const Scene& scene, OutputPlan& plan)
     for (const std::string& target : one_target_per_folder) {
         std::vector<std::string> missing = missing_folders_of(target);
         if (missing.empty()) {
-            prepare_output_folder(target);
+            if (options.check || options.plan)
+                probe_output_folder(target);
+            else
+                prepare_output_folder(target);
         } else {
             plan.missing_folders.push_back({target, std::move(missing)});
         }

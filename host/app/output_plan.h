@@ -25,6 +25,7 @@ struct OutputPlan {
     int default_frame_digits = 0;
     std::string default_frame_stem;  // "<scene name>_"
     std::string video_path;    // empty: no video; a symbolic link is resolved to its target
+    std::string video_name;    // the video as named (--video, or the default name), before that
     std::string stats_path;    // --stats report; empty: none (or standard output)
     bool stats_to_standard_output = false;  // --stats -
     std::string encoder;       // the ffmpeg program, when there is a video
@@ -60,7 +61,8 @@ struct OutputPlan {
 // Throws UsageError for contradictory or incomplete requests, OutputError when a video is
 // asked for and no encoder is found, and OutputError when an output would replace an input
 // or another output, is not a regular file, or its folder cannot take a new file. Removes
-// the temporary files that crashed runs left in the output folders (temp_files.h).
+// the temporary files that crashed runs left in the output folders (temp_files.h), except
+// for --check and --plan, which change nothing.
 OutputPlan plan_outputs(const Options& options, const Scene& scene);
 
 // Registers every file the scene reads as an input: the scene and its images (placeholders

@@ -17,6 +17,7 @@
 #include "app/frame_sink.h"
 #include "app/linear_outputs.h"
 #include "app/opencl_frame_renderer.h"
+#include "app/plan_json.h"
 #include "app/reference_frame_renderer.h"
 #include "app/description_check.h"
 #include "app/display_server.h"
@@ -30,6 +31,7 @@
 #include "app/progress.h"
 #include "core/errors.h"
 #include "device/device_selection.h"
+#include "device/kernel_sources.h"
 #include "device/driver_settings.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
@@ -106,7 +108,9 @@ Scene load(const Options& options) {
     load_options.samples_override = options.samples_per_pixel;
     load_options.seed_override = options.seed;
     load_options.overrides = options.overrides;
-    load_options.decode_images = !options.check;  // --check reads images' headers only
+    // --check and --plan decode the images too: a damaged one fails them as it fails a render,
+    // and the scene's digest (in each frame's description, which --resume and --assemble
+    // compare) is the render's.
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
@@ -259,6 +263,48 @@ void assemble_frames(const Options& options, const Scene& scene, const OutputPla
     report.write_ms = sink.write_ms();
 }
 
+// --check reaches every refusal of a render that needs no device, including those of the files
+// the run reads back instead of rendering: --join's tiles, --assemble's frames and the frames
+// that --resume reads back into a video.
+void check_read_back_files(const Options& options, const Scene& scene, const OutputPlan& plan) {
+    if (!options.join.empty()) {
+        join_tiles(options, scene, plan.frames.front());
+        return;
+    }
+    const FrameSize size = frame_size(options, scene);
+    for (int frame : plan.frames) {
+        throw_if_interrupted();
+        if (plan.assemble) {
+            check_frame_description(plan.image_path(frame), frame, describe_frame(scene, frame, options));
+            read_frame(plan, size, frame);
+        } else if (options.resume && plan.frame_on_disk(frame) && !plan.video_path.empty()) {
+            read_frame(plan, size, frame);
+        }
+    }
+}
+
+// --kernel-dir's sources are read and their includes resolved before a device builds them: a
+// missing file is found without one.
+void check_kernel_sources(const Options& options, const OutputPlan& plan) {
+    const bool renders = options.join.empty() && !plan.assemble && !(options.resume && plan.only_image_finished());
+    if (!options.kernel_dir.empty() && !options.reference && renders)
+        assemble_program_source(kRenderTilesProgram.entry, options.kernel_dir);
+}
+
+// A stream buffer that takes everything and keeps nothing: --check runs the explainer for its
+// checks, and its text (which can be large) is not wanted.
+struct DiscardingBuffer : std::streambuf {
+    int overflow(int c) override { return traits_type::not_eof(c); }
+    std::streamsize xsputn(const char*, std::streamsize count) override { return count; }
+};
+
+// Prints --check's summary or --plan's JSON on standard output, checking that it got there.
+int print_check_result(const std::string& text) {
+    std::cout << text << std::flush;
+    if (!std::cout) throw OutputError("standard output: cannot write the result (disk full or pipe closed?)");
+    return kExitOk;
+}
+
 // "wrote anim_0000.png ... anim_0047.png (48 frames, no video: ...)" for the default frames.
 void print_default_frames(const OutputPlan& plan) {
     std::cerr << "clrender: wrote " << printable(plan.image_path(plan.frames.front()));
@@ -297,16 +343,19 @@ void print_summary(const OutputPlan& plan, const RunReport& report) {
 int run(const Options& options) {
     if (options.threads) limit_cpu_threads(*options.threads);  // before any driver loads
     if (options.list_devices) {
-        std::cout << format_device_list(list_devices());
-        return kExitOk;
+        std::vector<DeviceEntry> devices = list_devices();
+        // With -d: only the device a render would pick, or the render's error (exit 3).
+        if (!options.device.empty()) devices = {select_device(devices, options.device)};
+        return print_check_result(format_device_list(devices));
     }
     install_interruption_handlers();  // before anything is read or written (caches included)
     const Stopwatch run_time;
     RunReport report;
     DeviceList devices;
-    // --check never opens an OpenCL platform: it must work where there is none.
+    // --check and --plan never open an OpenCL platform: they must work where there is none.
     // --join renders nothing; --resume of a finished image neither: it lists them when it renders.
-    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check && options.join.empty()) {
+    if (!options.reference && !options.assemble && !options.print_frame_count && !options.check && !options.plan &&
+        options.join.empty()) {
         // What would wait for the driver's dlopen on the listing thread, done before it starts:
         // the image loader's threads (core/worker_threads.h) and the image cache's first key.
         if (!options.resume) {
@@ -322,11 +371,13 @@ int run(const Options& options) {
         return kExitOk;
     }
     check_crop(options, scene);
-    if (options.check) {
-        std::cout << check_summary(scene, options.double_precision);
-        return kExitOk;
-    }
     throw_if_interrupted();
+    if (options.explain_pixel && options.check) {  // the explainer's own checks, without the kernels
+        DiscardingBuffer nowhere;
+        std::ostream discarded(&nowhere);
+        explain_pixel(options, scene, {}, discarded);
+        return print_check_result(check_summary(scene, options.double_precision));
+    }
     if (options.explain_pixel) {  // prints, writes no files (docs/explain-pixel.md)
         KernelRendererFactory kernel_renderer;
         // The kernels render only the explained pixel: a 1x1 crop has the full frame's bytes
@@ -346,6 +397,13 @@ int run(const Options& options) {
     check_linear_outputs(options, plan);
     for (const std::string& warning : plan.warnings) std::cerr << "clrender: warning: " << printable(warning) << "\n";
     throw_if_interrupted();
+    if (options.check || options.plan) check_kernel_sources(options, plan);
+    // --plan does not read the files the run reads back: a farm plans the run before they exist.
+    if (options.plan) return print_check_result(plan_json(options, scene, plan));
+    if (options.check) {
+        check_read_back_files(options, scene, plan);
+        return print_check_result(check_summary(scene, options.double_precision));
+    }
 
     // A still's image or an animation's video, and the stats, are renamed into place together,
     // once all are written: a failure in any leaves the earlier files as they were. Frames of

@@ -96,6 +96,10 @@ int sweep_stale_temp_files(const std::string& folder) {
 
 void prepare_output_folder(const std::string& final_path) {
     sweep_stale_temp_files(fs::path(final_path).parent_path().string());
+    probe_output_folder(final_path);
+}
+
+void probe_output_folder(const std::string& final_path) {
     const std::string probe = temp_path_in_folder_of(final_path);
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) throw OutputError(final_path + ": cannot create a file in its folder: " + std::strerror(errno));

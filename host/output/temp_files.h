@@ -32,4 +32,9 @@ int sweep_stale_temp_files(const std::string& folder);
 // fails now and not after a long render. Throws OutputError naming `final_path`.
 void prepare_output_folder(const std::string& final_path);
 
+// The same test without the sweep, for a run that must change nothing (--check, --plan): a
+// temporary file is created and removed again, so that the check fails exactly when a render
+// would. Throws OutputError naming `final_path`.
+void probe_output_folder(const std::string& final_path);
+
 }  // namespace clr

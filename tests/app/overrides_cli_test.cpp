@@ -143,14 +143,13 @@ TEST(SceneOverridesCli, CheckSummarisesWithoutAnyOpenClPlatformAndWritesNothing)
     EXPECT_EQ(run_clrender("s.json -q --frames 0 -o f.png", folder.path(), no_platforms).exit_code, 3);
 
     const std::set<std::string> before = entries_of(folder.path());
-    const auto result = run_clrender("s.json --check -o f.png", folder.path(), no_platforms);
+    const auto result = run_clrender("s.json --check -o 'f_%04d.png'", folder.path(), no_platforms);
     ASSERT_EQ(result.exit_code, 0) << result.output;
     for (const char* line : {"scene:      s.json\n", "size:       40 x 30, 1 sample per pixel\n",
                              "frames:     10 (2.5 s at 4 fps, 3 camera keys, linear)\n", "spheres:    2 (1 mirror)\n",
                              "billboards: 2\n", "impostors:  0\n",
                              "images:     1 file, 65536 pixels in all (1 PNG)\n",
-                             "features:   spheres billboards textures sun mirrors; alpha: unknown until decoded (1 "
-                             "image has an alpha channel or a transparent colour)\n",
+                             "features:   spheres billboards textures alpha sun mirrors\n",
                              "warnings:   1 (on standard error, above)\n"})
         EXPECT_NE(result.output.find(line), std::string::npos) << "missing '" << line << "' in:\n" << result.output;
     EXPECT_NE(result.output.find("clrender: warning: s.json: /extra: unknown key (ignored)"), std::string::npos)
@@ -185,20 +184,38 @@ TEST(SceneOverridesCli, CheckFindsSceneErrorsAndStrictWarnings) {
     EXPECT_EQ(strict.output.find("scene:"), std::string::npos) << "no summary after an error:\n" << strict.output;
 }
 
-TEST(SceneOverridesCli, CheckReadsImageHeadersOnly) {
+TEST(SceneOverridesCli, CheckDecodesTheImagesAsARenderDoes) {
     TempFolder folder;
-    // A PNG whose header is whole but whose pixel data is cut off: --check passes it (it does
-    // not decode), a render finds it.
+    // A PNG whose header is whole but whose pixel data is cut off: the render refuses it, and
+    // --check with the same message and exit code.
     const std::string png = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "scenes/demo/backdrop.png");
     folder.write("cut.png", png.substr(0, png.size() / 2));
     folder.write("s.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
       "width": 8, "height": 6, "billboards": [{"UpperLeft": [-1, 1, 0], "LowerLeft": [-1, -1, 0],
       "UpperRight": [1, 1, 0], "filename": "cut.png"}]})");
+    const auto render = run_clrender("s.json -q --reference", folder.path());
+    ASSERT_EQ(render.exit_code, 2) << render.output;
     const auto check = run_clrender("s.json --check", folder.path());
-    EXPECT_EQ(check.exit_code, 0) << check.output;
-    EXPECT_NE(check.output.find("features:   billboards textures\n"), std::string::npos) << check.output;
-    EXPECT_EQ(check.output.find("alpha"), std::string::npos) << "an RGB PNG cannot be transparent:\n" << check.output;
-    EXPECT_EQ(run_clrender("s.json -q --reference", folder.path()).exit_code, 2);
+    EXPECT_EQ(check.exit_code, 2);
+    EXPECT_EQ(check.output, render.output);
+}
+
+// Decoded, the images say whether a texel is transparent: the alpha test is listed only then.
+TEST(SceneOverridesCli, CheckListsTheAlphaTestOnlyForAnImageWithTransparentTexels) {
+    TempFolder folder;
+    folder.write("sphere.json", kScene);
+    // --alpha makes the background transparent; without it every texel is opaque, in RGBA too.
+    ASSERT_EQ(run_clrender("sphere.json -q --reference --alpha -o clear.png", folder.path()).exit_code, 0);
+    ASSERT_EQ(run_clrender("sphere.json -q --reference -o solid.png", folder.path()).exit_code, 0);
+    for (const auto& [image, features] : {std::pair{"clear.png", "billboards textures alpha\n"},
+                                          std::pair{"solid.png", "billboards textures\n"}}) {
+        folder.write("s.json", std::string(R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0],
+          "fov_angle": 60, "width": 8, "height": 6, "billboards": [{"UpperLeft": [-1, 1, 0],
+          "LowerLeft": [-1, -1, 0], "UpperRight": [1, 1, 0], "filename": ")") + image + R"("}]})");
+        const auto check = run_clrender("s.json --check", folder.path());
+        EXPECT_EQ(check.exit_code, 0) << check.output;
+        EXPECT_NE(check.output.find(std::string("features:   ") + features), std::string::npos) << check.output;
+    }
 }
 
 TEST(SceneOverridesCli, AMistypedOptionGetsASuggestion) {

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # scripts/slurm-render.sh without a cluster (docs/farm.md): sbatch, squeue, scontrol and
 # scancel are stand-ins that record what they are asked and keep the batch scripts. The test
-# checks what is refused before anything is queued, that the tasks split the work exactly (each
+# checks what is refused before anything is queued (clrender's refusals, with its messages and
+# exit codes, as `clrender --plan` reports them; a device no device here matches; a farm folder
+# that is not the farm's), that the tasks split the work exactly (each
 # frame once, each row once), that clrender's options reach every task unchanged, and, running
 # the recorded batch scripts here one after another, that the result is byte for byte the
 # one-process render.
@@ -71,13 +73,94 @@ expect_refusal 1 "--crop cannot be used on the farm" demo/demo.json --crop 0,10,
 expect_refusal 1 "--assemble cannot be used on the farm" demo/showcase.json --assemble
 expect_refusal 1 "--tiles splits a still" --tiles 4 demo/showcase.json
 expect_refusal 1 "--tasks splits an animation" --tasks 4 demo/demo.json
-expect_refusal 1 "tiles are joined as PNG" demo/demo.json -o still.exr
 expect_refusal 1 "the image has only 10 rows" --tiles 11 demo/demo.json --size 20x10
+# What clrender refuses, the farm refuses before queueing, with clrender's message and exit
+# code: the script takes the frames and names from `clrender --plan`, never from its own
+# reading of the options.
 expect_refusal 1 "give a frame pattern" demo/showcase.json -o one.png
-expect_refusal 1 "is not within the animation's frames 0-95" demo/showcase.json --frames 90-99
-expect_refusal 1 "is not within the animation's frames 0-0" demo/demo.json --frames 3
-expect_refusal 1 "clrender writes .png, .ppm or .exr images" demo/demo.json -o still.bmp
-expect_refusal 1 "clrender writes .mp4 or .gif videos" demo/showcase.json --video flight.avi
+expect_refusal 1 "frame 99 is out of range: the animation has 96 frames" demo/showcase.json --frames 90-99
+expect_refusal 1 "frame 3 is out of range: the animation has 1 frame" demo/demo.json --frames 3
+expect_refusal 1 "still.bmp" demo/demo.json -o still.bmp
+expect_refusal 1 "flight.avi" demo/showcase.json --video flight.avi
+# A still with --video: clrender refuses it, so the farm queues nothing and replaces nothing.
+run_farm_keeping_image() {
+    export FAKE_SLURM="$work/slurm"
+    rm -rf "$FAKE_SLURM" "$work/run"; mkdir -p "$FAKE_SLURM" "$work/run"
+    cp -r "$source_dir/scenes/demo" "$work/run/demo"
+    echo "the user's image" >"$work/run/mine.png"
+    (cd "$work/run" && bash "$source_dir/scripts/slurm-render.sh" "$@") >"$work/out.txt" 2>"$work/err.txt"
+}
+run_farm_keeping_image demo/demo.json -o mine.png --video v.mp4
+[ $? -eq 1 ] && grep -q "is a still (one camera key)" "$work/err.txt" && [ "$(submitted)" -eq 0 ] ||
+    fail "a still with --video is refused before queueing: $(cat "$work/err.txt")"
+[ "$(cat "$work/run/mine.png")" = "the user's image" ] || fail "a refused still with --video changed the image"
+[ ! -e "$work/run/mine.farm" ] || fail "a refused run made its farm folder"
+# Names that a regular expression takes for frame patterns and clrender does not: a '#' in a
+# folder, a three-digit width. Several frames into one name are refused, as clrender does.
+expect_refusal 1 "the animation has 4 frames to write; give a frame pattern" demo/showcase.json --frames 0-3 -o 'a#b/f.png'
+expect_refusal 1 "the animation has 4 frames to write; give a frame pattern" demo/showcase.json --frames 0-3 -o 'f_%100d.png'
+# One frame into such a name is one task writing that one file.
+run_farm --tasks 4 demo/showcase.json --frames 3 --size 32x18 -o 'a#b/f.png' || fail "one frame to a plain name: $(cat "$work/err.txt")"
+[ "$(grep -c -- "-o 'a#b/f.png'" "$FAKE_SLURM/job_101.sh")" -eq 1 ] && grep -q -- '--array=0-0' "$FAKE_SLURM/job_101.options" ||
+    fail "one frame to a plain name is one task writing it: $(cat "$FAKE_SLURM/job_101.sh")"
+# Refused only by the final job in the past: --alpha with a video, EXR frames read back into a
+# video (--assemble), an -o pattern that tiles cannot be joined into.
+expect_refusal 1 "--alpha: the video v.mp4 would have no alpha channel" demo/showcase.json --alpha --video v.mp4
+expect_refusal 1 "EXR frames cannot be read back into a video" demo/showcase.json -o 'f_%04d.exr' --video v.mp4
+expect_refusal 1 "the farm's final job (clrender --assemble" demo/showcase.json -o 'f_%04d.exr' --video v.mp4
+[ ! -e "$work/run/v.farm" ] || fail "a run that the final job would refuse made its farm folder"
+expect_refusal 1 "is an EXR" demo/demo.json -o still.exr
+# A device that no device here matches: clrender's message and exit code, unless the nodes are
+# said to have devices this node lacks.
+if "$clrender" --list-devices | grep -q '\[0\]'; then
+    expect_refusal 3 "unknown OpenCL device 'nosuchdevicexyz'" demo/demo.json -d nosuchdevicexyz
+    CLRENDER_DEVICE=nosuchdevicexyz expect_refusal 3 "unknown OpenCL device 'nosuchdevicexyz'" demo/demo.json
+    run_farm --no-device-check demo/demo.json -d nosuchdevicexyz && [ "$(submitted)" -eq 2 ] ||
+        fail "--no-device-check queues a device this node lacks: $(cat "$work/err.txt")"
+fi
+
+# ---- the farm folder: the only folder the farm writes its bookkeeping in --------------------
+# A folder of the user's files is refused, whether named or the default name.
+farm_dir_refused() {  # FOLDER_SETUP... -- farm arguments
+    local setup=()
+    while [ "$1" != -- ]; do setup+=("$1"); shift; done; shift
+    export FAKE_SLURM="$work/slurm"
+    rm -rf "$FAKE_SLURM" "$work/run"; mkdir -p "$FAKE_SLURM" "$work/run"
+    cp -r "$source_dir/scenes/demo" "$work/run/demo"
+    (cd "$work/run" && eval "${setup[*]}") || fail "setup ${setup[*]}"
+    (cd "$work/run" && bash "$source_dir/scripts/slurm-render.sh" "$@") >"$work/out.txt" 2>"$work/err.txt"
+}
+farm_dir_refused 'mkdir mine && echo precious >mine/jobs' -- --farm-dir mine demo/demo.json
+[ $? -eq 1 ] && grep -q "mine is a folder that the farm did not make" "$work/err.txt" && [ "$(submitted)" -eq 0 ] ||
+    fail "an ordinary folder as --farm-dir is refused: $(cat "$work/err.txt")"
+[ "$(cat "$work/run/mine/jobs")" = precious ] && [ "$(ls -A "$work/run/mine")" = jobs ] ||
+    fail "a refused --farm-dir was written in: $(ls -A "$work/run/mine")"
+farm_dir_refused 'mkdir demo.farm && echo precious >demo.farm/notes' -- demo/demo.json
+[ $? -eq 1 ] && grep -q "demo.farm is a folder that the farm did not make" "$work/err.txt" ||
+    fail "an ordinary folder under the default farm name is refused: $(cat "$work/err.txt")"
+# A link to a user's folder is refused as the folder is; a marker that is a link is no marker.
+farm_dir_refused 'mkdir mine && echo precious >mine/notes && ln -s mine link' -- --farm-dir link demo/demo.json
+[ $? -eq 1 ] && [ "$(ls -A "$work/run/mine")" = notes ] || fail "a link to an ordinary folder is refused: $(cat "$work/err.txt")"
+farm_dir_refused 'mkdir mine f && echo x >mine/notes && touch f/.clrender-farm && ln -s ../f/.clrender-farm mine/.clrender-farm' \
+    -- --farm-dir mine demo/demo.json
+[ $? -eq 1 ] && grep -q "is not a regular file" "$work/err.txt" || fail "a linked marker is refused: $(cat "$work/err.txt")"
+farm_dir_refused 'ln -s nowhere gone' -- --farm-dir gone demo/demo.json
+[ $? -eq 1 ] && grep -q "a symbolic link to nothing" "$work/err.txt" || fail "a dangling link is refused: $(cat "$work/err.txt")"
+farm_dir_refused 'echo x >plain' -- --farm-dir plain demo/demo.json
+[ $? -eq 1 ] && grep -q "not a folder" "$work/err.txt" || fail "a file as --farm-dir is refused: $(cat "$work/err.txt")"
+# A marked folder whose entries lead elsewhere is refused: the farm writes only inside it.
+farm_dir_refused 'mkdir -p f elsewhere && touch f/.clrender-farm && ln -s ../elsewhere f/logs' -- --farm-dir f demo/demo.json
+[ $? -eq 1 ] && grep -q "has a symbolic link logs" "$work/err.txt" && [ -z "$(ls -A "$work/run/elsewhere")" ] ||
+    fail "a farm folder with a linked entry is refused: $(cat "$work/err.txt")"
+# A new folder, an empty one, and a link to a marked one are the farm's: marked, used.
+farm_dir_refused 'true' -- --farm-dir new/f demo/demo.json --size 20x10
+[ $? -eq 0 ] && [ -f "$work/run/new/f/.clrender-farm" ] && [ -s "$work/run/new/f/jobs" ] ||
+    fail "a new farm folder is made and marked: $(cat "$work/err.txt")"
+farm_dir_refused 'mkdir empty' -- --farm-dir empty demo/demo.json --size 20x10
+[ $? -eq 0 ] && [ -f "$work/run/empty/.clrender-farm" ] || fail "an empty folder is marked and used: $(cat "$work/err.txt")"
+farm_dir_refused 'mkdir f && touch f/.clrender-farm f/jobs && ln -s f link' -- --farm-dir link demo/demo.json --size 20x10
+[ $? -eq 0 ] && [ -s "$work/run/f/jobs" ] && [ -L "$work/run/link" ] && grep -q -- "$work/run/f/tiles" "$FAKE_SLURM/job_101.sh" ||
+    fail "a link to a farm folder is followed to it: $(cat "$work/err.txt")"
 # clrender's own checks, with its exit codes: an option it does not know, a broken scene.
 expect_refusal 1 "--spp" demo/demo.json --spp 0
 expect_refusal 2 "missing.json" demo/missing.json
@@ -164,6 +247,29 @@ before=$(stat -c '%Y %i' "$work/run/out/v.farm/frames/"*.png | md5sum)
 run_tasks_here
 [ "$before" = "$(stat -c '%Y %i' "$work/run/out/v.farm/frames/"*.png | md5sum)" ] || fail "a task run twice rendered its frames again"
 cmp -s "$work/run/out/v.mp4" "$work/run/one.mp4" || fail "a task run twice changed the video"
+
+# A --frames selection without -o and --video: clrender's own default names, no final job.
+run_farm --tasks 2 demo/showcase.json --frames 4-7 --size 32x18 && run_tasks_here
+[ "$(submitted)" -eq 1 ] || fail "frames under the default names need no final job"
+(cd "$work/run" && ls showcase_*.png 2>/dev/null | tr '\n' ' ') | grep -qx "showcase_0004.png showcase_0005.png showcase_0006.png showcase_0007.png " ||
+    fail "the default frame names are clrender's: $(ls "$work/run")"
+
+# A scene whose name holds a placeholder: the farm's own frame and tile names hold none, so the
+# frames go where the final job reads them.
+run_farm_named() {
+    export FAKE_SLURM="$work/slurm"
+    rm -rf "$FAKE_SLURM" "$work/run"; mkdir -p "$FAKE_SLURM" "$work/run"
+    cp -r "$source_dir/scenes/demo" "$work/run/demo"
+    cp "$work/run/demo/showcase.json" "$work/run/demo/fly%d#.json"
+    cp "$work/run/demo/demo.json" "$work/run/demo/still%d#.json"
+    (cd "$work/run" && bash "$source_dir/scripts/slurm-render.sh" "$@") >"$work/out.txt" 2>"$work/err.txt"
+}
+run_farm_named --tasks 2 'demo/fly%d#.json' --frames 0-3 --size 48x27 --video v.mp4 && run_tasks_here
+(cd "$work/run" && "$clrender" 'demo/fly%d#.json' --frames 0-3 --size 48x27 --video one.mp4 -q)
+cmp -s "$work/run/v.mp4" "$work/run/one.mp4" || fail "a scene named with a placeholder: the video differs: $(cat "$work/err.txt")"
+run_farm_named --tiles 3 'demo/still%d#.json' --size 48x27 && run_tasks_here
+(cd "$work/run" && "$clrender" 'demo/still%d#.json' --size 48x27 -o one.png -q)
+cmp -s "$work/run/still%d#.png" "$work/run/one.png" || fail "a still named with a placeholder: the image differs: $(cat "$work/err.txt")"
 
 [ $failures -eq 0 ] || { echo "$failures check(s) failed" >&2; exit 1; }
 echo "passed"
