@@ -8,6 +8,7 @@
 #include "app/pixel_narrator.h"
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "reference/eye_relative.h"
 #include "reference/impostors.h"
 #include "reference/reference.h"
 #include "scene/camera_path.h"
@@ -78,18 +79,22 @@ void explain_pixel(const Options& options, const Scene& scene, const KernelRende
     const int frame = explained_frame(options, scene);
     const CameraKey key = camera_at_frame(scene, frame);
     const reference::CameraFrame camera = reference::camera_of(scene, key);
-    // The reference traces impostors as billboards placed for this camera, as render() does.
-    const Scene placed = reference::with_impostors_placed(scene, camera);
+    // The reference traces relative to the eye, with impostors placed as billboards for this
+    // camera, as render() does.
+    const reference::EyeRelative relative = reference::relative_to_eye(scene, camera);
+    const Scene placed = reference::with_impostors_placed(relative.scene, relative.camera);
 
     out << "Pixel X,Y = " << pixel.x << "," << pixel.y << " (column j = " << pixel.x << ", row i = " << pixel.y
         << " from the top) of frame " << frame << " of " << scene.path << ": " << scene.width << "x" << scene.height
         << ", " << scene.sampling.samples_per_pixel << " sample(s) per pixel, "
         << (scene.lit() ? "lit by the sun" : "unlit (ambient colours)") << ", MaxDepth " << scene.max_depth << "\n";
-    out << "Numbers from the double-precision reference (%.9g).\n";
+    out << "Numbers from the double-precision reference (%.9g). It computes positions relative to the eye,\n"
+           "as the kernels do; they are shown in scene coordinates (Eye + the relative position).\n";
     describe_camera(scene, key, camera, out);
 
-    PixelNarrator narrator(placed, static_cast<int>(scene.billboards.size()), camera, pixel.x, pixel.y, out);
-    const Color colour = reference::pixel_colour(placed, camera, frame, pixel.x, pixel.y, &narrator);
+    PixelNarrator narrator(placed, static_cast<int>(scene.billboards.size()), relative.camera, relative.eye, pixel.x,
+                           pixel.y, out);
+    const Color colour = reference::pixel_colour(placed, relative.camera, frame, pixel.x, pixel.y, &narrator);
     const std::uint8_t bytes[3] = {reference::to_byte(colour.x), reference::to_byte(colour.y),
                                    reference::to_byte(colour.z)};
 

@@ -31,10 +31,9 @@ void check_linear_outputs(const Options& options, const OutputPlan& plan) {
         throw UsageError("--alpha: " + plan.image_target + " is a PPM, which has no alpha channel; use .png or .exr");
 }
 
-void prepare_linear_frame(Image& image, const Options& options, const OutputPlan& plan, const Scene& scene) {
+void prepare_linear_frame(Image& image, const Options& options, const OutputPlan& /*plan*/, const Scene& scene) {
     if (!options.alpha) return;
-    apply_alpha_convention(image, image_format_for(plan.image_path(plan.frames.front())), scene.background,
-                           scene.sampling.samples_per_pixel);
+    apply_alpha_convention(image, scene.background, scene.sampling.samples_per_pixel);
 }
 
 }  // namespace clr

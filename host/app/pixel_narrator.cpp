@@ -57,9 +57,9 @@ void PixelNarrator::sample_started(int sample, int samples, double ox, double oy
          << ", y = 1 - 2(i + " << explain_number(oy) << ")/n_y = "
          << explain_number(1.0 - 2.0 * (row_ + oy) / camera_.height) << "\n";
     out_ << "witness point P(i, j) = Eye - D w + x hw u + y hh v (D = 1) = "
-         << explain_vector(ray.origin + witness_direction) << "\n";
+         << position(ray.origin + witness_direction) << "\n";
     out_ << "P(i, j) - Eye = " << explain_vector(witness_direction) << "\n";
-    out_ << "ray o + t d: o = Eye = " << explain_vector(ray.origin)
+    out_ << "ray o + t d: o = Eye = " << position(ray.origin)
          << ", d = unit(P(i, j) - Eye) = " << explain_vector(ray.direction) << "\n";
 }
 
@@ -74,7 +74,7 @@ void PixelNarrator::ray_cast(RayRole role, int depth, const reference::Ray& ray,
     out_ << "\n-- " << role_name(role);
     if (role == RayRole::Reflected)
         out_ << " " << depth << " of at most MaxDepth = " << scene_.max_depth << " (r = d - 2(d.n)n)";
-    out_ << ": o = " << explain_vector(ray.origin) << ", d = " << explain_vector(ray.direction);
+    out_ << ": o = " << position(ray.origin) << ", d = " << explain_vector(ray.direction);
     if (role == RayRole::Shadow) out_ << ", 0 < t < " << explain_number(t_max) << " (the sun's distance)";
     out_ << "\n";
 }
@@ -82,7 +82,7 @@ void PixelNarrator::ray_cast(RayRole role, int depth, const reference::Ray& ray,
 void PixelNarrator::sphere_tested(int index, const SphereRoots& roots, double t_max, double t) {
     const Sphere& sphere = scene_.spheres[index];
     // The reference computes B/2 and (B/2)^2 - AC; the lecture's B and B^2 - 4AC are 2x and 4x them.
-    out_ << surface_name(HitKind::Sphere, index) << " (c = " << explain_vector(sphere.center)
+    out_ << surface_name(HitKind::Sphere, index) << " (c = " << position(sphere.center)
          << ", R = " << explain_number(sphere.radius) << "): A = d.d = 1, B = 2 d.(o - c) = "
          << explain_number(2 * roots.half_b) << ", C = (o - c).(o - c) - R^2 = " << explain_number(roots.c)
          << ", discriminant B^2 - 4AC = " << explain_number(4 * roots.quarter_discriminant) << "\n    ";
@@ -107,14 +107,14 @@ void PixelNarrator::sphere_tested(int index, const SphereRoots& roots, double t_
 
 void PixelNarrator::describe_billboard_plane(const PlaneHit& plane) const {
     out_ << "t_hit = ((UL - o).n) / (d.n) = " << explain_number(plane.t)
-         << ", point o + t_hit d = " << explain_vector(reference::detail::point_at(ray_, plane.t))
+         << ", point o + t_hit d = " << position(reference::detail::point_at(ray_, plane.t))
          << ", (alpha, beta) = (" << explain_number(plane.a) << ", " << explain_number(plane.b) << ")";
 }
 
 void PixelNarrator::billboard_tested(int index, const PlaneHit& plane, double t_max, bool accepted) {
     const Billboard& billboard = scene_.billboards[index];
-    out_ << surface_name(HitKind::Billboard, index) << " (UL = " << explain_vector(billboard.upper_left)
-         << ", UR = " << explain_vector(billboard.upper_right) << ", LL = " << explain_vector(billboard.lower_left)
+    out_ << surface_name(HitKind::Billboard, index) << " (UL = " << position(billboard.upper_left)
+         << ", UR = " << position(billboard.upper_right) << ", LL = " << position(billboard.lower_left)
          << (billboard.is_mirror ? ", a mirror" : "") << ")\n    ";
     if (!plane.meets) {
         out_ << "miss: the ray is parallel to the billboard's plane (d.n = 0)\n";
@@ -169,14 +169,14 @@ void PixelNarrator::nearest_found(const reference::Hit& hit) {
 void PixelNarrator::surface_reached(const reference::Hit& hit, const reference::detail::SurfacePoint& surface) {
     surface_hit_ = hit;
     surface_ = surface;
-    out_ << "hit point o + t d = " << explain_vector(surface.point) << ", normal n = " << explain_vector(surface.normal)
+    out_ << "hit point o + t d = " << position(surface.point) << ", normal n = " << explain_vector(surface.normal)
          << (surface.is_mirror ? ", a mirror" : "") << "\n";
 }
 
 void PixelNarrator::sun_seen(const reference::detail::SunDirection& sun, double cosine) {
     cosine_ = cosine;
     shadowed_ = false;
-    out_ << "sun at " << explain_vector(scene_.sun_location) << ": l = unit(sun - point) = " << explain_vector(sun.l)
+    out_ << "sun at " << position(scene_.sun_location) << ": l = unit(sun - point) = " << explain_vector(sun.l)
          << ", distance " << explain_number(sun.distance) << ", n.l = " << explain_number(cosine)
          << (cosine <= 0 ? ": the point faces away from the sun, no shadow ray" : "") << "\n";
 }

@@ -18,12 +18,14 @@ std::string explain_vector(const Vec3& value);
 
 class PixelNarrator : public reference::TraceObserver {
 public:
-    // `placed` is the scene the reference traces (impostors placed as billboards);
-    // `own_billboards` is how many of its billboards are the scene's own, the rest being
-    // impostors. (col, row) is the pixel explained.
-    PixelNarrator(const Scene& placed, int own_billboards, const reference::CameraFrame& camera, int col, int row,
-                  std::ostream& out)
-        : scene_(placed), own_billboards_(own_billboards), camera_(camera), col_(col), row_(row), out_(out) {}
+    // `placed` is the scene the reference traces (relative to the eye, impostors placed as
+    // billboards); `own_billboards` is how many of its billboards are the scene's own, the rest
+    // being impostors. Positions are printed in scene coordinates: `eye` added back.
+    // (col, row) is the pixel explained.
+    PixelNarrator(const Scene& placed, int own_billboards, const reference::CameraFrame& camera, const Vec3& eye,
+                  int col, int row, std::ostream& out)
+        : scene_(placed), own_billboards_(own_billboards), camera_(camera), eye_(eye), col_(col), row_(row),
+          out_(out) {}
 
     void sample_started(int sample, int samples, double ox, double oy, const Vec3& witness_direction,
                         const reference::Ray& ray) override;
@@ -44,10 +46,13 @@ private:
     // before any blocker is found, else the nearest hit.
     std::string bound_name() const;
     void describe_billboard_plane(const reference::detail::PlaneHit& plane) const;
+    // A position the reference computed relative to the eye, in scene coordinates.
+    std::string position(const Vec3& relative) const { return explain_vector(eye_ + relative); }
 
     const Scene& scene_;
     int own_billboards_;
     const reference::CameraFrame& camera_;
+    Vec3 eye_;
     int col_, row_;
     std::ostream& out_;
 

@@ -14,9 +14,10 @@ struct Image {
     int height = 0;
     std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
     std::string path;                // where it was read from, for messages
-    // A rendered frame's linear colours, for EXR and --alpha outputs (docs/command-line.md,
-    // HDR and alpha outputs): 4 floats a pixel, the mean of its samples' colours, unclamped,
-    // and the fraction of them that hit an object. Empty unless the run asked for them.
+    // A rendered frame's float colours, for EXR and --alpha outputs (docs/command-line.md,
+    // HDR and alpha outputs): 4 floats a pixel, the mean of its samples' colours (display
+    // values, as the scene's colours are; the EXR writer turns them into linear light),
+    // unclamped, and the fraction of them that hit an object. Empty unless the run asked.
     std::vector<float> linear;
     // The outputs write rgba's alpha (and linear's fourth float) as transparency (--alpha);
     // otherwise they are opaque RGB.

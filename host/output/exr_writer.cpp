@@ -1,10 +1,13 @@
-// Float channels rather than half: the file then holds exactly the values the display bytes
-// are rounded from (half keeps 11 bits, and would move pixels near a rounding step to the
-// other byte), at twice half's size; ZIP compression keeps it lossless.
+// Float channels rather than half: half keeps 11 bits, and would move values near a rounding
+// step of the PNG's bytes to the other byte (exr_values.h keeps them a hundredth of a step
+// away, far less than half's resolution), at twice half's size; ZIP compression keeps it
+// lossless.
 #include "output/exr_writer.h"
 
 #include <Iex.h>
 #include <ImfChannelList.h>
+#include <ImfChromaticities.h>
+#include <ImfStandardAttributes.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
@@ -14,6 +17,7 @@
 #include <cstdint>
 
 #include "core/errors.h"
+#include "output/exr_values.h"
 
 namespace clr {
 namespace {
@@ -42,10 +46,14 @@ void write_channels(Imf::OStream& stream, const Image& image) {
     const int channels = alpha ? 4 : 3;
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
+    // sRGB's primaries and white point (Rec. 709's, OpenEXR's default), said explicitly so that
+    // a viewer need not assume them: the values are linear light in the PNG's colour space.
+    Imf::addChromaticities(header, Imf::Chromaticities());
+    std::vector<float> values = exr_values(image);
     Imf::FrameBuffer frame;
     const std::size_t pixel_stride = 4 * sizeof(float);
     const std::size_t row_stride = pixel_stride * static_cast<std::size_t>(image.width);
-    char* base = reinterpret_cast<char*>(const_cast<float*>(image.linear.data()));
+    char* base = reinterpret_cast<char*>(values.data());
     for (int c = 0; c < channels; ++c) {
         header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
         frame.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), pixel_stride, row_stride));
@@ -58,7 +66,8 @@ void write_channels(Imf::OStream& stream, const Image& image) {
 }  // namespace
 
 std::vector<char> encode_exr(const std::string& path, const Image& image) {
-    if (image.linear.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+    const std::size_t values = static_cast<std::size_t>(image.width) * image.height * 4;
+    if (image.linear.size() != values || image.rgba.size() != values)
         throw OutputError(path + ": the frame has no linear colours to write as EXR");
     MemoryStream stream;
     try {

@@ -1,5 +1,6 @@
-// OpenEXR output (docs/command-line.md, HDR and alpha outputs): a frame's linear, unclamped
-// colours (Image::linear) as 32-bit float channels R, G, B, and A with --alpha.
+// OpenEXR output (docs/command-line.md, HDR and alpha outputs): a frame's colours in linear
+// light, unclamped (output/exr_values.h), as 32-bit float channels R, G, B, and A with --alpha,
+// with sRGB's chromaticities.
 #pragma once
 
 #include <string>
@@ -10,8 +11,8 @@
 namespace clr {
 
 // The whole EXR file in memory, so that it reaches the disk through AtomicFile like every
-// other output. Throws OutputError naming `path` when the image has no linear colours or the
-// encoder fails.
+// other output. Throws OutputError naming `path` when the image has no float colours (or no
+// display bytes to keep to) or the encoder fails.
 std::vector<char> encode_exr(const std::string& path, const Image& image);
 
 }  // namespace clr

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "reference/eye_relative.h"
 #include "reference/impostors.h"
 #include "reference/trace_observer.h"
 #include "shared/clr_samples.h"
@@ -54,6 +55,12 @@ unsigned frame_seed_of(const Scene& scene, int frame) {
 
 Image render_frame(const Scene& scene, const CameraFrame& camera, int frame,
                    const std::function<void()>& between_rows, const std::optional<PixelRect>& crop, bool linear) {
+    // Relative to the eye, as the kernels trace (reference/eye_relative.h); the moved camera's
+    // eye is the origin, so this recurses once.
+    if (camera.eye != Vec3(0, 0, 0)) {
+        const EyeRelative relative = relative_to_eye(scene, camera);
+        return render_frame(relative.scene, relative.camera, frame, between_rows, crop, linear);
+    }
     // Impostors face this frame's eye; once placed they are billboards like any other, which
     // is all trace() knows about. The placed scene has no impostors, so this recurses once.
     if (!scene.impostors.empty())

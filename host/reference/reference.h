@@ -93,13 +93,16 @@ std::uint8_t to_byte(double channel);
 
 // The unclamped colour of pixel (col, row) of frame `frame`: the mean of its samples, exactly
 // as render() computes it, telling `observer` (when not null) each step. Like trace(), it sees
-// spheres and billboards only: place impostors first.
+// spheres and billboards only: place impostors first; and it traces `scene` where it lies:
+// render() traces relative_to_eye()'s scene and camera (reference/eye_relative.h), so pass
+// those for render()'s numbers.
 Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int col, int row,
                    TraceObserver* observer = nullptr);
 
 // Renders one frame: RGBA bytes, alpha 255, rows from the top. Each pixel is the mean of
 // scene.sampling.samples_per_pixel samples placed as kernels/shared/clr_samples.h says for
-// this frame index (one sample: the pixel's centre). Impostors are placed for `camera` first.
+// this frame index (one sample: the pixel's centre). The scene is traced relative to the
+// camera's eye (reference/eye_relative.h), with impostors placed for `camera` first.
 // `between_rows` runs before each row; it throws to abandon the frame (a stop request).
 // With `crop`, only those pixels, into an image of the crop's size (docs/command-line.md, Crop).
 Image render(const Scene& scene, const CameraFrame& camera, int frame = 0,

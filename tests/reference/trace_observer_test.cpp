@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/eye_relative.h"
 #include "support/random_scene.h"
 #include "support/scene_builder.h"
 
@@ -124,7 +125,7 @@ TEST(TraceObserver, ShadowAndMirrorRaysAreAnnounced) {
 }
 
 // Watching changes nothing: the same colours, bit for bit, on random scenes and rays, and
-// pixel_colour() gives render()'s bytes.
+// pixel_colour() of the eye-relative scene gives render()'s bytes.
 TEST(TraceObserver, WatchingChangesNoResult) {
     for (std::uint32_t seed = 1; seed <= 5; ++seed) {
         Scene scene = testing::make_random_scene(seed, 6, 6);
@@ -147,10 +148,11 @@ TEST(TraceObserver, WatchingChangesNoResult) {
     scene.up = {0, 1, 0};
     const CameraFrame camera = camera_of(scene, scene.camera_path[0]);
     const Image image = render(scene, camera, 4);
+    const EyeRelative relative = relative_to_eye(scene, camera);  // what render() traces
     for (int row = 0; row < scene.height; ++row)
         for (int col = 0; col < scene.width; ++col) {
             Recorder recorder;
-            const Color colour = pixel_colour(scene, camera, 4, col, row, &recorder);
+            const Color colour = pixel_colour(relative.scene, relative.camera, 4, col, row, &recorder);
             EXPECT_EQ(recorder.samples, 3);
             EXPECT_EQ(to_byte(colour.x), image.at(col, row, 0)) << col << "," << row;
             EXPECT_EQ(to_byte(colour.y), image.at(col, row, 1)) << col << "," << row;

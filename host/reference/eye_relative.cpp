@@ -1,0 +1,25 @@
+#include "reference/eye_relative.h"
+
+namespace clr::reference {
+
+EyeRelative relative_to_eye(const Scene& scene, const CameraFrame& camera) {
+    const Vec3 eye = camera.eye;
+    EyeRelative relative{scene, camera, eye};
+    Scene& moved = relative.scene;
+    for (Sphere& sphere : moved.spheres) sphere.center = sphere.center - eye;
+    for (Billboard& billboard : moved.billboards) {
+        billboard.upper_left = billboard.upper_left - eye;
+        billboard.lower_left = billboard.lower_left - eye;
+        billboard.upper_right = billboard.upper_right - eye;
+    }
+    for (Impostor& impostor : moved.impostors) impostor.center = impostor.center - eye;
+    moved.sun_location = moved.sun_location - eye;
+    for (CameraKey& key : moved.camera_path) {
+        key.eye = key.eye - eye;
+        key.lookat = key.lookat - eye;
+    }
+    relative.camera.eye = {0, 0, 0};
+    return relative;
+}
+
+}  // namespace clr::reference
