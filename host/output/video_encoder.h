@@ -1,6 +1,6 @@
 // Writes an animation as a video (MP4 with H.264 in yuv420p, or an animated GIF) by running
-// the ffmpeg program and piping it the raw RGBA frames (docs/command-line.md, Outputs). The video
-// appears under its final name complete or not at all, as every output does
+// the ffmpeg program and piping it the raw RGBA frames (docs/command-line.md, Outputs). The
+// video appears under its final name complete or not at all, as every output does
 // (docs/command-line.md, Failures).
 #pragma once
 
