@@ -2,11 +2,14 @@
 # Installs what clrender needs to build, render and test, from Debian's archive only.
 # Safe to run again: packages already present are skipped, and apt is only asked when
 # something is missing.
+#   install-deps.sh        everything below: what every script and test needs
+#   install-deps.sh demo   only what building clrender and running scripts/demo.sh needs
 set -euo pipefail
 
-packages=(
+# Building clrender and clrender_make_forest, and rendering the demo (scripts/demo.sh).
+demo_packages=(
   build-essential cmake pkg-config
-  ocl-icd-opencl-dev opencl-clhpp-headers pocl-opencl-icd clinfo
+  ocl-icd-opencl-dev opencl-clhpp-headers pocl-opencl-icd
   nlohmann-json3-dev libstb-dev libcli11-dev libpng-dev zlib1g-dev
   # ISA-L's igzip: the PNG outputs' fast deflate
   libisal-dev
@@ -16,10 +19,17 @@ packages=(
   libxxhash-dev
   # EXR output (-o frame.exr): OpenEXR 3 and its CMake config
   libopenexr-dev
+  # --video (the demo's showcase.mp4)
+  ffmpeg
+)
+
+# The tests, the benchmarks and the other scripts, besides.
+packages=(
+  "${demo_packages[@]}"
+  clinfo
   googletest libgtest-dev
   # the man page, made from --help at build time (cmake/write_man_page.cmake)
   help2man
-  ffmpeg
   parallel
   # clrender_bench's Embree peer (scripts/bench.sh, docs/benchmarks.md)
   libembree-dev
@@ -37,6 +47,12 @@ packages=(
   # PyPI, the one thing Debian does not package) for scripts/second-opencl.sh
   python3 python3-pip
 )
+
+case "${1:-all}" in
+  all) ;;
+  demo) packages=("${demo_packages[@]}") ;;
+  *) echo "usage: install-deps.sh [all|demo]" >&2; exit 1 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

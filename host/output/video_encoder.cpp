@@ -1,6 +1,7 @@
 // ffmpeg runs as a child process (output/child_process.h: never through a shell, in its own
-// process group). Its stdin is a non-blocking pipe carrying raw rgb24 frames, its stdout goes
-// to /dev/null and its stderr to a log file whose last lines explain a failure. It writes into
+// process group). Its stdin is a non-blocking pipe carrying raw RGBA frames (read as rgb0),
+// its stdout goes to /dev/null and its stderr to a log file whose last lines explain a
+// failure. It writes into
 // a temporary file beside the final one; after ffmpeg has exited successfully, ffprobe must
 // read back exactly the frames sent (output/video_probe.h) before the file is renamed into
 // place (rename is atomic within one file system). Until then an earlier video under the
@@ -58,13 +59,27 @@ std::string decimal(double value) {
 
 // x264's preset and threads (docs/animation.md, MP4 encoding). Preset veryfast took a third of
 // preset medium's CPU time for the forest flight, where medium's had exceeded the renderer's
-// own, for a file as large and a little lower quality at the same CRF. x264 gets half of the
-// CPUs clrender may use, at least one, instead of its automatic 1.5 threads a CPU of the whole
-// machine: the renderer keeps the others. (x264's output depends on its thread count: a video
-// is the same bytes run to run on one machine, and on machines with as many usable CPUs.)
+// own, for a file as large and a little lower quality at the same CRF. x264 gets as many
+// threads as clrender may use CPUs: whenever the renderer waits for the encoder (x264 is the
+// slower of the two on most scenes) every CPU is idle but x264's, and the renderer's kernel
+// shares the CPUs with it while it runs. Half the CPUs left the other half idle in those waits;
+// x264's own choice, 1.5 threads for every CPU of the whole machine, oversubscribes a machine
+// shared by taskset or Slurm. (x264's output depends on its thread count: a video is the same
+// bytes run to run on one machine, and on machines with as many usable CPUs.)
 constexpr const char* kX264Preset = "veryfast";
 
-int x264_threads() { return std::max(1, usable_cpu_count() / 2); }
+int x264_threads() { return usable_cpu_count(); }
+
+// The frames go to ffmpeg as they are in memory, RGBA, read as "rgb0" (red, green, blue and a
+// byte ffmpeg ignores): no copy that drops alpha first. Its conversion to Y'CbCr (and a GIF's
+// palette) gives the same bytes as from rgb24 input, whatever the alpha bytes hold.
+constexpr const char* kFramePixelFormat = "rgb0";
+constexpr std::size_t kBytesPerPixel = 4;
+
+// The pipe to ffmpeg holds up to one frame (at most 1 MiB, Linux's default limit for an
+// unprivileged process) instead of the default 64 KiB: fewer wake-ups of clrender and ffmpeg
+// per frame. Small frames keep the default size.
+constexpr int kLargestPipeBytes = 1 << 20;
 
 std::vector<std::string> mp4_arguments(const VideoSettings& settings) {
     return {
@@ -96,7 +111,7 @@ std::vector<std::string> encoder_arguments(const std::string& program, const Vid
                                            const std::string& output_path) {
     std::vector<std::string> arguments = {
         program, "-hide_banner", "-nostats", "-loglevel", "error",
-        "-f", "rawvideo", "-pix_fmt", "rgb24",
+        "-f", "rawvideo", "-pix_fmt", kFramePixelFormat,
         "-s", std::to_string(settings.width) + "x" + std::to_string(settings.height),
         "-r", decimal(settings.fps), "-i", "-"};
     const std::vector<std::string> output =
@@ -181,6 +196,19 @@ Seconds probe_limit(const VideoSettings& settings, long frames, Seconds stall_ti
     return stall_timeout + Seconds(pixels / 1e7);
 }
 
+// The bytes of one frame as sent to ffmpeg.
+std::size_t frame_bytes(const VideoSettings& settings) {
+    return static_cast<std::size_t>(settings.width) * static_cast<std::size_t>(settings.height) * kBytesPerPixel;
+}
+
+// Grows the pipe behind `fd` towards one frame (kLargestPipeBytes at most). Only an
+// optimisation: where the system refuses, the pipe keeps its size.
+void widen_pipe(int fd, std::size_t frame_size) {
+    const int wanted = static_cast<int>(std::min<std::size_t>(frame_size, kLargestPipeBytes));
+    const int current = ::fcntl(fd, F_GETPIPE_SZ);
+    if (current >= 0 && current < wanted) ::fcntl(fd, F_SETPIPE_SZ, wanted);
+}
+
 }  // namespace
 
 VideoFormat video_format_for(const std::string& path) {
@@ -209,7 +237,6 @@ VideoEncoder::VideoEncoder(const VideoSettings& settings, const std::string& enc
     stall_timeout_ = encoder_stall_timeout();
     prober_ = find_video_prober(program_);  // before the first frame: a missing checker must not waste a render
     ignore_sigpipe();
-    rgb_.resize(static_cast<std::size_t>(settings_.width) * settings_.height * 3);
     try {
         start();
     } catch (...) {
@@ -240,6 +267,7 @@ void VideoEncoder::start() {
     // that would block returns at once, and the wait happens in poll(), where interruption
     // and the stall timeout are checked.
     ::fcntl(stdin_fd_, F_SETFL, O_NONBLOCK);
+    widen_pipe(stdin_fd_, frame_bytes(settings_));
     try {
         encoder_ = std::make_unique<ChildProcess>(encoder_arguments(program_, settings_, format_, temp_path_),
                                                   pipe_fds[0], -1, log_fd);
@@ -254,15 +282,13 @@ void VideoEncoder::start() {
 
 void VideoEncoder::add_frame(const Image& rgba) {
     if (done_) throw std::logic_error("VideoEncoder::add_frame after finish() or a failure");
-    const std::size_t pixels = static_cast<std::size_t>(settings_.width) * settings_.height;
-    if (rgba.width != settings_.width || rgba.height != settings_.height || rgba.rgba.size() != pixels * 4) {
+    if (rgba.width != settings_.width || rgba.height != settings_.height || rgba.rgba.size() != frame_bytes(settings_)) {
         throw std::invalid_argument("VideoEncoder::add_frame: a " + std::to_string(rgba.width) + "x" +
                                     std::to_string(rgba.height) + " frame for a " + std::to_string(settings_.width) +
                                     "x" + std::to_string(settings_.height) + " video");
     }
-    for (std::size_t i = 0; i < pixels; ++i) std::memcpy(&rgb_[i * 3], &rgba.rgba[i * 4], 3);
     check_stop();  // also when the encoder reads every frame at once and never makes send() wait
-    send(rgb_.data(), rgb_.size());
+    send(rgba.rgba.data(), rgba.rgba.size());
     ++frames_added_;
 }
 

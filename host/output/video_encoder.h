@@ -1,6 +1,6 @@
 // Writes an animation as a video (MP4 with H.264 in yuv420p, or an animated GIF) by running
-// the ffmpeg program and piping it raw RGB frames (docs/command-line.md, Outputs). The video
-// appears under its final name complete or not at all, as every output does
+// the ffmpeg program and piping it the raw RGBA frames (docs/command-line.md, Outputs). The
+// video appears under its final name complete or not at all, as every output does
 // (docs/command-line.md, Failures).
 #pragma once
 
@@ -58,7 +58,8 @@ public:
     VideoEncoder(const VideoEncoder&) = delete;
     VideoEncoder& operator=(const VideoEncoder&) = delete;
 
-    // Sends one frame (alpha is dropped). Throws std::invalid_argument unless it is exactly
+    // Sends one frame as it is (ffmpeg ignores the alpha bytes); `rgba` can be reused once
+    // this returns. Throws std::invalid_argument unless it is exactly
     // width x height, and OutputError if the encoder has stopped reading (it is then stopped
     // and its files removed; the encoder can take no more frames).
     void add_frame(const Image& rgba);
@@ -100,7 +101,6 @@ private:
     int frames_added_ = 0;
     bool done_ = false;      // finished, or failed and cleaned up
     std::atomic<bool> cancelled_{false};
-    std::vector<std::uint8_t> rgb_;  // one frame, reused
 };
 
 }  // namespace clr

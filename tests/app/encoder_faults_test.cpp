@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 using testing::read_bytes;
 using testing::TempFolder;
 
-// 11 frames of 64x48 (9 KiB each as raw RGB): together more than a pipe's 64 KiB buffer, so an
+// 11 frames of 64x48 (12 KiB each as raw RGBA): together more than a pipe's 64 KiB buffer, so an
 // encoder that reads nothing blocks clrender's writes.
 const char* kAnimation = R"({
   "eyeLocations": [[-3, 1, 8], [3, 2, 7]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 55,
@@ -303,6 +303,25 @@ TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
             << pages << " pages: the earlier video was replaced by " << run.video.size() << " bytes";
         EXPECT_EQ(run.listing, "anim.json\nanim.mp4\n") << pages << " pages: files left behind";
     }
+}
+
+// The render loop does not wait on the encoder: an encoder that reads nothing until clrender
+// reports three frames rendered (--progress json) sees them reported, and the video then comes
+// out whole. 640x480 frames (1.2 MB as RGBA) are more than the pipe to the encoder holds, so a
+// render loop that handed each frame to the encoder itself would still be sending frame 0.
+TEST_F(EncoderFaults, RenderLoopRunsAheadOfAnEncoderThatReadsNothing) {
+    if (!testing::have_program("ffmpeg") || !testing::have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+    const std::string seen = scripts.file("seen");
+    const std::string fake = fake_encoder(
+        "i=0\n"
+        "while ! grep -q '\"frames_done\":3' '" + work.file("stderr.txt") + "' && [ $i -lt 2000 ]; do sleep 0.01; i=$((i+1)); done\n"
+        "grep -o '\"frames_done\":[0-9]*' '" + work.file("stderr.txt") + "' | tail -1 > '" + seen + "'\n"
+        "exec ffmpeg \"$@\"");
+    const Outcome outcome = run(encoder_env(fake), "anim.json --progress json --size 640x480 --video anim.mp4");
+    EXPECT_EQ(read_bytes(seen), "\"frames_done\":3\n")
+        << "frames rendered before the encoder read its first byte: " << read_bytes(seen);
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.errors;
+    EXPECT_NE(read_bytes(folder.file("anim.mp4")), kEarlierVideo);
 }
 
 }  // namespace

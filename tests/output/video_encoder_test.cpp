@@ -228,8 +228,8 @@ TEST(VideoEncoder, FailingEncoderReportsItsLogAndLeavesNothing) {
 }
 
 // The encoder exits before reading anything: writing to its stdin would raise SIGPIPE and
-// kill the test binary if clrender did not ignore it. 256x256 frames (192 KiB) overflow the
-// pipe's buffer, so the failure shows up in add_frame itself.
+// kill the test binary if clrender did not ignore it. 256x256 frames (256 KiB as RGBA, as much
+// as the pipe's buffer then holds) overflow it, so the failure shows up in add_frame itself.
 TEST(VideoEncoder, EncoderDyingAtOnceIsAnErrorNotACrash) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "exit 3");
@@ -261,10 +261,11 @@ TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
 }
 
 // A fake encoder that copies its input to the output file (its last argument) receives every
-// byte of every frame, RGB without alpha, in order.
-TEST(VideoEncoder, SendsRawRgbFrames) {
+// byte of every frame, in order, as the frames hold them (RGBA, told so by "-pix_fmt rgb0").
+TEST(VideoEncoder, SendsTheFramesAsTheyAreInMemory) {
     TempFolder scripts, folder;
-    const std::string fake = write_script(scripts, "fake-ffmpeg", "for last; do :; done; cat >\"$last\"");
+    const std::string fake = write_script(scripts, "fake-ffmpeg",
+                                          "echo \"$*\" > \"$0.args\"; for last; do :; done; cat >\"$last\"");
     const std::string prober = write_script(scripts, "fake-ffprobe", "echo 2");  // raw bytes are no video
     ScopedEnv checker("CLRENDER_FFPROBE", prober.c_str());
     const std::string video = folder.file("raw.mp4");
@@ -272,9 +273,43 @@ TEST(VideoEncoder, SendsRawRgbFrames) {
     std::string expected;
     for (int index = 0; index < 2; ++index) {
         const Image frame = test_frame(5, 3, index);
-        for (std::size_t i = 0; i < frame.rgba.size(); i += 4) expected.append(reinterpret_cast<const char*>(&frame.rgba[i]), 3);
+        expected.append(reinterpret_cast<const char*>(frame.rgba.data()), frame.rgba.size());
     }
     EXPECT_EQ(read_bytes(video), expected);
+    EXPECT_NE(read_bytes(fake + ".args").find("-f rawvideo -pix_fmt rgb0 -s 5x3 "), std::string::npos)
+        << read_bytes(fake + ".args");
+}
+
+// ffmpeg reads the frames' fourth byte as padding: frames that differ only in their alpha
+// bytes give the same video, byte for byte, as opaque ones (a GIF would gain transparent
+// pixels if ffmpeg read them as alpha), at an odd size too (the MP4's padded column and row).
+TEST(VideoEncoder, AlphaBytesDoNotChangeTheVideo) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    for (const char* extension : {".mp4", ".gif"}) {
+        const std::string opaque = folder.file(std::string("opaque") + extension);
+        const std::string translucent = folder.file(std::string("translucent") + extension);
+        const VideoSettings size{"", 33, 17};
+        {
+            VideoEncoder video({opaque, size.width, size.height}, *encoder);
+            for (int i = 0; i < 3; ++i) video.add_frame(test_frame(size.width, size.height, i));
+            video.finish();
+        }
+        {
+            VideoEncoder video({translucent, size.width, size.height}, *encoder);
+            for (int i = 0; i < 3; ++i) {
+                Image frame = test_frame(size.width, size.height, i);
+                for (std::size_t texel = 0; texel < frame.rgba.size(); texel += 4)
+                    frame.rgba[texel + 3] = static_cast<std::uint8_t>((texel * 37 + i * 101) % 256);
+                video.add_frame(frame);
+            }
+            video.finish();
+        }
+        EXPECT_FALSE(read_bytes(opaque).empty()) << extension;
+        EXPECT_TRUE(read_bytes(opaque) == read_bytes(translucent))  // no EXPECT_EQ: it would print the videos
+            << extension << ": the alpha bytes changed the video";
+    }
 }
 
 TEST(VideoEncoder, DestructorStopsAStuckEncoder) {
@@ -309,9 +344,9 @@ TEST(VideoEncoder, VideoWithMissingFramesOrGarbageIsRejected) {
     const std::optional<std::string> encoder = real_encoder();
     if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
     TempFolder scripts, folder;
-    // Encodes only the first 2 frames it is given (2 x 16 x 16 x 3 bytes), then reads the rest.
+    // Encodes only the first 2 frames it is given (2 x 16 x 16 x 4 bytes), then reads the rest.
     const std::string short_video =
-        write_script(scripts, "two-frames", "head -c 1536 | '" + *encoder + "' \"$@\" && cat > /dev/null");
+        write_script(scripts, "two-frames", "head -c 2048 | '" + *encoder + "' \"$@\" && cat > /dev/null");
     const std::string video = folder.file("out.mp4");
     folder.write("out.mp4", "earlier");
     std::string message = output_error_of([&] { encode({video, 16, 16}, short_video, 5); });
@@ -372,7 +407,7 @@ TEST(VideoEncoder, StallTimeoutComesFromTheEnvironment) {
     }
 }
 
-// 64x64 frames (12 KiB): six fill a pipe's 64 KiB, so the seventh waits on the encoder.
+// 64x64 frames (16 KiB as RGBA): four fill a pipe's 64 KiB, so the fifth waits on the encoder.
 TEST(VideoEncoder, EncoderThatStopsReadingTimesOut) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "exec sleep 1000");
