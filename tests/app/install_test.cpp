@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "device/device_selection.h"
 #include "device/opencl.h"
 #include "scene/image_loader.h"
 #include "support/shell.h"
@@ -279,6 +280,30 @@ TEST_F(Install, CompletionIsValidBashAndCompletesOptionsValuesAndScenes) {
     fs::create_directory(work_.file("sub"));
     EXPECT_EQ(complete(prefix, work_.path(), {"clrender", ""}), "a.json\nb.js\nsub\n");
     EXPECT_EQ(complete(prefix, work_.path(), {"clrender", "a.json", "-o", "n"}), "notes.txt\n");
+}
+
+// -d completes what it takes: the kinds, and each device's index and platform:device as the
+// program lists them.
+TEST_F(Install, CompletionOffersDeviceSelectorsAfterDashD) {
+    const std::string prefix = prefix_.path();
+    const std::string all = "\n" + complete(prefix, work_.path(), {"clrender", "-d", ""});
+    EXPECT_NE(all.find("\ncpu\n"), std::string::npos) << all;
+    EXPECT_NE(all.find("\ngpu\n"), std::string::npos) << all;
+    const std::vector<DeviceEntry> devices = list_devices();
+    ASSERT_FALSE(devices.empty()) << "the tests need a device (PoCL)";
+    for (const DeviceEntry& entry : devices) {
+        EXPECT_NE(all.find("\n" + std::to_string(entry.index) + "\n"), std::string::npos) << all;
+        EXPECT_NE(all.find("\n" + std::to_string(entry.platform_index) + ":" + std::to_string(entry.device_index) + "\n"),
+                  std::string::npos)
+            << all;
+    }
+    EXPECT_EQ(complete(prefix, work_.path(), {"clrender", "--device", "cp"}), "cpu\n");
+    EXPECT_EQ(complete(prefix, work_.path(), {"clrender", "--device", "=", "0:"}), "0:0\n");
+    // A device's name completes too, quoted for the shell.
+    const std::string& name = devices.front().device_name;
+    const std::string named = complete(prefix, work_.path(), {"clrender", "-d", name.substr(0, 3)});
+    const auto quoted = run_shell("bash -c " + shell_quoted("printf '%q' " + shell_quoted(name)));
+    EXPECT_NE(named.find(quoted.output + "\n"), std::string::npos) << named;
 }
 
 }  // namespace
