@@ -106,6 +106,7 @@ Scene load(const Options& options) {
     load_options.seed_override = options.seed;
     load_options.overrides = options.overrides;
     load_options.decode_images = !options.check;  // --check reads images' headers only
+    load_options.count_frames_only = options.print_frame_count;  // neither images nor size
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
