@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <array>
+#include <cmath>
 #include <chrono>
 #include <thread>
 #include <cstdio>
@@ -187,6 +188,55 @@ TEST(VideoEncoder, GifHasEveryFrame) {
     for (const char* line : {"codec_name=gif", "width=20", "height=12", "nb_read_frames=4"})
         EXPECT_NE(info.find(line), std::string::npos) << line << " not in:\n" << info;
     EXPECT_EQ(entries(folder.path()), std::vector<std::string>({"loop.gif"}));
+}
+
+// The GIF range is what a GIF holds: at the fastest and slowest rates taken, every frame's
+// delay in ffprobe is the rate's own (1/fps, in hundredths of a second); just outside them,
+// ffmpeg silently writes other delays, so they are refused.
+TEST(VideoEncoder, GifFrameRatesTakenAreTheOnesItsDelaysHold) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    const auto delays = [&](double fps) {
+        const std::string video = folder.file("rate.gif");
+        fs::remove(video);
+        VideoSettings settings{video, 8, 8};
+        settings.fps = fps;
+        VideoEncoder gif(settings, *encoder);
+        for (int i = 0; i < 6; ++i) gif.add_frame(test_frame(8, 8, i));
+        gif.finish();
+        return command_output("ffprobe -v error -show_entries packet=duration -of csv=p=0 '" + video + "' | sort -u");
+    };
+    EXPECT_EQ(delays(kMaxGifFps), "2\n");
+    EXPECT_EQ(delays(std::ceil(kMinGifFps * 1e6) / 1e6), "65535\n");
+    EXPECT_EQ(video_fps_problem(kMaxGifFps, VideoFormat::Gif), "");
+    // Just outside, the encoder would be asked for what it cannot hold: refused by name.
+    EXPECT_NE(video_fps_problem(60, VideoFormat::Gif).find("a GIF takes from 0.001526 to 50 frames per second"),
+              std::string::npos)
+        << video_fps_problem(60, VideoFormat::Gif);
+    EXPECT_NE(video_fps_problem(0.0015, VideoFormat::Gif), "");
+    EXPECT_THROW(VideoEncoder({folder.file("fast.gif"), 8, 8, 60}, *encoder), std::invalid_argument);
+}
+
+// At the slowest MP4 rate taken ffmpeg writes the video; at the rates refused it fails.
+TEST(VideoEncoder, Mp4FrameRatesTakenAreOnesFfmpegWrites) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    VideoSettings slow{folder.file("slow.mp4"), 16, 16};
+    slow.fps = kMinMp4Fps;
+    encode(slow, *encoder, 3);
+    EXPECT_NE(probe(slow.path).find("nb_read_frames=3"), std::string::npos) << probe(slow.path);
+    EXPECT_EQ(video_fps_problem(kMaxMp4Fps, VideoFormat::Mp4), "");
+    for (double refused : {1e-5, 1e-6}) {
+        EXPECT_NE(video_fps_problem(refused, VideoFormat::Mp4).find("an MP4 takes from 0.0001 to 1000 frames per second"),
+                  std::string::npos);
+        // What ffmpeg itself does with such a rate, through a raw pipe as clrender feeds it.
+        const std::string command = "head -c 2304 /dev/zero | '" + *encoder + "' -v error -f rawvideo -pix_fmt rgb24 -s 16x16 -r " +
+                                    std::to_string(refused) + " -i - -c:v libx264 -pix_fmt yuv420p -f mp4 -y '" +
+                                    folder.file("x.mp4") + "' >/dev/null 2>&1; echo $?";
+        EXPECT_NE(command_output(command), "0\n") << refused << " fps: ffmpeg wrote it, so it need not be refused";
+    }
 }
 
 // The same frames and options give the same bytes (docs/command-line.md, Reproducible output).
