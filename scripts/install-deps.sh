@@ -16,6 +16,8 @@ packages=(
   libxxhash-dev
   # EXR output (-o frame.exr): OpenEXR 3 and its CMake config
   libopenexr-dev
+  # JPEG input: libjpeg-turbo decodes billboard JPEGs (also the fuzz seed generator's writer)
+  libjpeg62-turbo-dev
   googletest libgtest-dev
   # the man page, made from --help at build time (cmake/write_man_page.cmake)
   help2man
@@ -25,12 +27,15 @@ packages=(
   libembree-dev
   # scripts/bench_povray.sh and its test: POV-Ray renders clrender's scenes for comparison
   povray
-  # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and the libraries its
-  # seed generator writes PNGs and JPEGs with. (gcc's ASan and UBSan runtimes, which
-  # scripts/sanitize.sh uses, come with build-essential.)
-  clang libclang-rt-14-dev libjpeg62-turbo-dev
+  # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes (its seed generator writes
+  # JPEGs with libjpeg, above). (gcc's ASan and UBSan runtimes, which scripts/sanitize.sh uses,
+  # come with build-essential.)
+  clang libclang-rt-14-dev
   # scripts/oclgrind.sh: the OpenCL simulator that checks every memory access of the kernels
   oclgrind
+  # tests/app/scene_schema_test.cpp: a real JSON Schema validator checks docs/scene.schema.json
+  # against the bad-scene catalogue, so that the schema and the scene loader cannot drift apart
+  python3-jsonschema
   # the render farm's tests (tests/farm/): a two-node Slurm cluster on this machine
   slurmctld slurmd slurm-client munge
   # scripts/install-intel-opencl.sh: pip downloads Intel's CPU OpenCL runtime (wheels from
