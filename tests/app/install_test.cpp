@@ -235,6 +235,24 @@ TEST_F(Install, ManPageRendersWithEveryOptionAndSection) {
     EXPECT_GE(entries, 15);
 }
 
+// The README's build commands name targets this build has, and one of them builds only the
+// program: a user who follows it gets build/clrender without the tests.
+TEST(ReadmeBuild, NamesTheProgramsTargetAndOnlyTargetsThatExist) {
+    const std::string readme = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "README.md");
+    EXPECT_NE(readme.find("cmake --build build -j2 --target clrender "), std::string::npos)
+        << "the README does not say how to build only the program";
+    const auto help = run_shell(shell_quoted(CLRENDER_CMAKE) + " --build " + shell_quoted(CLRENDER_BUILD_DIR) + " --target help");
+    ASSERT_EQ(help.exit_code, 0) << help.output;
+    const std::regex target(R"(--target ([A-Za-z0-9_]+))");
+    int named = 0;
+    for (auto match = std::sregex_iterator(readme.begin(), readme.end(), target); match != std::sregex_iterator(); ++match) {
+        ++named;
+        EXPECT_NE(help.output.find("... " + (*match)[1].str() + "\n"), std::string::npos)
+            << "README.md names target " << (*match)[1] << ", which the build does not have";
+    }
+    EXPECT_GE(named, 1);
+}
+
 // Runs the installed completion in bash for the words of a command line (the last is the one
 // being completed) in the work folder; returns the candidates, one per line, sorted.
 std::string complete(const std::string& prefix, const std::string& folder, const std::vector<std::string>& words) {

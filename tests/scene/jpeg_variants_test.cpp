@@ -3,12 +3,14 @@
 // the limit say so, instead of stb's "unknown image type" (scene/jpeg_checks.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <jpeglib.h>
+#include <stb_image.h>
 
 #include "scene/image_loader.h"
 #include "support/png_header.h"
@@ -30,8 +32,9 @@ std::string refusal(const std::string& path) {
 }
 
 // A 16 x 16 JPEG written by libjpeg with `components` components of colour space `space`,
-// Huffman- or arithmetic-coded.
-void write_jpeg(const std::string& path, int components, J_COLOR_SPACE space, bool arithmetic) {
+// Huffman- or arithmetic-coded; `size` x `size` with `chroma_halved` 4:2:0 (else 4:4:4).
+void write_jpeg(const std::string& path, int components, J_COLOR_SPACE space, bool arithmetic, int size = 16,
+                bool chroma_halved = true) {
     FILE* file = std::fopen(path.c_str(), "wb");
     ASSERT_NE(file, nullptr);
     jpeg_compress_struct cinfo{};
@@ -39,16 +42,20 @@ void write_jpeg(const std::string& path, int components, J_COLOR_SPACE space, bo
     cinfo.err = jpeg_std_error(&errors);
     jpeg_create_compress(&cinfo);
     jpeg_stdio_dest(&cinfo, file);
-    cinfo.image_width = 16;
-    cinfo.image_height = 16;
+    cinfo.image_width = size;
+    cinfo.image_height = size;
     cinfo.input_components = components;
     cinfo.in_color_space = space;
     jpeg_set_defaults(&cinfo);
     cinfo.arith_code = arithmetic ? TRUE : FALSE;
+    if (!chroma_halved)
+        for (int c = 0; c < cinfo.num_components; ++c) cinfo.comp_info[c].h_samp_factor = cinfo.comp_info[c].v_samp_factor = 1;
     jpeg_start_compress(&cinfo, TRUE);
-    std::vector<JSAMPLE> row(16 * components);
-    for (int x = 0; x < 16 * components; ++x) row[x] = static_cast<JSAMPLE>(x * 7);
+    std::vector<JSAMPLE> row(size * components);
     while (cinfo.next_scanline < cinfo.image_height) {
+        // Edges and gradients in every channel, so that chroma upsampling matters.
+        for (int x = 0; x < size * components; ++x)
+            row[x] = static_cast<JSAMPLE>((x * 7 + cinfo.next_scanline * 13) ^ (x * cinfo.next_scanline >> 3));
         JSAMPROW rows[] = {row.data()};
         jpeg_write_scanlines(&cinfo, rows, 1);
     }
@@ -65,6 +72,36 @@ TEST(JpegVariants, TheSameImageHuffmanCodedDecodesArithmeticCodedIsNamed) {
     EXPECT_EQ(refusal(folder.file("arithmetic.jpg")),
               "unsupported JPEG: arithmetic-coded JPEG (SOF9) is not supported; clrender reads Huffman-coded baseline "
               "and progressive JPEG (save the image as PNG, or as a baseline JPEG)");
+}
+
+// stb_image, clrender's JPEG decoder before libjpeg-turbo, as the independent reference: the
+// two IDCTs round differently, but with libjpeg's smooth chroma upsampling (as stb does) no
+// sample is more than a few steps off (docs/benchmarks.md, JPEG decoder). Without it, edges
+// in subsampled chroma are off by up to about a hundred.
+TEST(JpegVariants, PixelsStayWithinAFewStepsOfStb) {
+    TempFolder folder;
+    struct Variant {
+        const char* name;
+        int components;
+        J_COLOR_SPACE space;
+        bool chroma_halved;
+    };
+    for (const Variant& variant : {Variant{"420.jpg", 3, JCS_RGB, true}, Variant{"444.jpg", 3, JCS_RGB, false},
+                                   Variant{"grey.jpg", 1, JCS_GRAYSCALE, false}, Variant{"cmyk.jpg", 4, JCS_CMYK, false}}) {
+        const std::string path = folder.file(variant.name);
+        write_jpeg(path, variant.components, variant.space, false, 64, variant.chroma_halved);
+        const auto image = load_image(path);
+        int width = 0, height = 0, channels = 0;
+        unsigned char* reference = stbi_load(path.c_str(), &width, &height, &channels, 4);
+        ASSERT_NE(reference, nullptr) << variant.name;
+        ASSERT_EQ(image->width, width);
+        ASSERT_EQ(image->height, height);
+        int largest = 0;
+        for (std::size_t i = 0; i < image->rgba.size(); ++i)
+            largest = std::max(largest, std::abs(int(image->rgba[i]) - int(reference[i])));
+        stbi_image_free(reference);
+        EXPECT_LE(largest, 5) << variant.name;
+    }
 }
 
 TEST(JpegVariants, TwoComponentsAreNamed) {
