@@ -124,7 +124,7 @@ TEST(SceneOverrides, AnArrayOrObjectThatIsNotJsonIsRefusedNotTakenAsText) {
         parse_scene_override("eye=[0, 0");
         FAIL() << "taken";
     } catch (const UsageError& error) {
-        EXPECT_NE(std::string(error.what()).find("-D eye=[0, 0: /eye/2: the value is not valid JSON (column 9:"),
+        EXPECT_NE(std::string(error.what()).find("-D eye=[0, 0: /eye/2: the value is not valid JSON (column 6:"),
                   std::string::npos)
             << error.what();
     }
