@@ -113,7 +113,7 @@ TEST(SceneOverrides, ANumberTooLargeForADoubleIsOutOfRangeAtItsLocation) {
               std::string::npos);
     EXPECT_NE(message("clrender.spp=1e400").find("-D clrender.spp=1e400: /clrender/spp: column 1: number 1e400 is out of range"),
               std::string::npos);
-    EXPECT_NE(message("light={\"position\": [0, 2e308, 0]}").find("/light/position/1: column 17: number 2e308"),
+    EXPECT_NE(message("light={\"position\": [0, 2e308, 0]}").find("/light/position/1: column 18: number 2e308"),
               std::string::npos);
     // The largest double is a number.
     EXPECT_EQ(parse_scene_override("x=1.7e308").value, 1.7e308);
