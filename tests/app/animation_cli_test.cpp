@@ -78,7 +78,7 @@ TEST_F(AnimationCli, AnFpsTheVideoFormatCannotHoldIsASceneErrorAtItsKey) {
         << gif.output;
     auto mp4 = run_clrender("anim.json -q --reference -D clrender.fps=0.000001", folder.path());
     EXPECT_EQ(mp4.exit_code, 2) << mp4.output;
-    EXPECT_NE(mp4.output.find("/clrender/fps: fps: --video anim.mp4: an MP4 takes from 0.0001 to 1000"), std::string::npos)
+    EXPECT_NE(mp4.output.find("/clrender/fps: fps: --video anim.mp4: an MP4 takes from 0.001 to 1000"), std::string::npos)
         << mp4.output;
     EXPECT_EQ(folder.entry_count(), 1) << "nothing written";
     // The same rate is fine for frames alone, and for the format that holds it.

@@ -10,6 +10,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -773,19 +774,33 @@ TEST(BadInput, CatalogueCoversAtLeast25Cases) {
 const std::set<std::string> kBeyondTheSchema = {
     "BillboardCollinearCorners", "BillboardCoincidentCorners", "UpParallelToTheView", "EyeEqualsLookat",
     "EyeEqualsLookatOnAPath", "MismatchedEyeAndLookatLocations", "ResolutionOverThePixelLimit",
-    "DeepNestingInAValue",  // an array of 3 numbers: refused, but the validator recurses 100000 levels deep first
 };
 
-// The catalogue's scene files (bad.json, the file a scene case renders) that are JSON, by case.
-std::map<std::string, nlohmann::json> catalogue_scenes() {
-    std::map<std::string, nlohmann::json> scenes;
+// How deeply `text` nests arrays and objects (brackets in strings counted too: an upper bound).
+int nesting_depth(const std::string& text) {
+    int depth = 0, deepest = 0;
+    for (char c : text) {
+        if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
+        if (c == ']' || c == '}') --depth;
+    }
+    return deepest;
+}
+
+// The catalogue's scene files (bad.json, the file a scene case renders) that are JSON, by case,
+// as written (a repeated key included: the validator, like clrender, takes the last value).
+std::map<std::string, std::string> catalogue_scenes() {
+    std::map<std::string, std::string> scenes;
     for (const BadInput& input : catalogue()) {
         // Cases with files beside the scene are about those files (images), which no schema sees.
         if (input.exit_code != 2 || input.arguments != "bad.json" || input.files.size() != 1 || !input.folders.empty() ||
             input.prepare || !input.environment.empty())
             continue;
-        const nlohmann::json scene = nlohmann::json::parse(input.files.front().bytes, nullptr, false);
-        if (!scene.is_discarded()) scenes[input.name] = scene;
+        // The validator (Python) recurses once a level, as does writing the JSON out: the cases
+        // of 100000 nested arrays are the parser's, not the schema's.
+        const std::string& text = input.files.front().bytes;
+        if (nesting_depth(text) > 100) continue;
+        const nlohmann::json scene = nlohmann::json::parse(text, nullptr, false);
+        if (!scene.is_discarded()) scenes[input.name] = text;
     }
     return scenes;
 }
@@ -800,7 +815,7 @@ schema = json.loads(pathlib.Path(sys.argv[1]).read_text(encoding="utf-8"))
 Draft202012Validator.check_schema(schema)
 validator = Draft202012Validator(schema)
 for path in sorted(pathlib.Path(sys.argv[2]).glob("*.json")):
-    scene = json.loads(path.read_text(encoding="utf-8"))
+    scene = json.loads(path.read_text(encoding="utf-8-sig"))
     print(path.stem, "refused" if any(True for _ in validator.iter_errors(scene)) else "accepted")
 )";
     const auto result = testing::run_shell("/usr/bin/python3 -c " + testing::shell_quoted(script) + " " +
@@ -818,8 +833,8 @@ bool have_jsonschema() { return testing::run_shell("/usr/bin/python3 -c 'import 
 TEST(SceneSchema, RefusesEveryCatalogueSceneWhoseFaultASchemaCanExpress) {
     if (!have_jsonschema()) GTEST_SKIP() << "python3-jsonschema is not installed (scripts/install-deps.sh installs it)";
     TempFolder folder;
-    const std::map<std::string, nlohmann::json> scenes = catalogue_scenes();
-    for (const auto& [name, scene] : scenes) folder.write(name + ".json", scene.dump());
+    const std::map<std::string, std::string> scenes = catalogue_scenes();
+    for (const auto& [name, scene] : scenes) folder.write(name + ".json", scene);
     const std::map<std::string, std::string> verdicts = schema_verdicts(folder.path());
     ASSERT_EQ(verdicts.size(), scenes.size());
     EXPECT_GE(scenes.size(), 40u) << "the catalogue's JSON scenes were not all found";

@@ -109,7 +109,7 @@ TEST(JpegVariants, TwoComponentsAreNamed) {
     write_jpeg(folder.file("two.jpg"), 2, JCS_UNKNOWN, false);
     EXPECT_EQ(refusal(folder.file("two.jpg")),
               "unsupported JPEG: 2 colour components are not supported; clrender reads JPEG of 1 (grey), 3 (colour) or "
-              "4 (CMYK) components (save the image as PNG)");
+              "4 (CMYK) components (save the image as PNG, with alpha if the extra channel is one)");
     write_jpeg(folder.file("grey.jpg"), 1, JCS_GRAYSCALE, false);
     EXPECT_EQ(refusal(folder.file("grey.jpg")), "");
 }
