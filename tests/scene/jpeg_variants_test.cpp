@@ -104,6 +104,17 @@ TEST(JpegVariants, PixelsStayWithinAFewStepsOfStb) {
     }
 }
 
+// libjpeg fills what a damaged or cut file lacks with grey, with only a warning: clrender
+// refuses such a file instead of showing made-up rows.
+TEST(JpegVariants, ACutFileIsCorruptNotGreyRows) {
+    TempFolder folder;
+    write_jpeg(folder.file("whole.jpg"), 3, JCS_RGB, false, 64);
+    ASSERT_EQ(refusal(folder.file("whole.jpg")), "");
+    const std::string whole = testing::read_bytes(folder.file("whole.jpg"));
+    folder.write("cut.jpg", whole.substr(0, whole.size() / 2));
+    EXPECT_EQ(refusal(folder.file("cut.jpg")), "corrupt JPEG: Premature end of JPEG file");
+}
+
 TEST(JpegVariants, TwoComponentsAreNamed) {
     TempFolder folder;
     write_jpeg(folder.file("two.jpg"), 2, JCS_UNKNOWN, false);
