@@ -769,11 +769,21 @@ TEST(BadInput, CatalogueCoversAtLeast25Cases) {
 // scene with the schema must refuse what clrender refuses, where a schema can say why.
 
 // Catalogue scenes the schema cannot refuse: the text is JSON, but what is wrong is beyond a
-// schema (the schema's description lists these rules): the camera's geometry, a billboard's
-// area, the image files, products of values (pixels, frames), the other key's count.
+// schema (the schema's description lists these rules).
 const std::set<std::string> kBeyondTheSchema = {
-    "BillboardCollinearCorners", "BillboardCoincidentCorners", "UpParallelToTheView", "EyeEqualsLookat",
-    "EyeEqualsLookatOnAPath", "MismatchedEyeAndLookatLocations", "ResolutionOverThePixelLimit",
+    // the camera's geometry, also between the keys of a path
+    "UpParallelToTheView", "EyeEqualsLookat", "EyeEqualsLookatOnAPath", "EyeMeetsTheLookatPointBetweenKeys",
+    "ViewTurnsParallelToUpBetweenKeys",
+    // a billboard's area and edges: differences of its corners
+    "BillboardCollinearCorners", "BillboardCoincidentCorners", "BillboardEdgeOf1eMinus200",
+    // products of values: width x height, fov_angle against the size; one key's count against another's
+    "ResolutionOverThePixelLimit", "FovNarrowerThanFloatRaysResolve", "MismatchedEyeAndLookatLocations",
+    // a name that must be a key elsewhere in the scene (an impostor's view set)
+    "ImpostorNamesAnUnknownViewSet",
+    // files the scene names
+    "MissingImage", "ImpostorViewImageMissing",
+    // the size, which --size may give instead of the scene: the schema cannot see the command line
+    "MissingWidth", "MissingHeight",
 };
 
 // How deeply `text` nests arrays and objects (brackets in strings counted too: an upper bound).
