@@ -21,6 +21,8 @@ demo_packages=(
   libopenexr-dev
   # --video (the demo's showcase.mp4)
   ffmpeg
+  # JPEG input: libjpeg-turbo decodes billboard JPEGs (also the fuzz seed generator's writer)
+  libjpeg62-turbo-dev
 )
 
 # The tests, the benchmarks and the other scripts, besides.
@@ -35,12 +37,15 @@ packages=(
   libembree-dev
   # scripts/bench_povray.sh and its test: POV-Ray renders clrender's scenes for comparison
   povray
-  # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and the libraries its
-  # seed generator writes PNGs and JPEGs with. (gcc's ASan and UBSan runtimes, which
-  # scripts/sanitize.sh uses, come with build-essential.)
-  clang libclang-rt-14-dev libjpeg62-turbo-dev
+  # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes (its seed generator writes
+  # JPEGs with libjpeg, above). (gcc's ASan and UBSan runtimes, which scripts/sanitize.sh uses,
+  # come with build-essential.)
+  clang libclang-rt-14-dev
   # scripts/oclgrind.sh: the OpenCL simulator that checks every memory access of the kernels
   oclgrind
+  # tests/app/scene_schema_test.cpp: a real JSON Schema validator checks docs/scene.schema.json
+  # against the bad-scene catalogue, so that the schema and the scene loader cannot drift apart
+  python3-jsonschema
   # the render farm's tests (tests/farm/): a two-node Slurm cluster on this machine
   slurmctld slurmd slurm-client munge
   # scripts/install-intel-opencl.sh: pip downloads Intel's CPU OpenCL runtime (wheels from

@@ -32,7 +32,10 @@ ExitStatus exit_status_for(std::exception_ptr failure) {
     try {
         std::rethrow_exception(failure);
     } catch (const Error& error) {
-        return status(error.code(), error.what());
+        ExitStatus result = status(error.code(), error.headline());
+        // Each line is escaped alone: the breaks between them are clrender's, not the text's.
+        for (const std::string& line : error.lines()) result.message += "\n  " + printable(line);
+        return result;
     } catch (const cl::Error& error) {
         return status(kExitDevice, describe_cl_error(error, "OpenCL"));
     } catch (const std::bad_alloc&) {

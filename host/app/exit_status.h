@@ -11,11 +11,13 @@ namespace clr {
 
 struct ExitStatus {
     int code = 0;
-    std::string message;  // the whole line, without its newline, control characters escaped
+    // The error line, without its newline, control characters escaped; then, for an error with
+    // lines under it (the devices there are), each of them on a line of its own, indented.
+    std::string message;
 };
 
 // The status for `failure` (a non-null exception_ptr, as std::current_exception() gives):
-// - clr::Error: its own code and message;
+// - clr::Error: its own code and message, and the lines under it;
 // - an OpenCL error (cl::Error) that no layer typed: exit 3, as the device failed;
 // - std::bad_alloc, or a thread that cannot be started (std::system_error from std::thread):
 //   exit 6, out of memory: the machine's limit, not the scene's fault nor the device's;

@@ -151,8 +151,8 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
     app.add_flag("--frame-count", options.print_frame_count,
                  "Print the number of frames of the scene's animation (1 for a still), then exit");
     app.add_option("-d,--device", options.device,
-                   "OpenCL device: index (0), platform:device (0:1) or a name substring; "
-                   "default $CLRENDER_DEVICE, else the first CPU device");
+                   "OpenCL device: cpu or gpu (the first device of that type), index (0), platform:device (0:1) "
+                   "or a name substring (see --list-devices); default $CLRENDER_DEVICE, else the first CPU device");
     std::string size;
     app.add_option("--size", size, "Override the scene's resolution, e.g. 1920x1080");
     app.add_option("--spp", options.samples_per_pixel,

@@ -8,6 +8,7 @@
 #include "app/frame_selection.h"
 #include "app/tile_join.h"
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "output/image_writer.h"
 #include "output/output_folders.h"
 #include "output/output_roles.h"
@@ -63,7 +64,10 @@ void plan_video(const Options& options, const Scene& scene, OutputPlan& plan) {
         plan.video_path = scene.name + ".mp4";
     if (plan.video_path.empty()) return;
     plan.video_name = plan.video_path;
-    video_format_for(plan.video_path);
+    // The scene's fps must fit the format, or ffmpeg fails (or silently retimes a GIF) after the render.
+    if (const std::string problem = video_fps_problem(scene.animation.fps, video_format_for(plan.video_path));
+        !problem.empty())
+        throw SceneError(printable(scene.path), "/clrender/fps", "fps: --video " + printable(plan.video_path) + ": " + problem);
     plan.encoder = find_encoder();  // before any rendering: a missing encoder must not waste a render
     // The encoder's settings and checker too (the encoder asks for them again when it starts),
     // so that --check finds them without a device.

@@ -111,6 +111,7 @@ Scene load(const Options& options) {
     // --check and --plan decode the images too: a damaged one fails them as it fails a render,
     // and the scene's digest (in each frame's description, which --resume and --assemble
     // compare) is the render's.
+    load_options.count_frames_only = options.print_frame_count;  // neither images nor size
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";

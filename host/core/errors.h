@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace clr {
 
@@ -20,11 +22,24 @@ enum ExitCode : int {
 
 class Error : public std::runtime_error {
 public:
-    Error(const std::string& message, ExitCode code) : std::runtime_error(message), code_(code) {}
+    Error(const std::string& message, ExitCode code) : std::runtime_error(message), code_(code), headline_(message) {}
+    // `message`, then `lines` to print under it, each on a line of its own (the choices there
+    // are, such as the devices). what() holds them all, one per line.
+    Error(const std::string& message, std::vector<std::string> lines, ExitCode code)
+        : std::runtime_error(joined(message, lines)), code_(code), headline_(message), lines_(std::move(lines)) {}
     ExitCode code() const { return code_; }
+    const std::string& headline() const { return headline_; }
+    const std::vector<std::string>& lines() const { return lines_; }
 
 private:
+    static std::string joined(std::string message, const std::vector<std::string>& lines) {
+        for (const std::string& line : lines) message += "\n" + line;
+        return message;
+    }
+
     ExitCode code_;
+    std::string headline_;
+    std::vector<std::string> lines_;
 };
 
 // A problem with the scene or an input image. `file` is the file at fault, `location` a
@@ -49,6 +64,7 @@ private:
 class DeviceError : public Error {
 public:
     explicit DeviceError(const std::string& message) : Error(message, kExitDevice) {}
+    DeviceError(const std::string& message, std::vector<std::string> lines) : Error(message, std::move(lines), kExitDevice) {}
 };
 
 class OutputError : public Error {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/printable_text.h"
 #include "device/cl_errors.h"
 #include "device/driver_settings.h"
 
@@ -74,19 +75,28 @@ std::vector<DeviceEntry> list_devices() {
     return entries;
 }
 
-std::string format_device_list(const std::vector<DeviceEntry>& devices) {
-    if (devices.empty()) return "No OpenCL devices found (is an OpenCL driver such as pocl-opencl-icd installed?)\n";
-    std::ostringstream out;
+std::vector<std::string> device_list_lines(const std::vector<DeviceEntry>& devices) {
+    if (devices.empty()) return {"No OpenCL devices found (is an OpenCL driver such as pocl-opencl-icd installed?)"};
+    // The names come from the driver: escaped, so that one cannot break or forge a line.
+    std::vector<std::string> lines;
     std::string platform;
     for (const DeviceEntry& entry : devices) {
         if (entry.platform_name != platform || entry.device_index == 0) {
             platform = entry.platform_name;
-            out << "Platform " << entry.platform_index << ": " << platform << "\n";
+            lines.push_back("Platform " + std::to_string(entry.platform_index) + ": " + printable(platform));
         }
-        out << "  [" << entry.index << "] " << entry.platform_index << ":" << entry.device_index << "  "
-            << entry.device_name << " (" << entry.type << ", " << entry.version << ")\n";
+        std::ostringstream line;
+        line << "  [" << entry.index << "] " << entry.platform_index << ":" << entry.device_index << "  "
+             << printable(entry.device_name) << " (" << entry.type << ", " << printable(entry.version) << ")";
+        lines.push_back(line.str());
     }
-    return out.str();
+    return lines;
+}
+
+std::string format_device_list(const std::vector<DeviceEntry>& devices) {
+    std::string text;
+    for (const std::string& line : device_list_lines(devices)) text += line + "\n";
+    return text;
 }
 
 DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::string& selector) {
@@ -103,7 +113,7 @@ DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::st
         const std::string type = kind == "cpu" ? "CPU" : "GPU";
         auto found = std::find_if(devices.begin(), devices.end(), [&](const DeviceEntry& e) { return e.type == type; });
         if (found != devices.end()) return *found;
-        throw DeviceError("no OpenCL " + type + " device; available devices:\n" + format_device_list(devices));
+        throw DeviceError("no OpenCL " + type + " device; available devices:", device_list_lines(devices));
     }
     if (auto index = parse_index(selector)) {
         if (*index < static_cast<int>(devices.size())) return devices[*index];
@@ -120,7 +130,7 @@ DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::st
                 lower(entry.platform_name).find(wanted) != std::string::npos)
                 return entry;
     }
-    throw DeviceError("unknown OpenCL device '" + selector + "'; available devices:\n" + format_device_list(devices));
+    throw DeviceError("unknown OpenCL device '" + selector + "'; available devices:", device_list_lines(devices));
 }
 
 int compute_units(const DeviceEntry& entry) {

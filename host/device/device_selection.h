@@ -24,7 +24,9 @@ struct DeviceEntry {
 // installed.
 std::vector<DeviceEntry> list_devices();
 
-// The human-readable listing printed by --list-devices.
+// The human-readable listing printed by --list-devices, one line each (without line breaks;
+// names from the driver escaped), and the same lines joined with a newline after each.
+std::vector<std::string> device_list_lines(const std::vector<DeviceEntry>& devices);
 std::string format_device_list(const std::vector<DeviceEntry>& devices);
 
 // Picks a device. `selector` is empty (the first CPU device, else the first device), "cpu" or

@@ -218,6 +218,18 @@ VideoFormat video_format_for(const std::string& path) {
     throw UsageError("'" + path + "': unsupported video format; use a .mp4 or .gif file name");
 }
 
+std::string video_fps_problem(double fps, VideoFormat format) {
+    const bool gif = format == VideoFormat::Gif;
+    const double lowest = gif ? kMinGifFps : kMinMp4Fps, highest = gif ? kMaxGifFps : kMaxMp4Fps;
+    if (std::isfinite(fps) && fps >= lowest && fps <= highest) return "";
+    const std::string why = gif ? " (its frame delays are whole hundredths of a second, from 2 to 65535)"
+                                : " (ffmpeg's MP4 writer fails on slower rates)";
+    // The lowest shown rounded up to a millionth, so that the rate shown is one that passes.
+    return std::string(gif ? "a GIF" : "an MP4") + " takes from " + decimal(std::ceil(lowest * 1e6) / 1e6) + " to " +
+           decimal(highest) +
+           " frames per second" + why + ", got " + decimal(fps);
+}
+
 std::string find_encoder() {
     const char* configured = std::getenv("CLRENDER_FFMPEG");
     if (configured && *configured) {
@@ -232,7 +244,8 @@ std::string find_encoder() {
 VideoEncoder::VideoEncoder(const VideoSettings& settings, const std::string& encoder_program)
     : settings_(settings), format_(video_format_for(settings.path)), program_(encoder_program) {
     if (settings_.width <= 0 || settings_.height <= 0) throw std::invalid_argument("VideoEncoder: empty frame size");
-    if (!(settings_.fps > 0) || !std::isfinite(settings_.fps)) throw std::invalid_argument("VideoEncoder: bad fps");
+    if (const std::string problem = video_fps_problem(settings_.fps, format_); !problem.empty())
+        throw std::invalid_argument("VideoEncoder: " + problem);
     if (settings_.quality < 0 || settings_.quality > 51) throw std::invalid_argument("VideoEncoder: CRF outside 0-51");
     stall_timeout_ = encoder_stall_timeout();
     prober_ = find_video_prober(program_);  // before the first frame: a missing checker must not waste a render

@@ -23,6 +23,18 @@ enum class VideoFormat { Mp4, Gif };
 // any other extension, naming the path and the supported ones.
 VideoFormat video_format_for(const std::string& path);
 
+// The frame rates each format holds, measured with Debian 12's ffmpeg 5.1 (docs/animation.md,
+// Frame rates): a GIF's frame delays are whole hundredths of a second from 2 to 65535 (ffmpeg
+// writes a delay of 1 as 10, and clips longer ones); ffmpeg's MP4 muxer fails with x264 below
+// about 1.2e-5 frames per second, and clrender's whole pipeline gave a video with 1 of 3 frames
+// at 1e-4 while 2e-4 held: 0.001 keeps a margin of 5.
+constexpr double kMinMp4Fps = 0.001, kMaxMp4Fps = 1000;
+constexpr double kMinGifFps = 100.0 / 65535, kMaxGifFps = 50;
+
+// "" when a video of `format` can hold `fps` frames per second, else why not, with the range
+// it takes ("a GIF takes from 0.0015259 to 50 frames per second (...)").
+std::string video_fps_problem(double fps, VideoFormat format);
+
 // The ffmpeg program to run: $CLRENDER_FFMPEG when set (a path, or a name looked up on
 // $PATH), else "ffmpeg" looked up on $PATH. Call it before rendering, so that a missing
 // encoder is reported before any time is spent. Throws OutputError naming what is missing.

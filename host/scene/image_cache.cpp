@@ -8,6 +8,7 @@
 
 #include "core/cache_folder.h"
 #include "scene/image_loader.h"
+#include "scene/jpeg_decoder.h"
 
 namespace clr {
 namespace {
@@ -19,19 +20,22 @@ CacheEntryKind image_entries(std::uint64_t size_limit) {
     return {"rgba", {'c', 'l', 'r', 'i', 'm', 'a', 'g', 'e'}, ImageCache::kFormatVersion, size_limit};
 }
 
-// Which build of stb_image decodes PNG and JPEG: the file holding it, its size and modification
-// time. A library update may decode some file differently, so it must change every key.
-std::string stb_identity() {
+// Which build of a decoding library holds `function`: the file holding it, its size and
+// modification time. A library update may decode some file differently, so it must change every key.
+std::string library_identity(void* function) {
     Dl_info info{};
-    if (::dladdr(reinterpret_cast<void*>(&stbi_load_from_memory), &info) == 0 || !info.dli_fname) return "unknown";
+    if (::dladdr(function, &info) == 0 || !info.dli_fname) return "unknown";
     struct stat file;
     if (::stat(info.dli_fname, &file) != 0) return info.dli_fname;
     return std::string(info.dli_fname) + " " + std::to_string(file.st_size) + " " + std::to_string(file.st_mtim.tv_sec) +
            "." + std::to_string(file.st_mtim.tv_nsec);
 }
 
+// stb_image decodes PNG, libjpeg-turbo JPEG (scene/jpeg_decoder.h).
 const std::string& decoder_identity() {
-    static const std::string identity = stb_identity();
+    static const std::string identity = "stb: " + library_identity(reinterpret_cast<void*>(&stbi_load_from_memory)) +
+                                        "; libjpeg-turbo " + jpeg_decoder_version() + ": " +
+                                        library_identity(jpeg_decoder_entry_point());
     return identity;
 }
 

@@ -28,8 +28,9 @@ public:
     static constexpr std::uint64_t kDefaultSizeLimit = std::uint64_t(1) << 30;
     // Part of every key and header: a change of the entry layout or of what decoding produces
     // (e.g. rounding of 16-bit samples) or of which files decode at all (3: JPEG scans using
-    // undefined Huffman tables are refused) must bump it, so that old entries stop matching.
-    static constexpr std::uint32_t kFormatVersion = 3;
+    // undefined Huffman tables are refused; 4: JPEG decoded by libjpeg-turbo, whose pixels differ
+    // from stb's by a few steps) must bump it, so that old entries stop matching.
+    static constexpr std::uint32_t kFormatVersion = 4;
 
     // The SHA-256 of the source file's bytes and of what decodes them.
     using Key = Sha256Digest;

@@ -1,5 +1,6 @@
-// Image input. PNG and JPEG are decoded by stb_image; PPM (P3 and P6) by the small reader
-// below, for the reasons given at read_ppm(). The format is taken from the file's first bytes.
+// Image input. PNG is decoded by stb_image, JPEG by libjpeg-turbo (scene/jpeg_decoder.h), PPM
+// (P3 and P6) by the small reader below, for the reasons given at read_ppm(). The format is
+// taken from the file's first bytes.
 #include "scene/image_loader.h"
 
 #include <stb_image.h>
@@ -19,6 +20,7 @@
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/jpeg_checks.h"
+#include "scene/jpeg_decoder.h"
 #include "scene/limits.h"
 
 namespace clr {
@@ -89,13 +91,18 @@ void check_pixel_count(long long width, long long height, const char* format_nam
                      max_square_image_text() + ")");
 }
 
+std::uint32_t big_endian_32(const Bytes& bytes, std::size_t at) {
+    return (std::uint32_t(bytes[at]) << 24) | (std::uint32_t(bytes[at + 1]) << 16) | (std::uint32_t(bytes[at + 2]) << 8) |
+           bytes[at + 3];
+}
+
 // A sample in 0..maxval as a byte in 0..255, rounded to nearest (halves up).
 std::uint8_t scale_to_byte(std::uint32_t sample, std::uint32_t maxval) {
     return static_cast<std::uint8_t>((sample * 255 + maxval / 2) / maxval);
 }
 
 // ---------------------------------------------------------------------------------------
-// PNG and JPEG, through stb_image
+// PNG through stb_image, JPEG through libjpeg-turbo
 
 struct StbFree {
     void operator()(void* pixels) const { stbi_image_free(pixels); }
@@ -104,6 +111,27 @@ struct StbFree {
 ImageError stb_error(const char* format_name) {
     const char* reason = stbi_failure_reason();
     return ImageError(std::string("corrupt ") + format_name + ": " + printable(reason ? reason : "unknown error"));
+}
+
+// stb refuses a PNG larger than it can hold (2^30 bytes of samples) as an "unknown image
+// type" after trying every other format on it; the size is in IHDR, the first chunk, so it
+// is checked here, where the message can say what is wrong.
+void check_png_size(const Bytes& bytes) {
+    constexpr std::size_t kIhdrType = 12, kWidth = 16, kHeight = 20;
+    if (bytes.size() < kHeight + 4 || !std::equal(bytes.begin() + kIhdrType, bytes.begin() + kWidth, "IHDR")) return;
+    check_pixel_count(big_endian_32(bytes, kWidth), big_endian_32(bytes, kHeight), "PNG");
+}
+
+// A JPEG of a kind libjpeg-turbo does not decode, or too large, is named from its frame header,
+// rather than by libjpeg's message ("Unsupported JPEG process: SOF type 0xc3", or one about
+// the missing data of a file that is mostly header). libjpeg checks the size again from the
+// header it reads itself, before it allocates anything for pixels.
+void decode_jpeg_file(const Bytes& bytes, Image& image) {
+    if (const std::optional<JpegFrame> frame = find_jpeg_frame(bytes)) {
+        check_jpeg_frame_is_supported(*frame);
+        check_pixel_count(frame->width, frame->height, "JPEG");
+    }
+    decode_jpeg(bytes, image, [](long long width, long long height) { check_pixel_count(width, height, "JPEG"); });
 }
 
 // Decodes to 8-bit RGBA; stb fills in alpha 255 for images without alpha, and expands grey.
@@ -242,6 +270,19 @@ void read_ppm_binary_raster(const Bytes& bytes, std::size_t start, const PpmHead
     }
 }
 
+// Where a P6 raster starts, given the position right after maxval's digits. Exactly one
+// whitespace byte separates maxval from the raster. A comment may come before it (Netpbm:
+// "before the whitespace character that delimits the raster", '#' through the next newline
+// is a comment); as libnetpbm reads it, the newline that ends such a comment is that one
+// whitespace byte, so "255#made by x\n" is followed by the raster.
+std::size_t binary_raster_start(const Bytes& bytes, std::size_t after_maxval) {
+    if (after_maxval == bytes.size()) throw ImageError("truncated PPM data: the file ends right after maxval");
+    if (bytes[after_maxval] != '#') return after_maxval + 1;  // PpmNumberReader took only whitespace or '#'
+    for (std::size_t at = after_maxval; at < bytes.size(); ++at)
+        if (bytes[at] == '\n' || bytes[at] == '\r') return at + 1;
+    throw ImageError("truncated PPM data: the comment after maxval runs to the end of the file, so there is no raster");
+}
+
 void read_ppm(const Bytes& bytes, bool ascii, Image& image) {
     PpmNumberReader numbers(bytes, 2);  // after the magic "P3" or "P6"
     const PpmHeader header = read_ppm_header(numbers);
@@ -252,21 +293,12 @@ void read_ppm(const Bytes& bytes, bool ascii, Image& image) {
         read_ppm_ascii_raster(numbers, header, image);
         return;
     }
-    // Exactly one whitespace byte separates maxval from the binary raster.
-    if (numbers.position() == bytes.size() || !is_ppm_whitespace(bytes[numbers.position()])) {
-        throw ImageError("truncated PPM data");
-    }
-    read_ppm_binary_raster(bytes, numbers.position() + 1, header, image);
+    read_ppm_binary_raster(bytes, binary_raster_start(bytes, numbers.position()), header, image);
 }
 
 ImageHeader header_of_size(long long width, long long height, bool sixteen_bit, std::uint64_t peak_bytes_per_pixel) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
     return {width, height, sixteen_bit, pixels * peak_bytes_per_pixel};
-}
-
-std::uint32_t big_endian_32(const Bytes& bytes, std::size_t at) {
-    return (std::uint32_t(bytes[at]) << 24) | (std::uint32_t(bytes[at + 1]) << 16) | (std::uint32_t(bytes[at + 2]) << 8) |
-           bytes[at + 3];
 }
 
 // Whether a PNG's texels may have alpha below 255, from its chunks before the pixel data: a
@@ -286,7 +318,27 @@ bool png_has_alpha_channel(const Bytes& bytes) {
     return false;
 }
 
-std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
+// libjpeg-turbo's peak, measured (docs/benchmarks.md, JPEG decoder): the RGBA output, 4 bytes
+// a pixel, and for a file of several scans (progressive) its whole coefficients, 2 bytes each,
+// as many a pixel as the components' samples (1.5 for 4:2:0 colour, 3 for 4:4:4, 4 for CMYK).
+// A single-scan file needs only a few rows of them; it is costed as the larger all the same.
+std::optional<ImageHeader> read_jpeg_header(const Bytes& bytes) {
+    const std::optional<JpegFrame> frame = find_jpeg_frame(bytes);
+    if (!frame || frame->width == 0 || frame->height == 0) return std::nullopt;
+    if (static_cast<long long>(frame->width) * frame->height > kMaxImagePixels) return std::nullopt;  // refused when decoded
+    try {
+        check_jpeg_frame_is_supported(*frame);
+    } catch (const ImageError&) {
+        return std::nullopt;  // refused, by name, when decoded
+    }
+    const std::uint64_t pixels = std::uint64_t(frame->width) * frame->height;
+    ImageHeader header{frame->width, frame->height, false,
+                       pixels * kRgba + static_cast<std::uint64_t>(2 * frame->samples_per_pixel * double(pixels))};
+    header.format = "JPEG";
+    return header;
+}
+
+std::optional<ImageHeader> read_png_header(const Bytes& bytes) {
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) return std::nullopt;
     const int length = static_cast<int>(bytes.size());
     int width = 0, height = 0, channels_in_file = 0;
@@ -297,9 +349,8 @@ std::optional<ImageHeader> read_stb_header(const Bytes& bytes) {
     // samples for a 16-bit PNG), then its output and our 8-bit copy: 8 or 16 bytes a pixel at
     // the peak, as measured (docs/benchmarks.md, Figures behind design choices).
     ImageHeader header = header_of_size(width, height, sixteen_bit, sixteen_bit ? 4 * kRgba : 2 * kRgba);
-    const bool png = detect_format(bytes) == FileFormat::Png;
-    header.format = png ? "PNG" : "JPEG";
-    header.alpha_channel = png && png_has_alpha_channel(bytes);
+    header.format = "PNG";
+    header.alpha_channel = png_has_alpha_channel(bytes);
     return header;
 }
 
@@ -322,8 +373,8 @@ std::optional<ImageHeader> read_ppm_header_only(const Bytes& bytes) {
 std::optional<ImageHeader> read_image_header(const std::vector<unsigned char>& bytes) {
     try {
         switch (detect_format(bytes)) {
-            case FileFormat::Png:
-            case FileFormat::Jpeg: return read_stb_header(bytes);
+            case FileFormat::Png: return read_png_header(bytes);
+            case FileFormat::Jpeg: return read_jpeg_header(bytes);
             case FileFormat::PpmAscii:
             case FileFormat::PpmBinary: return read_ppm_header_only(bytes);
         }
@@ -345,11 +396,12 @@ std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned ch
     auto image = std::make_shared<Image>();
     image->path = path;
     switch (detect_format(bytes)) {
-        case FileFormat::Png: decode_with_stb(bytes, "PNG", *image); break;
+        case FileFormat::Png:
+            check_png_size(bytes);
+            decode_with_stb(bytes, "PNG", *image);
+            break;
         case FileFormat::Jpeg:
-            check_jpeg_huffman_tables(bytes);
-            check_jpeg_scans_use_defined_tables(bytes);
-            decode_with_stb(bytes, "JPEG", *image);
+            decode_jpeg_file(bytes, *image);
             break;
         case FileFormat::PpmAscii: read_ppm(bytes, true, *image); break;
         case FileFormat::PpmBinary: read_ppm(bytes, false, *image); break;

@@ -36,9 +36,10 @@ std::vector<unsigned char> read_image_file(const std::string& path);
 std::shared_ptr<const Image> load_image_from_bytes(const std::vector<unsigned char>& bytes, const std::string& path);
 
 // An image's size as its header gives it, and the bytes decoding it allocates at its peak:
-// for PNG and JPEG, stb_image's two RGBA buffers (the raw samples and its output, of 16-bit
-// samples for a 16-bit PNG), 8 bytes a pixel or 16 for a 16-bit PNG; for PPM, which is
-// decoded straight into the 8-bit RGBA result, 4 bytes a pixel.
+// for PNG, stb_image's two RGBA buffers (the raw samples and its output, of 16-bit samples
+// for a 16-bit PNG), 8 bytes a pixel or 16 for a 16-bit PNG; for JPEG, libjpeg-turbo's RGBA
+// result and the coefficients of a progressive file, 4 + 2 x the components' samples a pixel
+// (7 for 4:2:0 colour); for PPM, which is decoded straight into the 8-bit RGBA result, 4.
 struct ImageHeader {
     long long width = 0, height = 0;
     bool sixteen_bit = false;

@@ -1,18 +1,30 @@
-// Checks of a JPEG's structure made before stb_image decodes it, for the cases where stb 2.27
-// (the version Debian 12 packages) would read or write outside its own tables instead of
-// failing. Each throws ImageError naming what is wrong; files stb reads safely pass untouched.
+// Checks of a JPEG's frame header made before libjpeg-turbo decodes it (scene/jpeg_decoder.h),
+// so that a valid file of a kind clrender does not decode is named as such, not as corrupt.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 namespace clr {
 
-// Refuses a Huffman table declaring more than the 256 codes a table can hold (stb wrote them
-// past its tables: a heap overflow with bytes from the file).
-void check_jpeg_huffman_tables(const std::vector<unsigned char>& bytes);
+// A JPEG's frame header (SOFn): the coding process, sample precision, size and components.
+struct JpegFrame {
+    unsigned marker = 0;  // 0xC0 baseline, 0xC1 extended, 0xC2 progressive, 0xC3 lossless, ...
+    unsigned precision = 0;  // bits a sample
+    unsigned height = 0, width = 0;
+    unsigned components = 0;
+    // The components' samples a pixel: 3 for 4:4:4 colour, 1.5 for 4:2:0, 1 for grey.
+    double samples_per_pixel = 0;
+};
 
-// Refuses a scan that decodes with a Huffman table no DHT segment before it defined (stb
-// then indexes its never-initialised table: out-of-bounds reads of its own arrays).
-void check_jpeg_scans_use_defined_tables(const std::vector<unsigned char>& bytes);
+// The frame header, found by following the segments from the start of the image; nullopt when
+// the segments cannot be followed to one (the decoder then says what is wrong).
+std::optional<JpegFrame> find_jpeg_frame(const std::vector<unsigned char>& bytes);
+
+// Refuses a JPEG that is valid but of a kind libjpeg-turbo 2.1 (Debian 12) does not decode to
+// colour, naming the kind: lossless or hierarchical (SOF3, SOF5-7, SOF11, SOF13-15), samples of
+// other than 8 bits, or other than 1 (grey), 3 (colour) or 4 (CMYK) components. Arithmetic-coded
+// baseline and progressive JPEG (SOF9, SOF10) are decoded.
+void check_jpeg_frame_is_supported(const JpegFrame& frame);
 
 }  // namespace clr

@@ -78,9 +78,12 @@ public:
         std::string last_token;
         int id = 0;  // nlohmann's exception id: 101.. syntax, 406 number overflow
         std::string message;
+        std::string location;  // JSON pointer of the value being read
     };
 
-    LocatingDomBuilder(Json& root, const Diagnostics& diagnostics) : root_(root), diagnostics_(diagnostics) {}
+    // `base`: the JSON pointer of the parsed value in the scene ("" for a whole file).
+    LocatingDomBuilder(Json& root, const Diagnostics& diagnostics, std::string base = "")
+        : root_(root), diagnostics_(diagnostics), base_(std::move(base)) {}
 
     bool null() override { return add(nullptr); }
     bool boolean(bool value) override { return add(value); }
@@ -110,7 +113,7 @@ public:
     }
 
     bool parse_error(std::size_t position, const std::string& last_token, const Json::exception& error) override {
-        failure_ = Failure{position, last_token, error.id, error.what()};
+        failure_ = Failure{position, last_token, error.id, error.what(), location_of_next_value()};
         return false;
     }
 
@@ -157,18 +160,31 @@ private:
             diagnostics_.warn(current_location(), "duplicate key (the last value is used)");
     }
 
+    // Where the value the parser reads next goes: in an array, after its last element.
+    std::string location_of_next_value() const {
+        if (frames_.empty()) return base_;
+        const Frame& innermost = frames_.back();
+        if (!innermost.container->is_array()) return current_location();
+        std::string location = base_;
+        for (std::size_t i = 0; i + 1 < frames_.size(); ++i) location += step_into(frames_[i]);
+        return location + "/" + std::to_string(innermost.container->size());
+    }
+
+    static std::string step_into(const Frame& frame) {
+        // In an array, the element being read is always the last one.
+        return "/" + (frame.container->is_array() ? std::to_string(frame.container->size() - 1)
+                                                  : json_pointer_token(frame.key));
+    }
+
     std::string current_location() const {
-        std::string location;
-        for (const Frame& frame : frames_) {
-            // In an array, the element being read is always the last one.
-            location += "/" + (frame.container->is_array() ? std::to_string(frame.container->size() - 1)
-                                                           : json_pointer_token(frame.key));
-        }
+        std::string location = base_;
+        for (const Frame& frame : frames_) location += step_into(frame);
         return location;
     }
 
     Json& root_;
     const Diagnostics& diagnostics_;
+    std::string base_;
     std::vector<Frame> frames_;
     std::optional<Failure> failure_;
     std::size_t duplicate_keys_ = 0;
@@ -205,6 +221,12 @@ bool is_trailing_comma(std::string_view text, std::size_t offset) {
     if (offset == 0 || offset >= text.size() || (text[offset] != '}' && text[offset] != ']')) return false;
     const std::size_t before = text.find_last_not_of(" \t\r\n", offset - 1);
     return before != std::string_view::npos && text[before] == ',';
+}
+
+// The column of the byte at `offset` in one line of text.
+std::string column_of(std::string_view text, std::size_t offset) {
+    const std::string position = line_and_column(text, offset);
+    return position.substr(position.find("column"));
 }
 
 [[noreturn]] void fail_syntax(std::string_view text, const LocatingDomBuilder::Failure& failure,
@@ -244,6 +266,34 @@ Json parse_json_text(const std::string& text, const Diagnostics& diagnostics) {
     }
     builder.summarise_duplicate_keys();
     return root;
+}
+
+JsonArgument parse_json_argument(const std::string& text, const std::string& base, const Diagnostics& diagnostics) {
+    Json value;
+    LocatingDomBuilder builder(value, diagnostics, base);
+    JsonArgument argument;
+    if (Json::sax_parse(text.begin(), text.end(), &builder, Json::input_format_t::json, /*strict=*/true,
+                        /*ignore_comments=*/false)) {
+        builder.summarise_duplicate_keys();
+        argument.value = std::move(value);
+        return argument;
+    }
+    argument.problem_location = base;
+    argument.problem = "not JSON";
+    if (const auto& failure = builder.failure()) {
+        constexpr int kNumberOverflow = 406;
+        argument.problem_location = failure->location;
+        argument.out_of_range = failure->id == kNumberOverflow;
+        if (argument.out_of_range) {
+            const std::size_t start = failure->position - std::min(failure->position, failure->last_token.size());
+            argument.problem = column_of(text, start) + ": number " + failure->last_token +
+                               " is out of range (numbers must be finite, at most about 1.8e308 in size)";
+        } else {
+            const std::size_t offset = failure->position == 0 ? 0 : failure->position - 1;
+            argument.problem = column_of(text, offset) + ": " + syntax_reason(failure->message);
+        }
+    }
+    return argument;
 }
 
 // ---------------------------------------------------------------------------------------

@@ -46,6 +46,17 @@ struct Diagnostics {
 // (the last value is used, as in most JSON readers); past the first ten, one warning counts them.
 Json parse_json_text(const std::string& text, const Diagnostics& diagnostics);
 
+// One JSON value given on the command line (-D KEY=VALUE), for the value at `base` (a JSON
+// pointer) in the scene. A key repeated within an object is a warning at its location, as in a
+// file; comments are not JSON here (a '/' starts a file name more often than a comment).
+struct JsonArgument {
+    std::optional<Json> value;     // nullopt when the text is not JSON; then:
+    std::string problem_location;  // the JSON pointer of the value that was being read
+    std::string problem;           // "column C: why", for a message
+    bool out_of_range = false;     // JSON but for a number too large for a double (1e400)
+};
+JsonArgument parse_json_argument(const std::string& text, const std::string& base, const Diagnostics& diagnostics);
+
 // One JSON value with its location and a short label for messages ("radius", "eye[1]").
 // The typed readers throw a SceneError at the value's location when the value does not fit.
 class Node {

@@ -570,6 +570,8 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     if (document.is_object()) {
         try {
             diagnostics.overridden = apply_scene_overrides(document, options.overrides);
+            for (const SceneOverride& set : options.overrides)
+                scene.warnings.insert(scene.warnings.end(), set.warnings.begin(), set.warnings.end());
         } catch (const UsageError& error) {
             throw UsageError(printable(path) + ": " + error.what());
         }
@@ -578,8 +580,13 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     ObjectReader file(Node(document, "", "scene", diagnostics), "scene");
     hint_scene_keys(file);
     const std::vector<std::string> camera_key_locations = read_camera(file, scene, diagnostics);
-    read_image_size(file, options, scene);
-    check_pixel_span(file, scene);
+    if (options.count_frames_only) {
+        file.has("width");  // known keys, not read: the count does not depend on them
+        file.has("height");
+    } else {
+        read_image_size(file, options, scene);
+        check_pixel_span(file, scene);
+    }
     read_background(file, scene);
     read_lighting(file, scene);
     PendingBillboardImages billboard_images;
@@ -597,7 +604,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
-    load_scene_images(scene, billboard_images, impostor_views, options);
+    if (!options.count_frames_only) load_scene_images(scene, billboard_images, impostor_views, options);
     if (options.decode_images) scene.digest = scene_digest(text, options.overrides, scene);
     diagnostics.summarise_warnings();
     return scene;

@@ -35,6 +35,9 @@ struct LoadOptions {
     // false (--check): images are checked from their headers only, not decoded; the scene's
     // image pointers stay null (placeholders aside) and Scene::image_files describes them.
     bool decode_images = true;
+    // true (--frame-count): only what the number of frames depends on matters; the image
+    // size is neither required nor checked, and the images are not read at all.
+    bool count_frames_only = false;
     // Most bytes all the scene's images may take while they are decoded (scene/image_budget.h);
     // unset: CLRENDER_IMAGE_MEMORY_MIB, else kDefaultImageMemoryBytes.
     std::optional<std::uint64_t> image_memory_limit;

@@ -93,6 +93,11 @@ Json& array_element(Json& container, const std::string& token, bool last, const 
     return container[index];
 }
 
+bool starts_as_array_or_object(const std::string& text) {
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    return first != std::string::npos && (text[first] == '[' || text[first] == '{');
+}
+
 void apply(Json& document, const SceneOverride& set) {
     Json* value = &document;
     for (std::size_t depth = 0; depth < set.path.size(); ++depth) {
@@ -128,8 +133,22 @@ SceneOverride parse_scene_override(const std::string& argument) {
     set.argument = argument;
     set.path = parse_key(argument.substr(0, equals), argument);
     const std::string text = argument.substr(equals + 1);
-    set.value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (set.value.is_discarded()) set.value = text;  // not JSON: the text as a string
+    const std::string pointer = pointer_of(set.path, set.path.size());
+    // Warnings about the value name its place in the scene and this argument, as the loader's do.
+    Diagnostics diagnostics{"", &set.warnings};
+    diagnostics.overridden = {{pointer, argument}};
+    JsonArgument parsed = parse_json_argument(text, pointer, diagnostics);
+    if (parsed.value) {
+        set.value = std::move(*parsed.value);
+    } else if (parsed.out_of_range) {
+        refuse(argument, parsed.problem_location + ": " + parsed.problem);
+    } else if (starts_as_array_or_object(text)) {
+        // Meant as JSON: a string of "[0, 0" would only fail later as the wrong type.
+        refuse(argument, parsed.problem_location + ": the value is not valid JSON (" + parsed.problem +
+                             "); quote text that starts with '[' or '{' as a JSON string, e.g. -D 'key=\"[a].png\"'");
+    } else {
+        set.value = text;  // not JSON: the text as a string
+    }
     return set;
 }
 

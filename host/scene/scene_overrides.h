@@ -15,12 +15,15 @@ struct SceneOverride {
     std::string argument;  // as given: "spheres.0.radius=2", for messages
     std::vector<std::string> path;  // the key's reference tokens: {"spheres", "0", "radius"}
     Json value;
+    // Warnings about the value ("/clrender/spp: duplicate key ..."), for the scene's warnings.
+    std::vector<std::string> warnings = {};
 };
 
 // Reads one -D argument. The key is a JSON pointer ("/spheres/0/radius", RFC 6901) or a
 // dotted path ("spheres.0.radius"); the value is JSON when it parses as JSON ("2", "[0, 0, 5]",
 // "true", "\"a.png\""), else the text itself as a string ("tex.png"). Throws UsageError for
-// an argument without '=' or with an empty key.
+// an argument without '=' or with an empty key, a number too large for a double (1e400) and
+// a value that starts as a JSON array or object but is not JSON ("[0, 0"), naming where.
 SceneOverride parse_scene_override(const std::string& argument);
 
 // Sets each override's value in `document`, in order; an object on the way that is missing

@@ -51,6 +51,40 @@ TEST_F(AnimationCli, FrameCountFollowsTheCourseDefault) {
     EXPECT_EQ(result.output, "11\n");
 }
 
+// Counting frames reads neither the images nor the size: a farm script asks for the count
+// where the textures are not (yet) and the size comes later from --size.
+TEST_F(AnimationCli, FrameCountNeedsNeitherTheImagesNorTheSize) {
+    folder.write("bare.json", R"({
+      "eyeLocations": [[-3, 1, 8], [3, 2, 7], [3, 2, 5]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 55,
+      "clrender": {"frames_per_segment": 4},
+      "billboards": [{"UpperLeft": [-5, 4, -4], "LowerLeft": [-5, -3, -4], "UpperRight": [5, 4, -4],
+                      "filename": "not-here.png"}]})");
+    auto result = run_clrender("bare.json --frame-count --strict", folder.path());
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(result.output, "9\n");
+    // The render itself still needs both.
+    EXPECT_EQ(run_clrender("bare.json --check", folder.path()).exit_code, 2);
+}
+
+// An fps the video's format cannot hold is the scene's error, before anything renders,
+// never an encoder failure after the render (or a GIF silently retimed).
+TEST_F(AnimationCli, AnFpsTheVideoFormatCannotHoldIsASceneErrorAtItsKey) {
+    if (!have_program("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+    auto gif = run_clrender("anim.json -q --reference --video fast.gif -D clrender.fps=60", folder.path());
+    EXPECT_EQ(gif.exit_code, 2) << gif.output;
+    EXPECT_NE(gif.output.find("clrender: error: anim.json: /clrender/fps: fps: --video fast.gif: a GIF takes from 0.001526 "
+                              "to 50 frames per second"),
+              std::string::npos)
+        << gif.output;
+    auto mp4 = run_clrender("anim.json -q --reference -D clrender.fps=0.000001", folder.path());
+    EXPECT_EQ(mp4.exit_code, 2) << mp4.output;
+    EXPECT_NE(mp4.output.find("/clrender/fps: fps: --video anim.mp4: an MP4 takes from 0.001 to 1000"), std::string::npos)
+        << mp4.output;
+    EXPECT_EQ(folder.entry_count(), 1) << "nothing written";
+    // The same rate is fine for frames alone, and for the format that holds it.
+    EXPECT_EQ(run_clrender("anim.json -q --reference --video ok.mp4 -D clrender.fps=60", folder.path()).exit_code, 0);
+}
+
 TEST_F(AnimationCli, DefaultOutputIsAnH264Mp4WithEveryFrame) {
     if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
     auto result = run_clrender("anim.json -q", folder.path());

@@ -10,15 +10,21 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <set>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "support/command.h"
+#include "support/shell.h"
 #include "support/png_header.h"
 #include "support/temp_folder.h"
 #include "support/tile_files.h"
@@ -125,7 +131,8 @@ std::string source_file(const std::string& relative) {
     return read_bytes(fs::path(CLRENDER_SOURCE_DIR) / relative);
 }
 
-// The JPEG that fuzz/image_fuzzer.cpp found to overflow stb_image's Huffman tables, cut to
+// The JPEG that fuzz/image_fuzzer.cpp found to overflow stb_image's Huffman tables (clrender's
+// JPEG decoder then), cut to
 // what matters: a start-of-image marker and one DHT segment whose table declares 16 x 255
 // codes. See tests/scene/fuzz_regressions_test.cpp for the whole finding.
 std::string jpeg_with_oversized_huffman_table() {
@@ -136,6 +143,12 @@ std::string jpeg_with_oversized_huffman_table() {
 // bytes that would cost gigabytes to decode.
 std::string jpeg_claiming_20000_squared() {
     return std::string("\xFF\xD8\xFF\xC0\x00\x11\x08\x4E\x20\x4E\x20\x03\x01\x22\x00\x02\x11\x01\x03\x11\x01", 21);
+}
+
+// A lossless JPEG's frame header (SOF3, 16 x 16, 3 components) and its end: valid JPEG of a
+// kind clrender does not decode.
+std::string lossless_jpeg_frame() {
+    return std::string("\xFF\xD8\xFF\xC3\x00\x11\x08\x00\x10\x00\x10\x03\x01\x11\x00\x02\x11\x00\x03\x11\x00\xFF\xD9", 23);
 }
 
 // The commonest kind of case: `clrender bad.json` with bad.json holding `text` (and `files`
@@ -318,12 +331,18 @@ std::vector<BadInput> catalogue() {
         bad_image("TruncatedPpm", "cut.ppm", ppm.substr(0, ppm.size() / 2), "truncated PPM data"),
         bad_image("EmptyImageFile", "empty.png", "", "empty file"),
         bad_image("JpegWithOversizedHuffmanTable", "photo.jpg", jpeg_with_oversized_huffman_table(),
-                  "corrupt JPEG: a Huffman table declares 4080 codes"),
+                  "corrupt JPEG: Bogus Huffman table definition"),
         bad_image("ImageDimensionsOverTheLimit", "huge.jpg", jpeg_claiming_20000_squared(),
                   "JPEG image of 20000 x 20000 pixels is larger than the limit"),
         {"ImagePathIsAFolder", {{"bad.json", image_scene("textures")}}, {"textures"}, "bad.json", 2,
          {"bad.json: /billboards/0/filename:", "textures': not a file"}},
         bad_scene("EmptyImageFileName", image_scene(""), {"bad.json: /billboards/0/filename: filename must not be empty"}),
+        bad_image("PngDimensionsOverTheLimit", "huge.png", testing::png_header_only(100000, 100000, 8),
+                  "PNG image of 100000 x 100000 pixels is larger than the limit of 67108864 pixels"),
+        bad_image("LosslessJpegIsNamed", "lossless.jpg", lossless_jpeg_frame(),
+                  "unsupported JPEG: lossless JPEG (SOF3) is not supported"),
+        bad_image("PpmCommentAfterMaxvalRunningToTheEnd", "c.ppm", "P6 1 1 255#comment",
+                  "truncated PPM data: the comment after maxval runs to the end of the file"),
 
         // --- Impostors (clrender extension)
         bad_scene("ImpostorViewImageMissing",
@@ -443,6 +462,14 @@ std::vector<BadInput> catalogue() {
         bad_scene("NulInImageFileName", image_scene("checker.png\\u0000.txt"),
                   {"bad.json: /billboards/0/filename: filename contains a NUL character (\\u0000)"},
                   {{"checker.png", png}}),
+        {"DefineNumberOutOfRange", {{"scene.json", scene_with("")}}, {}, "scene.json -D 'eye=[1e400,0,0]'", 1,
+         {"-D eye=[1e400,0,0]: /eye/0: column 2: number 1e400 is out of range"}, "", true},
+        {"DefineArrayThatIsNotJson", {{"scene.json", scene_with("")}}, {}, "scene.json -D 'eye=[0,0'", 1,
+         {"-D eye=[0,0: /eye/2: the value is not valid JSON"}, "", true},
+        {"GifFrameRateItsDelaysCannotHold",
+         {{"path.json", camera_scene(R"("eyeLocations": [[0, 0, 6], [1, 0, 6]], "clrender": {"fps": 60})",
+                                     R"("lookat": [0, 0, 0])")}},
+         {}, "path.json --video v.gif", 2, {"path.json: /clrender/fps: fps: --video v.gif: a GIF takes from 0.001526 to 50"}},
         {"AnimationFrameCountOverflow", {{"path.json", long_animation_scene(30000, 100000)}}, {}, "path.json --frame-count",
          2, {"path.json: /clrender/frames_per_segment: the animation would have (30000 keys - 1) x 100000 frames per segment"}},
         bad_scene("DecodedImagesOverTheMemoryLimit",
@@ -735,6 +762,128 @@ TEST(BadInput, CatalogueCoversAtLeast25Cases) {
     EXPECT_GE(cases.size(), 25u);
     std::set<std::string> names;
     for (const BadInput& input : cases) EXPECT_TRUE(names.insert(input.name).second) << "two cases named " << input.name;
+}
+
+// ---------------------------------------------------------------------------------------
+// The JSON Schema (docs/scene.schema.json) against the catalogue: an editor that checks a
+// scene with the schema must refuse what clrender refuses, where a schema can say why.
+
+// Catalogue scenes the schema cannot refuse: the text is JSON, but what is wrong is beyond a
+// schema (the schema's description lists these rules).
+const std::set<std::string> kBeyondTheSchema = {
+    // the camera's geometry, also between the keys of a path
+    "UpParallelToTheView", "EyeEqualsLookat", "EyeEqualsLookatOnAPath", "EyeMeetsTheLookatPointBetweenKeys",
+    "ViewTurnsParallelToUpBetweenKeys",
+    // a billboard's area and edges: differences of its corners
+    "BillboardCollinearCorners", "BillboardCoincidentCorners", "BillboardEdgeOf1eMinus200",
+    // products of values: width x height, fov_angle against the size; one key's count against another's
+    "ResolutionOverThePixelLimit", "FovNarrowerThanFloatRaysResolve", "MismatchedEyeAndLookatLocations",
+    // a name that must be a key elsewhere in the scene (an impostor's view set)
+    "ImpostorNamesAnUnknownViewSet",
+    // files the scene names
+    "MissingImage", "ImpostorViewImageMissing",
+    // the size, which --size may give instead of the scene: the schema cannot see the command line
+    "MissingWidth", "MissingHeight",
+};
+
+// How deeply `text` nests arrays and objects (brackets in strings counted too: an upper bound).
+int nesting_depth(const std::string& text) {
+    int depth = 0, deepest = 0;
+    for (char c : text) {
+        if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
+        if (c == ']' || c == '}') --depth;
+    }
+    return deepest;
+}
+
+// The catalogue's scene files (bad.json, the file a scene case renders) that are JSON, by case,
+// as written (a repeated key included: the validator, like clrender, takes the last value).
+std::map<std::string, std::string> catalogue_scenes() {
+    std::map<std::string, std::string> scenes;
+    for (const BadInput& input : catalogue()) {
+        // Cases with files beside the scene are about those files (images), which no schema sees.
+        if (input.exit_code != 2 || input.arguments != "bad.json" || input.files.size() != 1 || !input.folders.empty() ||
+            input.prepare || !input.environment.empty())
+            continue;
+        // The validator (Python) recurses once a level, as does writing the JSON out: the cases
+        // of 100000 nested arrays are the parser's, not the schema's.
+        const std::string& text = input.files.front().bytes;
+        if (nesting_depth(text) > 100) continue;
+        const nlohmann::json scene = nlohmann::json::parse(text, nullptr, false);
+        if (!scene.is_discarded()) scenes[input.name] = text;
+    }
+    return scenes;
+}
+
+// "NAME accepted" or "NAME refused" for each file NAME.json in `folder`, by the schema, as
+// python3-jsonschema's Draft 2020-12 validator judges it.
+std::map<std::string, std::string> schema_verdicts(const std::string& folder) {
+    const std::string script = R"(
+import json, pathlib, sys
+from jsonschema import Draft202012Validator
+schema = json.loads(pathlib.Path(sys.argv[1]).read_text(encoding="utf-8"))
+Draft202012Validator.check_schema(schema)
+validator = Draft202012Validator(schema)
+for path in sorted(pathlib.Path(sys.argv[2]).glob("*.json")):
+    scene = json.loads(path.read_text(encoding="utf-8-sig"))
+    print(path.stem, "refused" if any(True for _ in validator.iter_errors(scene)) else "accepted")
+)";
+    const auto result = testing::run_shell("/usr/bin/python3 -c " + testing::shell_quoted(script) + " " +
+                                           testing::shell_quoted(std::string(CLRENDER_SOURCE_DIR) + "/docs/scene.schema.json") +
+                                           " " + testing::shell_quoted(folder));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    std::map<std::string, std::string> verdicts;
+    std::istringstream lines(result.output);
+    for (std::string name, verdict; lines >> name >> verdict;) verdicts[name] = verdict;
+    return verdicts;
+}
+
+bool have_jsonschema() { return testing::run_shell("/usr/bin/python3 -c 'import jsonschema'").exit_code == 0; }
+
+TEST(SceneSchema, RefusesEveryCatalogueSceneWhoseFaultASchemaCanExpress) {
+    if (!have_jsonschema()) GTEST_SKIP() << "python3-jsonschema is not installed (scripts/install-deps.sh installs it)";
+    TempFolder folder;
+    const std::map<std::string, std::string> scenes = catalogue_scenes();
+    for (const auto& [name, scene] : scenes) folder.write(name + ".json", scene);
+    const std::map<std::string, std::string> verdicts = schema_verdicts(folder.path());
+    ASSERT_EQ(verdicts.size(), scenes.size());
+    EXPECT_GE(scenes.size(), 40u) << "the catalogue's JSON scenes were not all found";
+    for (const auto& [name, verdict] : verdicts) {
+        if (kBeyondTheSchema.count(name))
+            EXPECT_EQ(verdict, "accepted") << name << ": the schema refuses it now; take it off kBeyondTheSchema";
+        else
+            EXPECT_EQ(verdict, "refused") << name << ": clrender refuses it, the schema does not";
+    }
+}
+
+// And accepts the scenes clrender renders: the demo scenes, the course's scenes where the
+// course material is present, and the catalogue's base scenes.
+TEST(SceneSchema, AcceptsScenesClrenderRenders) {
+    if (!have_jsonschema()) GTEST_SKIP() << "python3-jsonschema is not installed (scripts/install-deps.sh installs it)";
+    TempFolder folder;
+    std::vector<fs::path> good = {fs::path(CLRENDER_SOURCE_DIR) / "scenes/demo/demo.json",
+                                  fs::path(CLRENDER_SOURCE_DIR) / "scenes/demo/showcase.json"};
+    const fs::path course = fs::path(CLRENDER_SOURCE_DIR) / "../shared";
+    if (fs::is_directory(course)) {
+        for (const auto& entry : fs::recursive_directory_iterator(course, fs::directory_options::skip_permission_denied))
+            if (entry.is_regular_file() && entry.path().extension() == ".json") good.push_back(entry.path());
+    }
+    int index = 0;
+    std::map<std::string, std::string> sources;
+    for (const fs::path& path : good) {
+        const nlohmann::json scene = nlohmann::json::parse(read_bytes(path), nullptr, false, /*ignore_comments=*/true);
+        if (scene.is_discarded() || !scene.is_object() || (!scene.contains("eye") && !scene.contains("eyeLocations")))
+            continue;  // not a scene (another JSON file of the course)
+        const std::string name = "scene" + std::to_string(index++);
+        sources[name] = path.string();
+        folder.write(name + ".json", scene.dump());
+    }
+    folder.write("base.json", scene_with(""));
+    folder.write("sphere.json", sphere_scene(R"("radius": 1e-15)"));
+    folder.write("far.json", scene_with(R"("SunLocation": [1e15, -1e15, 0])"));
+    folder.write("animation.json", animation_scene());
+    for (const auto& [name, verdict] : schema_verdicts(folder.path()))
+        EXPECT_EQ(verdict, "accepted") << name << " " << sources[name];
 }
 
 }  // namespace

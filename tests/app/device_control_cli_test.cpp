@@ -77,5 +77,25 @@ TEST(DeviceControlCli, DashDGpuWithoutAGpuIsADeviceErrorListingTheDevices) {
     EXPECT_EQ(folder.entry_count(), 1) << "nothing written";
 }
 
+// The listing under a device error is lines, as --list-devices prints them, not one line
+// with escaped line breaks.
+TEST(DeviceControlCli, AnUnknownDeviceListsTheDevicesOnLinesOfTheirOwn) {
+    TempFolder folder;
+    folder.write("scene.json", kScene);
+    auto result = run_clrender("scene.json -d no-such-device -o out.png", folder.path());
+    EXPECT_EQ(result.exit_code, 3) << result.output;
+    EXPECT_EQ(result.output.find("\\x0A"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.rfind("clrender: error: unknown OpenCL device 'no-such-device'; available devices:\n", 0), 0u)
+        << result.output;
+    for (const DeviceEntry& entry : list_devices()) {
+        const std::string line = "[" + std::to_string(entry.index) + "] " + std::to_string(entry.platform_index) + ":" +
+                                 std::to_string(entry.device_index) + "  " + entry.device_name;
+        const std::size_t at = result.output.find(line);
+        ASSERT_NE(at, std::string::npos) << result.output;
+        EXPECT_EQ(result.output.rfind('\n', at), result.output.find_last_not_of(' ', at - 1)) << "a line of its own";
+    }
+    EXPECT_EQ(folder.entry_count(), 1) << "nothing written";
+}
+
 }  // namespace
 }  // namespace clr

@@ -28,6 +28,17 @@ TEST(ExitStatus, TypedErrorsKeepTheirCodeAndMessage) {
               "clrender: error: a.json: /width: must be positive");
 }
 
+// A listing under an error keeps its line breaks; each line is still escaped alone, so a
+// device name cannot break or forge a line.
+TEST(ExitStatus, LinesUnderAnErrorAreLinesEachEscaped) {
+    const ExitStatus status =
+        status_for(DeviceError("unknown OpenCL device 'x\n'; available devices:", {"[0] 0:0  cpu", "[1] 0:1  evil\nclrender: ok\x1b"}));
+    EXPECT_EQ(status.code, 3);
+    EXPECT_EQ(status.message,
+              "clrender: error: unknown OpenCL device 'x\\x0A'; available devices:\n  [0] 0:0  cpu\n  [1] 0:1  "
+              "evil\\x0Aclrender: ok\\x1B");
+}
+
 TEST(ExitStatus, UnexpectedExceptionIsAnInternalErrorNotADeviceError) {
     const ExitStatus status = status_for(std::logic_error("vector::_M_range_check"));
     EXPECT_EQ(status.code, 5);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "device/device_selection.h"
 #include "device/opencl.h"
 #include "scene/image_loader.h"
 #include "support/shell.h"
@@ -234,6 +235,24 @@ TEST_F(Install, ManPageRendersWithEveryOptionAndSection) {
     EXPECT_GE(entries, 15);
 }
 
+// The README's build commands name targets this build has, and one of them builds only the
+// program: a user who follows it gets build/clrender without the tests.
+TEST(ReadmeBuild, NamesTheProgramsTargetAndOnlyTargetsThatExist) {
+    const std::string readme = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "README.md");
+    EXPECT_NE(readme.find("cmake --build build -j2 --target clrender "), std::string::npos)
+        << "the README does not say how to build only the program";
+    const auto help = run_shell(shell_quoted(CLRENDER_CMAKE) + " --build " + shell_quoted(CLRENDER_BUILD_DIR) + " --target help");
+    ASSERT_EQ(help.exit_code, 0) << help.output;
+    const std::regex target(R"(--target ([A-Za-z0-9_]+))");
+    int named = 0;
+    for (auto match = std::sregex_iterator(readme.begin(), readme.end(), target); match != std::sregex_iterator(); ++match) {
+        ++named;
+        EXPECT_NE(help.output.find("... " + (*match)[1].str() + "\n"), std::string::npos)
+            << "README.md names target " << (*match)[1] << ", which the build does not have";
+    }
+    EXPECT_GE(named, 1);
+}
+
 // Runs the installed completion in bash for the words of a command line (the last is the one
 // being completed) in the work folder; returns the candidates, one per line, sorted.
 std::string complete(const std::string& prefix, const std::string& folder, const std::vector<std::string>& words) {
@@ -279,6 +298,30 @@ TEST_F(Install, CompletionIsValidBashAndCompletesOptionsValuesAndScenes) {
     fs::create_directory(work_.file("sub"));
     EXPECT_EQ(complete(prefix, work_.path(), {"clrender", ""}), "a.json\nb.js\nsub\n");
     EXPECT_EQ(complete(prefix, work_.path(), {"clrender", "a.json", "-o", "n"}), "notes.txt\n");
+}
+
+// -d completes what it takes: the kinds, and each device's index and platform:device as the
+// program lists them.
+TEST_F(Install, CompletionOffersDeviceSelectorsAfterDashD) {
+    const std::string prefix = prefix_.path();
+    const std::string all = "\n" + complete(prefix, work_.path(), {"clrender", "-d", ""});
+    EXPECT_NE(all.find("\ncpu\n"), std::string::npos) << all;
+    EXPECT_NE(all.find("\ngpu\n"), std::string::npos) << all;
+    const std::vector<DeviceEntry> devices = list_devices();
+    ASSERT_FALSE(devices.empty()) << "the tests need a device (PoCL)";
+    for (const DeviceEntry& entry : devices) {
+        EXPECT_NE(all.find("\n" + std::to_string(entry.index) + "\n"), std::string::npos) << all;
+        EXPECT_NE(all.find("\n" + std::to_string(entry.platform_index) + ":" + std::to_string(entry.device_index) + "\n"),
+                  std::string::npos)
+            << all;
+    }
+    EXPECT_EQ(complete(prefix, work_.path(), {"clrender", "--device", "cp"}), "cpu\n");
+    EXPECT_EQ(complete(prefix, work_.path(), {"clrender", "--device", "=", "0:"}), "0:0\n");
+    // A device's name completes too, quoted for the shell.
+    const std::string& name = devices.front().device_name;
+    const std::string named = complete(prefix, work_.path(), {"clrender", "-d", name.substr(0, 3)});
+    const auto quoted = run_shell("bash -c " + shell_quoted("printf '%q' " + shell_quoted(name)));
+    EXPECT_NE(named.find(quoted.output + "\n"), std::string::npos) << named;
 }
 
 }  // namespace

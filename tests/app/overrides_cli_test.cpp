@@ -125,6 +125,28 @@ TEST(SceneOverridesCli, StrictTurnsWarningsIntoOneErrorAndWritesNothing) {
     EXPECT_EQ(run_clrender("s.json -q --reference --strict -o ok.png", folder.path()).exit_code, 0);
 }
 
+TEST(SceneOverridesCli, StrictFailsOnADuplicateKeyInsideADefine) {
+    TempFolder folder;
+    folder.write("s.json", kScene);
+    const auto strict =
+        run_clrender("s.json -q --reference --strict -o strict.png -D 'clrender={\"spp\": 1, \"spp\": 2}'", folder.path());
+    EXPECT_EQ(strict.exit_code, 2) << strict.output;
+    EXPECT_EQ(count_of(strict.output, "clrender: warning: s.json: /clrender/spp: duplicate key"), 1) << strict.output;
+    EXPECT_NE(strict.output.find("1 warning (above), and --strict makes warnings errors"), std::string::npos) << strict.output;
+    EXPECT_FALSE(fs::exists(folder.file("strict.png")));
+}
+
+TEST(SceneOverridesCli, ANumberTooLargeInADefineIsOutOfRangeNotAWrongType) {
+    TempFolder folder;
+    folder.write("s.json", kScene);
+    const auto result = run_clrender("s.json -q --reference -o out.png -D 'eye=[1e400,0,0]'", folder.path());
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("-D eye=[1e400,0,0]: /eye/0: column 2: number 1e400 is out of range"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("must be an array"), std::string::npos) << result.output;
+    EXPECT_EQ(entries_of(folder.path()), std::set<std::string>{"s.json"});
+}
+
 TEST(SceneOverridesCli, CheckSummarisesWithoutAnyOpenClPlatformAndWritesNothing) {
     TempFolder folder;
     fs::create_directories(folder.file("no-icds"));

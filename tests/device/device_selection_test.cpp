@@ -96,6 +96,22 @@ TEST(DeviceSelection, ListingShowsIndicesAndPlatforms) {
     EXPECT_NE(format_device_list({}).find("No OpenCL devices"), std::string::npos);
 }
 
+TEST(DeviceSelection, AnErrorCarriesTheListingAsLinesWithTheDriversNamesEscaped) {
+    auto devices = fake_devices();
+    devices[2].device_name = "cpu\nforged";
+    try {
+        select_device(devices, "quantum");
+        FAIL() << "accepted";
+    } catch (const DeviceError& error) {
+        EXPECT_EQ(error.headline(), "unknown OpenCL device 'quantum'; available devices:");
+        const std::vector<std::string> expected = {"Platform 0: NVIDIA CUDA", "  [0] 0:0  NVIDIA H100 (GPU, OpenCL 1.2)",
+                                                   "Platform 1: Portable Computing Language",
+                                                   "  [1] 1:0  pthread-skylake (CPU, OpenCL 1.2)",
+                                                   "  [2] 1:1  cpu\\x0Aforged (CPU, OpenCL 1.2)"};
+        EXPECT_EQ(error.lines(), expected);
+    }
+}
+
 // -t on a driver that is not told the thread count by the environment: a sub-device of that
 // many compute units, which renders the same bytes.
 TEST(DeviceSelection, ASubDeviceOfOneComputeUnitRendersTheSameBytes) {

@@ -8,12 +8,14 @@
 #include <sys/stat.h>
 
 #include <array>
+#include <cmath>
 #include <chrono>
 #include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -187,6 +189,73 @@ TEST(VideoEncoder, GifHasEveryFrame) {
     for (const char* line : {"codec_name=gif", "width=20", "height=12", "nb_read_frames=4"})
         EXPECT_NE(info.find(line), std::string::npos) << line << " not in:\n" << info;
     EXPECT_EQ(entries(folder.path()), std::vector<std::string>({"loop.gif"}));
+}
+
+// The delays, in hundredths of a second, of a GIF that ffmpeg writes at `fps` from six
+// frames fed through a pipe as clrender feeds them; "" when it writes none.
+std::vector<long> gif_delays(const std::string& encoder, const TempFolder& folder, double fps) {
+    const std::string gif = folder.file("rate.gif");
+    char rate[32];
+    std::snprintf(rate, sizeof rate, "%.12g", fps);
+    const std::string command = "head -c 1152 /dev/zero | '" + encoder + "' -v error -f rawvideo -pix_fmt rgb24 -s 8x8 -r " +
+                                rate + " -i - -f gif -y '" + gif + "' && ffprobe -v error -show_entries packet=duration " +
+                                "-of csv=p=0 '" + gif + "'";
+    std::vector<long> delays;
+    std::istringstream lines(command_output(command));
+    for (long delay; lines >> delay;) delays.push_back(delay);
+    return delays;
+}
+
+// Whether every delay is the rate's own, 100 / fps hundredths, give or take the rounding.
+bool delays_hold(const std::vector<long>& delays, double fps) {
+    if (delays.empty()) return false;
+    for (long delay : delays)
+        if (std::abs(delay - 100 / fps) > 1) return false;
+    return true;
+}
+
+// The GIF range is what a GIF holds: at the fastest and slowest rates taken every frame's
+// delay is the rate's own; just outside them ffmpeg silently writes other delays (10 for
+// a delay of 1, 65535 for a longer one), so those rates are refused.
+TEST(VideoEncoder, GifFrameRatesTakenAreTheOnesItsDelaysHold) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    const double slowest = std::ceil(kMinGifFps * 1e6) / 1e6;  // as the message shows it
+    for (double taken : {kMaxGifFps, 25.0, slowest}) {
+        EXPECT_EQ(video_fps_problem(taken, VideoFormat::Gif), "") << taken;
+        EXPECT_TRUE(delays_hold(gif_delays(*encoder, folder, taken), taken)) << taken << " fps";
+    }
+    for (double refused : {60.0, 100.0, 0.0015}) {
+        EXPECT_NE(video_fps_problem(refused, VideoFormat::Gif).find("a GIF takes from 0.001526 to 50 frames per second"),
+                  std::string::npos)
+            << video_fps_problem(refused, VideoFormat::Gif);
+        EXPECT_FALSE(delays_hold(gif_delays(*encoder, folder, refused), refused)) << refused << " fps: ffmpeg holds it";
+    }
+    // The encoder itself never takes a rate its format cannot hold.
+    EXPECT_THROW(VideoEncoder({folder.file("fast.gif"), 8, 8, 60}, *encoder), std::invalid_argument);
+}
+
+// At the slowest MP4 rate taken, clrender's encoder writes a video that passes its own check;
+// at rates refused, ffmpeg fails.
+TEST(VideoEncoder, Mp4FrameRatesTakenAreOnesFfmpegWrites) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    VideoSettings slow{folder.file("slow.mp4"), 16, 16};
+    slow.fps = kMinMp4Fps;
+    encode(slow, *encoder, 3);
+    EXPECT_NE(probe(slow.path).find("nb_read_frames=3"), std::string::npos) << probe(slow.path);
+    EXPECT_EQ(video_fps_problem(kMaxMp4Fps, VideoFormat::Mp4), "");
+    for (double refused : {1e-5, 1e-6}) {
+        EXPECT_NE(video_fps_problem(refused, VideoFormat::Mp4).find("an MP4 takes from 0.001 to 1000 frames per second"),
+                  std::string::npos);
+        // What ffmpeg itself does with such a rate, through a raw pipe as clrender feeds it.
+        const std::string command = "head -c 2304 /dev/zero | '" + *encoder + "' -v error -f rawvideo -pix_fmt rgb24 -s 16x16 -r " +
+                                    std::to_string(refused) + " -i - -c:v libx264 -pix_fmt yuv420p -f mp4 -y '" +
+                                    folder.file("x.mp4") + "' >/dev/null 2>&1; echo $?";
+        EXPECT_NE(command_output(command), "0\n") << refused << " fps: ffmpeg wrote it, so it need not be refused";
+    }
 }
 
 // The same frames and options give the same bytes (docs/command-line.md, Reproducible output).

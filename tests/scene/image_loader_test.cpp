@@ -169,6 +169,22 @@ TEST(ImageLoader, ReadsBinaryPpmWithComments) {
     EXPECT_EQ(texel_at(*image, 1, 0), (Texel{10, 11, 12, 255}));
 }
 
+// Netpbm: a comment may come before the one whitespace byte that ends the header; as
+// libnetpbm reads it, the comment's newline is that byte, so the raster starts right after.
+TEST(ImageLoader, ReadsBinaryPpmWithACommentRightAfterMaxval) {
+    TempFolder folder;
+    folder.write("c.ppm", std::string("P6 2 1 255#made by hand\n") + std::string("\x01\x02\x03\x0a\x0b\x0c", 6));
+    const auto image = load_image(folder.file("c.ppm"));
+    EXPECT_EQ(texel_at(*image, 0, 0), (Texel{1, 2, 3, 255}));
+    EXPECT_EQ(texel_at(*image, 1, 0), (Texel{10, 11, 12, 255}));
+    // A raster byte that is '#' right after the whitespace is data, not a comment.
+    folder.write("hash.ppm", std::string("P6 1 1 255\n#\x02\x03"));
+    EXPECT_EQ(texel_at(*load_image(folder.file("hash.ppm")), 0, 0), (Texel{'#', 2, 3, 255}));
+    // A comment that never ends leaves no raster, and says so.
+    folder.write("open.ppm", "P6 1 1 255#no end to this comment");
+    expect_image_error(folder.file("open.ppm"), "truncated PPM data: the comment after maxval runs to the end of the file");
+}
+
 TEST(ImageLoader, ReadsBinaryPpmWithSixteenBitSamples) {
     TempFolder folder;
     // maxval > 255: two bytes a sample, most significant first; 0x01FF / 257 = 1.99 -> 2.

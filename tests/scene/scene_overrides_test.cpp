@@ -95,6 +95,58 @@ TEST(SceneOverrides, RefusesMalformedArguments) {
     EXPECT_NE(message("/a~2=1").find("'~' in a JSON pointer"), std::string::npos);
 }
 
+// A number no double holds must not become the string "[1e400,0,0]" and fail later as the
+// wrong type: it is named as out of range, with its place in the scene.
+TEST(SceneOverrides, ANumberTooLargeForADoubleIsOutOfRangeAtItsLocation) {
+    const auto message = [](const std::string& argument) -> std::string {
+        try {
+            parse_scene_override(argument);
+        } catch (const UsageError& error) {
+            return error.what();
+        }
+        return "";
+    };
+    EXPECT_EQ(message("eye=[1e400,0,0]"),
+              "-D eye=[1e400,0,0]: /eye/0: column 2: number 1e400 is out of range (numbers must be finite, at most "
+              "about 1.8e308 in size)");
+    EXPECT_NE(message("/spheres/0/center=[0, -1E+999, 0]").find("/spheres/0/center/1: column 5: number -1E+999 is out of range"),
+              std::string::npos);
+    EXPECT_NE(message("clrender.spp=1e400").find("-D clrender.spp=1e400: /clrender/spp: column 1: number 1e400 is out of range"),
+              std::string::npos);
+    EXPECT_NE(message("light={\"position\": [0, 2e308, 0]}").find("/light/position/1: column 18: number 2e308"),
+              std::string::npos);
+    // The largest double is a number.
+    EXPECT_EQ(parse_scene_override("x=1.7e308").value, 1.7e308);
+}
+
+TEST(SceneOverrides, AnArrayOrObjectThatIsNotJsonIsRefusedNotTakenAsText) {
+    try {
+        parse_scene_override("eye=[0, 0");
+        FAIL() << "taken";
+    } catch (const UsageError& error) {
+        EXPECT_NE(std::string(error.what()).find("-D eye=[0, 0: /eye/2: the value is not valid JSON (column 6:"),
+                  std::string::npos)
+            << error.what();
+    }
+    EXPECT_THROW(parse_scene_override("light={\"position\": }"), UsageError);
+    // Other text that is not JSON stays a string, as documented.
+    EXPECT_EQ(parse_scene_override("filename=3d.png").value, "3d.png");
+    EXPECT_EQ(parse_scene_override("filename=\"[a].png\"").value, "[a].png");
+}
+
+// --strict counts the scene's warnings: a key repeated inside a -D value must be one of them.
+TEST(SceneOverrides, ADuplicateKeyInADefinedValueIsAWarningAtItsLocation) {
+    Json json = minimal_scene();
+    const Scene scene = parse(json, with_overrides({"clrender={\"spp\": 4, \"spp\": 8}"}));
+    EXPECT_EQ(scene.sampling.samples_per_pixel, 8) << "the last value is used, as in a file";
+    ASSERT_EQ(scene.warnings.size(), 1u) << all_warnings(scene);
+    EXPECT_EQ(scene.warnings[0], "/clrender/spp: duplicate key (the last value is used) (set on the command line: -D "
+                                 "clrender={\"spp\": 4, \"spp\": 8})");
+    json["spheres"] = Json::array();
+    const Scene nested = parse(json, with_overrides({"/spheres/-={\"center\": [0,0,0], \"radius\": 1, \"radius\": 2, \"ambient\": [1,0,0]}"}));
+    EXPECT_TRUE(has_warning(nested, "/spheres/-/radius: duplicate key")) << all_warnings(nested);
+}
+
 TEST(SceneOverrides, TheLoaderChecksOverriddenValuesAndNamesTheArgument) {
     Json json = minimal_scene();
     json["spheres"] = {sphere()};
