@@ -1,4 +1,4 @@
-// Which requests `clrender view` answers (docs/command-line.md, clrender view: Security):
+// Which requests `clrender view` answers (docs/command-line.md, Viewer: Security):
 // - the Host header names this server by an address, never by a DNS name that a web page
 //   could point at 127.0.0.1 (DNS rebinding);
 // - every request carries the access token, in the query (token=...) or in the cookie that

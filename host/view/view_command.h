@@ -1,5 +1,5 @@
 // `clrender view SCENE [options]`: the scene rendered live in the browser (docs/command-line.md,
-// clrender view).
+// Viewer).
 #pragma once
 
 namespace clr {

@@ -48,7 +48,7 @@ ParsedViewOptions parse_view_options(int argc, const char* const* argv) {
         "The render options --size, --spp, -d, -t, -D, --precision, --placeholders, --seed, --strict, --kernel-dir "
         "and -q apply to what the viewer renders, as for a render (clrender --help).\n"
         "Prints one line, 'clrender: view at http://127.0.0.1:PORT/?token=TOKEN', and runs until Ctrl-C or SIGTERM "
-        "(exit 130 or 143). See docs/command-line.md, clrender view.");
+        "(exit 130 or 143). See docs/command-line.md, Viewer.");
     app.allow_extras();
     app.add_option("--port", options.port, "TCP port to listen on; 0 (default): a free port")->check(CLI::Range(0, 65535));
     app.add_option("--bind", options.bind,

@@ -1,5 +1,5 @@
 // What `clrender view SCENE [options]` was asked for: the server's own options and the render
-// options that apply to what it renders (docs/command-line.md, clrender view).
+// options that apply to what it renders (docs/command-line.md, Viewer).
 #pragma once
 
 #include <optional>

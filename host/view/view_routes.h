@@ -1,4 +1,4 @@
-// What `clrender view` answers, route by route (docs/command-line.md, clrender view):
+// What `clrender view` answers, route by route (docs/command-line.md, Viewer):
 //   GET  /, /viewer.js, /viewer.css   the page, from the binary (view/embedded_assets.h)
 //   GET  /frame.png, /frame.rgba      a frame for the query's camera (view/view_camera.h)
 //   GET  /scene.json                  the scene's camera, size, samples and path
