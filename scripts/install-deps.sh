@@ -30,6 +30,8 @@ packages=(
   "${demo_packages[@]}"
   clinfo
   googletest libgtest-dev
+  # `clrender view`'s web server (host/view/) and its tests' HTTP client
+  libcpp-httplib-dev
   # the man page, made from --help at build time (cmake/write_man_page.cmake)
   help2man
   parallel

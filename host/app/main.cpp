@@ -3,12 +3,14 @@
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <string_view>
 
 #include "app/compare_command.h"
 #include "app/compare_options.h"
 #include "app/exit_status.h"
 #include "app/options.h"
 #include "app/run.h"
+#include "view/view_command.h"
 
 namespace {
 
@@ -26,6 +28,9 @@ int exit_code_of(const std::function<int()>& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // `clrender view SCENE`: the live viewer, with options of its own (a scene file named
+    // "view" is still rendered as ./view).
+    if (argc > 1 && std::string_view(argv[1]) == "view") return clr::view_main(argc - 1, argv + 1);
     if (clr::is_compare_command(argc, argv)) {  // clrender compare SCENE IMAGE
         clr::ParsedCompare parsed = clr::parse_compare_options(argc - 1, argv + 1);
         if (parsed.exit_code) return *parsed.exit_code;
