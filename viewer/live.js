@@ -6,12 +6,17 @@
 "use strict";
 
 // The query string of a frame request; numbers are written as JavaScript's shortest exact
-// form, so the server reads back exactly the doubles the page holds.
+// form, so the server reads back exactly the doubles the page holds. A frame of the scene's
+// animation (frame not null) is asked for by its number alone: the server places the camera
+// on the path with clrender's own interpolation and uses that frame's samples, so the image is
+// the batch render of that frame.
 function clrenderFrameQuery(token, camera, size, spp, frame) {
   const params = new URLSearchParams();
   if (token) params.set("token", token);
-  params.set("eye", camera.eye.join(","));
-  params.set("lookat", camera.lookat.join(","));
+  if (frame === null || frame === undefined) {
+    params.set("eye", camera.eye.join(","));
+    params.set("lookat", camera.lookat.join(","));
+  }
   params.set("up", camera.up.join(","));
   params.set("fov", String(camera.fov));
   params.set("size", `${size[0]}x${size[1]}`);

@@ -44,9 +44,11 @@ class ClrenderPaths {
   }
 
   body() {
+    // One up vector and field of view for the whole path (a scene has one): the first key's.
     return JSON.stringify({
       keys: this.keys.map((key) => ({ eye: key.eye, lookat: key.lookat })),
-      name: this.viewer.sceneName,
+      up: this.keys[0].up,
+      fov: this.keys[0].fov,
     });
   }
 

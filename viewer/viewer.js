@@ -74,12 +74,12 @@
     });
     const frames = Math.max(1, scene.frames || 1);
     timeInput.max = String(frames - 1);
-    document.getElementById("time-label").hidden = !(scene.path && scene.path.length > 1);
+    document.getElementById("time-label").hidden = frames < 2;
     const sceneCamera = fromScene(scene.camera);
-    api.setCamera(sceneCamera, scene.path && scene.path.length > 1 ? 0 : null);
+    api.setCamera(sceneCamera, frames > 1 ? 0 : null);
     new ClrenderPaths(api);
     new ClrenderCompare(api);
-    wireInput(sceneCamera);
+    wireInput(sceneCamera, frames);
     setInterval(showFps, 250);
     api.ready = true;
   }
@@ -121,7 +121,7 @@
     }
   }
 
-  function wireInput(sceneCamera) {
+  function wireInput(sceneCamera, frames) {
     // Drag: orbit (a quarter turn across 300 CSS pixels). A press without movement is a click.
     let drag = null;
     canvas.addEventListener("pointerdown", (event) => {
@@ -200,7 +200,7 @@
       camera.fov = Number(fovInput.value);
       api.setCamera(camera, null, event.timeStamp);
     });
-    const sceneFrame = scene.path && scene.path.length > 1 ? 0 : null;
+    const sceneFrame = frames > 1 ? 0 : null;
     document.getElementById("reset").addEventListener("click", () => {
       timeInput.value = "0";
       timeValue.textContent = "0";
@@ -209,7 +209,9 @@
     timeInput.addEventListener("input", (event) => {
       const k = Number(timeInput.value);
       timeValue.textContent = String(k);
-      if (scene.path && scene.path[k]) api.setCamera(fromScene(scene.path[k]), k, event.timeStamp);
+      // The page's own idea of the frame's camera (linear between keys) is what a drag starts
+      // from; the image itself is the server's frame k, placed as clrender places it.
+      api.setCamera(ClrenderCamera.alongKeys(scene.path.map(fromScene), k, frames), k, event.timeStamp);
     });
   }
 
