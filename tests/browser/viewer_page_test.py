@@ -262,13 +262,13 @@ class ViewerPage(unittest.TestCase):
                         what="the comparison at tolerance 1")
         tolerance.clear()
         tolerance.send_keys("2")
-        # Clicking a differing pixel of the heat map explains it.
+        # Clicking a differing pixel of the heat map (shown at four times its size) explains it.
         diff = self.driver.find_element("id", "diff")
+        self.driver.execute_script("arguments[0].style.width = arguments[1] + 'px'", diff, width * 4)
         rect = self.driver.execute_script("return arguments[0].getBoundingClientRect().toJSON()", diff)
         x, y = changed[1]
-        scale = rect["width"] / width
         ActionChains(self.driver).move_to_element_with_offset(
-            diff, round((x + 0.5) * scale - rect["width"] / 2), round((y + 0.5) * scale - rect["height"] / 2)).click().perform()
+            diff, round(4 * x + 2 - rect["width"] / 2), round(4 * y + 2 - rect["height"] / 2)).click().perform()
         text = self.wait_until("const t = document.getElementById('explain').textContent;"
                                "return t.includes('asking') ? '' : t", what="the explanation of a differing pixel")
         self.assertTrue(text.startswith(f"Pixel ({x}, {y})"), text[:200])
