@@ -104,6 +104,7 @@ class ClrenderPaths {
     try {
       const answer = await this.post("export");
       this.exported = JSON.parse(answer.scene);
+      this.json.textContent = answer.scene;  // for readers of the element's text
       this.json.value = answer.scene;
       this.json.dataset.file = answer.file || "";
       const name = (answer.file || `${this.viewer.sceneName || "scene"}-path.json`).split("/").pop();

@@ -187,6 +187,25 @@ class ViewerPage(unittest.TestCase):
         self.assertEqual(read_png(last), self.frame_png(second), "the export's last frame is not the last key's view")
         self.driver.find_element("id", "clear-keys").click()
 
+    def test_h_render_video_shows_progress_and_writes_the_video(self):
+        self.reset()
+        self.driver.find_element("id", "clear-keys").click()
+        first = self.camera()
+        self.driver.find_element("id", "record").click()
+        self.set_camera(dict(first, eye=[first["eye"][0] - 2.0, first["eye"][1], first["eye"][2]]))
+        self.driver.find_element("id", "record").click()
+        self.driver.find_element("id", "render-video").click()
+        text = self.wait_until("const t = document.getElementById('video-status').textContent;"
+                               "return t.startsWith('Video') ? t : ''", timeout=240, what="the video")
+        self.assertTrue(text.startswith("Video written to"), text)
+        progress = self.driver.find_element("id", "video-progress")
+        self.assertEqual(progress.get_attribute("value"), progress.get_attribute("max"))
+        self.assertEqual(int(progress.get_attribute("max")), 11)  # 2 keys: 10 frames per segment + 1
+        path = self.driver.execute_script("return document.getElementById('video-status').dataset.file")
+        with open(os.path.join(self.work.name, path), "rb") as f:
+            self.assertEqual(f.read(12)[4:8], b"ftyp", "the video is not an MP4")
+        self.driver.find_element("id", "clear-keys").click()
+
     def test_e_click_explains_the_pixel_under_the_pointer(self):
         from selenium.webdriver.common.action_chains import ActionChains
         self.reset()
