@@ -3,7 +3,7 @@
 //
 //   clrender_fuzz_seeds SOURCE_DIR OUT_DIR
 //
-// writes OUT_DIR/scene (scene files: the demo scenes from SOURCE_DIR/scenes/demo and one
+// writes OUT_DIR/view (viewer requests), OUT_DIR/scene (scene files: the demo scenes from SOURCE_DIR/scenes/demo and one
 // scene for each key, variant and image kind of docs/scene-format.md), OUT_DIR/png,
 // OUT_DIR/jpeg, OUT_DIR/ppm_p3 and OUT_DIR/ppm_p6 (images in every variant the decoders read,
 // and the demo's textures). The output is the same on every run and machine.
@@ -313,6 +313,19 @@ int main(int argc, char** argv) {
         for (const NamedPpm& ppm : ppms(true)) write(out / "ppm_p3", ppm.name, clr::fuzz::encode_ppm(ppm.spec));
         write(out / "ppm_p3", "demo_sign.ppm", read(demo / "sign.ppm"));
         for (const NamedPpm& ppm : ppms(false)) write(out / "ppm_p6", ppm.name, clr::fuzz::encode_ppm(ppm.spec));
+
+        // Viewer requests (view_request_fuzzer.cpp): METHOD, PATH, HOST, ORIGIN, COOKIE lines, then
+        // query parameters; a POST body of camera keys.
+        const std::string token = "token=0123456789abcdef0123456789abcdef";
+        write(out / "view", "frame", "GET\n/frame.png\n127.0.0.1:8123\n\n\n" + token +
+                                         "\neye=1,2,3\nlookat=0,0,0\nup=0,1,0\nfov=45\nsize=64x48\nspp=4\n");
+        write(out / "view", "path_frame", "GET\n/frame.rgba\nlocalhost:8123\n\n\n" + token + "\nframe=5\neye=0,5,5\n");
+        write(out / "view", "explain", "GET\n/explain\n[::1]:8123\n\n\n" + token + "\nx=3\ny=7\nfov=1e-5\n");
+        write(out / "view", "cookie", "GET\n/scene.json\n127.0.0.1:8123\n\nclrender_token=0123456789abcdef0123456789abcdef\n");
+        write(out / "view", "export",
+              "{\"keys\": [{\"eye\": [0, 1, 5], \"lookat\": [0, 0, 0]}, {\"eye\": [1, 1, 5], \"lookat\": [0, 0, 0]}], "
+              "\"name\": \"tour\", \"up\": [0, 1, 0], \"fov\": 40}");
+        write(out / "view", "post", "POST\n/export\n127.0.0.1:8123\nhttp://127.0.0.1:8123\n\n" + token + "\n");
     } catch (const std::exception& error) {
         std::cerr << "clrender_fuzz_seeds: " << error.what() << "\n";
         return 1;

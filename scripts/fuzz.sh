@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang into build-fuzz/ and runs each for a bounded time:
-# the scene loader, and the image loader once per decoder path (PNG, JPEG, PPM P3, PPM P6),
+# the scene loader, the image loader once per decoder path (PNG, JPEG, PPM P3, PPM P6), and the
+# viewer's request handling (clrender view),
 # each run with its own seed corpus and dictionary. Prints the executions per target and
 # fails if any target found a crash, a hang, a leak or a sanitizer report.
 #
@@ -21,7 +22,8 @@ bash "$root/scripts/install-deps.sh"
 # instrumentation would only slow them down.
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DCLRENDER_BUILD_FUZZERS=ON -DCLRENDER_BUILD_TESTS=OFF -DCLRENDER_BUILD_BENCH=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target clrender_fuzz_scene_loader clrender_fuzz_image_loader clrender_fuzz_seeds
+cmake --build "$build" -j"$(nproc)" --target clrender_fuzz_scene_loader clrender_fuzz_image_loader clrender_fuzz_view_request \
+    clrender_fuzz_seeds
 
 work="$build/fuzz"
 rm -rf "$work/seeds" "$work/logs"
@@ -35,6 +37,7 @@ targets=(
     "jpeg       clrender_fuzz_image_loader jpeg   jpeg.dict"
     "ppm_p3     clrender_fuzz_image_loader ppm_p3 ppm.dict"
     "ppm_p6     clrender_fuzz_image_loader ppm_p6 ppm.dict"
+    "view       clrender_fuzz_view_request view   view.dict"
 )
 
 # The fuzzers load scenes, whose images would otherwise go to the user's decoded-image cache.

@@ -17,6 +17,8 @@ packages=(
   # EXR output (-o frame.exr): OpenEXR 3 and its CMake config
   libopenexr-dev
   googletest libgtest-dev
+  # `clrender view`'s web server (host/view/) and its tests' HTTP client
+  libcpp-httplib-dev
   # the man page, made from --help at build time (cmake/write_man_page.cmake)
   help2man
   ffmpeg

@@ -73,10 +73,14 @@ void describe_kernel_bytes(const KernelRendererFactory& kernel_renderer, const C
 
 void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
                    std::ostream& out) {
-    const Options::PixelPosition pixel = *options.explain_pixel;
-    check_inside(pixel, scene);
+    check_inside(*options.explain_pixel, scene);
     const int frame = explained_frame(options, scene);
-    const CameraKey key = camera_at_frame(scene, frame);
+    explain_pixel_of_camera(*options.explain_pixel, scene, camera_at_frame(scene, frame), frame, kernel_renderer, out);
+}
+
+void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& scene, const CameraKey& key, int frame,
+                             const KernelRendererFactory& kernel_renderer, std::ostream& out) {
+    check_inside(pixel, scene);
     const reference::CameraFrame camera = reference::camera_of(scene, key);
     // The reference traces impostors as billboards placed for this camera, as render() does.
     const Scene placed = reference::with_impostors_placed(scene, camera);

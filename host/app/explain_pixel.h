@@ -22,4 +22,10 @@ using KernelRendererFactory = std::function<std::unique_ptr<FrameRenderer>()>;  
 void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
                    std::ostream& out);
 
+// The same for pixel `pixel` of frame `frame` (which seeds the samples) seen from `key`, with the
+// scene's up vector, field of view, size and sampling (`clrender view` explains the camera the
+// page shows).
+void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& scene, const CameraKey& key, int frame,
+                             const KernelRendererFactory& kernel_renderer, std::ostream& out);
+
 }  // namespace clr

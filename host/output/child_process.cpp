@@ -23,9 +23,6 @@ extern char** environ;
 namespace clr {
 namespace {
 
-// A program that ignores SIGTERM (or is slow to act on it) gets this long before SIGKILL.
-constexpr std::chrono::milliseconds kStopGrace{500};
-
 void connect(posix_spawn_file_actions_t& actions, int fd, int target, int mode_without_fd) {
     if (fd >= 0)
         posix_spawn_file_actions_adddup2(&actions, fd, target);
@@ -45,6 +42,9 @@ ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_
     connect(actions, stdin_fd, STDIN_FILENO, O_RDONLY);
     connect(actions, stdout_fd, STDOUT_FILENO, O_WRONLY);
     connect(actions, stderr_fd, STDERR_FILENO, O_WRONLY);
+    // Nothing else of clrender's: a descriptor opened without O_CLOEXEC (a library's socket,
+    // such as the viewer's connections) would otherwise stay open for as long as the child runs.
+    posix_spawn_file_actions_addclosefrom_np(&actions, STDERR_FILENO + 1);
 
     // The child starts with default signal handling and nothing blocked, whatever clrender
     // (which ignores SIGPIPE) or its render threads have set.
@@ -101,10 +101,10 @@ int ChildProcess::reap() noexcept {
     return status;
 }
 
-int ChildProcess::stop() noexcept {
+int ChildProcess::stop(std::chrono::milliseconds grace) noexcept {
     if (pid_ <= 0) return 0;
     ::killpg(pid_, SIGTERM);
-    const auto give_up = std::chrono::steady_clock::now() + kStopGrace;
+    const auto give_up = std::chrono::steady_clock::now() + grace;
     int slice_ms = 1;
     while (!has_exited() && std::chrono::steady_clock::now() < give_up) sleep_a_slice(slice_ms);
     return reap();  // SIGKILLs the group first, so the wait cannot block for long

@@ -6,6 +6,7 @@
 
 #include <sys/types.h>
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,8 +28,13 @@ public:
     std::optional<int> poll_exit();
 
     // Stops the whole process group: SIGTERM, a short grace, then SIGKILL; reaps the program
-    // and returns its wait status (0 if it was reaped already).
-    int stop() noexcept;
+    // and returns its wait status (0 if it was reaped already). A program that cleans up after
+    // itself on SIGTERM (clrender itself, rendering a video for the viewer) is given longer.
+    int stop() noexcept { return stop(kStopGrace); }
+    int stop(std::chrono::milliseconds grace) noexcept;
+
+    // A program that ignores SIGTERM (or is slow to act on it) gets this long before SIGKILL.
+    static constexpr std::chrono::milliseconds kStopGrace{500};
 
     bool running() const { return pid_ > 0; }
 

@@ -141,19 +141,25 @@ std::string encode_png(const Image& image, const ImageText& text, const std::vec
     return "";
 }
 
-void write_png(AtomicFile& file, const Image& image, const ImageText& text) {
+// The whole PNG in memory; `name` says in messages what it was for.
+std::vector<std::uint8_t> encode_png_bytes(const std::string& name, const Image& image, const ImageText& text) {
     std::vector<std::uint8_t> pixel_data;
     try {
         pixel_data = png_pixel_data(image);
     } catch (const std::bad_alloc&) {
         throw;  // out of memory has its own exit code
     } catch (const std::exception& error) {
-        throw OutputError(file.final_path() + ": the PNG encoder failed (" + error.what() + ")");
+        throw OutputError(name + ": the PNG encoder failed (" + error.what() + ")");
     }
     PngOutput output;
     const std::string problem = encode_png(image, text, pixel_data, output);
-    if (!problem.empty()) throw OutputError(file.final_path() + ": the PNG encoder failed (" + problem + ")");
-    file.write(output.bytes.data(), output.bytes.size());
+    if (!problem.empty()) throw OutputError(name + ": the PNG encoder failed (" + problem + ")");
+    return std::move(output.bytes);
+}
+
+void write_png(AtomicFile& file, const Image& image, const ImageText& text) {
+    const std::vector<std::uint8_t> bytes = encode_png_bytes(file.final_path(), image, text);
+    file.write(bytes.data(), bytes.size());
 }
 
 void write_ppm(AtomicFile& file, const Image& image) {
@@ -175,6 +181,10 @@ void check_image(const std::string& path, const Image& image) {
 }
 
 }  // namespace
+
+std::vector<std::uint8_t> png_bytes(const Image& image, const ImageText& text) {
+    return encode_png_bytes("PNG in memory", image, text);
+}
 
 ImageText png_text_as_written(const ImageText& text) {
     ImageText written;

@@ -33,6 +33,10 @@ ImageText png_text_as_written(const ImageText& text);
 // when the file cannot be written; nothing is left under `path` then.
 void write_image(const std::string& path, const Image& image, const ImageText& text = {});
 
+// The bytes of the PNG file write_image() writes for `image`, in memory (`clrender view` sends
+// them to the browser). Throws OutputError as write_image does.
+std::vector<std::uint8_t> png_bytes(const Image& image, const ImageText& text = {});
+
 // Writes the image completely under a temporary name and returns the file, not yet renamed
 // into place (see staged_outputs.h). Throws OutputError as write_image does.
 std::unique_ptr<AtomicFile> write_image_uncommitted(const std::string& path, const Image& image,

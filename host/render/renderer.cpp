@@ -155,6 +155,16 @@ Image Renderer::render(const CameraKey& key, int frame, FrameTiming* timing) {
     return render_camera(camera, timing, crop_);
 }
 
+void Renderer::change_view(const Vec3& up, double fov_degrees, int width, int height, const SamplingSettings& sampling) {
+    // Impostors turn about the up vector: they are placed anew for the next frame (show()
+    // places them on every frame of a scene that has them, reading scene_.up).
+    scene_.up = up;
+    scene_.fov_degrees = fov_degrees;
+    scene_.width = width;
+    scene_.height = height;
+    scene_.sampling = sampling;
+}
+
 void Renderer::warm_up() {
     const CameraKey& key = scene_.camera_path.front();
     FrameCamera thumbnail = make_frame_camera(key.eye, key.lookat, scene_.up, scene_.fov_degrees, 64, 36, key.eye);

@@ -67,6 +67,12 @@ public:
     // earlier call. Throws DeviceError.
     Image render(const CameraKey& key, int frame = 0, FrameTiming* timing = nullptr);
 
+    // Renders the next frames with another up vector, field of view, size and sampling, as a
+    // scene that differs from this one only in those values would render them (`clrender view`
+    // moves the camera without building the program or uploading the scene again). The caller
+    // has checked the values as the scene loader checks a scene's.
+    void change_view(const Vec3& up, double fov_degrees, int width, int height, const SamplingSettings& sampling);
+
     // Renders a small frame of the scene's first camera key and throws it away, so that work a
     // driver does on a kernel's first launch (PoCL compiles it for the work-group size) is not
     // timed with the first real frame (the benchmark).

@@ -1,0 +1,111 @@
+#include "view/path_export.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+#include "core/errors.h"
+#include "output/atomic_file.h"
+#include "output/output_roles.h"
+#include "scene/json_reader.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_overrides.h"
+#include "view/view_parameters.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json array_of(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+// Every "filename" (billboard images, impostor views and view sets) names an image relative to
+// the scene's folder; the exported scene lives in `to`, so relative names are rewritten to
+// name the same files from there.
+void rewrite_image_paths(nlohmann::json& value, const fs::path& from, const fs::path& to) {
+    if (value.is_array()) {
+        for (nlohmann::json& element : value) rewrite_image_paths(element, from, to);
+        return;
+    }
+    if (!value.is_object()) return;
+    for (auto& [key, member] : value.items()) {
+        if (key == "filename" && member.is_string()) {
+            const fs::path image = member.get<std::string>();
+            if (image.empty() || image.is_absolute()) continue;
+            std::error_code error;
+            fs::path moved = fs::relative(from / image, to, error);
+            if (error || moved.empty()) moved = fs::absolute(from / image, error).lexically_normal();
+            member = moved.string();
+        } else {
+            rewrite_image_paths(member, from, to);
+        }
+    }
+}
+
+bool same_folder(const fs::path& a, const fs::path& b) {
+    std::error_code error;
+    return fs::equivalent(a, b, error);
+}
+
+}  // namespace
+
+PathExporter::PathExporter(const Scene& scene, std::string scene_text, const Options& options, std::string output_dir)
+    : scene_(scene), scene_text_(std::move(scene_text)), options_(options), output_dir_(std::move(output_dir)) {}
+
+std::string PathExporter::scene_text_for(const CameraKeysRequest& request) const {
+    std::vector<std::string> warnings;
+    Diagnostics diagnostics{scene_.path, &warnings};
+    nlohmann::json document = parse_json_text(scene_text_, diagnostics);  // parsed once before: cannot fail
+    apply_scene_overrides(document, options_.overrides);
+    for (const char* key : {"eye", "lookat", "eyeLocations", "lookatLocations"}) document.erase(key);
+    nlohmann::json eyes = nlohmann::json::array(), lookats = nlohmann::json::array();
+    for (const CameraKey& key : request.keys) {
+        eyes.push_back(array_of(key.eye));
+        lookats.push_back(array_of(key.lookat));
+    }
+    document["eyeLocations"] = eyes;
+    document["lookatLocations"] = lookats;
+    if (request.up) document["up"] = array_of(*request.up);
+    if (request.fov_degrees) document["fov_angle"] = *request.fov_degrees;
+    // What the command line set outside the file is what the page showed.
+    if (options_.width) document["width"] = *options_.width;
+    if (options_.height) document["height"] = *options_.height;
+    if (options_.samples_per_pixel) document["clrender"]["spp"] = *options_.samples_per_pixel;
+    if (options_.seed) document["clrender"]["seed"] = *options_.seed;
+    const fs::path scene_folder = fs::absolute(fs::path(scene_.path)).parent_path();
+    if (!same_folder(scene_folder, output_dir_)) rewrite_image_paths(document, scene_folder, fs::absolute(output_dir_));
+    return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+void PathExporter::check_output(const std::string& role, const std::string& path) const {
+    OutputRoles roles;
+    roles.add_input("scene file", scene_.path);
+    for (const ImageFileInfo& image : scene_.image_files)
+        if (image.format != "placeholder") roles.add_input("image '" + image.path + "'", image.path);
+    roles.add_output(role, path);
+}
+
+ExportedScene PathExporter::export_keys(const CameraKeysRequest& request) const {
+    ExportedScene exported;
+    exported.name = request.name.empty() ? default_name() : request.name;
+    exported.path = (fs::path(output_dir_) / (exported.name + ".json")).string();
+    exported.text = scene_text_for(request);
+    // The loader's checks, as `clrender` will run them on the file: every key in range, a view
+    // direction and a roll at every key and between keys, the animation's length. Images are
+    // checked from their headers only.
+    LoadOptions check;
+    check.decode_images = false;
+    check.placeholder_images = options_.placeholders;
+    try {
+        parse_scene(exported.text, exported.path, check);
+    } catch (const SceneError& error) {
+        throw ParameterError("keys", error.location().empty() ? error.detail() : error.location() + ": " + error.detail());
+    }
+    check_output("exported scene", exported.path);
+    AtomicFile file(exported.path);
+    file.write(exported.text.data(), exported.text.size());
+    file.commit();
+    return exported;
+}
+
+}  // namespace clr

@@ -1,0 +1,51 @@
+// POST /export: the scene with the page's camera keys as the course's camera path
+// (eyeLocations / lookatLocations, docs/animation.md), written as NAME.json into --output-dir.
+// The exported scene is the scene the viewer shows: the file with the command line's -D values
+// applied, --size, --spp and --seed written in, and image paths rewritten to be found from
+// --output-dir. It is checked by the scene loader before it is written, written atomically, and
+// never over the scene, its images, or another of the run's outputs.
+#pragma once
+
+#include <string>
+
+#include "app/options.h"
+#include "scene/scene.h"
+#include "view/camera_keys.h"
+
+namespace clr {
+
+struct ExportedScene {
+    std::string text;  // the scene file's text
+    std::string path;  // where it was written: OUTPUT_DIR/NAME.json
+    std::string name;  // NAME
+};
+
+class PathExporter {
+public:
+    // `scene_text` is the scene file as read when the viewer started (the scene was loaded
+    // from it), `options` the command line's.
+    PathExporter(const Scene& scene, std::string scene_text, const Options& options, std::string output_dir);
+
+    // Makes, checks and writes the exported scene. Throws ParameterError (the keys make no
+    // valid scene: "keys", naming the problem as the loader does) and OutputError (the file
+    // cannot be written, or would replace an input).
+    ExportedScene export_keys(const CameraKeysRequest& request) const;
+
+    // The exported scene's text without writing it (for the checks and tests).
+    std::string scene_text_for(const CameraKeysRequest& request) const;
+
+    // Checks that `path` may be written by this run: not the scene, an image it shows, or
+    // (through a link) either. Throws OutputError.
+    void check_output(const std::string& role, const std::string& path) const;
+
+    const std::string& output_dir() const { return output_dir_; }
+    std::string default_name() const { return scene_.name + "_path"; }
+
+private:
+    const Scene& scene_;
+    std::string scene_text_;
+    const Options& options_;
+    std::string output_dir_;
+};
+
+}  // namespace clr

@@ -1,0 +1,85 @@
+#include "view/render_service.h"
+
+#include <sstream>
+
+#include "app/explain_pixel.h"
+#include "core/interruption.h"
+#include "device/device_selection.h"
+
+namespace clr {
+namespace {
+
+// The kernels' bytes for the explained pixel, from the viewer's own renderer: the whole frame
+// is rendered and the pixel cut out of it, which gives the bytes a 1x1 crop would (crops are
+// byte for byte the full frame's, docs/command-line.md, Crop).
+class PixelOfFrame : public FrameRenderer {
+public:
+    PixelOfFrame(std::function<Image()> render_frame, std::string device, int x, int y)
+        : render_frame_(std::move(render_frame)), device_(std::move(device)), x_(x), y_(y) {}
+    Image render(const CameraKey&, int, FrameTiming*) override {
+        const Image frame = render_frame_();
+        Image pixel;
+        pixel.width = pixel.height = 1;
+        for (int channel = 0; channel < 4; ++channel) pixel.rgba.push_back(frame.at(x_, y_, channel));
+        return pixel;
+    }
+    std::string device_name() const override { return device_; }
+    double build_ms() const override { return 0; }
+
+private:
+    std::function<Image()> render_frame_;
+    std::string device_;
+    int x_, y_;
+};
+
+}  // namespace
+
+RenderService::RenderService(const Scene& scene, const Options& options) : scene_(scene) {
+    DeviceEntry entry = select_device(list_devices(), options.device);
+    if (options.threads) entry = select_compute_units(entry, *options.threads);
+    device_ = std::make_unique<DeviceContext>(entry);
+    device_name_ = entry.device_name;
+    RendererOptions renderer_options;
+    renderer_options.kernel_dir = options.kernel_dir;
+    renderer_options.double_precision = options.double_precision;
+    // A signal stops a long frame within a band, so the server stops promptly.
+    renderer_options.between_bands = throw_if_interrupted;
+    renderer_ = std::make_unique<Renderer>(*device_, scene_, renderer_options);
+    renderer_->warm_up();
+    // The next start builds from the program cache (asking the driver for the binary takes
+    // longer than a frame: done here, before the server listens, not while it serves).
+    device_->store_built_programs();
+}
+
+Image RenderService::render_locked(const ViewCamera& view) {
+    renderer_->change_view(view.up, view.fov_degrees, view.width, view.height, view.sampling);
+    return renderer_->render(view.key, view.frame);
+}
+
+Image RenderService::render(const ViewCamera& view) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return render_locked(view);
+}
+
+void RenderService::recycle(Image&& image) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    renderer_->recycle(std::move(image));
+}
+
+std::string RenderService::explain(const ViewCamera& view, int x, int y) {
+    const Scene seen = scene_seen_by(scene_, view);
+    KernelRendererFactory kernels = [this, &view, x, y] {
+        return std::make_unique<PixelOfFrame>([this, &view] { return render(view); }, device_name_, x, y);
+    };
+    std::ostringstream text;
+    explain_pixel_of_camera(Options::PixelPosition{x, y}, seen, view.key, view.frame, kernels, text);
+    std::string explanation = text.str();
+    if (explanation.size() > kMostExplanationBytes) {
+        explanation.resize(kMostExplanationBytes);
+        explanation += "\n[... cut at " + std::to_string(kMostExplanationBytes / 1024) +
+                       " KiB; clrender --explain-pixel prints it all]\n";
+    }
+    return explanation;
+}
+
+}  // namespace clr

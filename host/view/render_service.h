@@ -1,0 +1,53 @@
+// The viewer's renderer: one OpenCL device context and one Renderer for the whole session,
+// built before the server listens, so that the first frame does not wait for the program. Every
+// view (camera, size, samples) renders with the same program and scene buffers
+// (Renderer::change_view); frames are rendered one at a time, as the device renders them
+// fastest, and each request waits its turn.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "app/options.h"
+#include "core/image.h"
+#include "device/device_context.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "view/view_camera.h"
+
+namespace clr {
+
+class RenderService {
+public:
+    // Opens the device `options` select (-d, -t), builds the scene's program (--precision,
+    // --kernel-dir) and renders a first small frame. Throws DeviceError.
+    RenderService(const Scene& scene, const Options& options);
+
+    // The frame `view` sees: byte for byte what a render of the scene with that camera,
+    // size and samples gives for that frame. Throws DeviceError, or Interrupted after a signal.
+    Image render(const ViewCamera& view);
+    // Hands back a frame sent to a client: the next frame renders into its storage.
+    void recycle(Image&& image);
+
+    // The --explain-pixel text for `pixel` of the frame `view` sees, at most
+    // kMostExplanationBytes long. Throws UsageError for a pixel outside the frame,
+    // DeviceError from the kernels.
+    std::string explain(const ViewCamera& view, int x, int y);
+
+    const std::string& device_name() const { return device_name_; }
+
+private:
+    Image render_locked(const ViewCamera& view);
+
+    const Scene& scene_;
+    std::mutex mutex_;  // one frame at a time on the device
+    std::unique_ptr<DeviceContext> device_;
+    std::unique_ptr<Renderer> renderer_;
+    std::string device_name_;
+};
+
+// An explanation longer than this (many samples, deep mirrors) is cut, with a note.
+constexpr std::size_t kMostExplanationBytes = 256 * 1024;
+
+}  // namespace clr

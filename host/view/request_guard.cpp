@@ -1,0 +1,100 @@
+#include "view/request_guard.h"
+
+#include <arpa/inet.h>
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+
+#include "view/access_token.h"
+
+namespace clr {
+namespace {
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+}
+
+bool is_wildcard(const std::string& bind) { return bind == "0.0.0.0" || bind == "::" || bind == "[::]"; }
+
+std::string without_brackets(const std::string& address) {
+    if (address.size() >= 2 && address.front() == '[' && address.back() == ']') return address.substr(1, address.size() - 2);
+    return address;
+}
+
+// "host:port" -> host, when the port is exactly `port`; nullopt otherwise (a Host header
+// without a port or with another one does not name this server).
+std::optional<std::string> host_of(const std::string& host_and_port, int port) {
+    const std::string suffix = ":" + std::to_string(port);
+    if (host_and_port.size() <= suffix.size() ||
+        host_and_port.compare(host_and_port.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return std::nullopt;
+    return host_and_port.substr(0, host_and_port.size() - suffix.size());
+}
+
+}  // namespace
+
+bool is_ip_address(const std::string& text) {
+    unsigned char buffer[16];
+    return inet_pton(AF_INET, text.c_str(), buffer) == 1 || inet_pton(AF_INET6, text.c_str(), buffer) == 1;
+}
+
+std::string url_host(const std::string& bind) {
+    if (is_wildcard(bind)) return "127.0.0.1";
+    const std::string address = without_brackets(bind);
+    unsigned char buffer[16];
+    if (inet_pton(AF_INET6, address.c_str(), buffer) == 1) return "[" + address + "]";
+    return address;
+}
+
+RequestGuard::RequestGuard(std::string token, std::string bind, int port)
+    : token_(std::move(token)), port_(port), wildcard_(is_wildcard(bind)) {
+    const std::string suffix = ":" + std::to_string(port);
+    for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), url_host(bind)})
+        hosts_.insert(lowercase(name) + suffix);
+}
+
+bool RequestGuard::host_allowed(const std::string& host) const {
+    const std::string name = lowercase(host);
+    if (hosts_.count(name) > 0) return true;
+    if (!wildcard_) return false;
+    // Bound to every address: the machine's own addresses, but still no names.
+    const std::optional<std::string> address = host_of(name, port_);
+    if (!address) return false;
+    if (address->size() >= 2 && address->front() == '[' && address->back() == ']') {
+        const std::string inner = without_brackets(*address);
+        unsigned char buffer[16];
+        return inet_pton(AF_INET6, inner.c_str(), buffer) == 1;
+    }
+    unsigned char buffer[4];
+    return inet_pton(AF_INET, address->c_str(), buffer) == 1;
+}
+
+bool RequestGuard::origin_allowed(const std::string& origin) const {
+    const std::string scheme = "http://";
+    if (origin.size() <= scheme.size() || lowercase(origin.substr(0, scheme.size())) != scheme) return false;
+    return host_allowed(origin.substr(scheme.size()));
+}
+
+RequestVerdict RequestGuard::check(const RequestFacts& request) const {
+    if (!request.host || !host_allowed(*request.host)) return RequestVerdict::Forbidden;
+    // Every method but GET and HEAD may change something: it must come from the page itself.
+    const bool reads_only = request.method == "GET" || request.method == "HEAD";
+    if (!reads_only && (!request.origin || !origin_allowed(*request.origin))) return RequestVerdict::Forbidden;
+    // token= given: it alone decides (a wrong one is not rescued by the cookie). Given twice:
+    // refused, as is a cookie given twice.
+    if (!request.query_tokens.empty()) {
+        if (request.query_tokens.size() != 1 || !token_matches(request.query_tokens.front(), token_))
+            return RequestVerdict::Forbidden;
+        return request.path == "/" && reads_only ? RequestVerdict::AllowedSetCookie : RequestVerdict::Allowed;
+    }
+    if (token_matches(cookie_value(request.cookie_header, kTokenCookie), token_)) return RequestVerdict::Allowed;
+    return RequestVerdict::Forbidden;
+}
+
+std::string RequestGuard::token_cookie() const {
+    return std::string(kTokenCookie) + "=" + token_ + "; HttpOnly; SameSite=Strict; Path=/";
+}
+
+}  // namespace clr

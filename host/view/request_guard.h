@@ -1,0 +1,65 @@
+// Which requests `clrender view` answers (docs/command-line.md, Viewer: Security):
+// - the Host header names this server by an address, never by a DNS name that a web page
+//   could point at 127.0.0.1 (DNS rebinding);
+// - every request carries the access token, in the query (token=...) or in the cookie that
+//   the first authorised request for the page sets;
+// - a request that changes something (POST) comes from the viewer's own page: its Origin
+//   header is the server's own origin, so another web site cannot drive the viewer.
+// Nothing here knows HTTP's wire format (cpp-httplib parses requests): the checks take the
+// facts of a request, so that the fuzz target and the tests can drive them directly.
+#pragma once
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace clr {
+
+struct RequestFacts {
+    std::string method;                 // "GET", "POST", ...
+    std::string path;                   // decoded, as routed: "/frame.png"
+    std::optional<std::string> host;    // the Host header
+    std::optional<std::string> origin;  // the Origin header
+    std::vector<std::string> query_tokens;  // every token=... of the query
+    std::string cookie_header;          // the Cookie header, "" without
+};
+
+enum class RequestVerdict {
+    Forbidden,           // 403 and nothing else
+    Allowed,
+    AllowedSetCookie,    // allowed; the response sets the token cookie (the page, with token=)
+};
+
+// The name of the cookie that stands in for token= after the page's first load.
+inline constexpr const char* kTokenCookie = "clrender_token";
+
+class RequestGuard {
+public:
+    // `bind` is the address the server listens on (--bind), `port` its port.
+    RequestGuard(std::string token, std::string bind, int port);
+
+    RequestVerdict check(const RequestFacts& request) const;
+
+    // The Set-Cookie value for a verdict of AllowedSetCookie.
+    std::string token_cookie() const;
+
+    // Whether `host` (a Host header) names this server; `origin` (an Origin header) is its own.
+    bool host_allowed(const std::string& host) const;
+    bool origin_allowed(const std::string& origin) const;
+
+private:
+    std::string token_;
+    int port_ = 0;
+    bool wildcard_ = false;  // bound to every address: any IP address names the server
+    std::set<std::string> hosts_;  // lowercase "name:port" forms of the server's own names
+};
+
+// The address for the printed URL: the bound address, or 127.0.0.1 where the server listens
+// on every address ("0.0.0.0", "::"); an IPv6 address in brackets.
+std::string url_host(const std::string& bind);
+
+// Whether `text` is an IPv4 address in dotted form or an IPv6 address (without brackets).
+bool is_ip_address(const std::string& text);
+
+}  // namespace clr

@@ -1,0 +1,124 @@
+#include "view/video_job.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/errors.h"
+#include "core/printable_text.h"
+#include "output/child_process.h"
+
+namespace clr {
+
+std::string clrender_program_path() {
+    std::error_code error;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) throw OutputError("cannot find clrender's own program to render the video: " + error.message());
+    return self.string();
+}
+
+VideoJobs::VideoJobs(std::vector<std::string> render_arguments) : render_arguments_(std::move(render_arguments)) {}
+
+VideoJobs::~VideoJobs() { stop(); }
+
+std::optional<int> VideoJobs::start(const std::string& scene_path, const std::string& video_path) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (running_) return std::nullopt;
+    if (watcher_.joinable()) watcher_.join();  // the last job's, finished
+    child_.reset();
+    std::vector<std::string> arguments{clrender_program_path(), scene_path, "--video", video_path, "--progress", "json", "-q"};
+    arguments.insert(arguments.end(), render_arguments_.begin(), render_arguments_.end());
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw OutputError(std::string("cannot create a pipe for the video render: ") + std::strerror(errno));
+    try {
+        child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1]);
+    } catch (...) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        throw;
+    }
+    ::close(fds[1]);
+    VideoJobState job;
+    job.id = static_cast<int>(jobs_.size()) + 1;
+    job.state = "running";
+    job.file = video_path;
+    jobs_.push_back(job);
+    running_ = true;
+    watcher_ = std::thread([this, read_fd = fds[0]] { watch(read_fd); });
+    return job.id;
+}
+
+// Reads the render's progress lines (--progress json) until it closes its standard error,
+// then reaps it.
+void VideoJobs::watch(int read_fd) {
+    std::string pending, last_message;
+    char buffer[4096];
+    for (;;) {
+        const ssize_t got = ::read(read_fd, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) break;
+        pending.append(buffer, static_cast<std::size_t>(got));
+        for (std::size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1)) {
+            const std::string line = pending.substr(0, end);
+            const nlohmann::json progress = nlohmann::json::parse(line, nullptr, false);
+            if (progress.is_object() && progress.contains("frames_done") && progress.contains("frames")) {
+                std::lock_guard<std::mutex> lock(mutex_);
+                jobs_.back().done = progress["frames_done"].get<int>();
+                jobs_.back().total = progress["frames"].get<int>();
+            } else if (!line.empty()) {
+                last_message = shortened(printable(line), kLongestDetail);
+            }
+        }
+        if (pending.size() > 65536) pending.clear();  // no line is that long: drop garbage
+    }
+    ::close(read_fd);
+    int slice_ms = 1;
+    for (;;) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        const std::optional<int> status = child_->poll_exit();
+        if (!status) {
+            lock.unlock();
+            sleep_a_slice(slice_ms);
+            continue;
+        }
+        VideoJobState& job = jobs_.back();
+        const bool ok = !stopping_ && WIFEXITED(*status) && WEXITSTATUS(*status) == 0;
+        job.state = ok ? "done" : "failed";
+        if (stopping_)
+            job.error = "the viewer stopped before the video was finished";
+        else if (!ok)
+            job.error = last_message.empty() ? describe_exit("clrender", *status) : last_message;
+        running_ = false;
+        return;
+    }
+}
+
+bool VideoJobs::busy() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return running_;
+}
+
+std::optional<VideoJobState> VideoJobs::state(int id) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (id < 1 || static_cast<std::size_t>(id) > jobs_.size()) return std::nullopt;
+    return jobs_[static_cast<std::size_t>(id) - 1];
+}
+
+void VideoJobs::stop() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (running_ && child_) {
+        stopping_ = true;
+        // clrender removes its unfinished files and stops its encoder on SIGTERM: it is given the
+        // time that takes (its bands are a fraction of a second, the encoder's grace half a second).
+        child_->stop(std::chrono::seconds(10));  // the watcher then reads the end of its output
+    }
+    lock.unlock();
+    if (watcher_.joinable()) watcher_.join();
+}
+
+}  // namespace clr

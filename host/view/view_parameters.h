@@ -1,0 +1,54 @@
+// The camera parameters of a viewer request (/frame.png, /frame.rgba, /explain), read from its
+// query: eye=x,y,z, lookat=x,y,z, up=x,y,z, fov=DEGREES, size=WxH, spp=N, frame=N, and for
+// /explain x=X, y=Y. Each is optional. This file checks only their form (numbers, finite,
+// whole where whole); what values a scene allows is checked as the scene loader checks a
+// scene's (view/view_camera.h), so that the viewer's limits are the command line's.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "core/vec3.h"
+
+namespace clr {
+
+// A parameter the viewer cannot use: answered with 400 and {"error": what(), "parameter": ...}.
+class ParameterError : public std::runtime_error {
+public:
+    ParameterError(std::string parameter, const std::string& message)
+        : std::runtime_error(message), parameter_(std::move(parameter)) {}
+    const std::string& parameter() const { return parameter_; }
+
+private:
+    std::string parameter_;
+};
+
+// The query as cpp-httplib gives it: every name=value pair, decoded, names repeatable.
+using QueryParameters = std::multimap<std::string, std::string>;
+
+struct ViewQuery {
+    std::optional<Vec3> eye, lookat, up;
+    std::optional<double> fov_degrees;
+    std::optional<int> width, height;
+    std::optional<int> samples_per_pixel;
+    std::optional<int> frame;
+};
+
+struct PixelQuery {
+    int x = 0, y = 0;  // column and row from the top-left
+};
+
+// Reads the camera parameters; names it does not know (token, a cache-busting counter) are
+// left alone. Throws ParameterError naming the parameter.
+ViewQuery parse_view_query(const QueryParameters& query);
+
+// Reads x= and y= (both required, whole numbers from 0). Throws ParameterError.
+PixelQuery parse_pixel_query(const QueryParameters& query);
+
+// One finite number in plain decimal notation ("-1.5", "2e3"): no hex, no inf, no nan, no
+// surrounding spaces; a value beyond double's range is not finite. nullopt otherwise.
+std::optional<double> parse_plain_number(const std::string& text);
+
+}  // namespace clr

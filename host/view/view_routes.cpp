@@ -1,0 +1,204 @@
+#include "view/view_routes.h"
+
+#include <new>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/errors.h"
+#include "core/interruption.h"
+#include "output/image_writer.h"
+#include "view/camera_keys.h"
+#include "view/embedded_assets.h"
+#include "view/scene_summary.h"
+#include "view/view_camera.h"
+#include "view/view_parameters.h"
+
+namespace clr {
+namespace {
+
+using httplib::Request;
+using httplib::Response;
+
+void send_json(Response& response, int status, const nlohmann::json& body) {
+    response.status = status;
+    response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+void send_error(Response& response, int status, const std::string& message, const std::string& parameter = "") {
+    nlohmann::json body = {{"error", message}};
+    if (!parameter.empty()) body["parameter"] = parameter;
+    send_json(response, status, body);
+}
+
+// Runs a route, turning every failure into a JSON answer: the server keeps serving whatever
+// one request did.
+template <typename Route>
+void answer(Response& response, Route&& route) {
+    try {
+        route();
+    } catch (const ParameterError& error) {
+        send_error(response, 400, error.what(), error.parameter());
+    } catch (const Interrupted&) {
+        send_error(response, 503, "the viewer is stopping");
+    } catch (const DeviceError& error) {
+        send_error(response, 500, std::string("OpenCL: ") + error.what());
+    } catch (const OutputError& error) {
+        send_error(response, 409, error.what(), "name");
+    } catch (const std::bad_alloc&) {
+        send_error(response, 503, "out of memory");
+    } catch (const std::exception& error) {
+        send_error(response, 500, std::string("internal error: ") + error.what());
+    }
+}
+
+const char* content_type_of(const std::string& path) {
+    const auto ends_with = [&path](const std::string& suffix) {
+        return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    if (ends_with(".html")) return "text/html; charset=utf-8";
+    if (ends_with(".js")) return "text/javascript; charset=utf-8";
+    if (ends_with(".css")) return "text/css; charset=utf-8";
+    if (ends_with(".svg")) return "image/svg+xml";
+    if (ends_with(".png")) return "image/png";
+    return "application/octet-stream";
+}
+
+void add_assets(httplib::Server& server) {
+    for (const EmbeddedAsset& asset : embedded_viewer_assets()) {
+        const std::string path = asset.path;
+        const auto serve = [&asset, path](const Request&, Response& response) {
+            response.set_content(std::string(asset.content()), content_type_of(path));
+        };
+        // Routes are patterns: the name's dots must match only dots.
+        std::string pattern = "/";
+        for (char c : path) pattern += c == '.' ? std::string("\\.") : std::string(1, c);
+        server.Get(pattern, serve);
+        if (path == "index.html") server.Get("/", serve);
+    }
+}
+
+ViewCamera camera_of(const ViewSession& session, const Request& request) {
+    return resolve_view_camera(session.scene, parse_view_query(request.params));
+}
+
+void add_frame_routes(httplib::Server& server, ViewSession& session) {
+    server.Get("/frame\\.png", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            const ViewCamera view = camera_of(session, request);
+            Image frame = session.renderer.render(view);
+            const std::vector<std::uint8_t> png = png_bytes(frame);
+            session.renderer.recycle(std::move(frame));
+            response.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+        });
+    });
+    // The live channel: raw RGBA rows, top row first, no encoding on either side.
+    server.Get("/frame\\.rgba", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            const ViewCamera view = camera_of(session, request);
+            Image frame = session.renderer.render(view);
+            response.set_header("X-Width", std::to_string(frame.width));
+            response.set_header("X-Height", std::to_string(frame.height));
+            response.set_content(reinterpret_cast<const char*>(frame.rgba.data()), frame.rgba.size(),
+                                 "application/octet-stream");
+            session.renderer.recycle(std::move(frame));
+        });
+    });
+    server.Get("/explain", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            const ViewCamera view = camera_of(session, request);
+            const PixelQuery pixel = parse_pixel_query(request.params);
+            if (pixel.x >= view.width)
+                throw ParameterError("x", "x " + std::to_string(pixel.x) + " is outside the " + std::to_string(view.width) +
+                                              "-pixel-wide frame (0 to " + std::to_string(view.width - 1) + ")");
+            if (pixel.y >= view.height)
+                throw ParameterError("y", "y " + std::to_string(pixel.y) + " is outside the " + std::to_string(view.height) +
+                                              "-pixel-high frame (0 to " + std::to_string(view.height - 1) + ")");
+            response.set_content(session.renderer.explain(view, pixel.x, pixel.y), "text/plain; charset=utf-8");
+        });
+    });
+    server.Get("/scene\\.json", [&session](const Request&, Response& response) {
+        response.set_content(scene_summary_json(session.scene), "application/json");
+    });
+}
+
+void add_path_routes(httplib::Server& server, ViewSession& session) {
+    server.Post("/export", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            const ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
+            send_json(response, 200, {{"scene", exported.text}, {"file", exported.path}});
+        });
+    });
+    server.Post("/render-video", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            const CameraKeysRequest keys = parse_camera_keys(request.body);
+            if (session.videos.busy()) {
+                send_error(response, 409, "a video is rendering already; one at a time");
+                return;
+            }
+            const ExportedScene exported = session.exporter.export_keys(keys);
+            const std::string video = session.exporter.output_dir() + "/" + exported.name + ".mp4";
+            session.exporter.check_output("video", video);
+            const std::optional<int> job = session.videos.start(exported.path, video);
+            if (!job) {
+                send_error(response, 409, "a video is rendering already; one at a time");
+                return;
+            }
+            send_json(response, 200, {{"job", *job}, {"file", video}, {"scene", exported.path}});
+        });
+    });
+    server.Get("/job", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            const auto id_text = request.params.find("id");
+            const std::optional<double> id = id_text == request.params.end() ? std::nullopt : parse_plain_number(id_text->second);
+            const std::optional<VideoJobState> job =
+                id && *id >= 1 && *id <= 1e9 ? session.videos.state(static_cast<int>(*id)) : std::nullopt;
+            if (!job) {
+                send_error(response, 404, "no such job", "id");
+                return;
+            }
+            nlohmann::json body = {{"state", job->state}, {"done", job->done}, {"total", job->total}, {"file", job->file}};
+            body["error"] = job->error.empty() ? nlohmann::json(nullptr) : nlohmann::json(job->error);
+            send_json(response, 200, body);
+        });
+    });
+}
+
+}  // namespace
+
+RequestFacts request_facts(const Request& request) {
+    RequestFacts facts;
+    facts.method = request.method;
+    facts.path = request.path;
+    if (request.has_header("Host")) facts.host = request.get_header_value("Host");
+    if (request.has_header("Origin")) facts.origin = request.get_header_value("Origin");
+    const auto [first, last] = request.params.equal_range("token");
+    for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
+    facts.cookie_header = request.get_header_value("Cookie");
+    return facts;
+}
+
+void add_view_routes(httplib::Server& server, ViewSession& session) {
+    server.set_pre_routing_handler([&session](const Request& request, Response& response) {
+        const RequestVerdict verdict = session.guard.check(request_facts(request));
+        if (verdict == RequestVerdict::Forbidden) {
+            response.status = 403;
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // Nothing the viewer sends is for a cache, another site's frame, or a content sniffer;
+        // the address holds the token, which no link may pass on.
+        response.set_header("Cache-Control", "no-store");
+        response.set_header("X-Content-Type-Options", "nosniff");
+        response.set_header("X-Frame-Options", "DENY");
+        response.set_header("Referrer-Policy", "no-referrer");
+        response.set_header("Content-Security-Policy",
+                            "default-src 'self' 'unsafe-inline' blob: data:; frame-ancestors 'none'; base-uri 'none'; "
+                            "form-action 'self'");
+        if (verdict == RequestVerdict::AllowedSetCookie) response.set_header("Set-Cookie", session.guard.token_cookie());
+        return httplib::Server::HandlerResponse::Unhandled;
+    });
+    add_assets(server);
+    add_frame_routes(server, session);
+    add_path_routes(server, session);
+}
+
+}  // namespace clr

@@ -1,0 +1,36 @@
+// What `clrender view` answers, route by route (docs/command-line.md, Viewer):
+//   GET  /, /viewer.js, /viewer.css   the page, from the binary (view/embedded_assets.h)
+//   GET  /frame.png, /frame.rgba      a frame for the query's camera (view/view_camera.h)
+//   GET  /scene.json                  the scene's camera, size, samples and path
+//   GET  /explain                     the --explain-pixel text of pixel x, y
+//   POST /export                      the recorded keys as a scene file in --output-dir
+//   POST /render-video, GET /job      that scene rendered to a video, in the background
+// Every request passes the RequestGuard first; every other path is 404, and no request
+// reads a file.
+#pragma once
+
+#include <httplib.h>
+
+#include "scene/scene.h"
+#include "view/path_export.h"
+#include "view/render_service.h"
+#include "view/request_guard.h"
+#include "view/video_job.h"
+
+namespace clr {
+
+struct ViewSession {
+    const Scene& scene;
+    RenderService& renderer;
+    const PathExporter& exporter;
+    VideoJobs& videos;
+    const RequestGuard& guard;
+};
+
+// Installs the guard and the routes on `server`. `session` must outlive the server's requests.
+void add_view_routes(httplib::Server& server, ViewSession& session);
+
+// The guard's facts of an httplib request.
+RequestFacts request_facts(const httplib::Request& request);
+
+}  // namespace clr

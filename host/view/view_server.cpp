@@ -1,0 +1,127 @@
+#include "view/view_server.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <thread>
+
+#include "core/errors.h"
+#include "core/interruption.h"
+#include "core/printable_text.h"
+
+extern char** environ;
+
+namespace clr {
+namespace {
+
+// Opens `url` with xdg-open, in a session of its own so that the browser it starts is not
+// ours to stop. Returns its pid, or -1 (with a warning) when it cannot start.
+pid_t open_browser(const std::string& url) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addclosefrom_np(&actions, STDERR_FILENO + 1);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t signals;
+    sigemptyset(&signals);
+    posix_spawnattr_setsigmask(&attributes, &signals);
+    sigaddset(&signals, SIGPIPE);
+    posix_spawnattr_setsigdefault(&attributes, &signals);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSID);
+    pid_t pid = -1;
+    const char* argv[] = {"xdg-open", url.c_str(), nullptr};
+    const int error = ::posix_spawnp(&pid, "xdg-open", &actions, &attributes, const_cast<char**>(argv), environ);
+    posix_spawnattr_destroy(&attributes);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) {
+        std::cerr << "clrender: warning: cannot open the browser (xdg-open: " << std::strerror(error)
+                  << "); open the address above yourself\n";
+        return -1;
+    }
+    return pid;
+}
+
+// Reaps xdg-open once it has exited; warns when it failed. Never blocks.
+void reap_browser_opener(pid_t& pid) {
+    if (pid <= 0) return;
+    int status = 0;
+    if (::waitpid(pid, &status, WNOHANG) != pid) return;
+    pid = -1;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        std::cerr << "clrender: warning: xdg-open could not open the browser; open the address above yourself\n";
+}
+
+void configure(httplib::Server& server) {
+    server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
+    server.set_read_timeout(kClientTimeoutSeconds, 0);
+    server.set_write_timeout(kClientTimeoutSeconds, 0);
+    server.set_keep_alive_timeout(kKeepAliveSeconds);
+    server.set_payload_max_length(kMostRequestBytes);
+    // The listening socket is reused at once after a restart, and stays out of the children
+    // (a video render) that the server starts.
+    server.set_socket_options([](socket_t socket) {
+        int yes = 1;
+        ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+        ::fcntl(socket, F_SETFD, FD_CLOEXEC);
+    });
+}
+
+void warn_about_bind(const std::string& bind) {
+    if (bind == "127.0.0.1") return;
+    if (bind == "localhost" || bind == "::1" || bind == "[::1]")
+        std::cerr << "clrender: warning: --bind " << printable(bind) << ": listening on " << printable(bind)
+                  << " rather than 127.0.0.1\n";
+    else
+        std::cerr << "clrender: warning: --bind " << printable(bind)
+                  << ": the viewer listens beyond this machine; anyone who can reach it and learns the address "
+                     "(with its token) can drive it\n";
+}
+
+}  // namespace
+
+void serve_view(const ServerSettings& settings, const std::string& token, const Scene& scene, RenderService& renderer,
+                const PathExporter& exporter, VideoJobs& videos) {
+    warn_about_bind(settings.bind);
+    httplib::Server server;
+    configure(server);
+    const std::string bind_address =
+        settings.bind.size() >= 2 && settings.bind.front() == '[' ? settings.bind.substr(1, settings.bind.size() - 2) : settings.bind;
+    int port = settings.port;
+    if (port == 0)
+        port = server.bind_to_any_port(bind_address);
+    else if (!server.bind_to_port(bind_address, port))
+        port = -1;
+    if (port <= 0)
+        throw UsageError("cannot listen on " + printable(settings.bind) + " port " + std::to_string(settings.port) +
+                         (settings.port ? " (in use? --port 0 picks a free one)" : "") + ": " + std::strerror(errno));
+    const RequestGuard guard(token, settings.bind, port);
+    ViewSession session{scene, renderer, exporter, videos, guard};
+    add_view_routes(server, session);
+
+    std::thread listener([&server] { server.listen_after_bind(); });
+    const std::string url = "http://" + url_host(settings.bind) + ":" + std::to_string(port) + "/?token=" + token;
+    std::cout << "clrender: view at " << url << std::endl;
+    pid_t opener = settings.open_browser ? open_browser(url) : -1;
+    while (!interruption_requested()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        reap_browser_opener(opener);
+    }
+    // Stop accepting and close the connections; requests in flight end (a frame stops within
+    // a band once the signal is seen), the pool's threads are joined.
+    server.stop();
+    listener.join();
+    videos.stop();
+    throw_if_interrupted();
+    throw std::logic_error("the viewer stopped without a signal");
+}
+
+}  // namespace clr

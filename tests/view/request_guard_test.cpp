@@ -1,0 +1,129 @@
+// The viewer's request checks, driven directly: the token (query or cookie), the Host header
+// against DNS rebinding, the Origin of requests that change something.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "view/access_token.h"
+#include "view/request_guard.h"
+
+namespace clr {
+namespace {
+
+const std::string kToken = "0123456789abcdef0123456789abcdef";
+
+RequestFacts get(const std::string& path, const std::string& host = "127.0.0.1:8123") {
+    RequestFacts facts;
+    facts.method = "GET";
+    facts.path = path;
+    facts.host = host;
+    facts.query_tokens = {kToken};
+    return facts;
+}
+
+TEST(AccessToken, Has128RandomBitsAsHexAndDiffersEachTime) {
+    std::set<std::string> seen;
+    for (int i = 0; i < 50; ++i) {
+        const std::string token = make_access_token();
+        ASSERT_EQ(token.size(), 32u);
+        EXPECT_EQ(token.find_first_not_of("0123456789abcdef"), std::string::npos) << token;
+        seen.insert(token);
+    }
+    EXPECT_EQ(seen.size(), 50u);
+}
+
+TEST(AccessToken, MatchesOnlyTheWholeToken) {
+    EXPECT_TRUE(token_matches(kToken, kToken));
+    EXPECT_FALSE(token_matches("", kToken));
+    EXPECT_FALSE(token_matches(kToken.substr(0, 31), kToken));
+    EXPECT_FALSE(token_matches(kToken + "0", kToken));
+    std::string last_differs = kToken;
+    last_differs.back() = 'e';
+    EXPECT_FALSE(token_matches(last_differs, kToken));
+    EXPECT_FALSE(token_matches("", ""));  // a guard without a token admits nothing
+}
+
+TEST(AccessToken, CookieValueIsFoundAmongOthersAndRefusedWhenRepeated) {
+    EXPECT_EQ(cookie_value("a=1; clrender_token=abc; b=2", "clrender_token"), "abc");
+    EXPECT_EQ(cookie_value("clrender_token=abc", "clrender_token"), "abc");
+    EXPECT_EQ(cookie_value("xclrender_token=abc", "clrender_token"), "");
+    EXPECT_EQ(cookie_value("clrender_token=abc; clrender_token=def", "clrender_token"), "");
+    EXPECT_EQ(cookie_value("", "clrender_token"), "");
+}
+
+TEST(RequestGuard, NeedsTheTokenInTheQueryOrTheCookie) {
+    const RequestGuard guard(kToken, "127.0.0.1", 8123);
+    EXPECT_EQ(guard.check(get("/frame.png")), RequestVerdict::Allowed);
+    RequestFacts none = get("/frame.png");
+    none.query_tokens.clear();
+    EXPECT_EQ(guard.check(none), RequestVerdict::Forbidden);
+    RequestFacts wrong = get("/frame.png");
+    wrong.query_tokens = {"0123456789abcdef0123456789abcdee"};
+    EXPECT_EQ(guard.check(wrong), RequestVerdict::Forbidden);
+    RequestFacts twice = get("/frame.png");
+    twice.query_tokens = {kToken, kToken};
+    EXPECT_EQ(guard.check(twice), RequestVerdict::Forbidden);
+    RequestFacts cookie = none;
+    cookie.cookie_header = "clrender_token=" + kToken;
+    EXPECT_EQ(guard.check(cookie), RequestVerdict::Allowed);
+    // A wrong token in the query is not rescued by a right cookie.
+    wrong.cookie_header = cookie.cookie_header;
+    EXPECT_EQ(guard.check(wrong), RequestVerdict::Forbidden);
+}
+
+TEST(RequestGuard, ThePageWithTheTokenSetsTheCookie) {
+    const RequestGuard guard(kToken, "127.0.0.1", 8123);
+    EXPECT_EQ(guard.check(get("/")), RequestVerdict::AllowedSetCookie);
+    EXPECT_EQ(guard.token_cookie(), "clrender_token=" + kToken + "; HttpOnly; SameSite=Strict; Path=/");
+}
+
+TEST(RequestGuard, HostMustNameTheServerByAddressOrLocalhost) {
+    const RequestGuard guard(kToken, "127.0.0.1", 8123);
+    for (const char* host : {"127.0.0.1:8123", "localhost:8123", "LOCALHOST:8123", "[::1]:8123"})
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::AllowedSetCookie) << host;
+    for (const char* host : {"evil.example:8123", "127.0.0.1", "127.0.0.1:8124", "localhost", "127.0.0.1:81230",
+                             "10.0.0.1:8123", "", "127.0.0.1:8123 ", "localhost.evil.example:8123"})
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Forbidden) << host;
+    RequestFacts no_host = get("/");
+    no_host.host.reset();
+    EXPECT_EQ(guard.check(no_host), RequestVerdict::Forbidden);
+}
+
+TEST(RequestGuard, WildcardBindAdmitsAddressesButNoNames) {
+    const RequestGuard guard(kToken, "0.0.0.0", 8123);
+    EXPECT_EQ(guard.check(get("/scene.json", "192.168.1.20:8123")), RequestVerdict::Allowed);
+    EXPECT_EQ(guard.check(get("/scene.json", "[fe80::1]:8123")), RequestVerdict::Allowed);
+    EXPECT_EQ(guard.check(get("/scene.json", "attacker.example:8123")), RequestVerdict::Forbidden);
+    EXPECT_EQ(guard.check(get("/scene.json", "192.168.1.20:8000")), RequestVerdict::Forbidden);
+}
+
+TEST(RequestGuard, ChangesNeedTheServersOwnOrigin) {
+    const RequestGuard guard(kToken, "127.0.0.1", 8123);
+    RequestFacts post = get("/export");
+    post.method = "POST";
+    EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden) << "no Origin";
+    for (const char* origin : {"http://127.0.0.1:8123", "http://localhost:8123"}) {
+        post.origin = origin;
+        EXPECT_EQ(guard.check(post), RequestVerdict::Allowed) << origin;
+    }
+    for (const char* origin : {"http://evil.example", "http://evil.example:8123", "null", "https://127.0.0.1:8123",
+                               "http://127.0.0.1:8124", "http://127.0.0.1", ""}) {
+        post.origin = origin;
+        EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden) << origin;
+    }
+    // The token is still needed with the right Origin.
+    post.origin = "http://127.0.0.1:8123";
+    post.query_tokens.clear();
+    EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden);
+}
+
+TEST(RequestGuard, PrintedHostIsTheBoundAddress) {
+    EXPECT_EQ(url_host("127.0.0.1"), "127.0.0.1");
+    EXPECT_EQ(url_host("0.0.0.0"), "127.0.0.1");
+    EXPECT_EQ(url_host("::"), "127.0.0.1");
+    EXPECT_EQ(url_host("::1"), "[::1]");
+    EXPECT_EQ(url_host("192.168.1.20"), "192.168.1.20");
+}
+
+}  // namespace
+}  // namespace clr

@@ -1,0 +1,103 @@
+// clrender view from start to stop: the one printed line, a scene error before listening
+// (exit 2, nothing printed to standard output), options that do not apply refused, and a
+// signal ending it with 128 + signal and nothing left behind.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include "support/command.h"
+#include "support/temp_folder.h"
+#include "view/viewer_process.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_bytes;
+using testing::run_clrender;
+using testing::TempFolder;
+using testing::ViewerProcess;
+
+const std::string kDemoScene = std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json";
+
+std::set<std::string> entries(const TempFolder& folder) {
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder.path())) names.insert(entry.path().filename().string());
+    return names;
+}
+
+TEST(ViewLifetime, PrintsOneLineAndStopsCleanlyOnEachSignal) {
+    for (const auto& [signal, code] : {std::pair{SIGTERM, 143}, std::pair{SIGINT, 130}}) {
+        TempFolder folder;
+        folder.write("before.txt", "x");
+        ViewerProcess viewer("'" + kDemoScene + "' --size 32x18", folder.path());
+        ASSERT_TRUE(viewer.started()) << viewer.output();
+        EXPECT_TRUE(std::regex_match(viewer.address_line(),
+                                     std::regex(R"(clrender: view at http://127\.0\.0\.1:\d+/\?token=[0-9a-f]{32})")));
+        // A frame in flight and an open connection do not keep it from stopping.
+        auto client = viewer.client();
+        EXPECT_EQ(client->Get(viewer.with_token("/frame.png").c_str())->status, 200);
+        EXPECT_EQ(viewer.stop(signal), code) << viewer.output();
+        EXPECT_EQ(entries(folder), (std::set<std::string>{"before.txt", "view-stderr.txt"})) << "left behind";
+        // The port is free again: nothing of the server lives on.
+        EXPECT_FALSE(client->Get(viewer.with_token("/scene.json").c_str()));
+    }
+}
+
+TEST(ViewLifetime, EachStartHasItsOwnToken) {
+    TempFolder folder;
+    ViewerProcess first("'" + kDemoScene + "' --size 32x18", folder.path());
+    ViewerProcess second("'" + kDemoScene + "' --size 32x18", folder.path());
+    ASSERT_TRUE(first.started() && second.started()) << first.output() << second.output();
+    EXPECT_NE(first.token(), second.token());
+    EXPECT_NE(first.port(), second.port());
+    // One's token does not open the other.
+    EXPECT_EQ(second.client()->Get(("/scene.json?token=" + first.token()).c_str())->status, 403);
+}
+
+TEST(ViewLifetime, SceneErrorsAreReportedAsForARenderBeforeListening) {
+    TempFolder folder;
+    folder.write("bad.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 5], "up": [0, 1, 0], "fov_angle": 60, "width": 8, "height": 8})");
+    const auto result = run_clrender("view bad.json --no-browser 2>/dev/null", folder.path());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.output, "") << "no address is printed";
+    const auto message = run_clrender("view bad.json --no-browser", folder.path());
+    EXPECT_NE(message.output.find("bad.json: /eye"), std::string::npos) << message.output;
+    EXPECT_EQ(run_clrender("view missing.json --no-browser", folder.path()).exit_code, 2);
+    // -D values are checked as a render checks them.
+    EXPECT_EQ(run_clrender("view '" + kDemoScene + "' --no-browser -D fov_angle=200", folder.path()).exit_code, 2);
+}
+
+TEST(ViewLifetime, OptionsThatDoNotApplyAreUsageErrors) {
+    TempFolder folder;
+    for (const char* option : {"-o x.png", "--video x.mp4", "--frames 1", "--explain-pixel 1,1", "--port 70000",
+                               "--bind ''", "--output-dir ''", "--spp 0", "--size 0x5", "--nonsense"}) {
+        const auto result = run_clrender("view '" + kDemoScene + "' --no-browser " + option, folder.path());
+        EXPECT_EQ(result.exit_code, 1) << option << ": " << result.output;
+        EXPECT_EQ(result.output.find("view at"), std::string::npos) << option;
+    }
+    EXPECT_EQ(folder.entry_count(), 0);
+    EXPECT_EQ(run_clrender("view --help").exit_code, 0);
+    EXPECT_NE(run_clrender("view --help").output.find("--no-browser"), std::string::npos);
+}
+
+TEST(ViewLifetime, AMissingOutputFolderIsAnOutputError) {
+    TempFolder folder;
+    const auto result = run_clrender("view '" + kDemoScene + "' --no-browser --output-dir nowhere", folder.path());
+    EXPECT_EQ(result.exit_code, 4) << result.output;
+    EXPECT_NE(result.output.find("--output-dir"), std::string::npos);
+}
+
+TEST(ViewLifetime, AnotherBindAddressWarns) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9 --bind 0.0.0.0", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_NE(viewer.output().find("warning: --bind 0.0.0.0"), std::string::npos) << viewer.output();
+}
+
+}  // namespace
+}  // namespace clr

@@ -1,0 +1,120 @@
+// A viewer request's camera parameters: their form (view_parameters.h) and their values,
+// checked by the scene loader as -D and --size would be (view_camera.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scene/camera_path.h"
+#include "scene/scene_loader.h"
+#include "view/view_camera.h"
+#include "view/view_parameters.h"
+
+namespace clr {
+namespace {
+
+const char* kPathScene = R"({
+  "eyeLocations": [[0, 0, 10], [10, 0, 0]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 50,
+  "width": 64, "height": 48, "clrender": {"spp": 2, "frames_per_segment": 4},
+  "spheres": [{"center": [0, 0, 0], "radius": 1, "ambient": [1, 0, 0]}]
+})";
+
+Scene path_scene() { return parse_scene(kPathScene, "path.json"); }
+
+// The parameter a query's error names, or "" when it is accepted.
+std::string refused_parameter(const std::string& name, const std::string& value) {
+    try {
+        resolve_view_camera(path_scene(), parse_view_query({{name, value}}));
+        return "";
+    } catch (const ParameterError& error) {
+        EXPECT_FALSE(std::string(error.what()).empty());
+        return error.parameter();
+    }
+}
+
+TEST(ViewParameters, MissingValuesAreTheScenes) {
+    const Scene scene = path_scene();
+    const ViewCamera view = resolve_view_camera(scene, parse_view_query({}));
+    EXPECT_EQ(view.key.eye, (Vec3{0, 0, 10}));
+    EXPECT_EQ(view.key.lookat, (Vec3{0, 0, 0}));
+    EXPECT_EQ(view.up, (Vec3{0, 1, 0}));
+    EXPECT_EQ(view.fov_degrees, 50);
+    EXPECT_EQ(view.width, 64);
+    EXPECT_EQ(view.height, 48);
+    EXPECT_EQ(view.sampling.samples_per_pixel, 2);
+    EXPECT_EQ(view.frame, 0);
+}
+
+TEST(ViewParameters, GivenValuesReplaceTheScenes) {
+    const ViewCamera view = resolve_view_camera(
+        path_scene(), parse_view_query({{"eye", "1,2.5,-3e1"}, {"lookat", "0,0,1"}, {"up", "0,0,1e-3"}, {"fov", "30.5"},
+                                        {"size", "20x10"}, {"spp", "4"}, {"token", "ignored"}, {"t", "17"}}));
+    EXPECT_EQ(view.key.eye, (Vec3{1, 2.5, -30}));
+    EXPECT_EQ(view.key.lookat, (Vec3{0, 0, 1}));
+    EXPECT_EQ(view.up, (Vec3{0, 0, 1e-3}));
+    EXPECT_EQ(view.fov_degrees, 30.5);
+    EXPECT_EQ(view.width, 20);
+    EXPECT_EQ(view.height, 10);
+    EXPECT_EQ(view.sampling.samples_per_pixel, 4);
+}
+
+TEST(ViewParameters, FrameTakesTheCameraOfThePathAndItsSeed) {
+    const Scene scene = path_scene();
+    const ViewCamera view = resolve_view_camera(scene, parse_view_query({{"frame", "3"}}));
+    EXPECT_EQ(view.frame, 3);
+    EXPECT_EQ(view.key.eye, camera_at_frame(scene, 3).eye);
+    EXPECT_NE(view.key.eye, scene.camera_path[0].eye);
+    const ViewCamera moved = resolve_view_camera(scene, parse_view_query({{"frame", "3"}, {"eye", "0,5,5"}}));
+    EXPECT_EQ(moved.key.eye, (Vec3{0, 5, 5}));
+    EXPECT_EQ(moved.key.lookat, camera_at_frame(scene, 3).lookat);
+    EXPECT_EQ(moved.frame, 3);
+}
+
+TEST(ViewParameters, BadValuesNameTheirParameter) {
+    const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+        {"eye", "nan,0,0", "eye"},         {"eye", "1e400,0,0", "eye"},       {"eye", "1,2", "eye"},
+        {"eye", "1,2,3,4", "eye"},         {"eye", "inf,0,0", "eye"},         {"eye", "0x10,0,0", "eye"},
+        {"eye", " 1,2,3", "eye"},          {"eye", "", "eye"},                {"eye", "2e15,0,0", "eye"},
+        {"eye", "0,0,0", "eye"},  // the look-at point: no view direction
+        {"lookat", "a,b,c", "lookat"},     {"up", "0,0,0", "up"},             {"up", "0,0,1", "up"},  // parallel to the view
+        {"up", "0,0,-5", "up"},            {"fov", "0", "fov"},               {"fov", "180", "fov"},
+        {"fov", "-10", "fov"},             {"fov", "nan", "fov"},             {"fov", "1e-9", "fov"},  // too narrow
+        {"size", "100000x100000", "size"}, {"size", "-5x10", "size"},         {"size", "0x10", "size"},
+        {"size", "16385x1", "size"},       {"size", "9000x9000", "size"},     {"size", "10", "size"},
+        {"spp", "1000000000", "spp"},      {"spp", "0", "spp"},               {"spp", "4097", "spp"},
+        {"spp", "-1", "spp"},              {"spp", "2.5", "spp"},             {"spp", "99999999999999999999", "spp"},
+        {"frame", "13", "frame"},          {"frame", "-1", "frame"},          {"frame", "x", "frame"},
+    };
+    for (const auto& [name, value, parameter] : cases) EXPECT_EQ(refused_parameter(name, value), parameter) << name << "=" << value;
+}
+
+TEST(ViewParameters, LimitsAreTheCommandLines) {
+    // The largest values a render accepts are accepted; one beyond is refused.
+    EXPECT_EQ(refused_parameter("spp", "4096"), "");
+    EXPECT_EQ(refused_parameter("size", "16384x1"), "");
+    EXPECT_EQ(refused_parameter("size", "8192x8192"), "");
+    EXPECT_EQ(refused_parameter("eye", "1e15,0,0"), "");
+    EXPECT_EQ(refused_parameter("frame", "12"), "");
+    EXPECT_EQ(refused_parameter("fov", "179.9"), "");
+}
+
+TEST(ViewParameters, ARepeatedParameterIsRefused) {
+    EXPECT_THROW(parse_view_query({{"eye", "0,0,1"}, {"eye", "0,0,2"}}), ParameterError);
+}
+
+TEST(ViewParameters, PixelNeedsBothCoordinates) {
+    EXPECT_EQ(parse_pixel_query({{"x", "3"}, {"y", "7"}}).y, 7);
+    EXPECT_THROW(parse_pixel_query({{"x", "3"}}), ParameterError);
+    EXPECT_THROW(parse_pixel_query({{"x", "-3"}, {"y", "1"}}), ParameterError);
+    EXPECT_THROW(parse_pixel_query({{"x", "3.5"}, {"y", "1"}}), ParameterError);
+}
+
+TEST(ViewParameters, PlainNumbersOnly) {
+    EXPECT_EQ(parse_plain_number("-1.5e2"), -150);
+    EXPECT_EQ(parse_plain_number(".5"), 0.5);
+    EXPECT_EQ(parse_plain_number("1e-400"), 0);  // underflow reads as zero, as strtod reads JSON
+    for (const char* text : {"1e400", "-1e400", "inf", "nan", "0x1p3", "1,5", "", "+", "1e", " 1", "1 "})
+        EXPECT_FALSE(parse_plain_number(text)) << text;
+}
+
+}  // namespace
+}  // namespace clr

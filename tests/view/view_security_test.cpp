@@ -1,0 +1,195 @@
+// The viewer as an attacker meets it: no token, a wrong one, a foreign Host header (DNS
+// rebinding), a POST from another site, paths that try to reach files, bad parameters; and as
+// many users meet it: ten clients at once, one that hangs up mid-frame.
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "support/temp_folder.h"
+#include "view/viewer_process.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::TempFolder;
+using testing::ViewerProcess;
+
+const std::string kDemoScene = std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json";
+
+// One viewer for the whole suite: starting it is the slow part.
+class ViewSecurity : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        folder_ = new TempFolder;
+        viewer_ = new ViewerProcess("'" + kDemoScene + "' --size 64x36", folder_->path());
+    }
+    static void TearDownTestSuite() {
+        delete viewer_;
+        delete folder_;
+    }
+    void SetUp() override { ASSERT_TRUE(viewer_->started()) << viewer_->output(); }
+
+    std::string own_host() const { return "127.0.0.1:" + std::to_string(viewer_->port()); }
+    std::string own_origin() const { return "http://" + own_host(); }
+
+    static TempFolder* folder_;
+    static ViewerProcess* viewer_;
+};
+
+TempFolder* ViewSecurity::folder_ = nullptr;
+ViewerProcess* ViewSecurity::viewer_ = nullptr;
+
+TEST_F(ViewSecurity, EveryPathNeedsTheToken) {
+    auto client = viewer_->client();
+    for (const char* path : {"/", "/viewer.js", "/viewer.css", "/frame.png", "/frame.rgba", "/scene.json",
+                             "/explain?x=1&y=1", "/job?id=1", "/nothing", "/../etc/passwd"}) {
+        const httplib::Result result = client->Get(path);
+        ASSERT_TRUE(result) << path;
+        EXPECT_EQ(result->status, 403) << path;
+        EXPECT_TRUE(result->body.empty()) << path;
+        EXPECT_FALSE(result->has_header("Set-Cookie")) << path;
+        const std::string wrong = std::string(path) + (std::string(path).find('?') == std::string::npos ? "?" : "&") +
+                                  "token=00000000000000000000000000000000";
+        EXPECT_EQ(client->Get(wrong.c_str())->status, 403) << wrong;
+    }
+    const httplib::Result page = client->Get(viewer_->with_token("/").c_str());
+    ASSERT_TRUE(page);
+    EXPECT_EQ(page->status, 200);
+    EXPECT_NE(page->body.find("id=\"view\""), std::string::npos) << "the embedded page";
+    EXPECT_EQ(page->get_header_value("Content-Type"), "text/html; charset=utf-8");
+    EXPECT_EQ(client->Get(viewer_->with_token("/viewer.js").c_str())->status, 200);
+    EXPECT_EQ(client->Get(viewer_->with_token("/viewer.css").c_str())->status, 200);
+}
+
+TEST_F(ViewSecurity, ThePageSetsACookieThatStandsInForTheToken) {
+    auto client = viewer_->client();
+    const httplib::Result page = client->Get(viewer_->with_token("/").c_str());
+    ASSERT_TRUE(page);
+    const std::string cookie = page->get_header_value("Set-Cookie");
+    EXPECT_EQ(cookie, "clrender_token=" + viewer_->token() + "; HttpOnly; SameSite=Strict; Path=/");
+    const httplib::Headers with_cookie = {{"Cookie", "clrender_token=" + viewer_->token()}};
+    EXPECT_EQ(client->Get("/scene.json", with_cookie)->status, 200);
+    EXPECT_EQ(client->Get("/frame.png?size=8x8", with_cookie)->status, 200);
+    const httplib::Headers wrong_cookie = {{"Cookie", "clrender_token=" + std::string(32, 'a')}};
+    EXPECT_EQ(client->Get("/scene.json", wrong_cookie)->status, 403);
+}
+
+TEST_F(ViewSecurity, HostHeaderMustNameThisServer) {
+    auto client = viewer_->client();
+    const std::string port = std::to_string(viewer_->port());
+    for (const std::string& host : {std::string("evil.example:") + port, std::string("evil.example"),
+                                    std::string("127.0.0.1:1"), std::string("localhost.evil.example:") + port}) {
+        const httplib::Result result = client->Get(viewer_->with_token("/scene.json").c_str(), {{"Host", host}});
+        ASSERT_TRUE(result) << host;
+        EXPECT_EQ(result->status, 403) << host;
+        EXPECT_TRUE(result->body.empty());
+    }
+    for (const std::string& host : {"localhost:" + port, "127.0.0.1:" + port, "[::1]:" + port})
+        EXPECT_EQ(client->Get(viewer_->with_token("/scene.json").c_str(), {{"Host", host}})->status, 200) << host;
+}
+
+TEST_F(ViewSecurity, PostsMustComeFromTheViewersOwnPage) {
+    auto client = viewer_->client();
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "origin_check"})";
+    const std::string path = viewer_->with_token("/export");
+    EXPECT_EQ(client->Post(path.c_str(), body, "application/json")->status, 403) << "no Origin";
+    for (const char* origin : {"http://evil.example", "null", "https://127.0.0.1"})
+        EXPECT_EQ(client->Post(path.c_str(), {{"Origin", origin}}, body, "application/json")->status, 403) << origin;
+    EXPECT_FALSE(fs::exists(folder_->file("origin_check.json")));
+    const httplib::Result own = client->Post(path.c_str(), {{"Origin", own_origin()}}, body, "application/json");
+    ASSERT_TRUE(own);
+    EXPECT_EQ(own->status, 200) << own->body;
+    EXPECT_TRUE(fs::exists(folder_->file("origin_check.json")));
+    fs::remove(folder_->file("origin_check.json"));
+}
+
+TEST_F(ViewSecurity, NoPathReachesTheFileSystem) {
+    auto client = viewer_->client();
+    folder_->write("secret.txt", "secret");
+    const std::vector<std::string> paths = {
+        "/../etc/passwd",    "/%2e%2e/etc/passwd",        "/%2e%2e%2fetc%2fpasswd",      "/%2fetc%2fpasswd",
+        "/etc/passwd",       "//etc/passwd",              "/viewer.js/../../etc/passwd", "/secret.txt",
+        "/./secret.txt",     "/frame.png/../secret.txt",  "/index.html%00",              "/viewer.jsx",
+        "/viewerXjs",        "/scene.json.bak",           "/proc/self/environ",          kDemoScene,
+        "/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/%2e%2e/etc/passwd", "/..%5c..%5cetc%5cpasswd"};
+    for (const std::string& path : paths) {
+        const httplib::Result result = client->Get(viewer_->with_token(path).c_str());
+        ASSERT_TRUE(result) << path;
+        EXPECT_EQ(result->status, 404) << path;
+        EXPECT_EQ(result->body.find("secret"), std::string::npos) << path;
+        EXPECT_EQ(result->body.find("root:"), std::string::npos) << path;
+    }
+    // The scene's own folder is not served either.
+    EXPECT_EQ(client->Get(viewer_->with_token("/demo.json").c_str())->status, 404);
+    EXPECT_EQ(client->Get(viewer_->with_token("/checker.png").c_str())->status, 404);
+}
+
+TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
+    auto client = viewer_->client();
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"eye=nan,0,0", "eye"},         {"eye=1e400,0,0", "eye"},      {"up=0,0,0", "up"},
+        {"up=0,0,-1&eye=0,0,5&lookat=0,0,0", "up"},  {"size=100000x100000", "size"}, {"size=-64x36", "size"},
+        {"spp=1000000000", "spp"},      {"fov=180", "fov"},            {"fov=0", "fov"},
+        {"lookat=%00%ff", "lookat"},    {"frame=1", "frame"},          {"eye=2e15,0,0", "eye"},
+    };
+    for (const auto& [query, parameter] : cases) {
+        for (const char* route : {"/frame.png?", "/frame.rgba?"}) {
+            const httplib::Result result = client->Get(viewer_->with_token(route + query).c_str());
+            ASSERT_TRUE(result) << query;
+            EXPECT_EQ(result->status, 400) << route << query;
+            EXPECT_EQ(result->get_header_value("Content-Type"), "application/json");
+            EXPECT_NE(result->body.find("\"parameter\":\"" + parameter + "\""), std::string::npos) << query << ": " << result->body;
+            EXPECT_NE(result->body.find("\"error\":"), std::string::npos) << result->body;
+        }
+    }
+    EXPECT_EQ(client->Get(viewer_->with_token("/frame.png?size=16x9").c_str())->status, 200) << "still serving";
+}
+
+TEST_F(ViewSecurity, TenClientsAtOnceAndOneThatHangsUpMidFrame) {
+    // A client that asks for a large frame and closes the connection before the answer.
+    const int hang_up = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(viewer_->port()));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(hang_up, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const std::string request = "GET " + viewer_->with_token("/frame.png?size=1280x720&spp=2") +
+                                " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
+    ASSERT_EQ(::write(hang_up, request.data(), request.size()), static_cast<ssize_t>(request.size()));
+    ::close(hang_up);
+    // And one that connects and sends half a request, then nothing.
+    const int silent = ::socket(AF_INET, SOCK_STREAM, 0);
+    ASSERT_EQ(::connect(silent, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::write(silent, "GET /frame.png", 14), 14);
+
+    std::atomic<int> ok{0}, failed{0};
+    std::vector<std::thread> clients;
+    for (int c = 0; c < 10; ++c) {
+        clients.emplace_back([&, c] {
+            auto client = viewer_->client();
+            for (int i = 0; i < 4; ++i) {
+                const std::string query = "/frame.png?size=64x36&eye=" + std::to_string(c) + ",1," + std::to_string(10 + i);
+                const httplib::Result result = client->Get(viewer_->with_token(query).c_str());
+                (result && result->status == 200 && result->body.size() > 8 ? ok : failed)++;
+            }
+        });
+    }
+    for (std::thread& client : clients) client.join();
+    ::close(silent);
+    EXPECT_EQ(ok.load(), 40);
+    EXPECT_EQ(failed.load(), 0);
+    EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200);
+}
+
+}  // namespace
+}  // namespace clr
