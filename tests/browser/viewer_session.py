@@ -53,8 +53,10 @@ class Viewer:
                                         stderr=subprocess.PIPE, text=True)
         self.lines = queue.Queue()
         self.stderr = []
-        threading.Thread(target=self._read, args=(self.process.stdout, self.lines.put), daemon=True).start()
-        threading.Thread(target=self._read, args=(self.process.stderr, self.stderr.append), daemon=True).start()
+        self.readers = [threading.Thread(target=self._read, args=(self.process.stdout, self.lines.put), daemon=True),
+                        threading.Thread(target=self._read, args=(self.process.stderr, self.stderr.append), daemon=True)]
+        for reader in self.readers:
+            reader.start()
         self.url = None
         while self.url is None:
             try:
@@ -92,10 +94,15 @@ class Viewer:
         if self.process.poll() is None:
             self.process.send_signal(signal.SIGTERM)
             try:
-                return self.process.wait(timeout=20)
+                self.process.wait(timeout=20)
             except subprocess.TimeoutExpired:
                 self.process.kill()
-        return self.process.wait()
+        code = self.process.wait()
+        for reader in self.readers:
+            reader.join(timeout=5)
+        self.process.stdout.close()
+        self.process.stderr.close()
+        return code
 
 
 def camera_params(camera, size, spp, frame=None):
