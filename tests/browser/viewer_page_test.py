@@ -77,6 +77,19 @@ class ViewerPage(unittest.TestCase):
         cls.wait_until("return window.clrenderViewer && window.clrenderViewer.ready && window.clrenderViewer.isStill()",
                        what="the still frame")
 
+    def assert_same_image(self, expected, actual, message):
+        """Equal (width, height, RGBA) images; a failure counts the differing pixels (unittest's
+        own diff of two large byte strings takes minutes)."""
+        self.assertEqual(expected[:2], actual[:2], f"{message}: sizes differ")
+        if expected[2] == actual[2]:
+            return
+        a, b = expected[2], actual[2]
+        differing = [p for p in range(len(a) // 4) if a[p * 4:p * 4 + 4] != b[p * 4:p * 4 + 4]]
+        first = differing[0]
+        self.fail(f"{message}: {len(differing)} of {len(a) // 4} pixels differ, the first at "
+                  f"({first % expected[0]}, {first // expected[0]}): {tuple(a[first * 4:first * 4 + 4])} expected, "
+                  f"{tuple(b[first * 4:first * 4 + 4])} shown")
+
     def camera(self):
         return self.driver.execute_script("return window.clrenderViewer.camera()")
 
@@ -110,10 +123,10 @@ class ViewerPage(unittest.TestCase):
         self.assertEqual((width, height), SIZE)
         self.assertEqual(self.driver.execute_script("return window.clrenderViewer.shown().spp"), SPP)
         served = self.frame_png(scene["camera"])
-        self.assertEqual(served, (width, height, shown), "#view differs from /frame.png at the scene's camera")
+        self.assert_same_image(served, (width, height, shown), "#view differs from /frame.png at the scene's camera")
         batch = os.path.join(self.work.name, "batch.png")
         run_clrender(self.scene_path, "--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", str(SPP), "-o", batch)
-        self.assertEqual(read_png(batch), served, "/frame.png differs from the batch render")
+        self.assert_same_image(read_png(batch), served, "/frame.png differs from the batch render")
 
     def test_b_drag_orbits_around_the_look_at_point(self):
         from selenium.webdriver.common.action_chains import ActionChains
@@ -135,7 +148,7 @@ class ViewerPage(unittest.TestCase):
         self.assertAlmostEqual(distance(after_camera), distance(before_camera), places=9)
         after = self.canvas_pixels()
         self.assertNotEqual(after[2], before[2], "the image did not change after the drag")
-        self.assertEqual(self.frame_png(after_camera), after, "the still view after a drag is not /frame.png")
+        self.assert_same_image(self.frame_png(after_camera), after, "the still view after a drag is not /frame.png")
 
     def test_c_held_key_flies_and_fps_counts_frames(self):
         from selenium.webdriver.common.action_chains import ActionChains
@@ -184,7 +197,7 @@ class ViewerPage(unittest.TestCase):
         # Frame 0 of the export is the first key's view: the same seeds as the view's still frame.
         rendered = os.path.join(self.work.name, "export_frame0.png")
         run_clrender(path, "--frames", "0", "-o", rendered)
-        self.assertEqual(read_png(rendered), self.frame_png(first), "the export's frame 0 is not the first key's view")
+        self.assert_same_image(read_png(rendered), self.frame_png(first), "the export's frame 0 is not the first key's view")
         self.driver.find_element("id", "clear-keys").click()
 
     def test_h_render_video_shows_progress_and_writes_the_video(self):
@@ -336,7 +349,7 @@ class ViewerPage(unittest.TestCase):
             batch = os.path.join(folder, "frame7.png")
             run_clrender(path, "--frames", str(frame), "-o", batch, "--size", f"{SIZE[0]}x{SIZE[1]}",
                          "--spp", str(SPP))
-            self.assertEqual(shown, read_png(batch), "the path slider's frame is not the batch render's")
+            self.assert_same_image(shown, read_png(batch), "the path slider's frame is not the batch render's")
         finally:
             self.load(self.viewer)
             viewer.stop()
