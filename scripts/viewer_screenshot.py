@@ -35,7 +35,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="clrender-screenshot-") as work:
         viewer = Viewer(binary, os.path.join(root, "scenes", "demo", "demo.json"),
                         ["--size", f"{size[0]}x{size[1]}", "--spp", "4", "--output-dir", work], cwd=work)
-        driver = open_browser(1280, 1180)
+        driver = open_browser(1280, 1560)
         try:
             from selenium.webdriver.common.action_chains import ActionChains
             driver.get(viewer.url)
@@ -48,13 +48,14 @@ def main():
             driver.find_element("id", "record").click()
             driver.find_element("id", "export").click()
             wait(driver, "return document.getElementById('path-json').value")
-            # A "student's" render: the still frame with a sphere's region tinted.
+            # A "student's" render: the still frame with the yellow sphere shaded differently.
             width, height, pixels = png_io.decode(viewer.get("frame.png", **camera_params(camera, size, 4)))
             tinted = bytearray(pixels)
-            for y in range(150, 230):
-                for x in range(380, 470):
+            for y in range(230, 360):
+                for x in range(440, 570):
                     i = (y * width + x) * 4
-                    tinted[i] = min(255, tinted[i] + 30)
+                    if tinted[i] > 180 and tinted[i + 2] < 120:
+                        tinted[i + 1] = max(0, tinted[i + 1] - 12 - (x - 440) // 8)
             student = os.path.join(work, "student.png")
             with open(student, "wb") as f:
                 f.write(png_io.encode(width, height, bytes(tinted)))
@@ -62,13 +63,13 @@ def main():
             wait(driver, "return document.getElementById('diff-share').dataset.share")
             view = driver.find_element("id", "view")
             rect = driver.execute_script("return arguments[0].getBoundingClientRect().toJSON()", view)
-            x, y = 420, 190  # a pixel of the tinted sphere
+            x, y = 505, 298  # a pixel of the yellow sphere
             ActionChains(driver).move_to_element_with_offset(
                 view, round((x + 0.5) * rect["width"] / width - rect["width"] / 2),
                 round((y + 0.5) * rect["height"] / height - rect["height"] / 2)).click().perform()
             wait(driver, "return !document.getElementById('explain').textContent.includes('asking')"
                          " && document.getElementById('explain').textContent.startsWith('Pixel')")
-            driver.execute_script("window.scrollTo(0, 0)")
+            driver.execute_script("document.activeElement.blur(); window.scrollTo(0, 0)")
             time.sleep(0.3)
             driver.save_screenshot(output)
         finally:
