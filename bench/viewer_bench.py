@@ -52,8 +52,8 @@ def measure(driver, viewer, channel, seconds, inputs):
     start = driver.execute_script("return performance.now()")
     ActionChains(driver).key_down("d").perform()
     time.sleep(seconds)
-    shown, latencies, now = driver.execute_script(
-        "const v = window.clrenderViewer; return [v.framesInLastSecond(), v.latencies(), performance.now()]")
+    shown, latencies, timings, now = driver.execute_script(
+        "const v = window.clrenderViewer; return [v.framesInLastSecond(), v.latencies(), v.timings(), performance.now()]")
     ActionChains(driver).key_up("d").perform()
     fps_text = driver.find_element("id", "fps").text
     moving_seconds = (now - start) / 1000
@@ -71,7 +71,12 @@ def measure(driver, viewer, channel, seconds, inputs):
             "fps_moving": frames / moving_seconds, "fps_last_second": shown, "fps_text": fps_text,
             "latency_moving_median_ms": statistics.median(latencies) if latencies else None,
             "latency_moving_p95_ms": percentile(latencies, 95),
-            "latency_single_median_ms": statistics.median(singles), "latency_single_max_ms": max(singles)}
+            "latency_single_median_ms": statistics.median(singles), "latency_single_max_ms": max(singles),
+            # where a moving frame's time goes: to the response's headers (the server's render),
+            # to its whole body, and decoding and drawing it
+            "server_median_ms": statistics.median(t[0] for t in timings),
+            "body_median_ms": statistics.median(t[1] for t in timings),
+            "draw_median_ms": statistics.median(t[2] for t in timings)}
 
 
 def main():
@@ -87,8 +92,9 @@ def main():
     channels = args.channel or ["rgba"]
     driver = open_browser(1600, 1100)
     results = []
-    print("| scene | size | channel | fps moving (in the page) | latency moving, median / p95 | latency of one input, median / max |")
-    print("|---|---|---|---:|---:|---:|")
+    print("| scene | size | channel | fps moving (in the page) | latency moving, median / p95 | latency of one input, median / max "
+          "| a frame's time: server / body / draw (medians) |")
+    print("|---|---|---|---:|---:|---:|---:|")
     try:
         for scene in args.scenes:
             viewer = Viewer(os.path.abspath(args.binary), scene, ["--size", args.size, "--spp", "1"])
@@ -99,7 +105,9 @@ def main():
                     results.append(r)
                     print(f"| {os.path.basename(scene)} | {args.size} | {channel} | {r['fps_moving']:.1f} | "
                           f"{r['latency_moving_median_ms']:.1f} / {r['latency_moving_p95_ms']:.1f} ms | "
-                          f"{r['latency_single_median_ms']:.1f} / {r['latency_single_max_ms']:.1f} ms |", flush=True)
+                          f"{r['latency_single_median_ms']:.1f} / {r['latency_single_max_ms']:.1f} ms | "
+                          f"{r['server_median_ms']:.1f} / {r['body_median_ms']:.1f} / {r['draw_median_ms']:.1f} ms |",
+                          flush=True)
             finally:
                 viewer.stop()
     finally:

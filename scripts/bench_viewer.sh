@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # clrender view's frames per second and input-to-image latency as the page sees them, in
 # headless Chromium (bench/viewer_bench.py), at 1280x720 on the course's testScene_grads.json
-# (from ../shared, skipped where it is absent) and the forest (generated into out/forest/ when
+# (from ../shared, or $CLRENDER_SHARED_DIR, skipped where it is absent) and the forest (generated into out/forest/ when
 # missing). Figures: docs/benchmarks.md, Viewer. Options go to bench/viewer_bench.py, e.g.
 #   scripts/bench_viewer.sh --seconds 10 --channel rgba --channel png
 set -euo pipefail
@@ -10,7 +10,7 @@ build="${CLRENDER_BUILD_DIR:-$root/build}"
 
 cmake --build "$build" -j"$(nproc)" --target clrender clrender_make_forest > /dev/null
 scenes=()
-course="$root/../shared/course-scenes/spring2023-a03/testScene_grads.json"
+course="${CLRENDER_SHARED_DIR:-$root/../shared}/course-scenes/spring2023-a03/testScene_grads.json"
 if [ -f "$course" ]; then
   scenes+=("$course")
 else

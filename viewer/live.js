@@ -58,6 +58,7 @@ class ClrenderLiveView {
     this.failedVersion = -1;   // a camera the server refused: not asked again until it changes
     this.shownTimes = [];      // performance.now() of each image shown, the last few seconds
     this.latencies = [];       // input-to-image times in ms, the most recent 2000
+    this.timings = [];         // per image shown: ms to the response's headers, to its body, to drawn
     this.stillTimer = null;
   }
 
@@ -103,10 +104,14 @@ class ClrenderLiveView {
     this.inFlight = { version, spp, abort };
     const url = `frame.${this.channel}?${clrenderFrameQuery(this.token, camera, size, spp, frame)}`;
     try {
+      const sent = performance.now();
       const response = await fetch(url, { signal: abort.signal, cache: "no-store" });
       if (!response.ok) throw new Error(await clrenderErrorText(response));
-      await this.draw(response);
+      const answered = performance.now();
+      const received = await this.draw(response);
       const now = performance.now();
+      this.timings.push([answered - sent, received - answered, now - received]);
+      if (this.timings.length > 2000) this.timings.shift();
       this.shownTimes.push(now);
       if (inputTime !== null) {
         this.latencies.push(now - inputTime);
@@ -132,18 +137,21 @@ class ClrenderLiveView {
       const width = Number(response.headers.get("X-Width"));
       const height = Number(response.headers.get("X-Height"));
       const bytes = new Uint8ClampedArray(await response.arrayBuffer());
+      const received = performance.now();
       if (!(width > 0 && height > 0) || bytes.length !== width * height * 4) {
         throw new Error(`the server sent ${bytes.length} bytes for a ${width}x${height} frame`);
       }
       this.resize(width, height);
       this.context.putImageData(new ImageData(bytes, width, height), 0, 0);
-    } else {
-      const bitmap = await createImageBitmap(await response.blob(),
-                                             { premultiplyAlpha: "none", colorSpaceConversion: "none" });
-      this.resize(bitmap.width, bitmap.height);
-      this.context.drawImage(bitmap, 0, 0);
-      bitmap.close();
+      return received;
     }
+    const blob = await response.blob();
+    const received = performance.now();
+    const bitmap = await createImageBitmap(blob, { premultiplyAlpha: "none", colorSpaceConversion: "none" });
+    this.resize(bitmap.width, bitmap.height);
+    this.context.drawImage(bitmap, 0, 0);
+    bitmap.close();
+    return received;
   }
 
   resize(width, height) {

@@ -36,7 +36,8 @@
     shown: () => live.shown,
     framesInLastSecond: () => live.framesInLastSecond(),
     latencies: () => live.latencies.slice(),
-    resetStats: () => { live.latencies = []; live.shownTimes = []; },
+    timings: () => live.timings.slice(),
+    resetStats: () => { live.latencies = []; live.shownTimes = []; live.timings = []; },
     scene: () => scene,
     // What a still frame of the current view is rendered with: the comparison's reference.
     stillRequest: () => ({ camera: ClrenderCamera.copy(live.camera), frame: live.frame,
