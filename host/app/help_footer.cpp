@@ -5,7 +5,11 @@ namespace clr {
 // Every variable a getenv() in host/ reads, but the PATH and HOME every program reads, is
 // listed here: tests/app/install_test.cpp compares the two lists.
 std::string help_footer() {
-    return R"(Environment:
+    return R"(Commands:
+  clrender view SCENE [options]  Render the scene live in the browser: fly the camera, record and
+                                 export camera paths (clrender view --help)
+
+Environment:
   CLRENDER_DEVICE            Default for -d, the OpenCL device
   CLRENDER_CACHE_DIR         Folder of the program and image caches, or 'off'; default
                              $XDG_CACHE_HOME/clrender, else ~/.cache/clrender

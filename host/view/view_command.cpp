@@ -1,5 +1,6 @@
 #include "view/view_command.h"
 
+#include <csignal>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -94,6 +95,12 @@ int view_main(int argc, const char* const* argv) {
     if (parsed.exit_code) return *parsed.exit_code;
     try {
         return run_view(parsed.options);
+    } catch (const Interrupted& stopped) {
+        // The viewer's normal end: no frame or file to speak of, as a render's message does.
+        const int signal_number = stopped.code() - 128;
+        std::cerr << "clrender: view stopped by "
+                  << (signal_number == SIGINT ? "SIGINT (Ctrl-C)" : signal_number == SIGHUP ? "SIGHUP" : "SIGTERM") << "\n";
+        return stopped.code();
     } catch (...) {
         const ExitStatus status = exit_status_for(std::current_exception());
         std::cerr << status.message << "\n";

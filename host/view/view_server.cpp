@@ -65,6 +65,9 @@ void configure(httplib::Server& server) {
     server.set_read_timeout(kClientTimeoutSeconds, 0);
     server.set_write_timeout(kClientTimeoutSeconds, 0);
     server.set_keep_alive_timeout(kKeepAliveSeconds);
+    // The live view asks for frame after frame on one connection; a new connection every few
+    // frames (cpp-httplib's default is 5 requests) would cost a handshake each time.
+    server.set_keep_alive_max_count(kKeepAliveRequests);
     server.set_payload_max_length(kMostRequestBytes);
     // The listening socket is reused at once after a restart, and stays out of the children
     // (a video render) that the server starts.

@@ -25,6 +25,8 @@ constexpr int kServerThreads = 32;
 constexpr int kClientTimeoutSeconds = 5;
 // Longest an idle kept-alive connection keeps its thread.
 constexpr int kKeepAliveSeconds = 2;
+// Requests one kept-alive connection serves before it is closed.
+constexpr std::size_t kKeepAliveRequests = 10000;
 // Largest request body (the camera keys of an export: about 100 bytes a key).
 constexpr std::size_t kMostRequestBytes = 2 * 1024 * 1024;
 

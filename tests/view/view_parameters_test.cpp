@@ -93,7 +93,8 @@ TEST(ViewParameters, LimitsAreTheCommandLines) {
     EXPECT_EQ(refused_parameter("size", "16384x1"), "");
     EXPECT_EQ(refused_parameter("size", "8192x8192"), "");
     EXPECT_EQ(refused_parameter("eye", "1e15,0,0"), "");
-    EXPECT_EQ(refused_parameter("frame", "12"), "");
+    EXPECT_EQ(refused_parameter("frame", "4"), "");  // the last of (2 keys - 1) x 4 + 1 frames
+    EXPECT_EQ(refused_parameter("frame", "5"), "frame");
     EXPECT_EQ(refused_parameter("fov", "179.9"), "");
 }
 

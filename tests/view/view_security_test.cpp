@@ -155,7 +155,7 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
     EXPECT_EQ(client->Get(viewer_->with_token("/frame.png?size=16x9").c_str())->status, 200) << "still serving";
 }
 
-TEST_F(ViewSecurity, TenClientsAtOnceAndOneThatHangsUpMidFrame) {
+TEST_F(ViewSecurity, TenClientsAtOnceBesideOnesThatHangUpStallOrReadSlowly) {
     // A client that asks for a large frame and closes the connection before the answer.
     const int hang_up = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in address{};
@@ -167,10 +167,21 @@ TEST_F(ViewSecurity, TenClientsAtOnceAndOneThatHangsUpMidFrame) {
                                 " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
     ASSERT_EQ(::write(hang_up, request.data(), request.size()), static_cast<ssize_t>(request.size()));
     ::close(hang_up);
-    // And one that connects and sends half a request, then nothing.
+    // One that connects and sends half a request, then nothing.
     const int silent = ::socket(AF_INET, SOCK_STREAM, 0);
     ASSERT_EQ(::connect(silent, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
     ASSERT_EQ(::write(silent, "GET /frame.png", 14), 14);
+    // And a slow reader: it asks for large raw frames, more than the socket buffers hold, and
+    // reads none of them.
+    const int slow = ::socket(AF_INET, SOCK_STREAM, 0);
+    int small_buffer = 4096;
+    ::setsockopt(slow, SOL_SOCKET, SO_RCVBUF, &small_buffer, sizeof small_buffer);
+    ASSERT_EQ(::connect(slow, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    std::string slow_requests;
+    for (int i = 0; i < 3; ++i)
+        slow_requests += "GET " + viewer_->with_token("/frame.rgba?size=1280x720&eye=0,1," + std::to_string(12 + i)) +
+                         " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
+    ASSERT_EQ(::write(slow, slow_requests.data(), slow_requests.size()), static_cast<ssize_t>(slow_requests.size()));
 
     std::atomic<int> ok{0}, failed{0};
     std::vector<std::thread> clients;
@@ -186,6 +197,7 @@ TEST_F(ViewSecurity, TenClientsAtOnceAndOneThatHangsUpMidFrame) {
     }
     for (std::thread& client : clients) client.join();
     ::close(silent);
+    ::close(slow);
     EXPECT_EQ(ok.load(), 40);
     EXPECT_EQ(failed.load(), 0);
     EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200);
