@@ -79,6 +79,12 @@ def measure(driver, viewer, channel, seconds, inputs):
             "draw_median_ms": statistics.median(t[2] for t in timings)}
 
 
+def load_average():
+    """The one-minute load average (the benchmark shares its cores with whatever else runs)."""
+    with open("/proc/loadavg") as f:
+        return float(f.read().split()[0])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("binary")
@@ -92,6 +98,7 @@ def main():
     channels = args.channel or ["rgba"]
     driver = open_browser(1600, 1100)
     results = []
+    print(f"{os.cpu_count()} CPUs, load average {load_average():.1f} at the start")
     print("| scene | size | channel | fps moving (in the page) | latency moving, median / p95 | latency of one input, median / max "
           "| a frame's time: server / body / draw (medians) |")
     print("|---|---|---|---:|---:|---:|---:|")
@@ -100,8 +107,9 @@ def main():
             viewer = Viewer(os.path.abspath(args.binary), scene, ["--size", args.size, "--spp", "1"])
             try:
                 for channel in channels:
+                    load_before = load_average()
                     r = measure(driver, viewer, channel, args.seconds, args.inputs)
-                    r.update(scene=scene, size=args.size)
+                    r.update(scene=scene, size=args.size, load_average=[load_before, load_average()])
                     results.append(r)
                     print(f"| {os.path.basename(scene)} | {args.size} | {channel} | {r['fps_moving']:.1f} | "
                           f"{r['latency_moving_median_ms']:.1f} / {r['latency_moving_p95_ms']:.1f} ms | "

@@ -77,7 +77,10 @@ class ClrenderLiveView {
   hold() { this.holds += 1; }
   release() { this.holds = Math.max(0, this.holds - 1); this.lastChange = performance.now(); this.pump(); }
 
-  isStill() { return this.shown !== null && this.shown.version === this.version && this.shown.spp >= this.stillSpp; }
+  isStill() {
+    return this.holds === 0 && this.shown !== null && this.shown.version === this.version &&
+           this.shown.spp >= this.stillSpp;
+  }
 
   framesInLastSecond(now = performance.now()) {
     while (this.shownTimes.length && this.shownTimes[0] < now - 1000) this.shownTimes.shift();
