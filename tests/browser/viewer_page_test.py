@@ -354,6 +354,72 @@ class ViewerPage(unittest.TestCase):
             self.load(self.viewer)
             viewer.stop()
 
+    def still_view_matches_batch(self, scene_path, size, spp, folder, batch_args=()):
+        """Loads the page for scene_path and checks its still view against the batch render."""
+        viewer = Viewer(BINARY, scene_path, ["--size", f"{size[0]}x{size[1]}", "--spp", str(spp),
+                                             "--output-dir", folder], cwd=folder)
+        try:
+            self.load(viewer)
+            shown = self.canvas_pixels()
+            batch = os.path.join(folder, "batch.png")
+            run_clrender(scene_path, "--size", f"{size[0]}x{size[1]}", "--spp", str(spp), "-o", batch, *batch_args)
+            self.assert_same_image(read_png(batch), shown, f"the still view of {scene_path} is not the batch render")
+        finally:
+            self.load(self.viewer)
+            viewer.stop()
+
+    def test_i_course_scene_still_view_is_the_batch_render(self):
+        scene = os.path.join(SOURCE_DIR, "..", "shared", "course-scenes", "spring2023-a03", "testScene_grads.json")
+        if not os.path.isfile(scene):
+            self.skipTest(f"{scene} is absent (the course material beside the source tree)")
+        folder = os.path.join(self.work.name, "course")
+        os.makedirs(folder)
+        self.still_view_matches_batch(scene, (160, 120), 2, folder)
+
+    def test_j_impostors_after_a_drag_are_the_batch_render(self):
+        # Impostors are placed for the camera (and their view chosen) on the server, as a batch
+        # render places them: after orbiting, the still view is the batch render from there.
+        from selenium.webdriver.common.action_chains import ActionChains
+        folder = os.path.join(self.work.name, "impostors")
+        os.makedirs(folder)
+        images = os.path.dirname(self.scene_path)
+        with open(self.scene_path) as f:
+            scene = json.load(f)
+        for billboard in scene["billboards"]:
+            billboard["filename"] = os.path.join(images, billboard["filename"])
+        scene["clrender"] = {"impostors": [
+            {"center": [6, 0.5, 1], "width": 3, "height": 3, "views": [
+                {"filename": os.path.join(images, "cutout.png"), "direction": [0, 0, 1]},
+                {"filename": os.path.join(images, "checker.png"), "direction": [1, 0, 0]}]},
+            {"center": [-3, 3, 2], "width": 2, "height": 2, "facing": "free", "ambient": [1, 0.5, 0]}]}
+        path = os.path.join(folder, "impostors.json")
+        with open(path, "w") as f:
+            json.dump(scene, f)
+        viewer = Viewer(BINARY, path, ["--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", str(SPP),
+                                       "--output-dir", folder], cwd=folder)
+        try:
+            self.load(viewer)
+            before = self.canvas_pixels()
+            view = self.driver.find_element("id", "view")
+            chain = ActionChains(self.driver).move_to_element(view).click_and_hold()
+            for _ in range(12):  # 240 pixels: the eye turns 72 degrees, to the first impostor's other view
+                chain.move_by_offset(-20, 0).pause(0.02)
+            chain.release().perform()
+            self.wait_still()
+            camera = self.camera()
+            to_eye = [camera["eye"][0] - 6, camera["eye"][2] - 1]
+            self.assertGreater(to_eye[0], 1.5 * abs(to_eye[1]), f"the eye {camera['eye']} did not turn to the side")
+            shown = self.canvas_pixels()
+            self.assertNotEqual(shown[2], before[2])
+            batch = os.path.join(folder, "batch.png")
+            vector = lambda v: json.dumps([float(x) for x in v])  # noqa: E731
+            run_clrender(path, "-D", f"eye={vector(camera['eye'])}", "-D", f"lookat={vector(camera['lookat'])}",
+                         "-D", f"up={vector(camera['up'])}", "-D", f"fov_angle={float(camera['fov'])!r}",
+                         "--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", str(SPP), "-o", batch)
+            self.assert_same_image(read_png(batch), shown, "the still view after a drag is not the batch render")
+        finally:
+            self.load(self.viewer)
+            viewer.stop()
 
 def main():
     global BINARY, SOURCE_DIR
