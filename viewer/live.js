@@ -1,7 +1,7 @@
 // The live image of clrender view: asks the server for the latest camera's frame as soon as
 // the previous one has arrived (never more than one request in flight), 1 sample per pixel
-// while the camera moves, then the still frame at the full samples per pixel once it has been
-// still for a moment. The still frame uses the batch renderer's seeds, so it is the image
+// while the camera moves, then, once it has been still for a moment, frames of 4, 16, ...
+// samples up to the scene's samples per pixel. The still frame uses the batch renderer's seeds, so it is the image
 // `clrender SCENE` writes for that camera.
 "use strict";
 
@@ -58,6 +58,7 @@ class ClrenderLiveView {
     this.failedVersion = -1;   // a camera the server refused: not asked again until it changes
     this.shownTimes = [];      // performance.now() of each image shown, the last few seconds
     this.latencies = [];       // input-to-image times in ms, the most recent 2000
+    this.history = [];         // {version, spp} of the last 100 images shown
     this.timings = [];         // per image shown: ms to the response's headers, to its body, to drawn
     this.stillTimer = null;
   }
@@ -93,7 +94,9 @@ class ClrenderLiveView {
     if (!upToDate) { this.request(1); return; }
     if (this.shown.spp >= this.stillSpp) return;
     const wait = this.lastChange + this.stillDelayMs - performance.now();
-    if (this.holds === 0 && wait <= 0) { this.request(this.stillSpp); return; }
+    // Still: the samples go up fourfold at a time (1, 4, 16, ...) to the scene's, so that a
+    // scene of many samples sharpens step by step instead of waiting for its last frame.
+    if (this.holds === 0 && wait <= 0) { this.request(Math.min(this.stillSpp, this.shown.spp * 4)); return; }
     clearTimeout(this.stillTimer);
     this.stillTimer = setTimeout(() => this.pump(), Math.max(wait, 10));
   }
@@ -121,6 +124,8 @@ class ClrenderLiveView {
         if (this.latencies.length > 2000) this.latencies.shift();
       }
       this.shown = { version, spp, camera, frame, size };
+      this.history.push({ version, spp });
+      if (this.history.length > 100) this.history.shift();
       this.onShown(this.shown);
     } catch (error) {
       if (error.name === "AbortError") {

@@ -37,6 +37,7 @@
     framesInLastSecond: () => live.framesInLastSecond(),
     latencies: () => live.latencies.slice(),
     timings: () => live.timings.slice(),
+    history: () => live.history.slice(),
     resetStats: () => { live.latencies = []; live.shownTimes = []; live.timings = []; },
     scene: () => scene,
     // What a still frame of the current view is rendered with: the comparison's reference.

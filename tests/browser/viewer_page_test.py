@@ -23,7 +23,7 @@ from viewer_session import Viewer, browser_or_skip, camera_params, open_browser 
 
 BINARY = SOURCE_DIR = None
 SIZE = (192, 108)
-SPP = 4
+SPP = 16
 
 
 def run_clrender(*args, cwd=None):
@@ -121,7 +121,10 @@ class ViewerPage(unittest.TestCase):
         self.reset()
         width, height, shown = self.canvas_pixels()
         self.assertEqual((width, height), SIZE)
-        self.assertEqual(self.driver.execute_script("return window.clrenderViewer.shown().spp"), SPP)
+        # Still, the samples went up fourfold at a time to the scene's.
+        history = self.driver.execute_script("return window.clrenderViewer.history()")
+        version = history[-1]["version"]
+        self.assertEqual([h["spp"] for h in history if h["version"] == version], [1, 4, 16])
         served = self.frame_png(scene["camera"])
         self.assert_same_image(served, (width, height, shown), "#view differs from /frame.png at the scene's camera")
         batch = os.path.join(self.work.name, "batch.png")
