@@ -30,7 +30,9 @@ async function clrenderErrorText(response) {
   const text = await response.text();
   try {
     const parsed = JSON.parse(text);
-    if (parsed && parsed.error) return `${response.status}: ${parsed.error}`;
+    if (parsed && parsed.error) {
+      return `${response.status}${parsed.parameter ? ` (${parsed.parameter})` : ""}: ${parsed.error}`;
+    }
   } catch (e) { /* not JSON: the text as it is */ }
   return `${response.status}: ${text.trim() || response.statusText}`;
 }
@@ -131,8 +133,11 @@ class ClrenderLiveView {
       if (error.name === "AbortError") {
         if (inputTime !== null && this.firstUnsentInput === null) this.firstUnsentInput = inputTime;
       } else {
+        // Not asked again until the camera changes: a refused camera stays refused, and a
+        // stopped server would only be asked in a tight loop.
         this.failedVersion = version;
-        this.onError(error.message);
+        this.onError(error instanceof TypeError
+          ? "clrender view does not answer (has it stopped?)" : `the server refused this view: ${error.message}`);
       }
     } finally {
       this.inFlight = null;

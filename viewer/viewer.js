@@ -72,7 +72,7 @@
         setStatus(`${shown.size[0]}x${shown.size[1]}, ${shown.spp} sample${shown.spp > 1 ? "s" : ""} per pixel` +
                   (live.isStill() ? " (the still frame, as clrender renders it)" : ""));
       },
-      onError: (text) => setStatus(`The server refused this view: ${text}`, true),
+      onError: (text) => setStatus(text.charAt(0).toUpperCase() + text.slice(1), true),
     });
     const frames = Math.max(1, scene.frames || 1);
     timeInput.max = String(frames - 1);

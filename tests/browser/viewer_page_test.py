@@ -423,6 +423,16 @@ class ViewerPage(unittest.TestCase):
         finally:
             self.load(self.viewer)
             viewer.stop()
+    def test_k_a_refused_camera_is_reported_and_the_next_one_shown(self):
+        self.reset()
+        camera = self.camera()
+        self.driver.execute_script("window.clrenderViewer.setCamera(arguments[0])", dict(camera, fov=1e-9))
+        status = self.wait_until("const s = document.getElementById('status');"
+                                 "return s.className === 'error' ? s.textContent : ''", what="the refusal")
+        self.assertIn("400 (fov)", status)
+        self.set_camera(camera)  # the next camera is asked for and shown
+        self.assertNotEqual(self.driver.find_element("id", "status").get_attribute("class"), "error")
+
 
 def main():
     global BINARY, SOURCE_DIR
