@@ -75,9 +75,11 @@ const ClrenderCamera = (() => {
   // places it (docs/scene-format.md, Extensions): frame k of F lies at s = k (N - 1) / (F - 1).
   function alongKeys(keys, k, frameCount) {
     if (keys.length === 1 || frameCount < 2) return copy(keys[0]);
+    if (k >= frameCount - 1) return copy(keys[keys.length - 1]);  // exactly the last key
     const s = k * (keys.length - 1) / (frameCount - 1);
     const i = Math.min(keys.length - 2, Math.floor(s));
     const t = s - i;
+    if (t === 0) return copy(keys[i]);
     const next = copy(keys[i]);
     next.eye = lerp(keys[i].eye, keys[i + 1].eye, t);
     next.lookat = lerp(keys[i].lookat, keys[i + 1].lookat, t);

@@ -82,6 +82,7 @@ class ClrenderPaths {
     this.viewer.hold();
     const step = () => {
       const k = Math.min(frameCount - 1, Math.floor((performance.now() - start) * fps / 1000));
+      // (the live view shows as many of these cameras as it can render; none is queued)
       this.viewer.setCamera(ClrenderCamera.alongKeys(keys, k, frameCount), null);
       if (k >= frameCount - 1) { this.stop(); return; }
       this.playTimer = requestAnimationFrame(step);

@@ -433,6 +433,36 @@ class ViewerPage(unittest.TestCase):
         self.set_camera(camera)  # the next camera is asked for and shown
         self.assertNotEqual(self.driver.find_element("id", "status").get_attribute("class"), "error")
 
+    def test_l_play_moves_the_camera_through_the_keys(self):
+        self.reset()
+        self.driver.find_element("id", "clear-keys").click()
+        start = self.camera()
+        end = dict(start, eye=[start["eye"][0] + 4.0, start["eye"][1], start["eye"][2] - 4.0])
+        self.driver.find_element("id", "record").click()
+        self.set_camera(end)
+        self.driver.find_element("id", "record").click()
+        self.reset()
+        first_version = self.driver.execute_script("return window.clrenderViewer.history().slice(-1)[0].version")
+        self.driver.find_element("id", "play").click()
+        seen = []
+        deadline = time.monotonic() + 30
+        while self.driver.find_element("id", "play").text != "Play" and time.monotonic() < deadline:
+            seen.append(self.camera()["eye"])
+            time.sleep(0.03)
+        self.wait_still()
+        self.assertEqual(self.camera()["eye"], end["eye"], "play did not end at the last key")
+        # On the way: points of the straight segment between the keys, strictly inside it.
+        inside = [e for e in seen if start["eye"][0] < e[0] < end["eye"][0]]
+        self.assertGreater(len(inside), 2, f"cameras seen while playing: {seen}")
+        for eye in inside:
+            t = (eye[0] - start["eye"][0]) / 4.0
+            for axis, step in enumerate([4.0, 0.0, -4.0]):
+                self.assertAlmostEqual(eye[axis], start["eye"][axis] + t * step, places=9)
+        shown = self.driver.execute_script("return window.clrenderViewer.history()")
+        self.assertGreater(len({h["version"] for h in shown if h["version"] > first_version}), 2,
+                           "no images shown while playing")
+        self.driver.find_element("id", "clear-keys").click()
+
 
 def main():
     global BINARY, SOURCE_DIR
