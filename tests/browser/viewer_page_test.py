@@ -315,6 +315,12 @@ class ViewerPage(unittest.TestCase):
         text = self.wait_comparison("same.png")
         self.assertTrue(text.startswith("0.00%"), text)
         self.assertEqual(share.get_attribute("data-off"), "0")
+        # clrender's own PPM of the same view (browsers do not read PPM; the page does): the same.
+        ppm = os.path.join(self.work.name, "batch.ppm")
+        run_clrender(self.scene_path, "--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", str(SPP), "-o", ppm)
+        self.driver.find_element("id", "compare-file").send_keys(ppm)
+        text = self.wait_comparison("batch.ppm")
+        self.assertTrue(text.startswith("0.00%"), text)
         # Another size: a clear message and no heat map.
         self.drop_file("small.png", png_io.encode(10, 5, bytes(10 * 5 * 4)))
         text = self.wait_comparison("small.png")
