@@ -77,12 +77,19 @@ class ClrenderLiveView {
     this.pump();
   }
 
+  // The samples per pixel of the still frame; the current view is rendered again with them.
+  setStillSpp(spp) {
+    this.stillSpp = spp;
+    if (this.inFlight && this.inFlight.spp > 1) this.inFlight.abort.abort();
+    this.pump();
+  }
+
   hold() { this.holds += 1; }
   release() { this.holds = Math.max(0, this.holds - 1); this.lastChange = performance.now(); this.pump(); }
 
   isStill() {
     return this.holds === 0 && this.shown !== null && this.shown.version === this.version &&
-           this.shown.spp >= this.stillSpp;
+           this.shown.spp === this.stillSpp;
   }
 
   framesInLastSecond(now = performance.now()) {
@@ -94,11 +101,14 @@ class ClrenderLiveView {
     if (this.inFlight || this.camera === null || this.failedVersion === this.version) return;
     const upToDate = this.shown !== null && this.shown.version === this.version;
     if (!upToDate) { this.request(1); return; }
-    if (this.shown.spp >= this.stillSpp) return;
+    if (this.shown.spp === this.stillSpp) return;
     const wait = this.lastChange + this.stillDelayMs - performance.now();
     // Still: the samples go up fourfold at a time (1, 4, 16, ...) to the scene's, so that a
     // scene of many samples sharpens step by step instead of waiting for its last frame.
-    if (this.holds === 0 && wait <= 0) { this.request(Math.min(this.stillSpp, this.shown.spp * 4)); return; }
+    if (this.holds === 0 && wait <= 0) {
+      this.request(this.shown.spp < this.stillSpp ? Math.min(this.stillSpp, this.shown.spp * 4) : this.stillSpp);
+      return;
+    }
     clearTimeout(this.stillTimer);
     this.stillTimer = setTimeout(() => this.pump(), Math.max(wait, 10));
   }

@@ -74,6 +74,15 @@
       },
       onError: (text) => setStatus(text.charAt(0).toUpperCase() + text.slice(1), true),
     });
+    // Still samples: the scene's (the batch image) by default; 16 smooths a scene of 1.
+    const stillSelect = document.getElementById("still-spp");
+    const sceneSpp = live.stillSpp;
+    [...new Set([sceneSpp, 1, 4, 16, 64])].sort((a, b) => a - b).forEach((n) => {
+      const option = new Option(n === sceneSpp ? `${n} (the scene's)` : String(n), String(n));
+      option.selected = n === sceneSpp;
+      stillSelect.add(option);
+    });
+    stillSelect.addEventListener("change", () => live.setStillSpp(Number(stillSelect.value)));
     const frames = Math.max(1, scene.frames || 1);
     timeInput.max = String(frames - 1);
     document.getElementById("time-label").hidden = frames < 2;

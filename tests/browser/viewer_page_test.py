@@ -469,6 +469,22 @@ class ViewerPage(unittest.TestCase):
                            "no images shown while playing")
         self.driver.find_element("id", "clear-keys").click()
 
+    def test_m_still_samples_control_renders_the_view_again(self):
+        from selenium.webdriver.support.ui import Select
+        self.reset()
+        select = Select(self.driver.find_element("id", "still-spp"))
+        self.assertEqual(select.first_selected_option.get_attribute("value"), str(SPP))
+        try:
+            select.select_by_value("4")
+            self.wait_until("return window.clrenderViewer.isStill() && window.clrenderViewer.shown().spp === 4",
+                            what="the still frame at 4 samples")
+            self.assert_same_image(self.frame_png(self.camera(), spp=4), self.canvas_pixels(),
+                                   "the still frame at 4 samples is not /frame.png at 4")
+        finally:
+            select.select_by_value(str(SPP))
+            self.wait_until(f"return window.clrenderViewer.isStill() && window.clrenderViewer.shown().spp === {SPP}",
+                            what="the still frame at the scene's samples")
+
 
 def main():
     global BINARY, SOURCE_DIR
