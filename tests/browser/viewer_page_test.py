@@ -485,6 +485,16 @@ class ViewerPage(unittest.TestCase):
             self.wait_until(f"return window.clrenderViewer.isStill() && window.clrenderViewer.shown().spp === {SPP}",
                             what="the still frame at the scene's samples")
 
+    def test_n_the_page_loads_nothing_from_elsewhere(self):
+        resources = self.driver.execute_script(
+            "return performance.getEntriesByType('resource').map((e) => e.name)"
+            ".concat(Array.from(document.querySelectorAll('[src], [href]'), (e) => e.src || e.href))")
+        self.assertTrue(resources)
+        for name in resources:
+            if name.startswith(("blob:", "data:")) or name.endswith("#"):
+                continue
+            self.assertTrue(name.startswith(self.viewer.base), f"{name} is not the viewer's own")
+
 
 def main():
     global BINARY, SOURCE_DIR
