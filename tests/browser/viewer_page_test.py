@@ -495,6 +495,31 @@ class ViewerPage(unittest.TestCase):
                 continue
             self.assertTrue(name.startswith(self.viewer.base), f"{name} is not the viewer's own")
 
+    def test_o_wheel_zooms_and_the_fov_slider_sets_the_field_of_view(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        from selenium.webdriver.common.actions.wheel_input import ScrollOrigin
+        self.reset()
+        before = self.camera()
+
+        def distance(c):
+            return sum((e - l) ** 2 for e, l in zip(c["eye"], c["lookat"])) ** 0.5
+        view = self.driver.find_element("id", "view")
+        ActionChains(self.driver).scroll_from_origin(ScrollOrigin.from_element(view), 0, -100).perform()
+        self.wait_still()
+        zoomed = self.camera()
+        self.assertEqual(zoomed["lookat"], before["lookat"])
+        self.assertAlmostEqual(distance(zoomed), distance(before) / 1.1, places=9)  # one notch in: 10% closer
+        self.driver.execute_script("""
+            const fov = document.getElementById('fov');
+            fov.value = '35';
+            fov.dispatchEvent(new Event('input', { bubbles: true }));""")
+        self.wait_still()
+        camera = self.camera()
+        self.assertEqual(camera["fov"], 35)
+        self.assert_same_image(self.frame_png(camera), self.canvas_pixels(), "the view at a field of view of 35")
+        self.reset()
+        self.assertEqual(self.camera()["fov"], before["fov"])
+
 
 def main():
     global BINARY, SOURCE_DIR
