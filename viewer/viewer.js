@@ -67,6 +67,7 @@
     live = new ClrenderLiveView(canvas, {
       token, size: scene.size, stillSpp: Math.max(1, scene.spp || 1), channel: params.get("channel") || "rgba",
       onShown: (shown) => {
+        showFps();  // at once, not only on the next tick: a reader right after a move sees it
         canvas.dataset.spp = String(shown.spp);
         canvas.dataset.still = String(live.isStill());
         setStatus(`${shown.size[0]}x${shown.size[1]}, ${shown.spp} sample${shown.spp > 1 ? "s" : ""} per pixel` +
@@ -91,7 +92,7 @@
     new ClrenderPaths(api);
     new ClrenderCompare(api);
     wireInput(sceneCamera, frames);
-    setInterval(showFps, 250);
+    setInterval(showFps, 250);  // and as the last second's images age out
     api.ready = true;
   }
 

@@ -141,6 +141,8 @@ class ViewerPage(unittest.TestCase):
         for _ in range(8):
             chain.move_by_offset(8, 2).pause(0.03)
         chain.release().perform()
+        fps_text = self.driver.find_element("id", "fps").text  # read at once, as a user glances at it
+        self.assertGreater(int(re.match(r"\s*(\d+)", fps_text).group(1)), 0, fps_text)
         self.wait_still()
         after_camera = self.camera()
         self.assertEqual(after_camera["lookat"], before_camera["lookat"])
