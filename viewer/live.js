@@ -48,6 +48,7 @@ class ClrenderLiveView {
     this.channel = options.channel === "png" ? "png" : "rgba";
     this.onShown = options.onShown || (() => {});
     this.onError = options.onError || (() => {});
+    this.onIdle = null;        // called when moving and the shown image is of the latest camera
     this.stillDelayMs = 120;   // no camera change for this long: the view is still
     this.camera = null;
     this.frame = null;         // the animation frame the camera comes from, null once moved
@@ -99,7 +100,12 @@ class ClrenderLiveView {
 
   pump() {
     if (this.inFlight || this.camera === null || this.failedVersion === this.version) return;
-    const upToDate = this.shown !== null && this.shown.version === this.version;
+    let upToDate = this.shown !== null && this.shown.version === this.version;
+    if (upToDate && this.holds > 0 && this.onIdle) {
+      this.onIdle();  // a continuous move (held keys) may move the camera now
+      if (this.inFlight) return;
+      upToDate = this.shown.version === this.version;
+    }
     if (!upToDate) { this.request(1); return; }
     if (this.shown.spp === this.stillSpp) return;
     const wait = this.lastChange + this.stillDelayMs - performance.now();

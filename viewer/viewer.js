@@ -180,18 +180,26 @@
                     KeyQ: [0, 0, -1], KeyE: [0, 0, 1] };
     let flying = null;
     const typing = (event) => ["INPUT", "TEXTAREA", "SELECT"].includes(event.target.tagName);
-    const fly = (now) => {
-      if (held.size === 0) { flying = null; live.release(); return; }
+    // Moves the camera as far as the held keys have taken it by `now`.
+    const advance = (now) => {
       const seconds = Math.min(0.1, (now - flying.last) / 1000);
+      if (seconds <= 0) return;
       flying.last = now;
       const speed = 0.5 * Math.max(ClrenderCamera.distance(live.camera), 1e-3) * (flying.fast ? 4 : 1) * seconds;
       const sum = [0, 0, 0];
       held.forEach((code) => moves[code].forEach((m, i) => { sum[i] += m; }));
-      if (seconds > 0 && sum.some((m) => m !== 0)) {
+      if (sum.some((m) => m !== 0)) {
         api.setCamera(ClrenderCamera.fly(live.camera, sum[0] * speed, sum[1] * speed, sum[2] * speed), null, now);
       }
+    };
+    const fly = (now) => {
+      if (held.size === 0) { flying = null; live.release(); return; }
+      advance(now);
       flying.frame = requestAnimationFrame(fly);
     };
+    // An image arrived before the next display frame moved the camera: move it now, so that
+    // the next request need not wait for the display.
+    live.onIdle = () => { if (flying !== null && held.size > 0) advance(performance.now()); };
     document.addEventListener("keydown", (event) => {
       if (typing(event) || !(event.code in moves) || !live) return;
       event.preventDefault();
