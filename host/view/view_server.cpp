@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -60,7 +61,8 @@ void reap_browser_opener(pid_t& pid) {
         std::cerr << "clrender: warning: xdg-open could not open the browser; open the address above yourself\n";
 }
 
-void configure(httplib::Server& server) {
+// `listening` gets the listening socket, for the backlog (see serve_view).
+void configure(httplib::Server& server, int& listening) {
     server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
     server.set_read_timeout(kClientTimeoutSeconds, 0);
     server.set_write_timeout(kClientTimeoutSeconds, 0);
@@ -71,7 +73,8 @@ void configure(httplib::Server& server) {
     server.set_payload_max_length(kMostRequestBytes);
     // The listening socket is reused at once after a restart, and stays out of the children
     // (a video render) that the server starts.
-    server.set_socket_options([](socket_t socket) {
+    server.set_socket_options([&listening](socket_t socket) {
+        listening = socket;
         int yes = 1;
         ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
         ::fcntl(socket, F_SETFD, FD_CLOEXEC);
@@ -95,7 +98,8 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
                 const PathExporter& exporter, VideoJobs& videos) {
     warn_about_bind(settings.bind);
     httplib::Server server;
-    configure(server);
+    int listening = -1;
+    configure(server, listening);
     const std::string bind_address =
         settings.bind.size() >= 2 && settings.bind.front() == '[' ? settings.bind.substr(1, settings.bind.size() - 2) : settings.bind;
     int port = settings.port;
@@ -106,11 +110,25 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     if (port <= 0)
         throw UsageError("cannot listen on " + printable(settings.bind) + " port " + std::to_string(settings.port) +
                          (settings.port ? " (in use? --port 0 picks a free one)" : "") + ": " + std::strerror(errno));
+    // cpp-httplib listens with a backlog of 5: ten tabs connecting at once would see their
+    // connections dropped and retried a second later. The backlog is raised on the same socket.
+    if (listening >= 0) ::listen(listening, SOMAXCONN);
     const RequestGuard guard(token, settings.bind, port);
     ViewSession session{scene, renderer, exporter, videos, guard};
     add_view_routes(server, session);
 
-    std::thread listener([&server] { server.listen_after_bind(); });
+    std::atomic<bool> listener_ended{false};
+    std::thread listener([&server, &listener_ended] {
+        server.listen_after_bind();
+        listener_ended = true;
+    });
+    // Until the listener runs, Server::stop() would do nothing and the join below would wait
+    // forever: a signal right after the line is printed must still stop the server.
+    while (!server.is_running() && !listener_ended) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (listener_ended) {
+        listener.join();
+        throw UsageError("cannot listen on " + printable(settings.bind) + " port " + std::to_string(port));
+    }
     const std::string url = "http://" + url_host(settings.bind) + ":" + std::to_string(port) + "/?token=" + token;
     std::cout << "clrender: view at " << url << std::endl;
     pid_t opener = settings.open_browser ? open_browser(url) : -1;

@@ -3,10 +3,12 @@
 // signal ending it with 128 + signal and nothing left behind.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <regex>
 #include <set>
+#include <thread>
 
 #include "support/command.h"
 #include "support/temp_folder.h"
@@ -44,6 +46,17 @@ TEST(ViewLifetime, PrintsOneLineAndStopsCleanlyOnEachSignal) {
         EXPECT_EQ(entries(folder), (std::set<std::string>{"before.txt", "view-stderr.txt"})) << "left behind";
         // The port is free again: nothing of the server lives on.
         EXPECT_FALSE(client->Get(viewer.with_token("/scene.json").c_str()));
+    }
+}
+
+TEST(ViewLifetime, ASignalRightAfterTheLineStopsIt) {
+    // The server's thread may not have started listening when the line is printed; a signal at
+    // that moment must still end the viewer.
+    TempFolder folder;
+    for (int i = 0; i < 5; ++i) {
+        ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path());
+        ASSERT_TRUE(viewer.started()) << viewer.output();
+        EXPECT_EQ(viewer.stop(SIGTERM, 20), 143) << viewer.output();
     }
 }
 
@@ -90,6 +103,27 @@ TEST(ViewLifetime, AMissingOutputFolderIsAnOutputError) {
     const auto result = run_clrender("view '" + kDemoScene + "' --no-browser --output-dir nowhere", folder.path());
     EXPECT_EQ(result.exit_code, 4) << result.output;
     EXPECT_NE(result.output.find("--output-dir"), std::string::npos);
+}
+
+TEST(ViewLifetime, OpensTheBrowserWithTheAddressAndGoesOnWithoutOne) {
+    TempFolder folder;
+    fs::create_directories(folder.file("bin"));
+    // A stand-in for xdg-open that records what it was asked to open.
+    folder.write("bin/xdg-open", "#!/bin/sh\necho \"$1\" > '" + folder.file("opened.txt") + "'\n");
+    fs::permissions(folder.file("bin/xdg-open"), fs::perms::owner_all);
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path(), "PATH='" + folder.file("bin") + "'", true);
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    for (int i = 0; i < 500 && read_bytes(folder.file("opened.txt")).empty(); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(read_bytes(folder.file("opened.txt")),
+              "http://127.0.0.1:" + std::to_string(viewer.port()) + "/?token=" + viewer.token() + "\n");
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    // Without xdg-open: a warning, and the viewer serves all the same.
+    ViewerProcess without("'" + kDemoScene + "' --size 16x9", folder.path(), "PATH=/nonexistent", true);
+    ASSERT_TRUE(without.started()) << without.output();
+    EXPECT_EQ(without.client()->Get(without.with_token("/scene.json").c_str())->status, 200);
+    EXPECT_EQ(without.stop(SIGTERM), 143);
+    EXPECT_NE(without.output().find("warning: cannot open the browser"), std::string::npos) << without.output();
 }
 
 TEST(ViewLifetime, AnotherBindAddressWarns) {

@@ -17,12 +17,14 @@ extern char** environ;
 
 namespace clr::testing {
 
-ViewerProcess::ViewerProcess(const std::string& arguments, const std::string& folder) : folder_(folder) {
+ViewerProcess::ViewerProcess(const std::string& arguments, const std::string& folder, const std::string& environment,
+                             bool open_browser)
+    : folder_(folder) {
     int fds[2];
     if (::pipe(fds) != 0) return;
     // Through the shell, for the folder and the arguments' quoting; exec keeps the pid clrender's.
-    const std::string command = "cd '" + folder + "' && exec '" + CLRENDER_BINARY + "' view " + arguments +
-                                " --no-browser --port 0 2> view-stderr.txt";
+    const std::string command = "cd '" + folder + "' && " + environment + " exec '" + CLRENDER_BINARY + "' view " +
+                                arguments + (open_browser ? "" : " --no-browser") + " --port 0 2> view-stderr.txt";
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);

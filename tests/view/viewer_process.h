@@ -17,7 +17,9 @@ public:
     // Starts `clrender view <arguments> --no-browser --port 0` in `folder` and waits (up to two
     // minutes: the first start builds the program) for the line with its address. Check
     // started() before using it; output() says why it did not start.
-    ViewerProcess(const std::string& arguments, const std::string& folder);
+    // `environment` ("PATH=...") is set for it; with `open_browser`, --no-browser is left out.
+    ViewerProcess(const std::string& arguments, const std::string& folder, const std::string& environment = "",
+                  bool open_browser = false);
     ~ViewerProcess();  // SIGKILLs it if it still runs
 
     bool started() const { return port_ > 0; }
