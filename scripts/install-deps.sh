@@ -53,6 +53,8 @@ packages=(
   # scripts/install-intel-opencl.sh: pip downloads Intel's CPU OpenCL runtime (wheels from
   # PyPI, the one thing Debian does not package) for scripts/second-opencl.sh
   python3 python3-pip
+  # tests/browser/ and scripts/bench_viewer.sh: clrender view's page driven in headless Chromium
+  chromium chromium-driver python3-selenium
 )
 
 case "${1:-all}" in

@@ -1,2 +1,239 @@
-// Shows the scene's own camera until the viewer page replaces this placeholder.
-document.getElementById("view").src = "frame.png";
+// clrender view's page: loads the scene's camera from the server, wires the mouse, wheel and
+// keys to camera moves, and the panels (paths, explanations, comparison) to the server's
+// endpoints. window.clrenderViewer is the page's state for scripts (the browser tests and the
+// viewer benchmark read it).
+"use strict";
+
+(() => {
+  const params = new URLSearchParams(location.search);
+  const token = params.get("token") || "";
+  const canvas = document.getElementById("view");
+  const status = document.getElementById("status");
+  const fpsText = document.getElementById("fps");
+  const fovInput = document.getElementById("fov");
+  const fovValue = document.getElementById("fov-value");
+  const timeInput = document.getElementById("time");
+  const timeValue = document.getElementById("time-value");
+  const explainBox = document.getElementById("explain");
+
+  let scene = null;     // the answer of /scene.json
+  let live = null;
+  let explainSerial = 0;
+
+  const api = {
+    ready: false,
+    token,
+    sceneName: "",
+    camera: () => ClrenderCamera.copy(live.camera),
+    setCamera: (camera, frame = null, inputTime = performance.now()) => {
+      live.setCamera(camera, frame, inputTime);
+      fovInput.value = String(camera.fov);
+      fovValue.textContent = `${Number(camera.fov.toPrecision(4))}°`;
+    },
+    hold: () => live.hold(),
+    release: () => live.release(),
+    isStill: () => live.isStill(),
+    shown: () => live.shown,
+    framesInLastSecond: () => live.framesInLastSecond(),
+    latencies: () => live.latencies.slice(),
+    timings: () => live.timings.slice(),
+    history: () => live.history.slice(),
+    resetStats: () => { live.latencies = []; live.shownTimes = []; live.timings = []; },
+    scene: () => scene,
+    // What a still frame of the current view is rendered with: the comparison's reference.
+    stillRequest: () => ({ camera: ClrenderCamera.copy(live.camera), frame: live.frame,
+                           size: live.size.slice(), spp: live.stillSpp }),
+    explain: (x, y, request, note) => explain(x, y, request, note),
+  };
+  window.clrenderViewer = api;
+
+  function setStatus(text, isError = false) {
+    status.textContent = text;
+    status.className = isError ? "error" : "";
+  }
+
+  async function start() {
+    try {
+      const response = await fetch(`scene.json?token=${encodeURIComponent(token)}`, { cache: "no-store" });
+      if (!response.ok) throw new Error(await clrenderErrorText(response));
+      scene = await response.json();
+    } catch (error) {
+      setStatus(`Cannot load the scene: ${error.message}`, true);
+      return;
+    }
+    api.sceneName = scene.name || "";
+    document.getElementById("scene-name").textContent = api.sceneName;
+    document.title = `clrender view: ${api.sceneName}`;
+    live = new ClrenderLiveView(canvas, {
+      token, size: scene.size, stillSpp: Math.max(1, scene.spp || 1), channel: params.get("channel") || "rgba",
+      onShown: (shown) => {
+        showFps();  // at once, not only on the next tick: a reader right after a move sees it
+        canvas.dataset.spp = String(shown.spp);
+        canvas.dataset.still = String(live.isStill());
+        setStatus(`${shown.size[0]}x${shown.size[1]}, ${shown.spp} sample${shown.spp > 1 ? "s" : ""} per pixel` +
+                  (live.isStill() ? " (the still frame, as clrender renders it)" : ""));
+      },
+      onError: (text) => setStatus(text.charAt(0).toUpperCase() + text.slice(1), true),
+    });
+    // Still samples: the scene's (the batch image) by default; 16 smooths a scene of 1.
+    const stillSelect = document.getElementById("still-spp");
+    const sceneSpp = live.stillSpp;
+    [...new Set([sceneSpp, 1, 4, 16, 64])].sort((a, b) => a - b).forEach((n) => {
+      const option = new Option(n === sceneSpp ? `${n} (the scene's)` : String(n), String(n));
+      option.selected = n === sceneSpp;
+      stillSelect.add(option);
+    });
+    stillSelect.addEventListener("change", () => live.setStillSpp(Number(stillSelect.value)));
+    const frames = Math.max(1, scene.frames || 1);
+    timeInput.max = String(frames - 1);
+    document.getElementById("time-label").hidden = frames < 2;
+    const sceneCamera = fromScene(scene.camera);
+    api.setCamera(sceneCamera, frames > 1 ? 0 : null);
+    new ClrenderPaths(api);
+    new ClrenderCompare(api);
+    wireInput(sceneCamera, frames);
+    setInterval(showFps, 250);  // and as the last second's images age out
+    api.ready = true;
+  }
+
+  function fromScene(camera) {
+    return { eye: camera.eye.map(Number), lookat: camera.lookat.map(Number), up: camera.up.map(Number),
+             fov: Number(camera.fov) };
+  }
+
+  function showFps() {
+    const n = live.framesInLastSecond();
+    const shown = live.shown;
+    const state = live.isStill() ? "still" : (shown ? `${shown.spp} spp, moving` : "waiting");
+    fpsText.textContent = `${n} fps (${state})`;
+  }
+
+  // Maps a pointer position on a (possibly scaled) canvas to the image pixel under it.
+  function pixelAt(target, event) {
+    const rect = target.getBoundingClientRect();
+    const x = Math.floor((event.clientX - rect.left) * target.width / rect.width);
+    const y = Math.floor((event.clientY - rect.top) * target.height / rect.height);
+    return [Math.min(target.width - 1, Math.max(0, x)), Math.min(target.height - 1, Math.max(0, y))];
+  }
+
+  async function explain(x, y, request, note) {
+    const serial = ++explainSerial;
+    const query = clrenderFrameQuery(token, request.camera, request.size, request.spp, request.frame);
+    explainBox.textContent = `Pixel (${x}, ${y}): asking clrender…`;
+    explainBox.dataset.x = String(x);
+    explainBox.dataset.y = String(y);
+    try {
+      const response = await fetch(`explain?x=${x}&y=${y}&${query}`, { cache: "no-store" });
+      const text = response.ok ? await response.text() : `Cannot explain it: ${await clrenderErrorText(response)}`;
+      if (serial !== explainSerial) return;
+      explainBox.textContent = `Pixel (${x}, ${y}) of the ${request.size[0]}x${request.size[1]} view` +
+                               `${note ? `\n${note}` : ""}\n\n${text}`;
+    } catch (error) {
+      if (serial === explainSerial) explainBox.textContent = `Pixel (${x}, ${y}): cannot explain it: ${error.message}`;
+    }
+  }
+
+  function wireInput(sceneCamera, frames) {
+    // Drag: orbit (a quarter turn across 300 CSS pixels). A press without movement is a click.
+    let drag = null;
+    canvas.addEventListener("pointerdown", (event) => {
+      if (event.button !== 0) return;
+      canvas.setPointerCapture(event.pointerId);
+      canvas.focus();
+      drag = { x: event.clientX, y: event.clientY, startX: event.clientX, startY: event.clientY, moved: false };
+    });
+    canvas.addEventListener("pointermove", (event) => {
+      if (!drag) return;
+      const dx = event.clientX - drag.x, dy = event.clientY - drag.y;
+      if (!drag.moved && Math.hypot(event.clientX - drag.startX, event.clientY - drag.startY) < 4) return;
+      if (!drag.moved) { drag.moved = true; live.hold(); }
+      drag.x = event.clientX;
+      drag.y = event.clientY;
+      const perPixel = (Math.PI / 2) / 300;
+      api.setCamera(ClrenderCamera.orbit(live.camera, -dx * perPixel, -dy * perPixel), null, event.timeStamp);
+    });
+    const endDrag = (event, cancelled) => {
+      if (!drag) return;
+      const wasDrag = drag.moved;
+      drag = null;
+      if (wasDrag) live.release();
+      else if (!cancelled && live.shown) {
+        const [x, y] = pixelAt(canvas, event);
+        const shown = live.shown;
+        explain(x, y, { camera: shown.camera, frame: shown.frame, size: shown.size, spp: shown.spp });
+      }
+    };
+    canvas.addEventListener("pointerup", (event) => endDrag(event, false));
+    canvas.addEventListener("pointercancel", (event) => endDrag(event, true));
+
+    // Wheel: zoom towards the look-at point, 10% per notch.
+    canvas.addEventListener("wheel", (event) => {
+      event.preventDefault();
+      const notches = event.deltaMode === 0 ? event.deltaY / 100 : event.deltaY / 3;
+      api.setCamera(ClrenderCamera.zoom(live.camera, Math.pow(1.1, notches)), null, event.timeStamp);
+    }, { passive: false });
+
+    // Keys: fly while held, at half the look-at distance per second (Shift: four times faster).
+    const held = new Set();
+    const moves = { KeyW: [1, 0, 0], ArrowUp: [1, 0, 0], KeyS: [-1, 0, 0], ArrowDown: [-1, 0, 0],
+                    KeyA: [0, -1, 0], ArrowLeft: [0, -1, 0], KeyD: [0, 1, 0], ArrowRight: [0, 1, 0],
+                    KeyQ: [0, 0, -1], KeyE: [0, 0, 1] };
+    let flying = null;
+    const typing = (event) => ["INPUT", "TEXTAREA", "SELECT"].includes(event.target.tagName);
+    // Moves the camera as far as the held keys have taken it by `now`.
+    const advance = (now) => {
+      const seconds = Math.min(0.1, (now - flying.last) / 1000);
+      if (seconds <= 0) return;
+      flying.last = now;
+      const speed = 0.5 * Math.max(ClrenderCamera.distance(live.camera), 1e-3) * (flying.fast ? 4 : 1) * seconds;
+      const sum = [0, 0, 0];
+      held.forEach((code) => moves[code].forEach((m, i) => { sum[i] += m; }));
+      if (sum.some((m) => m !== 0)) {
+        api.setCamera(ClrenderCamera.fly(live.camera, sum[0] * speed, sum[1] * speed, sum[2] * speed), null, now);
+      }
+    };
+    const fly = (now) => {
+      if (held.size === 0) { flying = null; live.release(); return; }
+      advance(now);
+      flying.frame = requestAnimationFrame(fly);
+    };
+    // An image arrived before the next display frame moved the camera: move it now, so that
+    // the next request need not wait for the display.
+    live.onIdle = () => { if (flying !== null && held.size > 0) advance(performance.now()); };
+    document.addEventListener("keydown", (event) => {
+      if (typing(event) || !(event.code in moves) || !live) return;
+      event.preventDefault();
+      held.add(event.code);
+      if (flying === null) {
+        live.hold();
+        flying = { last: event.timeStamp, fast: event.shiftKey };
+        api.setCamera(live.camera, null, event.timeStamp);  // the input's time starts the latency
+        flying.frame = requestAnimationFrame(fly);
+      }
+      flying.fast = event.shiftKey;
+    });
+    document.addEventListener("keyup", (event) => { held.delete(event.code); });
+    window.addEventListener("blur", () => held.clear());
+
+    fovInput.addEventListener("input", (event) => {
+      const camera = ClrenderCamera.copy(live.camera);
+      camera.fov = Number(fovInput.value);
+      api.setCamera(camera, null, event.timeStamp);
+    });
+    const sceneFrame = frames > 1 ? 0 : null;
+    document.getElementById("reset").addEventListener("click", () => {
+      timeInput.value = "0";
+      timeValue.textContent = "0";
+      api.setCamera(sceneCamera, sceneFrame);
+    });
+    timeInput.addEventListener("input", (event) => {
+      const k = Number(timeInput.value);
+      timeValue.textContent = String(k);
+      // The page's own idea of the frame's camera (linear between keys) is what a drag starts
+      // from; the image itself is the server's frame k, placed as clrender places it.
+      api.setCamera(ClrenderCamera.alongKeys(scene.path.map(fromScene), k, frames), k, event.timeStamp);
+    });
+  }
+
+  start();
+})();

@@ -1,0 +1,153 @@
+// Camera paths in clrender view: keys recorded from the live camera, played back in the page,
+// exported as a scene with the keys as eyeLocations / lookatLocations, and rendered to a video
+// by the server.
+"use strict";
+
+class ClrenderPaths {
+  // viewer: {token, camera(), setCamera(camera, frame), sceneName}
+  constructor(viewer) {
+    this.viewer = viewer;
+    this.keys = [];
+    this.exported = null;       // the last exported scene, parsed
+    this.playTimer = null;
+    this.list = document.getElementById("keys");
+    this.json = document.getElementById("path-json");
+    this.download = document.getElementById("download");
+    this.exportStatus = document.getElementById("export-status");
+    this.progress = document.getElementById("video-progress");
+    this.videoStatus = document.getElementById("video-status");
+    document.getElementById("record").addEventListener("click", () => this.record());
+    document.getElementById("clear-keys").addEventListener("click", () => this.clear());
+    document.getElementById("play").addEventListener("click", () => this.togglePlay());
+    document.getElementById("export").addEventListener("click", () => this.exportScene());
+    document.getElementById("render-video").addEventListener("click", () => this.renderVideo());
+  }
+
+  record() {
+    this.keys.push(this.viewer.camera());
+    this.showKeys();
+  }
+
+  clear() {
+    this.stop();
+    this.keys = [];
+    this.showKeys();
+  }
+
+  showKeys() {
+    const format = (p) => p.map((x) => Number(x.toPrecision(6))).join(", ");
+    this.list.replaceChildren(...this.keys.map((key) => {
+      const item = document.createElement("li");
+      item.textContent = `eye [${format(key.eye)}]  look-at [${format(key.lookat)}]`;
+      return item;
+    }));
+  }
+
+  body() {
+    // One up vector and field of view for the whole path (a scene has one): the first key's.
+    return JSON.stringify({
+      keys: this.keys.map((key) => ({ eye: key.eye, lookat: key.lookat })),
+      up: this.keys[0].up,
+      fov: this.keys[0].fov,
+    });
+  }
+
+  async post(path) {
+    const response = await fetch(`${path}?token=${encodeURIComponent(this.viewer.token)}`, {
+      method: "POST", headers: { "Content-Type": "application/json" }, body: this.body(),
+    });
+    if (!response.ok) throw new Error(await clrenderErrorText(response));
+    return response.json();
+  }
+
+  needKeys(status) {
+    if (this.keys.length > 0) return true;
+    status.textContent = "Record at least one key first.";
+    status.className = "error";
+    return false;
+  }
+
+  // Plays the keys with the frame count and fps of the exported scene when there is one (what
+  // clrender renders), else clrender's defaults: 10 frames per segment, 24 frames per second.
+  togglePlay() {
+    if (this.playTimer !== null) { this.stop(); return; }
+    if (this.keys.length === 0) return;
+    const settings = (this.exported && this.exported.clrender) || {};
+    const perSegment = settings.frames_per_segment || 10;
+    const frameCount = settings.frames || (this.keys.length - 1) * perSegment + 1;
+    const fps = settings.fps || 24;
+    const keys = this.keys.map((key) => ClrenderCamera.copy(key));
+    const start = performance.now();
+    document.getElementById("play").textContent = "Stop";
+    this.viewer.hold();
+    const step = () => {
+      const k = Math.min(frameCount - 1, Math.floor((performance.now() - start) * fps / 1000));
+      // (the live view shows as many of these cameras as it can render; none is queued)
+      this.viewer.setCamera(ClrenderCamera.alongKeys(keys, k, frameCount), null);
+      if (k >= frameCount - 1) { this.stop(); return; }
+      this.playTimer = requestAnimationFrame(step);
+    };
+    this.playTimer = requestAnimationFrame(step);
+  }
+
+  stop() {
+    if (this.playTimer === null) return;
+    cancelAnimationFrame(this.playTimer);
+    this.playTimer = null;
+    document.getElementById("play").textContent = "Play";
+    this.viewer.release();
+  }
+
+  async exportScene() {
+    if (!this.needKeys(this.exportStatus)) return;
+    this.exportStatus.className = "";
+    this.exportStatus.textContent = "exporting…";
+    try {
+      const answer = await this.post("export");
+      this.exported = JSON.parse(answer.scene);
+      this.json.textContent = answer.scene;  // for readers of the element's text
+      this.json.value = answer.scene;
+      this.json.dataset.file = answer.file || "";
+      const name = (answer.file || `${this.viewer.sceneName || "scene"}-path.json`).split("/").pop();
+      if (this.download.href.startsWith("blob:")) URL.revokeObjectURL(this.download.href);
+      this.download.href = URL.createObjectURL(new Blob([answer.scene], { type: "application/json" }));
+      this.download.download = name;
+      this.download.textContent = `Download ${name}`;
+      this.download.hidden = false;
+      this.exportStatus.textContent = answer.file ? `Written to ${answer.file}` : "Exported.";
+    } catch (error) {
+      this.exportStatus.className = "error";
+      this.exportStatus.textContent = `Export failed: ${error.message}`;
+    }
+  }
+
+  async renderVideo() {
+    if (!this.needKeys(this.videoStatus)) return;
+    this.videoStatus.className = "";
+    this.videoStatus.textContent = "starting the video…";
+    this.progress.hidden = false;
+    this.progress.value = 0;
+    try {
+      const { job } = await this.post("render-video");
+      for (;;) {
+        const response = await fetch(`job?token=${encodeURIComponent(this.viewer.token)}&id=${encodeURIComponent(job)}`,
+                                     { cache: "no-store" });
+        if (!response.ok) throw new Error(await clrenderErrorText(response));
+        const state = await response.json();
+        if (state.total > 0) { this.progress.max = state.total; this.progress.value = state.done; }
+        if (state.error) throw new Error(state.error);
+        if (state.state === "done") {
+          this.videoStatus.textContent = `Video written to ${state.file}`;
+          this.videoStatus.dataset.file = state.file || "";
+          return;
+        }
+        if (state.state === "failed") throw new Error("the render failed");
+        this.videoStatus.textContent = `rendering frame ${state.done} of ${state.total}`;
+        await new Promise((resolve) => setTimeout(resolve, 250));
+      }
+    } catch (error) {
+      this.videoStatus.className = "error";
+      this.videoStatus.textContent = `Video failed: ${error.message}`;
+    }
+  }
+}
