@@ -19,32 +19,26 @@ namespace fs = std::filesystem;
 
 nlohmann::json array_of(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
-// Every "filename" (billboard images, impostor views and view sets) names an image relative to
-// the scene's folder; the exported scene lives in `to`, so relative names are rewritten to
-// name the same files from there.
-void rewrite_image_paths(nlohmann::json& value, const fs::path& from, const fs::path& to) {
+// Every image name (billboards' and impostors' "filename", and the names the loader takes for
+// it: "image", "file", "texture") is relative to the scene's folder. The exported scene is
+// shown in the page, offered as a download and saved wherever the user likes, so relative
+// names become absolute ones: the scene then finds its images from any folder.
+void make_image_paths_absolute(nlohmann::json& value, const fs::path& scene_folder) {
     if (value.is_array()) {
-        for (nlohmann::json& element : value) rewrite_image_paths(element, from, to);
+        for (nlohmann::json& element : value) make_image_paths_absolute(element, scene_folder);
         return;
     }
     if (!value.is_object()) return;
     for (auto& [key, member] : value.items()) {
-        if (key == "filename" && member.is_string()) {
+        const bool names_image = key == "filename" || key == "image" || key == "file" || key == "texture";
+        if (names_image && member.is_string()) {
             const fs::path image = member.get<std::string>();
             if (image.empty() || image.is_absolute()) continue;
-            std::error_code error;
-            fs::path moved = fs::relative(from / image, to, error);
-            if (error || moved.empty()) moved = fs::absolute(from / image, error).lexically_normal();
-            member = moved.string();
+            member = (scene_folder / image).lexically_normal().string();
         } else {
-            rewrite_image_paths(member, from, to);
+            make_image_paths_absolute(member, scene_folder);
         }
     }
-}
-
-bool same_folder(const fs::path& a, const fs::path& b) {
-    std::error_code error;
-    return fs::equivalent(a, b, error);
 }
 
 }  // namespace
@@ -73,7 +67,7 @@ std::string PathExporter::scene_text_for(const CameraKeysRequest& request) const
     if (options_.samples_per_pixel) document["clrender"]["spp"] = *options_.samples_per_pixel;
     if (options_.seed) document["clrender"]["seed"] = *options_.seed;
     const fs::path scene_folder = fs::absolute(fs::path(scene_.path)).parent_path();
-    if (!same_folder(scene_folder, output_dir_)) rewrite_image_paths(document, scene_folder, fs::absolute(output_dir_));
+    make_image_paths_absolute(document, scene_folder);
     return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

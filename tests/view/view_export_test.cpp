@@ -51,11 +51,17 @@ TEST(ViewExport, WritesTheKeysAsACameraPathThatClrenderRenders) {
     EXPECT_FALSE(scene.contains("lookat"));
     EXPECT_EQ(scene["MaxDepth"], 3) << "the -D values are the scene the page showed";
     EXPECT_EQ(scene["width"], 48);
-    // Image names still find the images from the output folder.
-    EXPECT_EQ(scene["billboards"][0]["filename"], fs::relative(kDemo + "backdrop.png", folder.file("out")).string());
+    // Image names are absolute, so the scene finds its images wherever it is saved.
+    EXPECT_EQ(scene["billboards"][0]["filename"], fs::path(kDemo + "backdrop.png").lexically_normal().string());
     // The exported scene renders: frame 0 is the viewer's frame of the first key.
     const auto render = run_clrender("out/tour.json -q --frames 0 -o first.png", folder.path());
     ASSERT_EQ(render.exit_code, 0) << render.output;
+    // The text the page shows (and offers as a download), saved in another folder, renders the same.
+    fs::create_directories(folder.file("downloads"));
+    folder.write("downloads/tour.json", answer["scene"].get<std::string>());
+    const auto saved = run_clrender("downloads/tour.json -q --frames 0 -o saved.png", folder.path());
+    ASSERT_EQ(saved.exit_code, 0) << saved.output;
+    EXPECT_EQ(read_bytes(folder.file("saved.png")), read_bytes(folder.file("first.png")));
     const httplib::Result frame = viewer.client()->Get(viewer.with_token("/frame.png?eye=-3,2,12&lookat=0,1,0").c_str());
     ASSERT_TRUE(frame);
     EXPECT_EQ(frame->status, 200);
