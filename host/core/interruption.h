@@ -3,7 +3,10 @@
 // The handler only records the signal; the frame loop checks between frames and unwinds, so every output is either
 // complete under its final name or not there at all (temporary files are removed on the way
 // out), and frames already written stay for a rerun with --resume. A second signal ends the
-// process at once.
+// process at once. A watchdog ends it too, with the signal's exit code and one error line, when
+// no thread has begun the orderly stop half a second after the signal (a step that cannot be
+// interrupted: a cold OpenCL build, which short of memory may wait forever on a lock inside the
+// driver), or when the orderly stop has not ended five seconds after it began.
 #pragma once
 
 #include "core/errors.h"

@@ -4,6 +4,7 @@
 
 #include "core/errors.h"
 #include "device/cl_errors.h"
+#include "device/driver_limits.h"
 #include "device/program_cache.h"
 #include "device/stderr_capture.h"
 
@@ -55,6 +56,8 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     if (key) {
         if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
     }
+    // Short of address space, PoCL's compiler hangs or crashes instead of failing.
+    check_room_for_a_build();
     cl::Program program(context_, source);
     // The compiler's own output waits until clrender's error line, if any, is out.
     StderrCapture compiler_output;
@@ -63,13 +66,18 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
         std::cerr << compiler_output.finish();
     } catch (const cl::Error& error) {
         const std::string printed = compiler_output.finish();
+        const std::string building = "building the OpenCL program for '" + entry_.device_name + "'";
+        if (error.err() == CL_OUT_OF_HOST_MEMORY) throw Error("out of memory: " + building, kExitOutOfMemory);
+        // A build that failed for the process's surroundings (a cache folder PoCL cannot write,
+        // too few descriptors), not for the source: that is what the user can act on.
+        if (std::optional<Error> trouble = driver_trouble(building + " failed")) throw *trouble;
         std::string log;
         try {
             log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(entry_.device);
         } catch (const cl::Error&) {
             log = "(no build log available)";
         }
-        throw DeviceError(describe_cl_error(error, "building the OpenCL program for '" + entry_.device_name + "'") +
+        throw DeviceError(describe_cl_error(error, building) +
                           "\nbuild options: " + options + "\nbuild log:\n" + log +
                           (printed.empty() ? "" : "\ncompiler output:\n" + printed));
     }
