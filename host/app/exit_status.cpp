@@ -13,7 +13,8 @@ namespace {
 
 ExitStatus status(int code, const std::string& problem) {
     // One line whatever the message quotes (a file name with a newline, an encoder's log).
-    return {code, "clrender: error: " + printable(problem)};
+    const std::string text = printable(problem);
+    return {code, "clrender: error: " + text, text};
 }
 
 ExitStatus internal_error(const std::string& what) {

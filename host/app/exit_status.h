@@ -12,6 +12,7 @@ namespace clr {
 struct ExitStatus {
     int code = 0;
     std::string message;  // the whole line, without its newline, control characters escaped
+    std::string problem;  // the message after "clrender: error: "
 };
 
 // The status for `failure` (a non-null exception_ptr, as std::current_exception() gives):
