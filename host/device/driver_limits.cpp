@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
@@ -172,9 +173,12 @@ std::optional<Error> driver_trouble(const std::string& what_failed) {
 
 void prepare_for_driver_limits() {
     struct rlimit descriptors;
-    if (::getrlimit(RLIMIT_NOFILE, &descriptors) == 0 && descriptors.rlim_cur != RLIM_INFINITY &&
+    // Up to the usual default soft limit, not to the hard one (often a million): the encoder
+    // and other children inherit it.
+    constexpr rlim_t kUsualSoftLimit = 1024;
+    if (::getrlimit(RLIMIT_NOFILE, &descriptors) == 0 && descriptors.rlim_cur < kUsualSoftLimit &&
         descriptors.rlim_cur < descriptors.rlim_max) {
-        descriptors.rlim_cur = descriptors.rlim_max;
+        descriptors.rlim_cur = std::min(descriptors.rlim_max, kUsualSoftLimit);
         ::setrlimit(RLIMIT_NOFILE, &descriptors);
     }
     if (const std::optional<std::uint64_t> limit = address_space_limit())

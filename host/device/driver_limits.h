@@ -39,8 +39,8 @@ std::string pocl_cache_folder();
 // device started").
 std::optional<Error> driver_trouble(const std::string& what_failed);
 
-// Lets the driver have the file descriptors the hard limit allows (a soft `ulimit -Sn` below it
-// makes PoCL's linker fail), and, when an address-space or descriptor limit is set, turns a
+// Raises a soft descriptor limit below 1024 towards that, as far as the hard limit allows (a low
+// soft `ulimit -Sn` makes PoCL's linker fail), and, when an address-space or descriptor limit is set, turns a
 // crash (PoCL aborts or faults when an allocation or open fails) into that limit's error line and
 // exit code instead of a signal death. Called once, before the driver loads.
 void prepare_for_driver_limits();
