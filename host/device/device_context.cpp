@@ -1,14 +1,32 @@
 #include "device/device_context.h"
 
 #include <iostream>
+#include <sstream>
 
 #include "core/errors.h"
+#include "core/message_lines.h"
+#include "core/printable_text.h"
 #include "device/cl_errors.h"
 #include "device/driver_limits.h"
 #include "device/program_cache.h"
 #include "device/stderr_capture.h"
 
 namespace clr {
+namespace {
+
+// What the compiler printed during a build that succeeded (warnings): as it printed it, or with
+// --progress json one JSON warning a line, so that every line on standard error stays JSON.
+void print_compiler_output(const std::string& text) {
+    if (!json_messages()) {
+        std::cerr << text;
+        return;
+    }
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty()) std::cerr << message_line("warning", "OpenCL compiler: " + printable(line));
+}
+
+}  // namespace
 
 DeviceContext::DeviceContext(const DeviceEntry& device) : entry_(device) {
     try {
@@ -63,7 +81,7 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     StderrCapture compiler_output;
     try {
         program.build({entry_.device}, options.c_str());
-        std::cerr << compiler_output.finish();
+        print_compiler_output(compiler_output.finish());
     } catch (const cl::Error& error) {
         const std::string printed = compiler_output.finish();
         const std::string building = "building the OpenCL program for '" + entry_.device_name + "'";

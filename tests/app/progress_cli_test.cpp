@@ -274,6 +274,34 @@ TEST(ProgressCli, JsonMakesEveryLineOnStandardErrorJson) {
     EXPECT_NO_THROW(nlohmann::json::parse(usage.output)) << usage.output;
 }
 
+// What the OpenCL compiler prints during a build that succeeds ("1 warning generated.") comes
+// as JSON warnings too.
+TEST(ProgressCli, JsonWrapsTheCompilersOwnOutput) {
+    TempFolder folder;
+    folder.write("still.json", kAnimation);
+    const std::string kernels = folder.file("kernels");
+    fs::copy(std::string(CLRENDER_SOURCE_DIR) + "/kernels", kernels, fs::copy_options::recursive);
+    for (const auto& program : fs::directory_iterator(kernels + "/programs"))
+        folder.write(fs::relative(program.path(), folder.path()).string(),
+                     read_bytes(program.path()) + "\n#warning \"a warning of the test's\"\n");
+    const std::string arguments = "still.json --frames 0 -o still.png -q --kernel-dir kernels";
+    auto plain = run_clrender(arguments, folder.path(), "CLRENDER_CACHE_DIR=off");
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    EXPECT_NE(plain.output.find("warning generated."), std::string::npos) << "the compiler spoke: " << plain.output;
+    auto json = run_clrender(arguments + " --progress json", folder.path(), "CLRENDER_CACHE_DIR=off");
+    ASSERT_EQ(json.exit_code, 0) << json.output;
+    int compiler_lines = 0;
+    for (const std::string& line : lines_of(json.output)) {
+        nlohmann::json object;
+        ASSERT_NO_THROW(object = nlohmann::json::parse(line)) << "not JSON: " << line;
+        if (object.value("message", "").rfind("OpenCL compiler: ", 0) == 0) {
+            EXPECT_EQ(object["level"], "warning") << line;
+            ++compiler_lines;
+        }
+    }
+    EXPECT_GT(compiler_lines, 0) << json.output;
+}
+
 TEST(ProgressCli, JsonLinesWithoutQuietAndOffATerminal) {
     TempFolder folder;
     folder.write("anim.json", kAnimation);
