@@ -56,7 +56,10 @@ extern "C" void record_signal(int signal_number) {
     if (received_signal.compare_exchange_strong(none, signal_number)) arm_watchdog(kMillisecondsUntilForcedStop);
 }
 
-// Async-signal-safe: only write() and _exit() (setitimer() in record_signal is a plain system call).
+std::atomic<pid_t> child_groups[16];
+static_assert(std::atomic<pid_t>::is_always_lock_free, "signal handlers read the child groups");
+
+// Async-signal-safe: only write(), kill() and _exit() (setitimer() in record_signal is a plain system call).
 extern "C" void force_stop(int) {
     const int signal_number = received_signal.load();
     if (signal_number == 0) return;
@@ -76,6 +79,7 @@ extern "C" void force_stop(int) {
         write_all(original_stderr, "}");
     }
     write_all(original_stderr, "\n");
+    kill_child_groups();
     ::_exit(128 + signal_number);
 }
 
@@ -128,6 +132,25 @@ bool interruption_requested() {
     if (received_signal.load() == 0) return false;
     note_stop_begun();
     return true;
+}
+
+void track_child_group(pid_t group) {
+    for (std::atomic<pid_t>& slot : child_groups) {
+        pid_t empty = 0;
+        if (slot.compare_exchange_strong(empty, group)) return;
+    }
+}
+
+void untrack_child_group(pid_t group) {
+    for (std::atomic<pid_t>& slot : child_groups) {
+        pid_t expected = group;
+        if (slot.compare_exchange_strong(expected, 0)) return;
+    }
+}
+
+void kill_child_groups() noexcept {
+    for (std::atomic<pid_t>& slot : child_groups)
+        if (const pid_t group = slot.load(); group > 0) ::kill(-group, SIGKILL);
 }
 
 void throw_if_interrupted() {

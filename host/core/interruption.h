@@ -9,6 +9,8 @@
 // driver), or when the orderly stop has not ended five seconds after it began.
 #pragma once
 
+#include <sys/types.h>
+
 #include "core/errors.h"
 
 namespace clr {
@@ -29,5 +31,13 @@ bool interruption_requested();
 
 // Throws Interrupted when a signal has arrived since install_interruption_handlers().
 void throw_if_interrupted();
+
+// The process groups of running helper programs (the video encoder, its checker): a stop that
+// cannot wait for the orderly one (the watchdog, a crash in the driver) kills them first, so
+// that none outlives clrender. At most 16 at a time; more are not tracked.
+void track_child_group(pid_t group);
+void untrack_child_group(pid_t group);
+// Async-signal-safe: SIGKILL to every tracked group.
+void kill_child_groups() noexcept;
 
 }  // namespace clr

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/interruption.h"
 #include "core/message_lines.h"
 
 namespace clr {
@@ -91,6 +92,7 @@ int crash_exit_code = kExitInternal;
 int crash_stderr = STDERR_FILENO;
 
 extern "C" void report_driver_crash(int signal_number) {
+    kill_child_groups();  // the encoder must not outlive clrender
     const char* line = crash_lines[signal_number == SIGSEGV ? 0 : signal_number == SIGABRT ? 1 : 2];
     for (std::size_t left = std::strlen(line); left > 0;) {
         const ssize_t written = ::write(crash_stderr, line, left);
