@@ -13,7 +13,8 @@ namespace {
 
 ExitStatus status(int code, const std::string& problem) {
     // One line whatever the message quotes (a file name with a newline, an encoder's log).
-    return {code, "clrender: error: " + printable(problem)};
+    const std::string text = printable(problem);
+    return {code, "clrender: error: " + text, text};
 }
 
 ExitStatus internal_error(const std::string& what) {
@@ -34,7 +35,10 @@ ExitStatus exit_status_for(std::exception_ptr failure) {
     } catch (const Error& error) {
         ExitStatus result = status(error.code(), error.headline());
         // Each line is escaped alone: the breaks between them are clrender's, not the text's.
-        for (const std::string& line : error.lines()) result.message += "\n  " + printable(line);
+        for (const std::string& line : error.lines()) {
+            result.message += "\n  " + printable(line);
+            result.problem += "\n  " + printable(line);
+        }
         return result;
     } catch (const cl::Error& error) {
         return status(kExitDevice, describe_cl_error(error, "OpenCL"));

@@ -14,6 +14,7 @@ struct ExitStatus {
     // The error line, without its newline, control characters escaped; then, for an error with
     // lines under it (the devices there are), each of them on a line of its own, indented.
     std::string message;
+    std::string problem;  // the message after "clrender: error: " (its lines under it too)
 };
 
 // The status for `failure` (a non-null exception_ptr, as std::current_exception() gives):

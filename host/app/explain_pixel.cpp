@@ -1,9 +1,11 @@
 #include "app/explain_pixel.h"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "app/bounded_text.h"
 #include "app/frame_selection.h"
 #include "app/pixel_narrator.h"
 #include "core/errors.h"
@@ -50,25 +52,41 @@ std::string bytes_text(const std::uint8_t bytes[3]) {
     return std::to_string(bytes[0]) + " " + std::to_string(bytes[1]) + " " + std::to_string(bytes[2]);
 }
 
-// The kernels' bytes for the pixel, from a renderer that renders just that pixel (a 1x1 crop of
-// the frame) as a plain run renders it.
-void describe_kernel_bytes(const KernelRendererFactory& kernel_renderer, const CameraKey& key, int frame,
-                           const std::uint8_t reference_bytes[3], std::ostream& out) {
-    if (!kernel_renderer) {
-        out << "OpenCL kernels: not run (--reference)\n";
-        return;
-    }
+// The kernels' bytes for the pixel and the device that gave them.
+struct KernelPixel {
+    std::uint8_t bytes[3] = {0, 0, 0};
+    std::string device;
+};
+
+// From a renderer that renders just that pixel (a 1x1 crop of the frame) as a plain run renders
+// it; nothing with --reference.
+std::optional<KernelPixel> render_kernel_pixel(const KernelRendererFactory& kernel_renderer, const CameraKey& key,
+                                               int frame) {
+    if (!kernel_renderer) return std::nullopt;
     std::unique_ptr<FrameRenderer> renderer = kernel_renderer();
     const Image image = renderer->render(key, frame, nullptr);
     if (image.width != 1 || image.height != 1)
         throw std::logic_error("the kernels' image of one pixel is " + std::to_string(image.width) + "x" +
                                std::to_string(image.height));  // a bug: exit 5
-    const std::uint8_t kernel_bytes[3] = {image.at(0, 0, 0), image.at(0, 0, 1), image.at(0, 0, 2)};
-    const bool same = kernel_bytes[0] == reference_bytes[0] && kernel_bytes[1] == reference_bytes[1] &&
-                      kernel_bytes[2] == reference_bytes[2];
-    out << "bytes the OpenCL kernels write (" << printable(renderer->device_name()) << "): " << bytes_text(kernel_bytes)
+    KernelPixel pixel;
+    for (int channel = 0; channel < 3; ++channel) pixel.bytes[channel] = image.at(0, 0, channel);
+    pixel.device = renderer->device_name();
+    return pixel;
+}
+
+void describe_kernel_bytes(const std::optional<KernelPixel>& kernel, const std::uint8_t reference_bytes[3],
+                           std::ostream& out) {
+    if (!kernel) {
+        out << "OpenCL kernels: not run (--reference)\n";
+        return;
+    }
+    const bool same = kernel->bytes[0] == reference_bytes[0] && kernel->bytes[1] == reference_bytes[1] &&
+                      kernel->bytes[2] == reference_bytes[2];
+    out << "bytes the OpenCL kernels write (" << printable(kernel->device) << "): " << bytes_text(kernel->bytes)
         << (same ? " (the same)" : " (they differ: float rounding near an edge, see docs/explain-pixel.md)") << "\n";
 }
+
+std::string mebibytes(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
 }  // namespace
 
@@ -88,25 +106,37 @@ void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& s
     const reference::EyeRelative relative = reference::relative_to_eye(scene, camera);
     const Scene placed = reference::with_impostors_placed(relative.scene, relative.camera);
 
-    out << "Pixel X,Y = " << pixel.x << "," << pixel.y << " (column j = " << pixel.x << ", row i = " << pixel.y
-        << " from the top) of frame " << frame << " of " << scene.path << ": " << scene.width << "x" << scene.height
-        << ", " << scene.sampling.samples_per_pixel << " sample(s) per pixel, "
-        << (scene.lit() ? "lit by the sun" : "unlit (ambient colours)") << ", MaxDepth " << scene.max_depth << "\n";
-    out << "Numbers from the double-precision reference (%.9g). It computes positions relative to the eye,\n"
-           "as the kernels do; they are shown in scene coordinates (Eye + the relative position).\n";
-    describe_camera(scene, key, camera, out);
+    // The kernels first: a device failure then leaves no half explanation, although the steps
+    // go out as the reference computes them.
+    const std::optional<KernelPixel> kernel = render_kernel_pixel(kernel_renderer, key, frame);
+    BoundedTextBuffer steps_buffer(out, kExplanationStepsLimit);
+    std::ostream steps(&steps_buffer);
+
+    steps << "Pixel X,Y = " << pixel.x << "," << pixel.y << " (column j = " << pixel.x << ", row i = " << pixel.y
+          << " from the top) of frame " << frame << " of " << scene.path << ": " << scene.width << "x" << scene.height
+          << ", " << scene.sampling.samples_per_pixel << " sample(s) per pixel, "
+          << (scene.lit() ? "lit by the sun" : "unlit (ambient colours)") << ", MaxDepth " << scene.max_depth << "\n";
+    steps << "Numbers from the double-precision reference (%.9g). It computes positions relative to the eye,\n"
+             "as the kernels do; they are shown in scene coordinates (Eye + the relative position).\n";
+    describe_camera(scene, key, camera, steps);
 
     PixelNarrator narrator(placed, static_cast<int>(scene.billboards.size()), relative.camera, relative.eye, pixel.x,
-                           pixel.y, out);
+                           pixel.y, steps);
     const Color colour = reference::pixel_colour(placed, relative.camera, frame, pixel.x, pixel.y, &narrator);
     const std::uint8_t bytes[3] = {reference::to_byte(colour.x), reference::to_byte(colour.y),
                                    reference::to_byte(colour.z)};
 
+    if (steps_buffer.cut())
+        out << "\n... " << steps_buffer.omitted() << " more bytes of steps left out: an explanation prints at most "
+            << mebibytes(kExplanationStepsLimit) << " of them (docs/explain-pixel.md); the result counts every sample\n";
     out << "\n== Result ==\n";
     out << "pixel colour = mean of " << scene.sampling.samples_per_pixel
         << " sample(s) = " << explain_vector(colour) << "\n";
     out << "bytes the reference writes, round(clamp(c, 0, 1) * 255): " << bytes_text(bytes) << "\n";
-    describe_kernel_bytes(kernel_renderer, key, frame, bytes, out);
+    describe_kernel_bytes(kernel, bytes, out);
+    out.flush();
+    if (steps_buffer.target_failed() || !out)
+        throw OutputError("standard output: cannot write the explanation (disk full or pipe closed?)");
 }
 
 }  // namespace clr

@@ -3,6 +3,7 @@
 // (docs/explain-pixel.md).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -17,8 +18,14 @@ namespace clr {
 // when only the reference is wanted (--reference).
 using KernelRendererFactory = std::function<std::unique_ptr<FrameRenderer>()>;  // renders the pixel alone (a 1x1 crop)
 
-// Writes the explanation of options.explain_pixel to `out`. Throws UsageError for a pixel
-// outside the image or --frames naming other than one frame; DeviceError from the kernels.
+// The most bytes of steps (samples, rays, tests) an explanation prints; the result follows
+// whatever was left out. Many samples with deep mirrors among many objects took hundreds of MB.
+constexpr std::uint64_t kExplanationStepsLimit = std::uint64_t(16) << 20;
+
+// Writes the explanation of options.explain_pixel to `out` as it is computed, after the kernels
+// have rendered the pixel (a device failure leaves nothing written). Throws UsageError for a
+// pixel outside the image or --frames naming other than one frame; DeviceError from the
+// kernels; OutputError when `out` does not take every byte.
 void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
                    std::ostream& out);
 

@@ -111,6 +111,7 @@ void FrameSink::consume(const QueuedFrame& item) {
             staged_.add(write_image_uncommitted(path, item.image, text));
         } else {
             write_image(path, item.image, text);
+            ++frames_in_place_;
         }
     }
     if (encoder_) encoder_->add_frame(item.image);

@@ -2,6 +2,7 @@
 // writing and encoding, so that writing frame N overlaps with rendering frame N+1.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -43,6 +44,9 @@ public:
     void finish();
 
     double write_ms() const { return write_ms_; }  // worker time spent writing and encoding
+    // Frames of an -o pattern whose files the worker has renamed into place so far (a still's
+    // image and a video are in place only once the run renames them: StagedOutputs).
+    int frames_in_place() const { return frames_in_place_.load(); }
 
     // A frame the worker has written and encoded, if one is done since the last call: its
     // storage can be recycled for a later frame: a new image costs a page fault and a zero fill
@@ -70,6 +74,7 @@ private:
     std::exception_ptr error_;
     std::optional<Image> finished_;
     double write_ms_ = 0;
+    std::atomic<int> frames_in_place_{0};
     std::thread worker_;
 };
 

@@ -21,6 +21,9 @@ Environment:
                              else on PATH
   CLRENDER_ENCODER_TIMEOUT   Seconds an encoder may make no progress; default 60
   CLRENDER_IMAGE_MEMORY_MIB  Limit on a scene's decoded images in MiB; default 2048
+  POCL_CACHE_DIR             PoCL's kernel cache; default $XDG_CACHE_HOME/pocl, else
+                             ~/.cache/pocl: named when PoCL cannot write it
+  POCL_KERNEL_CACHE          0: PoCL keeps no kernel cache (then its folder is not needed)
 
 Exit status:
   0    Done

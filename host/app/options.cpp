@@ -17,6 +17,7 @@
 #include "app/version_text.h"
 #include "core/edit_distance.h"
 #include "core/errors.h"
+#include "core/message_lines.h"
 #include "core/printable_text.h"
 #include "scene/limits.h"
 
@@ -275,8 +276,8 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
         }
         // A usage error, in the same form as every other error of clrender's, and a hint.
         const std::string suggestion = dynamic_cast<const CLI::ExtrasError*>(&error) ? did_you_mean_option(app) : "";
-        std::cerr << "clrender: error: " << printable(suggestion.empty() ? error.what() : suggestion)
-                  << "\nRun with --help for more information.\n";
+        std::cerr << message_line("error", printable(suggestion.empty() ? error.what() : suggestion), 1)
+                  << (json_messages() ? "" : "Run with --help for more information.\n");
         parsed.exit_code = 1;
         return parsed;
     }

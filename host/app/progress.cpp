@@ -53,11 +53,25 @@ std::string format_progress_bar(double fraction, int frames_done, int frames, do
     char text[96];
     std::snprintf(text, sizeof text, " %3d%%", static_cast<int>(fraction * 100));
     bar += text;
-    if (frames > 1) bar += "  frame " + std::to_string(std::min(frames_done + 1, frames)) + "/" + std::to_string(frames);
+    if (frames > 1) {
+        bar += "  frame " + std::to_string(std::min(frames_done + 1, frames)) + "/" + std::to_string(frames);
+        if (frames_done > 0 && elapsed_s > 0) bar += "  " + format_frame_rate(frames_done / elapsed_s) + " frames/s";
+    }
     bar += "  elapsed " + format_duration(elapsed_s);
     const std::optional<double> left = seconds_left(fraction, elapsed_s);
     bar += "  left " + (left ? format_duration(*left) : std::string("?"));
     return bar;
+}
+
+std::string format_frame_rate(double frames_per_second) {
+    char text[32];
+    if (frames_per_second >= 10)
+        std::snprintf(text, sizeof text, "%.0f", frames_per_second);
+    else if (frames_per_second >= 1)
+        std::snprintf(text, sizeof text, "%.1f", frames_per_second);
+    else
+        std::snprintf(text, sizeof text, "%.2f", frames_per_second);
+    return text;
 }
 
 std::string format_progress_json(int frame, int frames, int frames_done, double fraction, double elapsed_s) {
@@ -84,6 +98,10 @@ Progress::~Progress() {
 double Progress::fraction_of_run() const { return (done_ + frame_fraction_) / total_; }
 
 void Progress::frame_started(int frame) {
+    if (!started_) {  // the clock runs from the first frame, not from the program's build
+        started_ = true;
+        since_start_ = Stopwatch();
+    }
     frame_ = frame;
     frame_fraction_ = 0;
 }
@@ -98,10 +116,19 @@ void Progress::frame_part_done(double fraction) {
     if (json_ && total_ == 1) print_json_line();  // a still's bands
 }
 
-void Progress::frame_done() {
+void Progress::frame_done(int in_place) {
     ++done_;
+    in_place_ = std::clamp(in_place, 0, total_);
     frame_fraction_ = 0;
     if (bar_) draw_bar();
+    // A still's one line comes from all_in_place(), once its image is under its name.
+    if (json_ && total_ > 1) print_json_line();
+}
+
+void Progress::all_in_place() {
+    in_place_ = total_;
+    done_ = total_;
+    frame_fraction_ = 0;
     if (json_) print_json_line();
 }
 
@@ -113,7 +140,7 @@ void Progress::draw_bar() {
 
 void Progress::print_json_line() const {
     const std::string line =
-        format_progress_json(frame_, total_, done_, fraction_of_run(), since_start_.elapsed_seconds()) + "\n";
+        format_progress_json(frame_, total_, in_place_, fraction_of_run(), since_start_.elapsed_seconds()) + "\n";
     std::fputs(line.c_str(), stderr);
     std::fflush(stderr);
 }

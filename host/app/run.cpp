@@ -23,6 +23,7 @@
 #include "app/display_server.h"
 #include "app/tile_join.h"
 #include "core/interruption.h"
+#include "core/message_lines.h"
 #include "core/printable_text.h"
 #include "core/stopwatch.h"
 #include "core/usable_cpus.h"
@@ -32,6 +33,7 @@
 #include "core/errors.h"
 #include "device/device_selection.h"
 #include "device/kernel_sources.h"
+#include "device/driver_limits.h"
 #include "device/driver_settings.h"
 #include "output/atomic_file.h"
 #include "output/staged_outputs.h"
@@ -63,6 +65,7 @@ struct RunReport {
     std::vector<FrameRecord> frames;
     std::size_t tiles_joined = 0;  // --join
     bool image_was_finished = false;  // --resume found the one image finished: nothing written but the stats
+    std::size_t frames_skipped = 0;   // frames --resume found finished
 };
 
 std::string stats_text(const RunReport& report) {
@@ -114,7 +117,7 @@ Scene load(const Options& options) {
     load_options.count_frames_only = options.print_frame_count;  // neither images nor size
     Scene scene = load_scene(options.scene_path, load_options);
     for (const std::string& warning : scene.warnings)
-        std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
+        std::cerr << message_line("warning", printable(scene.path + ": " + warning));
     // --strict: the warnings above are the problems; this line says why they stop the run.
     if (options.strict && !scene.warnings.empty()) {
         const std::size_t n = scene.warnings.size();
@@ -193,7 +196,7 @@ Image read_frame(const OutputPlan& plan, const FrameSize& size, int frame) {
 // Renders the planned frames one after another; the sink writes and encodes each while the
 // next one renders. The program and scene buffers are made once, before the first frame.
 void render_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
-                   DeviceList& devices, StagedOutputs& staged) {
+                   DeviceList& devices, StagedOutputs& staged, Progress& progress) {
     Progress* shown = nullptr;  // the progress of the frames, once they start
     std::unique_ptr<FrameRenderer> renderer = make_renderer(
         options, scene, devices,
@@ -205,26 +208,26 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     report.compute_units = renderer->compute_units();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
-    if (!options.quiet) {
-        std::cerr << "clrender: device " << report.device;
-        if (report.compute_units > 0) std::cerr << " (compute units: " << report.compute_units << ")";
-        std::cerr << "\n";
-    }
+    if (!options.quiet)
+        std::cerr << message_line("info", "device " + printable(report.device) +
+                                              (report.compute_units > 0 ? " (compute units: " + std::to_string(report.compute_units) + ")" : ""));
     make_missing_folders(plan);  // the device is ready: nothing refuses the run before it renders
 
     const FrameSize size = frame_size(options, scene);
     FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged,
                    [&scene, &options](int frame) { return describe_frame(scene, frame, options); });
     DisplayStream display(options.display_server, scene.name, size.width, size.height);  // --display-server
-    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     shown = &progress;
+    // Frames under their final names: those --resume found, and those the sink has renamed.
+    auto in_place = [&] { return static_cast<int>(report.frames_skipped) + sink.frames_in_place(); };
     const Stopwatch render_time;
     for (int frame : plan.frames) {
         throw_if_interrupted();
         progress.frame_started(frame);
         if (options.resume && plan.frame_on_disk(frame)) {
             if (!plan.video_path.empty()) sink.push(frame, read_frame(plan, size, frame), true);
-            progress.frame_done();
+            ++report.frames_skipped;
+            progress.frame_done(in_place());
             continue;
         }
         FrameRecord record{frame, {}};
@@ -234,7 +237,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
         display.show(image);
         prepare_linear_frame(image, options, plan, scene);
         sink.push(frame, std::move(image));
-        progress.frame_done();
+        progress.frame_done(in_place());
     }
     throw_if_interrupted();
     sink.finish();
@@ -246,18 +249,17 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
 
 // --assemble: encodes frames rendered earlier (by this or other processes) into the video.
 void assemble_frames(const Options& options, const Scene& scene, const OutputPlan& plan, RunReport& report,
-                     StagedOutputs& staged) {
+                     StagedOutputs& staged, Progress& progress) {
     report.device = "none (assembling frames)";
     make_missing_folders(plan);
     const FrameSize size = frame_size(options, scene);
     FrameSink sink(plan, size.width, size.height, scene.animation.fps, options.quality, staged);
-    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
     for (int frame : plan.frames) {
         throw_if_interrupted();
         progress.frame_started(frame);
         check_frame_description(plan.image_path(frame), frame, describe_frame(scene, frame, options));
         sink.push(frame, read_frame(plan, size, frame), true);
-        progress.frame_done();
+        progress.frame_done(0);  // the video is in place only at the end
     }
     sink.finish();
     progress.finish();
@@ -306,12 +308,22 @@ int print_check_result(const std::string& text) {
     return kExitOk;
 }
 
+// What the frames of this run were: "48 frames", or with --resume "2 frames rendered, 46 already
+// finished (--resume)", so that a resumed run does not claim to have written what it skipped.
+std::string frames_text(const OutputPlan& plan, const RunReport& report) {
+    const std::size_t skipped = report.frames_skipped;
+    if (skipped == 0) return std::to_string(plan.frames.size()) + " frames";
+    const std::size_t rendered = plan.frames.size() - skipped;
+    return std::to_string(rendered) + (rendered == 1 ? " frame" : " frames") + " rendered, " + std::to_string(skipped) +
+           " already finished (--resume)";
+}
+
 // "wrote anim_0000.png ... anim_0047.png (48 frames, no video: ...)" for the default frames.
-void print_default_frames(const OutputPlan& plan) {
-    std::cerr << "clrender: wrote " << printable(plan.image_path(plan.frames.front()));
+void print_default_frames(const OutputPlan& plan, const RunReport& report) {
+    std::string line = "wrote " + printable(plan.image_path(plan.frames.front()));
     if (plan.frames.size() > 1)
-        std::cerr << " ... " << printable(plan.image_path(plan.frames.back())) << " (" << plan.frames.size() << " frames)";
-    std::cerr << "; no video for a --frames selection (--video makes one)\n";
+        line += " ... " + printable(plan.image_path(plan.frames.back())) + " (" + frames_text(plan, report) + ")";
+    std::cerr << message_line("info", line + "; no video for a --frames selection (--video makes one)");
 }
 
 // The "wrote" line of the image or frames; none for an image that --resume found finished
@@ -319,29 +331,34 @@ void print_default_frames(const OutputPlan& plan) {
 void print_images_written(const OutputPlan& plan, const RunReport& report) {
     if (report.image_was_finished) return;
     if (report.tiles_joined > 0)
-        std::cerr << "clrender: wrote " << printable(plan.image_path(plan.frames.front())) << " (joined from "
-                  << report.tiles_joined << " tiles)\n";
+        std::cerr << message_line("info", "wrote " + printable(plan.image_path(plan.frames.front())) + " (joined from " +
+                                              std::to_string(report.tiles_joined) + " tiles)");
     else if (plan.default_frame_digits > 0)
-        print_default_frames(plan);
+        print_default_frames(plan, report);
     else if (!plan.image_target.empty() && !plan.assemble)
-        std::cerr << "clrender: wrote "
-                  << printable(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target)
-                  << (plan.frames.size() > 1 ? " (" + std::to_string(plan.frames.size()) + " frames)" : "") << "\n";
+        std::cerr << message_line(
+            "info", "wrote " +
+                        printable(plan.frames.size() == 1 ? plan.image_path(plan.frames.front()) : plan.image_target) +
+                        (plan.frames.size() > 1 ? " (" + frames_text(plan, report) + ")" : ""));
 }
 
 void print_summary(const OutputPlan& plan, const RunReport& report) {
     print_images_written(plan, report);
     if (!plan.video_path.empty())
-        std::cerr << "clrender: wrote " << printable(plan.video_path) << " (" << plan.frames.size() << " frames)\n";
+        std::cerr << message_line("info", "wrote " + printable(plan.video_path) + " (" +
+                                              std::to_string(plan.frames.size()) + " frames)");
     double kernel_ms = 0;
     for (const FrameRecord& frame : report.frames) kernel_ms += frame.timing.kernel_ms;
-    std::cerr << "clrender: " << report.frames.size() << " frame(s), kernel " << kernel_ms << " ms, build "
-              << report.build_ms << " ms, total " << report.total_ms << " ms\n";
+    std::ostringstream line;
+    line << report.frames.size() << " frame(s), kernel " << kernel_ms << " ms, build " << report.build_ms
+         << " ms, total " << report.total_ms << " ms";
+    std::cerr << message_line("info", line.str());
 }
 
 }  // namespace
 
 int run(const Options& options) {
+    prepare_for_driver_limits();  // before any driver loads (device/driver_limits.h)
     if (options.threads) limit_cpu_threads(*options.threads);  // before any driver loads
     if (options.list_devices) {
         std::vector<DeviceEntry> devices = list_devices();
@@ -388,15 +405,12 @@ int run(const Options& options) {
                                    options.explain_pixel->y + 1};
         if (!options.reference)
             kernel_renderer = [&] { return make_renderer(one_pixel, scene, devices, {}, false); };
-        std::ostringstream explanation;  // whole or nothing: a device failure leaves no half explanation
-        explain_pixel(options, scene, kernel_renderer, explanation);
-        std::cout << explanation.str() << std::flush;
-        if (!std::cout) throw OutputError("standard output: cannot write the explanation (disk full or pipe closed?)");
+        explain_pixel(options, scene, kernel_renderer, std::cout);  // streamed, bounded, checked
         return kExitOk;
     }
     OutputPlan plan = plan_outputs(options, scene);  // every usage and encoder check, before rendering
     check_linear_outputs(options, plan);
-    for (const std::string& warning : plan.warnings) std::cerr << "clrender: warning: " << printable(warning) << "\n";
+    for (const std::string& warning : plan.warnings) std::cerr << message_line("warning", printable(warning));
     throw_if_interrupted();
     if (options.check || options.plan) check_kernel_sources(options, plan);
     // --plan does not read the files the run reads back: a farm plans the run before they exist.
@@ -410,17 +424,21 @@ int run(const Options& options) {
     // once all are written: a failure in any leaves the earlier files as they were. Frames of
     // a pattern are in place already (docs/animation.md).
     StagedOutputs staged;
+    Progress progress(static_cast<int>(plan.frames.size()), progress_style_named(options.progress), options.quiet);
+    bool frames_progress = false;  // the progress reports this run's frames (not joined tiles, nothing to render)
     if (!options.join.empty()) {
         report.device = "none (joining tiles)";
         staged.add(write_joined_image(options, scene, plan));
         report.tiles_joined = options.join.size();
     } else if (plan.assemble) {
-        assemble_frames(options, scene, plan, report, staged);
+        assemble_frames(options, scene, plan, report, staged, progress);
+        frames_progress = true;
     } else if (options.resume && plan.only_image_finished()) {  // a requeued farm task, say
         report.device = "none (nothing to render)";
         report.image_was_finished = true;
     } else {
-        render_frames(options, scene, plan, report, devices, staged);
+        render_frames(options, scene, plan, report, devices, staged, progress);
+        frames_progress = true;
     }
     report.total_ms = run_time.elapsed_ms();
     if (!plan.stats_path.empty()) staged.add(write_stats(plan.stats_path, report));
@@ -429,9 +447,10 @@ int run(const Options& options) {
     // the earlier files as they were, as a --stats file that cannot be written does.
     if (plan.stats_to_standard_output) print_stats(report);
     staged.commit_all();
+    if (frames_progress) progress.all_in_place();  // only now is every file under its name
     if (report.image_was_finished)  // also with -q: the farm's log shows why the task did nothing
-        std::cerr << "clrender: " << printable(plan.image_path(plan.frames.front()))
-                  << " is finished (--resume); nothing to render\n";
+        std::cerr << message_line("info", printable(plan.image_path(plan.frames.front())) +
+                                              " is finished (--resume); nothing to render");
     if (!options.quiet) print_summary(plan, report);
     return kExitOk;
 }

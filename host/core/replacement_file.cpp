@@ -11,17 +11,22 @@ namespace clr {
 
 ReplacementFile::ReplacementFile(std::string temporary_path, mode_t mode) {
     descriptor_ = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
-    if (descriptor_ >= 0) temporary_path_ = std::move(temporary_path);
+    if (descriptor_ >= 0) {
+        entry_ = FolderEntry(temporary_path);
+        temporary_path_ = std::move(temporary_path);
+    }
 }
 
 ReplacementFile ReplacementFile::adopt(std::string temporary_path) {
     ReplacementFile file;
+    file.entry_ = FolderEntry(temporary_path);
     file.temporary_path_ = std::move(temporary_path);
     return file;
 }
 
 ReplacementFile::ReplacementFile(ReplacementFile&& other) noexcept
     : temporary_path_(std::move(other.temporary_path_)),
+      entry_(std::move(other.entry_)),
       descriptor_(std::exchange(other.descriptor_, -1)),
       renamed_(other.renamed_) {
     other.temporary_path_.clear();
@@ -29,7 +34,7 @@ ReplacementFile::ReplacementFile(ReplacementFile&& other) noexcept
 
 ReplacementFile::~ReplacementFile() {
     if (descriptor_ >= 0) ::close(descriptor_);
-    if (created() && !renamed_) ::unlink(temporary_path_.c_str());
+    if (created() && !renamed_) entry_.remove();
 }
 
 int ReplacementFile::release_descriptor() { return std::exchange(descriptor_, -1); }

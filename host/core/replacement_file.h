@@ -3,12 +3,15 @@
 // system, so the temporary name must lie in the final file's folder). The one implementation of
 // that pattern: the caches' entries (core/cache_entry_folder.h) and every output
 // (output/atomic_file.h) build on it. Until it is renamed, the temporary file is removed when
-// this object goes: an error or an exception leaves nothing under either name.
+// this object goes: an error or an exception leaves nothing under either name, also when the
+// folder was renamed meanwhile (core/folder_entry.h).
 #pragma once
 
 #include <sys/types.h>
 
 #include <string>
+
+#include "core/folder_entry.h"
 
 namespace clr {
 
@@ -43,6 +46,7 @@ private:
     ReplacementFile() = default;
 
     std::string temporary_path_;
+    FolderEntry entry_;  // removes the temporary file even from a folder renamed meanwhile
     int descriptor_ = -1;
     bool renamed_ = false;
 };

@@ -1,13 +1,32 @@
 #include "device/device_context.h"
 
 #include <iostream>
+#include <sstream>
 
 #include "core/errors.h"
+#include "core/message_lines.h"
+#include "core/printable_text.h"
 #include "device/cl_errors.h"
+#include "device/driver_limits.h"
 #include "device/program_cache.h"
 #include "device/stderr_capture.h"
 
 namespace clr {
+namespace {
+
+// What the compiler printed during a build that succeeded (warnings): as it printed it, or with
+// --progress json one JSON warning a line, so that every line on standard error stays JSON.
+void print_compiler_output(const std::string& text) {
+    if (!json_messages()) {
+        std::cerr << text;
+        return;
+    }
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (!line.empty()) std::cerr << message_line("warning", "OpenCL compiler: " + printable(line));
+}
+
+}  // namespace
 
 DeviceContext::DeviceContext(const DeviceEntry& device) : entry_(device) {
     try {
@@ -55,21 +74,28 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     if (key) {
         if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
     }
+    // Short of address space, PoCL's compiler hangs or crashes instead of failing.
+    check_room_for_a_build();
     cl::Program program(context_, source);
     // The compiler's own output waits until clrender's error line, if any, is out.
     StderrCapture compiler_output;
     try {
         program.build({entry_.device}, options.c_str());
-        std::cerr << compiler_output.finish();
+        print_compiler_output(compiler_output.finish());
     } catch (const cl::Error& error) {
         const std::string printed = compiler_output.finish();
+        const std::string building = "building the OpenCL program for '" + entry_.device_name + "'";
+        if (error.err() == CL_OUT_OF_HOST_MEMORY) throw Error("out of memory: " + building, kExitOutOfMemory);
+        // A build that failed for the process's surroundings (a cache folder PoCL cannot write,
+        // too few descriptors), not for the source: that is what the user can act on.
+        if (std::optional<Error> trouble = driver_trouble(building + " failed")) throw *trouble;
         std::string log;
         try {
             log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(entry_.device);
         } catch (const cl::Error&) {
             log = "(no build log available)";
         }
-        throw DeviceError(describe_cl_error(error, "building the OpenCL program for '" + entry_.device_name + "'") +
+        throw DeviceError(describe_cl_error(error, building) +
                           "\nbuild options: " + options + "\nbuild log:\n" + log +
                           (printed.empty() ? "" : "\ncompiler output:\n" + printed));
     }

@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "core/printable_text.h"
 #include "device/cl_errors.h"
+#include "device/driver_limits.h"
 #include "device/driver_settings.h"
 
 namespace clr {
@@ -76,7 +77,11 @@ std::vector<DeviceEntry> list_devices() {
 }
 
 std::vector<std::string> device_list_lines(const std::vector<DeviceEntry>& devices) {
-    if (devices.empty()) return {"No OpenCL devices found (is an OpenCL driver such as pocl-opencl-icd installed?)"};
+    if (devices.empty()) {
+        // What keeps an installed driver from starting, when something visibly does.
+        if (std::optional<Error> trouble = driver_trouble("no OpenCL device started")) return {trouble->what()};
+        return {"No OpenCL devices found (is an OpenCL driver such as pocl-opencl-icd installed?)"};
+    }
     // The names come from the driver: escaped, so that one cannot break or forge a line.
     std::vector<std::string> lines;
     std::string platform;
@@ -100,8 +105,10 @@ std::string format_device_list(const std::vector<DeviceEntry>& devices) {
 }
 
 DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::string& selector) {
-    if (devices.empty())
+    if (devices.empty()) {
+        if (std::optional<Error> trouble = driver_trouble("no OpenCL device started")) throw *trouble;
         throw DeviceError("no OpenCL device found; install an OpenCL driver (for the CPU: pocl-opencl-icd)");
+    }
     if (selector.empty()) {
         auto cpu = std::find_if(devices.begin(), devices.end(), [](const DeviceEntry& e) { return e.type == "CPU"; });
         return cpu != devices.end() ? *cpu : devices.front();

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <thread>
 
+#include "core/interruption.h"
 #include "core/errors.h"
 
 extern char** environ;
@@ -68,6 +69,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_
         pid_ = -1;
         throw OutputError("cannot start '" + arguments[0] + "': " + std::strerror(error));
     }
+    track_child_group(pid_);  // killed by a forced stop (core/interruption.h)
 }
 
 ChildProcess::~ChildProcess() { stop(); }
@@ -97,6 +99,7 @@ int ChildProcess::reap() noexcept {
             break;
         }
     }
+    untrack_child_group(pid_);
     pid_ = -1;
     return status;
 }

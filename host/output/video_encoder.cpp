@@ -263,8 +263,10 @@ VideoEncoder::~VideoEncoder() { abandon(); }
 void VideoEncoder::start() {
     temp_path_ = temp_path_beside(settings_.path);
     ::close(create_exclusive(temp_path_, settings_.path));  // reserves the name; ffmpeg overwrites it
+    temp_entry_ = FolderEntry(temp_path_);
     log_path_ = temp_path_ + ".log";
     const int log_fd = create_exclusive(log_path_, settings_.path);
+    log_entry_ = FolderEntry(log_path_);
 
     // Close-on-exec on both ends: the child gets the read end as its stdin through dup2, and
     // no other child (another encoder) inherits the write end, which would keep this pipe
@@ -358,7 +360,7 @@ std::unique_ptr<AtomicFile> VideoEncoder::finish_uncommitted() {
     if (!sync_file(temp_path_)) fail(std::string("cannot flush the video to disk: ") + std::strerror(errno));
     std::unique_ptr<AtomicFile> video = AtomicFile::adopt(temp_path_, settings_.path);
     temp_path_.clear();  // the AtomicFile owns it now
-    ::unlink(log_path_.c_str());
+    log_entry_.remove();
     done_ = true;
     return video;
 }
@@ -415,8 +417,8 @@ void VideoEncoder::close_stdin() {
 }
 
 void VideoEncoder::remove_files() {
-    if (!temp_path_.empty()) ::unlink(temp_path_.c_str());
-    if (!log_path_.empty()) ::unlink(log_path_.c_str());
+    if (!temp_path_.empty()) temp_entry_.remove();
+    if (!log_path_.empty()) log_entry_.remove();
 }
 
 void VideoEncoder::abandon() noexcept {

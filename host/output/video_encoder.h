@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/folder_entry.h"
 #include "core/image.h"
 #include "output/atomic_file.h"
 #include "output/child_process.h"
@@ -108,6 +109,9 @@ private:
     Seconds stall_timeout_;  // the longest the encoder may make no progress
     std::string temp_path_;  // the video while it is written
     std::string log_path_;   // ffmpeg's stderr
+    // Both removed through their folder held open: renaming the output folder during a render
+    // must not leave them behind.
+    FolderEntry temp_entry_, log_entry_;
     std::unique_ptr<ChildProcess> encoder_;  // ffmpeg while it runs
     int stdin_fd_ = -1;      // write end of ffmpeg's stdin, non-blocking
     int frames_added_ = 0;

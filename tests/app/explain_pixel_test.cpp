@@ -329,6 +329,43 @@ TEST(ExplainPixel, UnwritableStandardOutputIsAnOutputError) {
               "clrender: error: standard output: cannot write the explanation (disk full or pipe closed?)\n");
 }
 
+// Two mirrors facing each other, 40 spheres tested on every ray, 32 samples of 64 reflections:
+// about 20 MB of steps (hundreds of MB with more samples), once held whole in memory. The explanation stops its steps at the documented 16 MiB, says so, and
+// still ends with the result of every sample.
+TEST(ExplainPixel, ManySamplesWithDeepMirrorsAreBounded) {
+    TempFolder folder;
+    std::string spheres;
+    for (int i = 0; i < 40; ++i)
+        spheres += std::string(i ? ", " : "") + "{\"center\": [" + std::to_string(-20 + i) + ", 6, 0], \"radius\": 0.3, \"ambient\": [0.5, 0.5, 0.5]}";
+    folder.write("mirrors.json", R"({
+      "eye": [0, 0, 0], "lookat": [0, 0, -1], "up": [0, 1, 0], "fov_angle": 30,
+      "width": 8, "height": 8, "MaxDepth": 64, "DefaultColor": [0.1, 0.1, 0.1], "clrender": {"spp": 32},
+      "billboards": [
+        {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
+        {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
+      "spheres": [)" + spheres + "]}");
+    const std::string command = "cd '" + folder.path() + "' && '" + CLRENDER_BINARY +
+                                "' mirrors.json --reference --explain-pixel 4,4 >explanation.txt 2>stderr.txt";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << testing::read_bytes(folder.file("stderr.txt"));
+    const std::string text = testing::read_bytes(folder.file("explanation.txt"));
+    constexpr std::size_t kLimit = std::size_t(16) << 20;
+    EXPECT_GT(text.size(), kLimit);
+    EXPECT_LT(text.size(), kLimit + 64 * 1024) << "the steps stop at the end of the line crossing 16 MiB";
+    const std::size_t cut = text.find("\n\n... ");  // the note, on a line of its own after the last whole line
+    ASSERT_NE(cut, std::string::npos);
+    EXPECT_GT(cut, kLimit - 1);
+    std::smatch note;
+    const std::string note_line = text.substr(cut + 2, text.find('\n', cut + 2) - cut - 2);
+    ASSERT_TRUE(std::regex_match(note_line, note, std::regex(R"(\.\.\. (\d+) more bytes of steps left out: an explanation prints at most 16 MiB of them .*)")))
+        << note_line;
+    EXPECT_GT(std::stoull(note[1]), 1000000u) << "about 20 MB of steps in all";
+    EXPECT_NE(text.find("== Result ==\npixel colour = mean of 32 sample(s)", cut), std::string::npos);
+    EXPECT_NE(text.find("OpenCL kernels: not run (--reference)\n", cut), std::string::npos);
+    EXPECT_NE(text.find("== Sample 0 of 32"), std::string::npos);
+    EXPECT_EQ(text.find("== Sample 31 of 32"), std::string::npos) << "the last sample's steps are past the limit";
+}
+
 TEST(ExplainPixel, HelpAndTheOptionsReferenceDescribeIt) {
     const auto help = run_clrender("--help");
     EXPECT_NE(help.output.find("--explain-pixel"), std::string::npos) << help.output;

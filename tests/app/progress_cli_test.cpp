@@ -3,18 +3,22 @@
 // line that starts on a line of its own after the bar, and --progress json's lines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "support/command.h"
+#include "support/small_disk.h"
 #include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
+namespace fs = std::filesystem;
 using testing::read_bytes;
 using testing::run_clrender;
 using testing::TempFolder;
@@ -102,6 +106,7 @@ TEST(ProgressCli, AnAnimationsBarCountsFrames) {
     const std::string shown = run_on_a_terminal(folder, kBinary + " anim.json -o 'f_%04d.png'\n");
     EXPECT_NE(shown.find("frame 10/10"), std::string::npos) << shown;
     EXPECT_NE(shown.find("100%"), std::string::npos) << shown;
+    EXPECT_NE(shown.find(" frames/s  elapsed "), std::string::npos) << "frames per second (docs/animation.md): " << shown;
 }
 
 TEST(ProgressCli, NoBarWithQuietOrNoneOrOffATerminal) {
@@ -186,14 +191,115 @@ TEST(ProgressCli, JsonLinesForAnAnimationComePerFrame) {
     auto result = run_clrender("anim.json -o 'f_%04d.png' --frames 2,5-7 -q --progress json", folder.path());
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const std::vector<nlohmann::json> lines = json_lines(result.output);
-    ASSERT_EQ(lines.size(), 4u) << result.output;
-    const int frames[] = {2, 5, 6, 7};
-    for (int i = 0; i < 4; ++i) {
+    // One line per frame rendered, and the last once every file is under its name.
+    ASSERT_EQ(lines.size(), 5u) << result.output;
+    const int frames[] = {2, 5, 6, 7, 7};
+    int done = 0;
+    for (int i = 0; i < 5; ++i) {
         EXPECT_EQ(lines[i]["frame"], frames[i]);
         EXPECT_EQ(lines[i]["frames"], 4);
-        EXPECT_EQ(lines[i]["frames_done"], i + 1);
-        EXPECT_DOUBLE_EQ(lines[i]["percent"].get<double>(), 25.0 * (i + 1));
+        // A frame counts once its file is in place: the writer may lag behind the renderer.
+        EXPECT_LE(lines[i]["frames_done"].get<int>(), std::min(i + 1, 4)) << lines[i];
+        EXPECT_GE(lines[i]["frames_done"].get<int>(), done) << lines[i];
+        done = lines[i]["frames_done"].get<int>();
+        EXPECT_DOUBLE_EQ(lines[i]["percent"].get<double>(), 25.0 * std::min(i + 1, 4));
     }
+    EXPECT_EQ(lines.back()["frames_done"], 4);
+}
+
+// On a disk that fills up, a frame whose file could not be written is never reported done:
+// every line's frames_done is at most the frames on disk after the run.
+TEST(ProgressCli, JsonFramesDoneCountsOnlyFramesOnDisk) {
+    if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a small tmpfs here (needs root or unshare -rm)";
+    TempFolder folder;
+    folder.write("anim.json", R"({
+      "eyeLocations": [[-3, 1, 8], [3, 2, 7]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 55,
+      "width": 96, "height": 64, "clrender": {"frames": 400, "seed": 3, "spp": 4},
+      "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0.3, 0.2]}],
+      "billboards": [{"UpperLeft": [-5, 4, -4], "LowerLeft": [-5, -3, -4], "UpperRight": [5, 4, -4], "ambient": [0.2, 0.6, 0.3]}]
+    })");
+    fs::create_directory(folder.file("disk"));
+    const int status = testing::run_in_mount_namespace(
+        folder.path(), "mount -t tmpfs -o size=64k tmpfs disk; code=0; "
+                       "\"$CLRENDER\" anim.json -o disk/f_%04d.png -q --progress json 2>stderr.txt || code=$?; "
+                       "echo $code >exit_code; ls disk | grep -c \"^f_\" >frames_on_disk || true");
+    ASSERT_EQ(status, 0) << "the namespace script failed";
+    const std::string stderr_text = read_bytes(folder.file("stderr.txt"));
+    ASSERT_EQ(read_bytes(folder.file("exit_code")), "4\n") << stderr_text;
+    const int on_disk = std::stoi(read_bytes(folder.file("frames_on_disk")));
+    ASSERT_GT(on_disk, 0) << stderr_text;
+    ASSERT_LT(on_disk, 400) << stderr_text;
+    int most_done = 0, progress_lines = 0;
+    for (const std::string& line : lines_of(stderr_text)) {
+        const nlohmann::json object = nlohmann::json::parse(line);  // every line is JSON, the error's too
+        if (!object.contains("frames_done")) continue;
+        ++progress_lines;
+        most_done = std::max(most_done, object["frames_done"].get<int>());
+    }
+    EXPECT_GT(progress_lines, 0) << stderr_text;
+    EXPECT_LE(most_done, on_disk) << "frames reported done that are not on disk:\n" << stderr_text;
+}
+
+// With --progress json every line on standard error is one JSON object: warnings and the error
+// as much as progress, with -q and without.
+TEST(ProgressCli, JsonMakesEveryLineOnStandardErrorJson) {
+    TempFolder folder;
+    folder.write("anim.json", std::string(kAnimation).insert(1, R"("unknown_key": 1, )"));  // a warning
+    for (const char* quiet : {" -q", ""}) {
+        auto good = run_clrender(std::string("anim.json -o 'f_%04d.png' --frames 0-2 --progress json") + quiet, folder.path());
+        ASSERT_EQ(good.exit_code, 0) << good.output;
+        auto bad = run_clrender(std::string("anim.json -o 'f_%04d.png' --frames 0-20 --progress json") + quiet, folder.path());
+        ASSERT_EQ(bad.exit_code, 1) << bad.output;  // frame 20 is outside the animation
+        int warnings = 0, errors = 0;
+        for (const std::string& line : lines_of(good.output + bad.output)) {
+            nlohmann::json object;
+            ASSERT_NO_THROW(object = nlohmann::json::parse(line)) << "not JSON: " << line;
+            ASSERT_TRUE(object.is_object()) << line;
+            if (object.value("level", "") == "warning") {
+                ++warnings;
+                EXPECT_NE(object["message"].get<std::string>().find("unknown_key"), std::string::npos) << line;
+            }
+            if (object.value("level", "") == "error") {
+                ++errors;
+                EXPECT_EQ(object["exit_code"], 1) << line;
+                EXPECT_NE(object["message"].get<std::string>().find("20"), std::string::npos) << line;
+            }
+        }
+        EXPECT_EQ(warnings, 2) << quiet << good.output << bad.output;
+        EXPECT_EQ(errors, 1) << quiet << bad.output;
+    }
+    // A command-line error, before the options are known, too.
+    auto usage = run_clrender("anim.json --progress json --no-such-option", folder.path());
+    EXPECT_EQ(usage.exit_code, 1);
+    EXPECT_NO_THROW(nlohmann::json::parse(usage.output)) << usage.output;
+}
+
+// What the OpenCL compiler prints during a build that succeeds ("1 warning generated.") comes
+// as JSON warnings too.
+TEST(ProgressCli, JsonWrapsTheCompilersOwnOutput) {
+    TempFolder folder;
+    folder.write("still.json", kAnimation);
+    const std::string kernels = folder.file("kernels");
+    fs::copy(std::string(CLRENDER_SOURCE_DIR) + "/kernels", kernels, fs::copy_options::recursive);
+    for (const auto& program : fs::directory_iterator(kernels + "/programs"))
+        folder.write(fs::relative(program.path(), folder.path()).string(),
+                     read_bytes(program.path()) + "\n#warning \"a warning of the test's\"\n");
+    const std::string arguments = "still.json --frames 0 -o still.png -q --kernel-dir kernels";
+    auto plain = run_clrender(arguments, folder.path(), "CLRENDER_CACHE_DIR=off");
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    EXPECT_NE(plain.output.find("warning generated."), std::string::npos) << "the compiler spoke: " << plain.output;
+    auto json = run_clrender(arguments + " --progress json", folder.path(), "CLRENDER_CACHE_DIR=off");
+    ASSERT_EQ(json.exit_code, 0) << json.output;
+    int compiler_lines = 0;
+    for (const std::string& line : lines_of(json.output)) {
+        nlohmann::json object;
+        ASSERT_NO_THROW(object = nlohmann::json::parse(line)) << "not JSON: " << line;
+        if (object.value("message", "").rfind("OpenCL compiler: ", 0) == 0) {
+            EXPECT_EQ(object["level"], "warning") << line;
+            ++compiler_lines;
+        }
+    }
+    EXPECT_GT(compiler_lines, 0) << json.output;
 }
 
 TEST(ProgressCli, JsonLinesWithoutQuietAndOffATerminal) {
@@ -201,16 +307,15 @@ TEST(ProgressCli, JsonLinesWithoutQuietAndOffATerminal) {
     folder.write("anim.json", kAnimation);
     auto result = run_clrender("anim.json -o 'f_%04d.png' --frames 0-2 --progress json", folder.path());
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    int objects = 0;
+    int progress = 0, messages = 0;
     for (const std::string& line : lines_of(result.output)) {
-        if (line.rfind("{", 0) != 0) {
-            EXPECT_EQ(line.rfind("clrender: ", 0), 0u) << "neither JSON nor a clrender message: " << line;
-            continue;
-        }
-        EXPECT_NO_THROW(nlohmann::json::parse(line)) << line;
-        ++objects;
+        nlohmann::json object;
+        ASSERT_NO_THROW(object = nlohmann::json::parse(line)) << line;
+        if (object.contains("frames_done")) ++progress;
+        if (object.value("level", "") == "info") ++messages;  // the device line, the summary
     }
-    EXPECT_EQ(objects, 3) << result.output;
+    EXPECT_EQ(progress, 4) << result.output;
+    EXPECT_GE(messages, 2) << result.output;
 }
 
 }  // namespace

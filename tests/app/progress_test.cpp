@@ -17,8 +17,16 @@ TEST(Progress, DurationsReadAsMinutesAndHours) {
 TEST(Progress, TheBarShowsPercentElapsedAndTimeLeft) {
     EXPECT_EQ(format_progress_bar(0.25, 0, 1, 10),
               "clrender: [#####               ]  25%  elapsed 0:10  left 0:30");
-    EXPECT_EQ(format_progress_bar(0.5, 2, 4, 65), "clrender: [##########          ]  50%  frame 3/4  elapsed 1:05  left 1:05");
-    EXPECT_EQ(format_progress_bar(1, 4, 4, 8), "clrender: [####################] 100%  frame 4/4  elapsed 0:08  left 0:00");
+    // An animation's bar shows frames per second once a frame is done (docs/animation.md).
+    EXPECT_EQ(format_progress_bar(0.25, 0, 4, 3), "clrender: [#####               ]  25%  frame 1/4  elapsed 0:03  left 0:09");
+    EXPECT_EQ(format_progress_bar(0.5, 2, 4, 65),
+              "clrender: [##########          ]  50%  frame 3/4  0.03 frames/s  elapsed 1:05  left 1:05");
+    EXPECT_EQ(format_progress_bar(1, 4, 4, 8),
+              "clrender: [####################] 100%  frame 4/4  0.50 frames/s  elapsed 0:08  left 0:00");
+    EXPECT_EQ(format_progress_bar(0.5, 30, 60, 12.5),
+              "clrender: [##########          ]  50%  frame 31/60  2.4 frames/s  elapsed 0:13  left 0:13");
+    EXPECT_EQ(format_progress_bar(0.5, 300, 600, 12.5),
+              "clrender: [##########          ]  50%  frame 301/600  24 frames/s  elapsed 0:13  left 0:13");
     EXPECT_EQ(format_progress_bar(0, 0, 1, 3), "clrender: [                    ]   0%  elapsed 0:03  left ?")
         << "nothing done yet: no estimate";
 }

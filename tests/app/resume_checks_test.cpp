@@ -120,7 +120,9 @@ TEST(ResumeChecks, ATileResumes) {
     const FileStamp before = stamp(folder.file("tile.png"));
     auto again = run_clrender("scene.json --crop 0,40,0,15 -o tile.png --resume -q --progress json", folder.path());
     ASSERT_EQ(again.exit_code, 0) << again.output;
-    EXPECT_TRUE(contains(again.output, "clrender: tile.png is finished (--resume); nothing to render")) << again.output;
+    // --progress json: the line is a JSON object like every other line on standard error.
+    EXPECT_TRUE(contains(again.output, R"({"level":"info","message":"tile.png is finished (--resume); nothing to render"})"))
+        << again.output;
     EXPECT_TRUE(stamp(folder.file("tile.png")) == before);
 
     ASSERT_EQ(run_clrender("scene.json -q --crop 0,40,15,30 -o fresh.png", folder.path()).exit_code, 0);
@@ -160,6 +162,31 @@ TEST(ResumeChecks, EachFrameOfAPatternIsChecked) {
     const std::string stats = read_bytes(folder.file("stats.json"));
     EXPECT_TRUE(contains(stats, "\"index\": 1,")) << stats;
     EXPECT_FALSE(contains(stats, "\"index\": 0,")) << stats;
+}
+
+// A resumed run says how many frames it rendered and how many it found finished, never that it
+// wrote them all; the video holds them all.
+TEST(ResumeChecks, TheSummarySaysWhatWasRenderedAndWhatSkipped) {
+    TempFolder folder;
+    folder.write("anim.json", kAnimation);
+    ASSERT_EQ(run_clrender("anim.json -q -o 'f_%04d.png'", folder.path()).exit_code, 0);
+    std::filesystem::remove(folder.file(frame_name(3)));
+    auto result = run_clrender("anim.json -o 'f_%04d.png' --resume", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(contains(result.output, "clrender: wrote f_%04d.png (1 frame rendered, 3 already finished (--resume))\n"))
+        << result.output;
+    EXPECT_FALSE(contains(result.output, "(4 frames)")) << result.output;
+    EXPECT_TRUE(contains(result.output, "clrender: 1 frame(s), kernel ")) << result.output;
+    std::filesystem::remove(folder.file(frame_name(0)));
+    std::filesystem::remove(folder.file(frame_name(2)));
+    result = run_clrender("anim.json -o 'f_%04d.png' --resume", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(contains(result.output, "clrender: wrote f_%04d.png (2 frames rendered, 2 already finished (--resume))\n"))
+        << result.output;
+    // Nothing skipped: the plain count.
+    auto again = run_clrender("anim.json -o 'g_%04d.png' --resume", folder.path());
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+    EXPECT_TRUE(contains(again.output, "clrender: wrote g_%04d.png (4 frames)\n")) << again.output;
 }
 
 TEST(ResumeChecks, AnAlphaRunRendersAnOpaqueImageAgain) {
