@@ -9,7 +9,7 @@
 
 namespace clr {
 
-DeviceContext::DeviceContext(const DeviceEntry& device) : entry_(device) {
+DeviceContext::DeviceContext(const DeviceEntry& device, ProgramStore store) : entry_(device), store_(std::move(store)) {
     try {
         context_ = cl::Context(entry_.device);
         queue_ = cl::CommandQueue(context_, entry_.device, CL_QUEUE_PROFILING_ENABLE);
@@ -46,7 +46,7 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     // entries that pass every check; one the driver still refuses is removed and rebuilt.
     const ProgramCache cache = ProgramCache::from_environment();
     std::optional<ProgramCache::Key> key;
-    if (cache.enabled()) {
+    if (cache.enabled() || store_.enabled()) {
         try {
             key = ProgramCache::key(entry_.device, source, options);
         } catch (const std::exception&) {  // no key, no caching
@@ -54,6 +54,11 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     }
     if (key) {
         if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
+        // Then the read-only store built ahead of need: nothing to store after a hit.
+        if (std::optional<cl::Program> stored = build_from_store(store_, context_, entry_.device, *key, options)) {
+            ++store_hits_;
+            return *stored;
+        }
     }
     cl::Program program(context_, source);
     // The compiler's own output waits until clrender's error line, if any, is out.
@@ -76,7 +81,7 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     // Asking PoCL for the binary compiles every kernel of the program, which takes longer than
     // a frame (docs/benchmarks.md, Figures behind design choices): that is left to
     // store_built_programs(), after the frames are written.
-    if (key) to_store_.push_back({cache.cache_folder(), *key, program});
+    if (key && cache.enabled()) to_store_.push_back({cache.cache_folder(), *key, program});
     return program;
 }
 
