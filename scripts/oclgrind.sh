@@ -22,8 +22,8 @@ cmake --build "$build" -j2 --target clrender clrender_tests > /dev/null
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-# Oclgrind must compile every program: a cached binary would skip its compiler.
-export CLRENDER_CACHE_DIR=off
+# Oclgrind must compile every program: a cached or stored binary would skip its compiler.
+export CLRENDER_CACHE_DIR=off CLRENDER_PROGRAM_STORE=off
 failures=0
 renders=0
 start=$SECONDS

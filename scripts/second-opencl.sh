@@ -18,7 +18,7 @@ start=$SECONDS
 bash "$root/scripts/install-intel-opencl.sh" > /dev/null
 source "${CLRENDER_INTEL_OPENCL_DIR:-$HOME/.cache/clrender-intel-opencl}/env.sh"
 cmake --build "$build" -j2 --target clrender clrender_tests > /dev/null
-export CLRENDER_CACHE_DIR=off  # each implementation compiles the kernels itself
+export CLRENDER_CACHE_DIR=off CLRENDER_PROGRAM_STORE=off  # each implementation compiles the kernels itself
 
 devices="$("$build/clrender" --list-devices)"
 echo "$devices" | sed 's/^/second-opencl.sh: /'

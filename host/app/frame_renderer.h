@@ -24,6 +24,7 @@ public:
     // The OpenCL device's compute units in use (-t); 0 for the reference, which has none.
     virtual int compute_units() const { return 0; }
     virtual int cache_hits() const { return 0; }  // programs built from the program cache
+    virtual int store_hits() const { return 0; }  // programs built from the program store
     // Keeps the programs built for this run in the program cache for the next (slow the first
     // time: call once the outputs are written).
     virtual void store_built_programs() {}

@@ -16,6 +16,8 @@ Environment:
   CLRENDER_CACHE_DIR         Folder of the program and image caches, or 'off'; default
                              $XDG_CACHE_HOME/clrender, else ~/.cache/clrender
   XDG_CACHE_HOME             See CLRENDER_CACHE_DIR
+  CLRENDER_PROGRAM_STORE     Folder of programs built ahead of need, or 'off'; default
+                             share/clrender/programs of the install
   CLRENDER_FFMPEG            Video encoder program; default ffmpeg on PATH
   CLRENDER_FFPROBE           Video checker program; default the ffprobe beside the encoder,
                              else on PATH

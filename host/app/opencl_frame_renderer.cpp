@@ -1,6 +1,7 @@
 #include "app/opencl_frame_renderer.h"
 
 #include "device/device_context.h"
+#include "device/program_store.h"
 
 namespace clr {
 namespace {
@@ -8,7 +9,7 @@ namespace {
 class OpenClFrameRenderer : public FrameRenderer {
 public:
     OpenClFrameRenderer(const Scene& scene, const DeviceEntry& entry, const RendererOptions& options)
-        : device_(entry), renderer_(device_, scene, options) {}
+        : device_(entry, ProgramStore::from_environment()), renderer_(device_, scene, options) {}
 
     Image render(const CameraKey& key, int frame, FrameTiming* timing) override {
         return renderer_.render(key, frame, timing);
@@ -17,6 +18,7 @@ public:
     double build_ms() const override { return renderer_.build_ms(); }
     int compute_units() const override { return clr::compute_units(device_.entry()); }
     int cache_hits() const override { return device_.cache_hits(); }
+    int store_hits() const override { return device_.store_hits(); }
     void store_built_programs() override { device_.store_built_programs(); }
     void recycle(Image&& image) override { renderer_.recycle(std::move(image)); }
 

@@ -59,6 +59,7 @@ struct RunReport {
     double load_ms = 0;
     double build_ms = 0;
     int cache_hits = 0;
+    int store_hits = 0;
     double render_ms = 0;
     double write_ms = 0;
     double total_ms = 0;
@@ -77,6 +78,7 @@ std::string stats_text(const RunReport& report) {
         {"compute_units", report.compute_units},
         {"build_ms", report.build_ms},
         {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
+        {"store_hits", report.store_hits},  // programs built from the store installed with clrender
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
                        {"write", report.write_ms}, {"total", report.total_ms}}},
         {"frames", frames},
@@ -208,6 +210,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     report.compute_units = renderer->compute_units();
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
+    report.store_hits = renderer->store_hits();
     if (!options.quiet)
         std::cerr << message_line("info", "device " + printable(report.device) +
                                               (report.compute_units > 0 ? " (compute units: " + std::to_string(report.compute_units) + ")" : ""));

@@ -28,7 +28,7 @@ void print_compiler_output(const std::string& text) {
 
 }  // namespace
 
-DeviceContext::DeviceContext(const DeviceEntry& device) : entry_(device) {
+DeviceContext::DeviceContext(const DeviceEntry& device, ProgramStore store) : entry_(device), store_(std::move(store)) {
     try {
         context_ = cl::Context(entry_.device);
         queue_ = cl::CommandQueue(context_, entry_.device, CL_QUEUE_PROFILING_ENABLE);
@@ -65,7 +65,7 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     // entries that pass every check; one the driver still refuses is removed and rebuilt.
     const ProgramCache cache = ProgramCache::from_environment();
     std::optional<ProgramCache::Key> key;
-    if (cache.enabled()) {
+    if (cache.enabled() || store_.enabled()) {
         try {
             key = ProgramCache::key(entry_.device, source, options);
         } catch (const std::exception&) {  // no key, no caching
@@ -73,6 +73,11 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     }
     if (key) {
         if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
+        // Then the read-only store built ahead of need: nothing to store after a hit.
+        if (std::optional<cl::Program> stored = build_from_store(store_, context_, entry_.device, *key, options)) {
+            ++store_hits_;
+            return *stored;
+        }
     }
     // Short of address space, PoCL's compiler hangs or crashes instead of failing.
     check_room_for_a_build();
@@ -102,7 +107,7 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     // Asking PoCL for the binary compiles every kernel of the program, which takes longer than
     // a frame (docs/benchmarks.md, Figures behind design choices): that is left to
     // store_built_programs(), after the frames are written.
-    if (key) to_store_.push_back({cache.cache_folder(), *key, program});
+    if (key && cache.enabled()) to_store_.push_back({cache.cache_folder(), *key, program});
     return program;
 }
 

@@ -9,13 +9,15 @@
 #include "device/device_selection.h"
 #include "device/opencl.h"
 #include "device/program_cache.h"
+#include "device/program_store.h"
 
 namespace clr {
 
 class DeviceContext {
 public:
-    // Throws DeviceError when the device cannot be opened.
-    explicit DeviceContext(const DeviceEntry& device);
+    // Throws DeviceError when the device cannot be opened. `store`: binaries built ahead of
+    // need (device/program_store.h), tried when the program cache misses.
+    explicit DeviceContext(const DeviceEntry& device, ProgramStore store = ProgramStore());
     // Puts the cache entries this context built programs from back under their names (a rename:
     // safe at exit, unlike asking the driver for binaries).
     ~DeviceContext();
@@ -40,6 +42,7 @@ public:
     // destruction may already have torn down the compiler inside the driver.
     void store_built_programs();
     int cache_hits() const { return cache_hits_; }  // builds served by the program cache
+    int store_hits() const { return store_hits_; }  // builds served by the program store
 
 private:
     // The program built from the cache's binary for `key`; nothing on a miss or when the driver
@@ -54,6 +57,8 @@ private:
     cl::Context context_;
     cl::CommandQueue queue_;
     mutable int cache_hits_ = 0;
+    ProgramStore store_;
+    mutable int store_hits_ = 0;
     struct PendingEntry {
         std::string cache_folder;
         ProgramCache::Key key;

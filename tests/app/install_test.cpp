@@ -114,6 +114,28 @@ bool source_is_a_git_checkout() {
            fs::equivalent(fs::path(result.output.substr(0, result.output.find('\n'))), CLRENDER_SOURCE_DIR);
 }
 
+// The program store built with the build tree is installed beside the binary, which finds it
+// there: a first run with an empty cache builds nothing from source.
+TEST_F(Install, InstalledBinaryFindsItsProgramStore) {
+    const fs::path built = fs::path(CLRENDER_BUILD_DIR) / "share/clrender/programs";
+    if (!fs::is_directory(built)) GTEST_SKIP() << "built with CLRENDER_PROGRAM_STORE_VARIANTS=none: no store";
+    int entries = 0;
+    for (const auto& entry : fs::directory_iterator(built)) {
+        if (entry.path().extension() != ".clbin") continue;
+        ++entries;
+        EXPECT_EQ(read_bytes(installed("share/clrender/programs/" + entry.path().filename().string())),
+                  read_bytes(entry.path()));
+    }
+    ASSERT_GT(entries, 0) << "the build's program store is empty (no OpenCL device when it was built?)";
+    work_.write("small.json", kSmallScene);
+    const auto result = run_installed("small.json -q --stats stats.json",
+                                      "CLRENDER_CACHE_DIR=" + shell_quoted(work_.file("cache")) +
+                                          " env -u CLRENDER_PROGRAM_STORE");
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(read_bytes(work_.file("stats.json")).find("\"store_hits\": 1"), std::string::npos)
+        << read_bytes(work_.file("stats.json"));
+}
+
 TEST_F(Install, VersionNamesTheBuildsCommitAndTheOpenCLPlatforms) {
     const auto result = run_installed("--version");
     ASSERT_EQ(result.exit_code, 0) << result.output;
