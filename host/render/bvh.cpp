@@ -38,21 +38,25 @@ struct Primitive {
     std::uint32_t item;
 };
 
-std::vector<Primitive> primitives_of(const FrameGeometry& frame) {
+// The frame's objects' boxes relative to `origin`.
+std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& origin) {
     std::vector<Primitive> primitives;
     for (std::size_t i = 0; i < frame.spheres().size(); ++i) {
         const Sphere& s = frame.spheres()[i];
         Vec3 r{s.radius, s.radius, s.radius};
-        Primitive p{{}, s.center, static_cast<std::uint32_t>(i)};
-        p.box.grow(s.center - r);
-        p.box.grow(s.center + r);
+        Vec3 center = s.center - origin;
+        Primitive p{{}, center, static_cast<std::uint32_t>(i)};
+        p.box.grow(center - r);
+        p.box.grow(center + r);
         primitives.push_back(p);
     }
     for (std::size_t i = 0; i < frame.billboard_count(); ++i) {
         const Billboard& b = frame.billboard(i);
-        Vec3 lower_right = b.upper_right + (b.lower_left - b.upper_left);
-        Primitive p{{}, (b.upper_left + lower_right) * 0.5, static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD};
-        for (const Vec3& corner : {b.upper_left, b.upper_right, b.lower_left, lower_right}) p.box.grow(corner);
+        Vec3 shift = origin - frame.billboard_origin(i);  // zero for placed impostors: exact
+        Vec3 upper_left = b.upper_left - shift, upper_right = b.upper_right - shift, lower_left = b.lower_left - shift;
+        Vec3 lower_right = upper_right + (lower_left - upper_left);
+        Primitive p{{}, (upper_left + lower_right) * 0.5, static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD};
+        for (const Vec3& corner : {upper_left, upper_right, lower_left, lower_right}) p.box.grow(corner);
         primitives.push_back(p);
     }
     return primitives;
@@ -155,16 +159,22 @@ float up(double v) {
 
 }  // namespace
 
-Bvh build_bvh(const FrameGeometry& frame) { return Builder(primitives_of(frame)).build(); }
+Bvh build_bvh(const FrameGeometry& frame) {
+    const Vec3 origin = frame.impostor_origin();
+    Bvh bvh = Builder(primitives_of(frame, origin)).build();
+    bvh.origin = origin;
+    return bvh;
+}
 
 std::vector<ClrBvhNode> compile_bvh(const Bvh& bvh, const Vec3& origin) {
     std::vector<ClrBvhNode> nodes;
     nodes.reserve(bvh.nodes.size());
+    const Vec3 shift = origin - bvh.origin;  // zero when the frame's impostors were placed there
     for (const Bvh::Node& node : bvh.nodes) {
         ClrBvhNode out{};
         // A little room, so that objects rounded to float on their own (compile_scene) stay
         // inside the float bounds too.
-        Vec3 lower = node.lower - origin, upper = node.upper - origin;
+        Vec3 lower = node.lower - shift, upper = node.upper - shift;
         double size = std::max({std::fabs(lower.x), std::fabs(lower.y), std::fabs(lower.z), std::fabs(upper.x),
                                 std::fabs(upper.y), std::fabs(upper.z)});
         Vec3 pad{1e-6 * size, 1e-6 * size, 1e-6 * size};

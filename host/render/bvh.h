@@ -19,13 +19,16 @@ constexpr int kMaxBvhDepth = CLR_BVH_STACK - 1;
 
 struct Bvh {
     struct Node {
-        Vec3 lower, upper;        // bounds, in scene coordinates
+        Vec3 lower, upper;        // bounds, relative to the Bvh's origin
         std::uint32_t first = 0;  // inner: index of the left child (the right one follows it);
                                   // leaf: first entry in `items`
         std::uint32_t count = 0;  // leaf: number of items; 0 for an inner node
     };
     std::vector<Node> nodes;          // nodes[0] is the root (absent for an empty scene)
     std::vector<std::uint32_t> items;  // object index, with CLR_TILE_BILLBOARD for billboards
+    // What the bounds are relative to: the frame's impostor_origin(), so that placed impostors
+    // (relative to their eye) are bounded exactly; (0, 0, 0) for a scene without them.
+    Vec3 origin;
 };
 
 Bvh build_bvh(const FrameGeometry& frame);

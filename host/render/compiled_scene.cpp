@@ -137,7 +137,9 @@ void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Ve
             image = billboard.image.get();
             texture = texture_of(billboard, compiled);
         }
-        compiled.billboards[i] = compile_billboard(billboard, texture, origin);
+        // Placed relative to the key's eye: with that eye as `origin` (as the renderer has it)
+        // the corners go to float as they were placed, exactly.
+        compiled.billboards[i] = compile_billboard(billboard, texture, origin - frame.billboard_origin(i));
     }
     compiled.info.sun = to_float4(scene.sun_location - origin);
     compiled.info.billboard_count = static_cast<int>(compiled.billboards.size());

@@ -56,9 +56,12 @@ void place_impostor(const Impostor& impostor, const PlacementCamera& camera, Bil
     Facing3 frame = impostor.facing == Facing::Upright ? upright_frame(to_eye, camera) : free_frame(to_eye, camera);
     Vec3 half_right = frame.r * (impostor.width / 2);
     Vec3 half_up = frame.s * (impostor.height / 2);
-    placed.upper_left = impostor.center - half_right + half_up;
-    placed.upper_right = impostor.center + half_right + half_up;
-    placed.lower_left = impostor.center - half_right - half_up;
+    // Relative to the eye, as the reference places them (reference/eye_relative.h): the centre
+    // less the eye is exact near the eye, and so are the corners built on it.
+    Vec3 center = impostor.center - camera.eye;
+    placed.upper_left = center - half_right + half_up;
+    placed.upper_right = center + half_right + half_up;
+    placed.lower_left = center - half_right - half_up;
     int view = choose_view(impostor, camera);
     const Image* shown = view >= 0 ? impostor.views[static_cast<std::size_t>(view)].image.get() : nullptr;
     // Copying a shared_ptr is an atomic increment and its release an atomic decrement: with

@@ -40,13 +40,13 @@ void ObjectBounds::widen(PixelBounds& bounds, double x, double y, double depth) 
     bounds.row_max = std::max(bounds.row_max, row);
 }
 
-// Widens `bounds` by the projection of `point`. A point less than a small fraction of the
-// scene's distance in front of the eye counts as behind it. An object whose points are all
-// clearly behind the eye plane (by more than float rounding could move them) is never met:
-// every primary ray travels forwards, so every hit has a positive depth, and so would any
-// point of the object's convex hull that a ray could reach.
-void ObjectBounds::add(const Vec3& point, PixelBounds& bounds) const {
-    Vec3 rel = point - eye_;
+// Widens `bounds` by the projection of `point`, seen from `eye` (in the point's coordinates). A
+// point less than a small fraction of the scene's distance in front of the eye counts as behind
+// it. An object whose points are all clearly behind the eye plane (by more than float rounding
+// could move them) is never met: every primary ray travels forwards, so every hit has a
+// positive depth, and so would any point of the object's convex hull that a ray could reach.
+void ObjectBounds::add(const Vec3& point, const Vec3& eye, PixelBounds& bounds) const {
+    Vec3 rel = point - eye;
     double depth = dot(rel, forward_);
     if (!(depth < -1e-6 * length(rel))) bounds.in_front = true;
     if (!(depth > 1e-7 * length(rel))) {
@@ -61,11 +61,11 @@ void ObjectBounds::add(const Vec3& point, PixelBounds& bounds) const {
 // its apex moved back by a small fraction of the polygon's distance, more than float rounding
 // of the kernels' positions could move it. A polygon that comes that close to the eye covers
 // the whole screen. For objects that reach behind the eye plane.
-void ObjectBounds::add_clipped(const Vec3* corners, int count, PixelBounds& bounds) const {
+void ObjectBounds::add_clipped(const Vec3* corners, int count, const Vec3& eye, PixelBounds& bounds) const {
     std::vector<ViewPoint> polygon;
     double distance = 0;
     for (int i = 0; i < count; ++i) {
-        Vec3 rel = corners[i] - eye_;
+        Vec3 rel = corners[i] - eye;
         polygon.push_back({dot(rel, right_scaled_), dot(rel, up_scaled_), dot(rel, forward_)});
         distance = std::max(distance, length(rel));
     }
@@ -112,7 +112,7 @@ PixelBounds ObjectBounds::sphere(const Sphere& sphere) const {
     auto corner = [&](int bits) {
         return sphere.center + Vec3{bits & 1 ? r : -r, bits & 2 ? r : -r, bits & 4 ? r : -r};
     };
-    for (int bits = 0; bits < 8; ++bits) add(corner(bits), bounds);
+    for (int bits = 0; bits < 8; ++bits) add(corner(bits), eye_, bounds);
     if (!reaches_behind_eye(bounds)) return bounds;
     // Reaching behind the eye: the box's faces are clipped (a ray from outside the box enters
     // through one; from inside, every direction meets one).
@@ -121,21 +121,22 @@ PixelBounds ObjectBounds::sphere(const Sphere& sphere) const {
         const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
         for (int side : {0, 1 << axis}) {
             const std::array<Vec3, 4> face = {corner(side), corner(side | u), corner(side | u | v), corner(side | v)};
-            add_clipped(face.data(), 4, bounds);
+            add_clipped(face.data(), 4, eye_, bounds);
         }
     }
     return bounds;
 }
 
-PixelBounds ObjectBounds::billboard(const Billboard& billboard) const {
+PixelBounds ObjectBounds::billboard(const Billboard& billboard, const Vec3& corners_origin) const {
+    const Vec3 eye = eye_ - corners_origin;  // zero for impostors placed for this eye: exact
     PixelBounds bounds;
     const std::array<Vec3, 4> corners = {billboard.upper_left, billboard.upper_right,
                                          billboard.upper_right + (billboard.lower_left - billboard.upper_left),
                                          billboard.lower_left};
-    for (const Vec3& corner : corners) add(corner, bounds);
+    for (const Vec3& corner : corners) add(corner, eye, bounds);
     if (reaches_behind_eye(bounds)) {
         bounds = {};
-        add_clipped(corners.data(), 4, bounds);
+        add_clipped(corners.data(), 4, eye, bounds);
     }
     return bounds;
 }
@@ -144,9 +145,9 @@ double ObjectBounds::sphere_distance(const Sphere& sphere) const {
     return std::max(0.0, length(sphere.center - eye_) - sphere.radius);
 }
 
-double ObjectBounds::billboard_distance(const Billboard& billboard) const {
+double ObjectBounds::billboard_distance(const Billboard& billboard, const Vec3& corners_origin) const {
     Vec3 normal = normalize(cross(billboard.upper_right - billboard.upper_left, billboard.lower_left - billboard.upper_left));
-    return std::fabs(dot(eye_ - billboard.upper_left, normal));
+    return std::fabs(dot((eye_ - corners_origin) - billboard.upper_left, normal));
 }
 
 }  // namespace clr

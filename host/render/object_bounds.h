@@ -28,16 +28,17 @@ public:
 
     // A sphere lies inside its axis-aligned box, whose projection bounds the sphere's.
     PixelBounds sphere(const Sphere& sphere) const;
-    // A parallelogram projects inside the hull of its corners.
-    PixelBounds billboard(const Billboard& billboard) const;
+    // A parallelogram projects inside the hull of its corners, which are relative to
+    // `corners_origin` ((0, 0, 0): in scene coordinates; FrameGeometry::billboard_origin).
+    PixelBounds billboard(const Billboard& billboard, const Vec3& corners_origin) const;
 
     // No hit on the sphere is nearer than its surface, none on a billboard nearer than its plane.
     double sphere_distance(const Sphere& sphere) const;
-    double billboard_distance(const Billboard& billboard) const;
+    double billboard_distance(const Billboard& billboard, const Vec3& corners_origin) const;
 
 private:
-    void add(const Vec3& point, PixelBounds& bounds) const;
-    void add_clipped(const Vec3* corners, int count, PixelBounds& bounds) const;
+    void add(const Vec3& point, const Vec3& eye, PixelBounds& bounds) const;
+    void add_clipped(const Vec3* corners, int count, const Vec3& eye, PixelBounds& bounds) const;
     void widen(PixelBounds& bounds, double x, double y, double depth) const;
     bool box_clearly_in_front(const Vec3& center, double half_size) const;
 

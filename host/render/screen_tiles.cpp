@@ -77,9 +77,10 @@ std::optional<Placed> place(const FrameGeometry& frame, std::size_t index, const
         pixels = bounds.sphere(sphere);
     } else {
         const Billboard& billboard = frame.billboard(index - spheres);
+        const Vec3 corners_origin = frame.billboard_origin(index - spheres);
         item = static_cast<std::uint32_t>(index - spheres) | CLR_TILE_BILLBOARD;
-        nearest = bounds.billboard_distance(billboard);
-        pixels = bounds.billboard(billboard);
+        nearest = bounds.billboard_distance(billboard, corners_origin);
+        pixels = bounds.billboard(billboard, corners_origin);
     }
     Placed placed;
     if (!tile_range(pixels, tiles, camera.width, camera.height, pixel_margin(camera.samples), placed.range, placed.rows))

@@ -24,8 +24,8 @@ std::shared_ptr<Image> checker(int size) {
 }
 
 // A lit sphere, its shadow, a mirror, a textured billboard of 16x16 texels half a unit wide and
-// (with `impostor`) an upright impostor, around `origin`; the sun and eye are within 30 units.
-Scene world_at(const Vec3& origin, bool with_impostor = true) {
+// an upright impostor, around `origin`; the sun and eye are within 30 units.
+Scene world_at(const Vec3& origin) {
     const auto at = [&](double x, double y, double z) { return origin + Vec3{x, y, z}; };
     Scene scene = testing::make_scene(at(0.5, 1.25, 8), origin, {0, 1, 0}, 50, 160, 120);
     scene.has_sun = true;
@@ -34,7 +34,6 @@ Scene world_at(const Vec3& origin, bool with_impostor = true) {
     scene.spheres.push_back(testing::make_sphere(at(0.75, 1.5, 0.625), 0.375, {0.2, 0.9, 0.4}));
     scene.spheres.push_back(testing::make_sphere(at(-2.25, 0, 0.5), 0.75, {0, 0, 0}, true));
     scene.billboards.push_back(testing::make_billboard(at(-4, 3, -3), at(-4, -2, -3), at(4, 3, -3), {0, 0, 0}, checker(16)));
-    if (!with_impostor) return scene;
     Impostor impostor;
     impostor.center = at(2.5, 0.25, -0.5);
     impostor.width = 1;
@@ -77,12 +76,12 @@ TEST(FarFromOrigin, ReferenceDrawsTheSamePictureAnywhereInRange) {
 }
 
 // The project's usual tolerance between the kernels and the reference (Stress tests): at most
-// 0.1% of the pixels differ by more than 1/255. Without the impostor: the kernels place
-// impostors in scene coordinates (host/render/impostor_placement), so near 1e15 their corners
-// are rounded to 1/8 and its outline moves by a pixel or so.
+// 0.1% of the pixels differ by more than 1/255. The impostor included: the host places it
+// relative to the eye (host/render/impostor_placement); in scene coordinates its corners near
+// 1e15 were rounded to 1/8, and its outline moved by a pixel or so.
 TEST(FarFromOrigin, KernelsMatchTheReferenceAnywhereInRange) {
     for (const Vec3& offset : far_offsets()) {
-        const Scene moved = world_at(offset, false);
+        const Scene moved = world_at(offset);
         const testing::ImageComparison comparison =
             testing::compare_images(testing::render_with_kernels(moved), testing::render_with_reference(moved));
         EXPECT_LE(comparison.differing_fraction(), 0.001)

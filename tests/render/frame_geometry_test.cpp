@@ -40,6 +40,10 @@ TEST(FrameGeometry, SceneBillboardsThenImpostorsPlacedForTheKey) {
     EXPECT_EQ(frame.object_count(), 4u);
     EXPECT_EQ(frame.first_impostor(), 1u);
     EXPECT_TRUE(same_corners(frame.billboard(0), scene.billboards[0]));
+    EXPECT_EQ(frame.billboard_origin(0), Vec3(0, 0, 0)) << "the scene's billboards are in scene coordinates";
+    EXPECT_EQ(frame.impostor_origin(), key.eye);
+    EXPECT_EQ(frame.billboard_origin(1), key.eye) << "impostors are placed relative to the key's eye";
+    EXPECT_EQ(frame.billboard_origin(2), key.eye);
     PlacementCamera camera(key, scene.up);
     EXPECT_TRUE(same_corners(frame.billboard(1), place_impostor(scene.impostors[0], camera)));
     EXPECT_TRUE(same_corners(frame.billboard(2), place_impostor(scene.impostors[1], camera)));
@@ -48,6 +52,7 @@ TEST(FrameGeometry, SceneBillboardsThenImpostorsPlacedForTheKey) {
     frame.place_impostors(other);
     EXPECT_TRUE(same_corners(frame.billboard(1), place_impostor(scene.impostors[0], PlacementCamera(other, scene.up))));
     EXPECT_FALSE(same_corners(frame.billboard(1), place_impostor(scene.impostors[0], camera))) << "it must turn";
+    EXPECT_EQ(frame.billboard_origin(2), other.eye);
 }
 
 

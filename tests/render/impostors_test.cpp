@@ -8,6 +8,7 @@
 #include <set>
 #include <utility>
 
+#include "reference/eye_relative.h"
 #include "reference/impostors.h"
 #include "reference/reference.h"
 #include "scene/camera_path.h"
@@ -65,6 +66,14 @@ void expect_matches_reference(const Image& kernel, const Image& reference, const
 // ---------------------------------------------------------------------------------------
 // Placement on the host, against the reference's
 
+// The reference's placement of `impostor` for a camera at `key`, relative to the eye as the
+// reference traces it (reference/eye_relative.h), and so as the host places it.
+Billboard reference_placement(const Impostor& impostor, Scene scene, const CameraKey& key) {
+    scene.impostors = {impostor};
+    const reference::EyeRelative relative = reference::relative_to_eye(scene, reference::camera_of(scene, key));
+    return reference::place_impostor(relative.scene.impostors[0], relative.camera, scene.up);
+}
+
 TEST(ImpostorPlacement, HostPlacementEqualsTheReferencesForRandomCameras) {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> coordinate(-20, 20);
@@ -80,9 +89,9 @@ TEST(ImpostorPlacement, HostPlacementEqualsTheReferencesForRandomCameras) {
         reference::CameraFrame camera = reference::camera_of(scene, key);
         PlacementCamera placement(key, scene.up);
         Billboard host = place_impostor(impostor, placement);
-        Billboard expected = reference::place_impostor(impostor, camera, scene.up);
+        Billboard expected = reference_placement(impostor, scene, key);
         for (auto corner : {&Billboard::upper_left, &Billboard::upper_right, &Billboard::lower_left})
-            EXPECT_LT(length(host.*corner - expected.*corner), 1e-12 * (1 + length(impostor.center))) << "trial " << trial;
+            EXPECT_LT(length(host.*corner - expected.*corner), 1e-12 * (1 + length(impostor.center - key.eye))) << "trial " << trial;
         EXPECT_EQ(choose_view(impostor, placement), reference::chosen_view(impostor, camera)) << "trial " << trial;
         EXPECT_EQ(host.image, expected.image);
     }
@@ -95,10 +104,35 @@ TEST(ImpostorPlacement, DegenerateEyesFollowTheDocumentedFallbacks) {
         for (const CameraKey& key : {CameraKey{{1, 9, 3}, {1.5, 2, 2}}, CameraKey{{1, 2, 3}, {0, 2, 0}}}) {
             Scene scene = impostor_scene(key.eye, key.lookat);
             Billboard host = place_impostor(impostor, PlacementCamera(key, scene.up));
-            Billboard expected = reference::place_impostor(impostor, reference::camera_of(scene, key), scene.up);
+            Billboard expected = reference_placement(impostor, scene, key);
             EXPECT_LT(length(host.upper_left - expected.upper_left), 1e-12);
             EXPECT_LT(length(host.upper_right - expected.upper_right), 1e-12);
             EXPECT_LT(length(host.lower_left - expected.lower_left), 1e-12);
+        }
+    }
+}
+
+// Placed relative to the eye, corners are exact near it wherever the scene lies: the same
+// impostor and camera moved by up to the documented 1e15 (by multiples of 1/8, so that every
+// position stays exact) give the same corners bit for bit, and the same view. In scene
+// coordinates, corners near 1e15 are rounded to 1/8.
+TEST(ImpostorPlacement, CornersRelativeToTheEyeAreTheSameAnywhereInRange) {
+    for (Facing facing : {Facing::Upright, Facing::Free}) {
+        const Impostor near = four_view_impostor({2.5, 0.25, -0.5}, facing);
+        const CameraKey near_key{{0.5, 1.25, 8}, {0, 0.5, 0}};
+        const PlacementCamera near_camera(near_key, {0, 1, 0});
+        const Billboard expected = place_impostor(near, near_camera);
+        for (double size : {1e6, 1e9, 1e12, 1e15 - 64}) {
+            for (const Vec3& offset : {Vec3{size, 0, 0}, Vec3{size, -size, size}, Vec3{-size, size, -size}}) {
+                Impostor moved = near;
+                moved.center = near.center + offset;
+                const PlacementCamera camera(CameraKey{near_key.eye + offset, near_key.lookat + offset}, {0, 1, 0});
+                const Billboard placed = place_impostor(moved, camera);
+                EXPECT_EQ(placed.upper_left, expected.upper_left) << "offset " << size;
+                EXPECT_EQ(placed.upper_right, expected.upper_right) << "offset " << size;
+                EXPECT_EQ(placed.lower_left, expected.lower_left) << "offset " << size;
+                EXPECT_EQ(choose_view(moved, camera), choose_view(near, near_camera)) << "offset " << size;
+            }
         }
     }
 }
