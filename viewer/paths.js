@@ -53,7 +53,7 @@ class ClrenderPaths {
   }
 
   async post(path) {
-    const response = await fetch(`${path}?token=${encodeURIComponent(this.viewer.token)}`, {
+    const response = await fetch(clrenderAddress(path, this.viewer.token), {
       method: "POST", headers: { "Content-Type": "application/json" }, body: this.body(),
     });
     if (!response.ok) throw new Error(await clrenderErrorText(response));
@@ -130,8 +130,7 @@ class ClrenderPaths {
     try {
       const { job } = await this.post("render-video");
       for (;;) {
-        const response = await fetch(`job?token=${encodeURIComponent(this.viewer.token)}&id=${encodeURIComponent(job)}`,
-                                     { cache: "no-store" });
+        const response = await fetch(clrenderAddress("job", this.viewer.token, { id: job }), { cache: "no-store" });
         if (!response.ok) throw new Error(await clrenderErrorText(response));
         const state = await response.json();
         if (state.total > 0) { this.progress.max = state.total; this.progress.value = state.done; }

@@ -54,7 +54,7 @@
 
   async function start() {
     try {
-      const response = await fetch(`scene.json?token=${encodeURIComponent(token)}`, { cache: "no-store" });
+      const response = await fetch(clrenderAddress("scene.json", token), { cache: "no-store" });
       if (!response.ok) throw new Error(await clrenderErrorText(response));
       scene = await response.json();
     } catch (error) {

@@ -522,6 +522,21 @@ class ViewerPage(unittest.TestCase):
         self.reset()
         self.assertEqual(self.camera()["fov"], before["fov"])
 
+    def test_p_the_page_works_on_the_cookie_alone(self):
+        # Opened once with the token, the page works from the bare address too (the cookie).
+        try:
+            self.driver.get(self.viewer.base)
+            self.wait_still()
+            scene = self.viewer.scene()
+            self.assert_same_image(self.frame_png(scene["camera"]), self.canvas_pixels(), "the page without the token")
+            self.driver.find_element("id", "record").click()
+            self.driver.find_element("id", "export").click()
+            text = self.wait_until("return document.getElementById('path-json').value", what="the export")
+            self.assertEqual(json.loads(text)["eyeLocations"], [scene["camera"]["eye"]])
+        finally:
+            self.driver.find_element("id", "clear-keys").click()
+            self.load(self.viewer)
+
 
 def main():
     global BINARY, SOURCE_DIR
