@@ -47,7 +47,12 @@ class ViewerPage(unittest.TestCase):
         cls.viewer = Viewer(BINARY, cls.scene_path,
                             ["--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", str(SPP), "--output-dir", cls.work.name],
                             cwd=cls.work.name)
-        cls.driver = open_browser()
+        try:
+            cls.driver = open_browser()
+        except BaseException:
+            cls.viewer.stop()  # no server left behind when the browser cannot start
+            cls.work.cleanup()
+            raise
         cls.driver.set_script_timeout(60)
         cls.load(cls.viewer)
 
