@@ -47,18 +47,19 @@ class ViewerPage(unittest.TestCase):
         cls.viewer = Viewer(BINARY, cls.scene_path,
                             ["--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", str(SPP), "--output-dir", cls.work.name],
                             cwd=cls.work.name)
+        cls.driver = None
         try:
             cls.driver = open_browser()
+            cls.driver.set_script_timeout(60)
+            cls.load(cls.viewer)
         except BaseException:
-            cls.viewer.stop()  # no server left behind when the browser cannot start
-            cls.work.cleanup()
+            cls.tearDownClass()  # unittest does not when setUpClass fails: no server left behind
             raise
-        cls.driver.set_script_timeout(60)
-        cls.load(cls.viewer)
 
     @classmethod
     def tearDownClass(cls):
-        cls.driver.quit()
+        if cls.driver is not None:
+            cls.driver.quit()
         cls.viewer.stop()
         cls.work.cleanup()
 
