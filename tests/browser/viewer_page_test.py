@@ -292,6 +292,9 @@ class ViewerPage(unittest.TestCase):
         self.assertEqual(int(share.get_attribute("data-off")), len(changed), text)
         self.assertEqual(int(share.get_attribute("data-total")), width * height)
         self.assertTrue(text.startswith(f"{100 * len(changed) / (width * height):.2f}%"), text)
+        comparison = self.driver.execute_script("return window.clrenderViewer.comparison()")
+        self.assertEqual((comparison["off"], comparison["total"]), (len(changed), width * height))
+        self.assertEqual(comparison["worst"], 40)
         # The heat map marks exactly the changed pixels.
         heat_width, heat_height, heat = self.canvas_pixels("diff")
         self.assertEqual((heat_width, heat_height), (width, height))
