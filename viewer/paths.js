@@ -74,8 +74,9 @@ class ClrenderPaths {
     if (this.keys.length === 0) return;
     const settings = (this.exported && this.exported.clrender) || {};
     const perSegment = settings.frames_per_segment || 10;
-    const frameCount = settings.frames || (this.keys.length - 1) * perSegment + 1;
     const fps = settings.fps || 24;
+    const frameCount = settings.frames || (settings.duration ? Math.round(settings.duration * fps) : 0) ||
+                       (this.keys.length - 1) * perSegment + 1;
     const keys = this.keys.map((key) => ClrenderCamera.copy(key));
     const start = performance.now();
     document.getElementById("play").textContent = "Stop";
@@ -83,7 +84,7 @@ class ClrenderPaths {
     const step = () => {
       const k = Math.min(frameCount - 1, Math.floor((performance.now() - start) * fps / 1000));
       // (the live view shows as many of these cameras as it can render; none is queued)
-      this.viewer.setCamera(ClrenderCamera.alongKeys(keys, k, frameCount), null);
+      this.viewer.setCamera(ClrenderCamera.alongKeys(keys, k, frameCount, settings.interpolation), null);
       if (k >= frameCount - 1) { this.stop(); return; }
       this.playTimer = requestAnimationFrame(step);
     };

@@ -371,6 +371,20 @@ class ViewerPage(unittest.TestCase):
             run_clrender(path, "--frames", str(frame), "-o", batch, "--size", f"{SIZE[0]}x{SIZE[1]}",
                          "--spp", str(SPP))
             self.assert_same_image(shown, read_png(batch), "the path slider's frame is not the batch render's")
+            # The page's own Catmull-Rom (its playback of exported paths) places frame 7 where
+            # clrender does: the eye --explain-pixel prints for that frame (9 digits).
+            placed = self.driver.execute_script(
+                "const keys = arguments[0].map((eye) => ({eye, lookat: [0, 1, 0], up: [0, 1, 0], fov: 60}));"
+                "return ClrenderCamera.alongKeys(keys, arguments[1], 21, 'catmull-rom').eye",
+                scene["eyeLocations"], frame)
+            explained = run_clrender(path, "--frames", str(frame), "--explain-pixel", "0,0", "--size", "8x8")
+            eye = [float(x) for x in re.search(r"Eye = \(([^)]*)\)", explained).group(1).split(",")]
+            for a, b in zip(placed, eye):
+                self.assertAlmostEqual(a, b, delta=1e-7 * max(1.0, abs(b)))
+            linear = self.driver.execute_script(
+                "const keys = arguments[0].map((eye) => ({eye, lookat: [0, 1, 0], up: [0, 1, 0], fov: 60}));"
+                "return ClrenderCamera.alongKeys(keys, arguments[1], 21, 'linear').eye", scene["eyeLocations"], frame)
+            self.assertGreater(max(abs(a - b) for a, b in zip(linear, eye)), 1e-3, "the check cannot tell the curves apart")
         finally:
             self.load(self.viewer)
             viewer.stop()
