@@ -10,6 +10,7 @@ import tempfile
 import time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(root, "tests", "browser"))
 import png_io  # noqa: E402
 from viewer_session import Viewer, camera_params, open_browser  # noqa: E402

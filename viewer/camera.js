@@ -11,7 +11,6 @@ const ClrenderCamera = (() => {
   const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
   const length = (a) => Math.sqrt(dot(a, a));
   const unit = (a) => { const l = length(a); return l > 0 ? scale(a, 1 / l) : [0, 0, 0]; };
-  const lerp = (a, b, t) => add(a, scale(sub(b, a), t));
 
   // Rodrigues' rotation of v about the unit axis k by angle radians.
   function rotate(v, k, angle) {
@@ -71,18 +70,45 @@ const ClrenderCamera = (() => {
 
   function distance(camera) { return length(sub(camera.eye, camera.lookat)); }
 
-  // The camera of frame k of an animation through keys with linear interpolation, as clrender
-  // places it (docs/scene-format.md, Extensions): frame k of F lies at s = k (N - 1) / (F - 1).
-  function alongKeys(keys, k, frameCount) {
+  // The interpolation of clrender's camera paths (host/scene/camera_path.cpp), step for step:
+  // frame k of F lies numerator / denominator of the way from key `segment` to the next, in
+  // whole numbers, so that a frame on a key is that key exactly.
+  const lerpExact = (a, b, numerator, denominator) => a.map((x, i) => x + ((b[i] - x) * numerator) / denominator);
+  const lerpKnots = (a, ta, b, tb, t) => a.map((x, i) => (x * (tb - t) + b[i] * (t - ta)) / (tb - ta));
+  const knotInterval = (from, to) => Math.sqrt(length(sub(to, from)));
+  const same = (a, b) => a[0] === b[0] && a[1] === b[1] && a[2] === b[2];
+
+  // The centripetal Catmull-Rom segment from p1 (u = 0) to p2 (u = 1), Barry-Goldman's pyramid.
+  function centripetalCatmullRom(p0, p1, p2, p3, u) {
+    const t0 = 0, t1 = t0 + knotInterval(p0, p1), t2 = t1 + knotInterval(p1, p2), t3 = t2 + knotInterval(p2, p3);
+    const t = t1 + u * (t2 - t1);
+    const a1 = lerpKnots(p0, t0, p1, t1, t), a2 = lerpKnots(p1, t1, p2, t2, t), a3 = lerpKnots(p2, t2, p3, t3, t);
+    const b1 = lerpKnots(a1, t0, a2, t2, t), b2 = lerpKnots(a2, t1, a3, t3, t);
+    return lerpKnots(b1, t1, b2, t2, t);
+  }
+
+  // One point curve (eyes or look-at points) at a path position, neighbours mirrored at the
+  // ends and where they coincide with a key, as clrender does.
+  function pointOnPath(points, segment, numerator, denominator, interpolation) {
+    const from = points[segment], to = points[segment + 1];
+    if (numerator === 0) return from.slice();
+    if (interpolation !== "catmull-rom" || same(from, to)) return lerpExact(from, to, numerator, denominator);
+    const mirror = (p, q) => p.map((x, i) => 2.0 * x - q[i]);
+    const before = segment === 0 || same(points[segment - 1], from) ? mirror(from, to) : points[segment - 1];
+    const after = segment + 2 >= points.length || same(points[segment + 2], to) ? mirror(to, from) : points[segment + 2];
+    return centripetalCatmullRom(before, from, to, after, numerator / denominator);
+  }
+
+  // The camera of frame k of F of an animation through keys ("linear" or "catmull-rom").
+  function alongKeys(keys, k, frameCount, interpolation = "linear") {
     if (keys.length === 1 || frameCount < 2) return copy(keys[0]);
-    if (k >= frameCount - 1) return copy(keys[keys.length - 1]);  // exactly the last key
-    const s = k * (keys.length - 1) / (frameCount - 1);
-    const i = Math.min(keys.length - 2, Math.floor(s));
-    const t = s - i;
-    if (t === 0) return copy(keys[i]);
-    const next = copy(keys[i]);
-    next.eye = lerp(keys[i].eye, keys[i + 1].eye, t);
-    next.lookat = lerp(keys[i].lookat, keys[i + 1].lookat, t);
+    const denominator = frameCount - 1;
+    const scaled = k * (keys.length - 1);
+    const segment = Math.floor(scaled / denominator), numerator = scaled % denominator;
+    if (segment >= keys.length - 1) return copy(keys[keys.length - 1]);
+    const next = copy(keys[segment]);
+    next.eye = pointOnPath(keys.map((key) => key.eye), segment, numerator, denominator, interpolation);
+    next.lookat = pointOnPath(keys.map((key) => key.lookat), segment, numerator, denominator, interpolation);
     return next;
   }
 

@@ -25,6 +25,15 @@ function clrenderFrameQuery(token, camera, size, spp, frame) {
   return params.toString();
 }
 
+// A request's address with the page's token, when its address had one; without one the
+// cookie the server set with the page stands in (an empty token= would be a wrong token).
+function clrenderAddress(path, token, params = {}) {
+  const query = new URLSearchParams(params);
+  if (token) query.set("token", token);
+  const text = query.toString();
+  return text ? `${path}?${text}` : path;
+}
+
 // The text of a failed response: the server answers errors as JSON {"error": ...} or text.
 async function clrenderErrorText(response) {
   const text = await response.text();

@@ -53,7 +53,7 @@ class ClrenderPaths {
   }
 
   async post(path) {
-    const response = await fetch(`${path}?token=${encodeURIComponent(this.viewer.token)}`, {
+    const response = await fetch(clrenderAddress(path, this.viewer.token), {
       method: "POST", headers: { "Content-Type": "application/json" }, body: this.body(),
     });
     if (!response.ok) throw new Error(await clrenderErrorText(response));
@@ -74,8 +74,9 @@ class ClrenderPaths {
     if (this.keys.length === 0) return;
     const settings = (this.exported && this.exported.clrender) || {};
     const perSegment = settings.frames_per_segment || 10;
-    const frameCount = settings.frames || (this.keys.length - 1) * perSegment + 1;
     const fps = settings.fps || 24;
+    const frameCount = settings.frames || (settings.duration ? Math.round(settings.duration * fps) : 0) ||
+                       (this.keys.length - 1) * perSegment + 1;
     const keys = this.keys.map((key) => ClrenderCamera.copy(key));
     const start = performance.now();
     document.getElementById("play").textContent = "Stop";
@@ -83,7 +84,7 @@ class ClrenderPaths {
     const step = () => {
       const k = Math.min(frameCount - 1, Math.floor((performance.now() - start) * fps / 1000));
       // (the live view shows as many of these cameras as it can render; none is queued)
-      this.viewer.setCamera(ClrenderCamera.alongKeys(keys, k, frameCount), null);
+      this.viewer.setCamera(ClrenderCamera.alongKeys(keys, k, frameCount, settings.interpolation), null);
       if (k >= frameCount - 1) { this.stop(); return; }
       this.playTimer = requestAnimationFrame(step);
     };
@@ -130,8 +131,7 @@ class ClrenderPaths {
     try {
       const { job } = await this.post("render-video");
       for (;;) {
-        const response = await fetch(`job?token=${encodeURIComponent(this.viewer.token)}&id=${encodeURIComponent(job)}`,
-                                     { cache: "no-store" });
+        const response = await fetch(clrenderAddress("job", this.viewer.token, { id: job }), { cache: "no-store" });
         if (!response.ok) throw new Error(await clrenderErrorText(response));
         const state = await response.json();
         if (state.total > 0) { this.progress.max = state.total; this.progress.value = state.done; }

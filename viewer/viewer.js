@@ -54,7 +54,7 @@
 
   async function start() {
     try {
-      const response = await fetch(`scene.json?token=${encodeURIComponent(token)}`, { cache: "no-store" });
+      const response = await fetch(clrenderAddress("scene.json", token), { cache: "no-store" });
       if (!response.ok) throw new Error(await clrenderErrorText(response));
       scene = await response.json();
     } catch (error) {
@@ -90,7 +90,11 @@
     const sceneCamera = fromScene(scene.camera);
     api.setCamera(sceneCamera, frames > 1 ? 0 : null);
     new ClrenderPaths(api);
-    new ClrenderCompare(api);
+    const compare = new ClrenderCompare(api);
+    api.comparison = () => (compare.result
+      ? { off: compare.result.off, total: compare.result.total, share: compare.result.off / compare.result.total,
+          worst: compare.result.worst, worstAt: [compare.result.worstX, compare.result.worstY] }
+      : null);
     wireInput(sceneCamera, frames);
     setInterval(showFps, 250);  // and as the last second's images age out
     api.ready = true;
