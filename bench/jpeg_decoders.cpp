@@ -1,7 +1,7 @@
 // stb_image against libjpeg-turbo on JPEG files: decode time (best of several runs) and how far
 // their pixels differ, with libjpeg's smooth upsampling of subsampled chroma (as clrender decodes)
 // and without it. The figures behind clrender's choice of JPEG decoder (docs/benchmarks.md,
-// Figures behind design choices: JPEG decoder). Usage: clrender_jpeg_bench FILE.jpg...
+// Figures behind design choices). Usage: clrender_jpeg_bench FILE.jpg...
 #include <cstddef>
 #include <cstdio>
 #include <jpeglib.h>
