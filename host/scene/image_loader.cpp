@@ -318,7 +318,7 @@ bool png_has_alpha_channel(const Bytes& bytes) {
     return false;
 }
 
-// libjpeg-turbo's peak, measured (docs/benchmarks.md, JPEG decoder): the RGBA output, 4 bytes
+// libjpeg-turbo's peak, measured (docs/benchmarks.md, Figures behind design choices): the RGBA output, 4 bytes
 // a pixel, and for a file of several scans (progressive) its whole coefficients, 2 bytes each,
 // as many a pixel as the components' samples (1.5 for 4:2:0 colour, 3 for 4:4:4, 4 for CMYK).
 // A single-scan file needs only a few rows of them; it is costed as the larger all the same.

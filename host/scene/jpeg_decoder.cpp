@@ -90,7 +90,7 @@ bool run_decoder(jpeg_decompress_struct& info, ErrorState& state, const std::vec
     const bool cmyk = info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK;
     info.out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;  // RGBA with alpha 255 for grey and colour
     // Closest to stb_image: the accurate integer IDCT and smooth (triangular) upsampling of
-    // subsampled chroma (docs/benchmarks.md, JPEG decoder).
+    // subsampled chroma (docs/benchmarks.md, Figures behind design choices).
     info.dct_method = JDCT_ISLOW;
     info.do_fancy_upsampling = TRUE;
     jpeg_start_decompress(&info);

@@ -1,4 +1,4 @@
-// JPEG decoding with libjpeg-turbo (docs/scene-format.md, Billboard images). libjpeg reports
+// JPEG decoding with libjpeg-turbo (docs/scene-format.md, Images). libjpeg reports
 // errors by longjmp; everything here keeps that inside C-style code and turns it into an
 // ImageError, so that no C++ object is skipped and nothing leaks.
 #pragma once

@@ -76,7 +76,7 @@ TEST(JpegVariants, ArithmeticCodedDecodesToTheHuffmanCodedPixels) {
 
 // stb_image, clrender's JPEG decoder before libjpeg-turbo, as the independent reference: the
 // two IDCTs round differently, but with libjpeg's smooth chroma upsampling (as stb does) no
-// sample is more than a few steps off (docs/benchmarks.md, JPEG decoder). Without it, edges
+// sample is more than a few steps off (docs/benchmarks.md, Figures behind design choices). Without it, edges
 // in subsampled chroma are off by up to about a hundred.
 TEST(JpegVariants, PixelsStayWithinAFewStepsOfStb) {
     TempFolder folder;
