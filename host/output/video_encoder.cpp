@@ -59,16 +59,16 @@ std::string decimal(double value) {
 
 // x264's preset and threads (docs/animation.md, MP4 encoding). Preset veryfast took a third of
 // preset medium's CPU time for the forest flight, where medium's had exceeded the renderer's
-// own, for a file as large and a little lower quality at the same CRF. x264 gets as many
-// threads as clrender may use CPUs: whenever the renderer waits for the encoder (x264 is the
-// slower of the two on most scenes) every CPU is idle but x264's, and the renderer's kernel
-// shares the CPUs with it while it runs. Half the CPUs left the other half idle in those waits;
-// x264's own choice, 1.5 threads for every CPU of the whole machine, oversubscribes a machine
-// shared by taskset or Slurm. (x264's output depends on its thread count: a video is the same
-// bytes run to run on one machine, and on machines with as many usable CPUs.)
+// own, for a file as large and a little lower quality at the same CRF. x264 gets half of the
+// CPUs clrender may use, at least one, instead of its automatic 1.5 threads a CPU of the whole
+// machine: the renderer keeps the others. A thread for every CPU was measured too
+// (docs/benchmarks.md, Videos at the speed of the machine) and not kept: it gave no measurable
+// gain on a busy 2-CPU machine, and a video is the same bytes only on machines where x264 has
+// as many threads (its output depends on the count), which half the CPUs keeps true between
+// the 1- and 2-CPU machines of a farm and a desktop.
 constexpr const char* kX264Preset = "veryfast";
 
-int x264_threads() { return usable_cpu_count(); }
+int x264_threads() { return std::max(1, usable_cpu_count() / 2); }
 
 // The frames go to ffmpeg as they are in memory, RGBA, read as "rgb0" (red, green, blue and a
 // byte ffmpeg ignores): no copy that drops alpha first. Its conversion to Y'CbCr (and a GIF's

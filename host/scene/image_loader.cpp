@@ -84,8 +84,10 @@ FileFormat detect_format(const Bytes& bytes) {
 // pixels), so the size is checked from the header, before anything is allocated or decoded.
 // PPM needs no such limit: its raster is stored uncompressed, so a header larger than the
 // file is refused as truncated.
+// Compared by division: a header's two 32-bit sides can multiply past any 64-bit integer. A
+// side of 0 is left to the decoder, which names it.
 void check_pixel_count(long long width, long long height, const char* format_name) {
-    if (width * height <= kMaxImagePixels) return;
+    if (width <= 0 || height <= 0 || width <= kMaxImagePixels / height) return;
     throw ImageError(std::string(format_name) + " image of " + std::to_string(width) + " x " + std::to_string(height) +
                      " pixels is larger than the limit of " + std::to_string(kMaxImagePixels) + " pixels (" +
                      max_square_image_text() + ")");

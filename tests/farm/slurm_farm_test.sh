@@ -51,9 +51,6 @@ cp -r "$source_dir/scenes/demo" "$repo/scenes/demo"
 cd "$repo" || exit 1
 farm() { bash scripts/slurm-render.sh "$@"; }
 one() { "$clrender" "$@" -q; }
-# The same on one CPU, as the final job runs on a node of this cluster (CPUs=1): x264's bytes
-# depend on its thread count, one for every usable CPU (docs/farm.md, How the work is split).
-one_cpu() { taskset -c 0 "$clrender" "$@" -q; }
 
 # The nodes that ran the tasks of a farm folder's logs.
 nodes_of() { sed -n 's/^clrender farm: task [0-9]* on \(node[0-9]*\),.*/\1/p' "$1"/logs/task_*.log | sort -u | tr '\n' ' '; }
@@ -65,7 +62,7 @@ echo "$commands" >quick-start.sh
 echo "--- docs/farm.md, Quick start:"; cat quick-start.sh
 check "the Quick start commands succeed" bash -e quick-start.sh
 
-one_cpu scenes/demo/showcase.json --size 320x180 --spp 4 -o one/frames/f_%04d.png --video one/showcase.mp4
+one scenes/demo/showcase.json --size 320x180 --spp 4 -o one/frames/f_%04d.png --video one/showcase.mp4
 one scenes/demo/demo.json --size 640x360 --spp 4 -o one/demo.png
 check "the farm's video is the one-process video" same_file out/showcase.mp4 one/showcase.mp4
 check "the farm's still is the one-process still" same_file out/demo.png one/demo.png
@@ -129,7 +126,7 @@ echo "--- second run, exit $second_status after ${second_seconds} s:"; cat secon
 [ $second_status -eq 0 ] || fail "the second run finishes the work (exit $second_status)"
 (cd dies/flight.farm/frames && stat -c '%n %i %Y' $(cut -d' ' -f1 ../../../finished-before.txt)) >finished-after.txt
 cmp -s finished-before.txt finished-after.txt || fail "frames finished by the first run were rendered again"
-one_cpu scenes/demo/showcase.json --frames 0-47 --size 640x360 --spp 32 --video one/flight.mp4
+one scenes/demo/showcase.json --frames 0-47 --size 640x360 --spp 32 --video one/flight.mp4
 check "the finished farm's video is the one-process video" same_file dies/flight.mp4 one/flight.mp4
 ls -A dies/flight.farm/frames | grep -q '^\.clrender-' && fail "the dead node's temporary file was left after the rerun"
 echo "farm figures: first run ${first_seconds} s (node1 killed), finishing run ${second_seconds} s, $finished frames kept"

@@ -155,6 +155,10 @@ TEST(ImageSizeLimit, HugeHeadersAreNamedAsTooLarge) {
                                          "\x01\xFF\xD9", 23));
     EXPECT_EQ(refusal(folder.file("wide.jpg")),
               "JPEG image of 65535 x 65535 pixels is larger than the limit of 67108864 pixels (8192 x 8192)");
+    // Sides whose product is beyond 64 bits (the image fuzzer's find) are still only too large.
+    folder.write("widest.png", testing::png_header_only(0xFFFFFFFFu, 0xFFFFFFFFu, 8));
+    EXPECT_EQ(refusal(folder.file("widest.png")),
+              "PNG image of 4294967295 x 4294967295 pixels is larger than the limit of 67108864 pixels (8192 x 8192)");
     // The header alone passes where it is within the limit: the size is not the refusal then.
     folder.write("ok.png", testing::png_header_only(8192, 8192, 8));
     EXPECT_EQ(refusal(folder.file("ok.png")).find("larger than the limit"), std::string::npos);
