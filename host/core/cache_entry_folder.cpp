@@ -11,26 +11,12 @@
 #include <ctime>
 #include <vector>
 
+#include "core/open_file.h"
 #include "core/cache_folder.h"
 #include "core/replacement_file.h"
 
 namespace clr {
 namespace {
-
-// Closes a file descriptor when it goes out of scope.
-class OpenFile {
-public:
-    explicit OpenFile(int descriptor) : descriptor_(descriptor) {}
-    ~OpenFile() {
-        if (descriptor_ >= 0) ::close(descriptor_);
-    }
-    OpenFile(const OpenFile&) = delete;
-    OpenFile& operator=(const OpenFile&) = delete;
-    int get() const { return descriptor_; }
-
-private:
-    int descriptor_;
-};
 
 // Opens an existing file for reading only if it is a regular file: never through a symlink
 // (O_NOFOLLOW), and without blocking on a FIFO planted under an entry's name (O_NONBLOCK).

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/open_file.h"
 #include "core/cache_entry.h"
 
 namespace clr {
@@ -21,21 +22,6 @@ CacheEntryKind program_entries() {
     return {"clbin", {'c', 'l', 'r', 'p', 'r', 'o', 'g', 'm'}, ProgramCache::kFormatVersion,
             ProgramCache::kDefaultSizeLimit};
 }
-
-// Closes a file descriptor when it goes out of scope.
-class OpenFile {
-public:
-    explicit OpenFile(int descriptor) : descriptor_(descriptor) {}
-    ~OpenFile() {
-        if (descriptor_ >= 0) ::close(descriptor_);
-    }
-    OpenFile(const OpenFile&) = delete;
-    OpenFile& operator=(const OpenFile&) = delete;
-    int get() const { return descriptor_; }
-
-private:
-    int descriptor_;
-};
 
 // A regular file, opened without blocking on a FIFO under an entry's name. Symlinks are
 // followed: the store is part of the install, which packagers may lay out with links.
