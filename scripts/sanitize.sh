@@ -44,4 +44,9 @@ export UBSAN_OPTIONS="exitcode=86:halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="exitcode=86:suppressions=$suppressions/lsan.supp:print_suppressions=0"
 
 cd "$build"
-ctest --output-on-failure -j"$(nproc)" "$@"
+# As in scripts/test.sh: a failed test runs once more, and a retried test is named.
+status=0
+mkdir -p Testing
+ctest --output-on-failure -j"$(nproc)" --repeat until-pass:2 "$@" 2>&1 | tee Testing/ctest-output.log || status=$?
+bash "$root/scripts/name-retried-tests.sh" Testing/ctest-output.log
+exit $status
