@@ -1,12 +1,15 @@
 """Starts `clrender view` and a headless Chromium for the browser tests, the screenshot and the
 viewer benchmark. Exit code 77 (CTest's skip) where Chromium, its driver or Selenium is missing."""
+import atexit
 import json
+import os
 import queue
 import re
 import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import urllib.parse
 import urllib.request
@@ -41,7 +44,12 @@ def open_browser(width=1280, height=900):
                      f"--window-size={width},{height}", "--force-device-scale-factor=1",
                      "--disable-background-timer-throttling", "--disable-renderer-backgrounding"):
         options.add_argument(argument)
-    return webdriver.Chrome(service=Service(driver), options=options)
+    # Chromium leaves its singleton folders (org.chromium.Chromium.*) in $TMPDIR even when it
+    # quits: it gets a folder of its own, removed when this process ends.
+    browser_tmp = tempfile.mkdtemp(prefix="clrender-browser-")
+    atexit.register(shutil.rmtree, browser_tmp, True)
+    service = Service(driver, env={**os.environ, "TMPDIR": browser_tmp})
+    return webdriver.Chrome(service=service, options=options)
 
 
 class Viewer:
