@@ -101,11 +101,23 @@ tests+=':Antialiasing.PartlyCovered*:Antialiasing.SameSeed*:ScreenTiles.FlatShad
 tests+=':ImpostorFrames*:Mirrors.MaxDepthZero*:FeatureVariants.SpheresOnly:FeatureVariants.BillboardsOnlyWithAlpha'
 tests+=':FeatureVariants.SunAndMirrors:FeatureVariants.EmptyScene:CoverageMask.*'
 tests+=':Course/*grads*:Course/*Undergrad*:Course/*v1_*:Course/*mickey*:Course/*SingleBB*:Course/*close*:Course/*scene1*'
-if ! OCL_ICD_VENDORS="$work" CLRENDER_DEVICE=Oclgrind OCLGRIND_CHECK_API=1 OCLGRIND_DATA_RACES=1 \
-    "$build/clrender_tests" --gtest_filter="$tests" --gtest_brief=1 > "$work/tests.log" 2>&1; then
-    fail "kernel tests on Oclgrind"
-    tail -n 60 "$work/tests.log" >&2
-elif [ -n "$(oclgrind_reports "$work/tests.log")" ]; then
+# Oclgrind simulates on one thread: the tests run as one gtest shard per CPU, side by side.
+shards="$(nproc)"
+pids=()
+for ((shard = 0; shard < shards; shard++)); do
+    OCL_ICD_VENDORS="$work" CLRENDER_DEVICE=Oclgrind OCLGRIND_CHECK_API=1 OCLGRIND_DATA_RACES=1 \
+        GTEST_TOTAL_SHARDS="$shards" GTEST_SHARD_INDEX="$shard" \
+        "$build/clrender_tests" --gtest_filter="$tests" --gtest_brief=1 > "$work/tests.$shard.log" 2>&1 &
+    pids+=($!)
+done
+for ((shard = 0; shard < shards; shard++)); do
+    if ! wait "${pids[$shard]}"; then
+        fail "kernel tests on Oclgrind (shard $shard of $shards)"
+        tail -n 60 "$work/tests.$shard.log" >&2
+    fi
+done
+cat "$work"/tests.*.log > "$work/tests.log"
+if [ -n "$(oclgrind_reports "$work/tests.log")" ]; then
     fail "kernel tests: Oclgrind reported"
     oclgrind_reports "$work/tests.log" | head -n 40 >&2
 fi
