@@ -23,6 +23,8 @@ demo_packages=(
   ffmpeg
   # JPEG input: libjpeg-turbo decodes billboard JPEGs (also the fuzz seed generator's writer)
   libjpeg62-turbo-dev
+  # OBJ meshes: tinyobjloader parses the files (host/scene/obj_reader.cpp)
+  libtinyobjloader-dev
 )
 
 # The tests, the benchmarks and the other scripts, besides.

@@ -1,0 +1,170 @@
+#include "scene/obj_reader.h"
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/printable_text.h"
+#include "scene/bounded_file.h"
+#include "scene/obj_text_checks.h"
+
+// tinyobjloader is one header; its implementation is compiled here, in double so that the
+// double reference sees the file's coordinates as written.
+#define TINYOBJLOADER_IMPLEMENTATION
+#define TINYOBJLOADER_USE_DOUBLE
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#if !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <tiny_obj_loader.h>
+#pragma GCC diagnostic pop
+
+namespace clr {
+namespace {
+
+// The first line of tinyobjloader's message, without its trailing newline.
+std::string first_line(const std::string& text) {
+    const std::string line = text.substr(0, text.find('\n'));
+    return line.empty() ? "tinyobjloader could not read it" : line;
+}
+
+// The names of the materials of an .mtl text that give a `Kd` line: tinyobjloader leaves an
+// unset Kd at 0, which a black material also has.
+std::set<std::string> materials_with_diffuse(const std::string& text) {
+    std::set<std::string> names;
+    std::istringstream lines(text);
+    std::string current;
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream tokens(line);
+        std::string keyword;
+        tokens >> keyword;
+        if (keyword == "newmtl") {
+            std::getline(tokens >> std::ws, current);
+            while (!current.empty() && (current.back() == '\r' || current.back() == ' ')) current.pop_back();
+        } else if (keyword == "Kd") {
+            names.insert(current);
+        }
+    }
+    return names;
+}
+
+// Reads each `mtllib` file relative to the OBJ's folder, with the limits of any input file;
+// the first failure is kept for read_obj to report (tinyobjloader itself only warns).
+class MaterialFiles : public tinyobj::MaterialReader {
+public:
+    explicit MaterialFiles(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warning, std::string* error) override {
+        const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
+        std::string text;
+        try {
+            text = read_bounded_file(path.string(), kMaxMtlFileBytes);
+        } catch (const BoundedFileError& failure) {
+            if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + failure.what();
+            return false;
+        }
+        text = mtl_statements_used(text);
+        for (const std::string& material : materials_with_diffuse(text)) with_diffuse_.insert(material);
+        std::istringstream stream(text);
+        tinyobj::LoadMtl(names, materials, &stream, warning, error);
+        return true;
+    }
+
+    const std::string& problem() const { return problem_; }
+    bool gives_diffuse(const std::string& material) const { return with_diffuse_.count(material) != 0; }
+
+private:
+    std::filesystem::path folder_;
+    std::string problem_;
+    std::set<std::string> with_diffuse_;
+};
+
+Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
+    return {values[3 * index], values[3 * index + 1], values[3 * index + 2]};
+}
+
+}  // namespace
+
+ObjMesh parse_obj(const std::string& text, const std::string& path) {
+    ObjTextProblem problem;
+    const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
+    if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
+
+    tinyobj::attrib_t attributes;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warning, error;
+    MaterialFiles material_files(std::filesystem::path(path).parent_path());
+    std::istringstream stream(obj_statements_used(text));
+    const bool read = tinyobj::LoadObj(&attributes, &shapes, &materials, &warning, &error, &stream, &material_files,
+                                       /*triangulate=*/false, /*default_vcols_fallback=*/false);
+    if (!material_files.problem().empty()) throw ObjError(material_files.problem());
+    if (!read) throw ObjError(printable(shortened(first_line(error), 200)));
+
+    ObjMesh mesh;
+    const std::size_t positions = attributes.vertices.size() / 3;
+    const std::size_t normals = attributes.normals.size() / 3;
+    if (positions != counts.positions || normals != counts.normals) {
+        throw ObjError("tinyobjloader read " + std::to_string(positions) + " positions and " + std::to_string(normals) +
+                       " normals where the file has " + std::to_string(counts.positions) + " and " +
+                       std::to_string(counts.normals));
+    }
+    mesh.positions.reserve(positions);
+    for (std::size_t i = 0; i < positions; ++i) mesh.positions.push_back(triple(attributes.vertices, i));
+    mesh.normals.reserve(normals);
+    for (std::size_t i = 0; i < normals; ++i) mesh.normals.push_back(triple(attributes.normals, i));
+    mesh.triangles.reserve(counts.triangles);
+    mesh.triangle_normals.reserve(counts.triangles);
+
+    const auto in_range = [](int index, std::size_t count) { return index >= 0 && static_cast<std::size_t>(index) < count; };
+    for (const tinyobj::shape_t& shape : shapes) {
+        std::size_t offset = 0;
+        for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+            const std::size_t corners = shape.mesh.num_face_vertices[face];
+            const tinyobj::index_t* corner = &shape.mesh.indices[offset];
+            offset += corners;
+            bool every_normal = true;
+            for (std::size_t c = 0; c < corners; ++c) {
+                if (!in_range(corner[c].vertex_index, positions)) throw ObjError("a face names a missing position");
+                every_normal = every_normal && in_range(corner[c].normal_index, normals);
+            }
+            for (std::size_t c = 1; c + 1 < corners; ++c) {  // a fan from the first corner
+                mesh.triangles.push_back({static_cast<std::uint32_t>(corner[0].vertex_index),
+                                          static_cast<std::uint32_t>(corner[c].vertex_index),
+                                          static_cast<std::uint32_t>(corner[c + 1].vertex_index)});
+                if (every_normal) {
+                    mesh.triangle_normals.push_back({corner[0].normal_index, corner[c].normal_index, corner[c + 1].normal_index});
+                } else {
+                    mesh.triangle_normals.push_back({-1, -1, -1});
+                }
+            }
+            const int material = shape.mesh.material_ids[face];
+            if (mesh.faces == 0 && in_range(material, materials.size()) &&
+                material_files.gives_diffuse(materials[material].name)) {
+                const auto& kd = materials[material].diffuse;
+                mesh.diffuse = Vec3{kd[0], kd[1], kd[2]};
+            }
+            ++mesh.faces;
+        }
+    }
+    if (mesh.faces != counts.faces || mesh.triangles.size() != counts.triangles) {
+        throw ObjError("tinyobjloader read " + std::to_string(mesh.faces) + " faces where the file has " +
+                       std::to_string(counts.faces));
+    }
+    return mesh;
+}
+
+ObjMesh read_obj(const std::string& path) {
+    std::string text;
+    try {
+        text = read_bounded_file(path, kMaxObjFileBytes);
+    } catch (const BoundedFileError& failure) {
+        throw ObjError(failure.what());
+    }
+    return parse_obj(text, path);
+}
+
+}  // namespace clr

@@ -1,0 +1,56 @@
+// Reads a Wavefront OBJ file into triangles: the meshes a scene's `obj` objects name
+// (docs/scene-format.md). tinyobjloader (Debian's libtinyobjloader-dev) parses the file and
+// its .mtl; clrender's own checks come first (obj_text_checks.h) so that a bad file is
+// refused with its line, never read half-right. Faces of more than three corners are fanned
+// from their first corner, as the scene format defines.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace clr {
+
+// Why an OBJ file could not be read, in one line ("line 12: corner 2: position index 9 is out
+// of range: the file has 8"). The scene loader adds the scene file and JSON location.
+class ObjError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Largest OBJ file and largest .mtl file read, and most triangles a file may fan into: a
+// triangle costs the reader about 48 bytes (three position and three normal indices) besides
+// its vertices, so the limit keeps one mesh's indices under 1 GiB.
+constexpr std::uint64_t kMaxObjFileBytes = std::uint64_t(1) << 30;
+constexpr std::uint64_t kMaxMtlFileBytes = std::uint64_t(16) << 20;
+constexpr std::uint64_t kMaxObjTriangles = std::uint64_t(1) << 24;
+
+struct ObjMesh {
+    std::vector<Vec3> positions;  // as the file gives them, in its order
+    std::vector<Vec3> normals;
+    // Three corners a triangle, counter-clockwise as the face lists them: indices into
+    // `positions`, and into `normals` where every corner of the face names a normal (-1
+    // otherwise: the renderer uses the geometric normal).
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<std::array<std::int32_t, 3>> triangle_normals;
+    // The diffuse colour (`Kd`) of the material the first face uses, when its .mtl gives one.
+    std::optional<Vec3> diffuse;
+    std::uint64_t faces = 0;  // polygons in the file
+};
+
+// Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a
+// missing or unreadable .mtl is an error too). Throws ObjError with a one-line reason:
+// missing, not a regular file, too large, a bad line (with its number), too many triangles.
+// Throws std::bad_alloc when memory runs out.
+ObjMesh read_obj(const std::string& path);
+
+// The same for the file's content already read; `path` names the file in messages and
+// locates its .mtl files.
+ObjMesh parse_obj(const std::string& text, const std::string& path);
+
+}  // namespace clr

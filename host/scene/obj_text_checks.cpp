@@ -1,0 +1,200 @@
+#include "scene/obj_text_checks.h"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+#include "scene/value_ranges.h"
+
+namespace clr {
+namespace {
+
+// Calls `visit(line_number, line)` for each line; a line ends at "\n", "\r\n" or a lone "\r",
+// as tinyobjloader ends them. Stops when `visit` returns false.
+template <typename Visit>
+void for_each_line(std::string_view text, Visit&& visit) {
+    std::uint64_t number = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find_first_of("\r\n", start);
+        if (end == std::string_view::npos) end = text.size();
+        if (!visit(++number, text.substr(start, end - start))) return;
+        start = end;
+        if (start < text.size() && text[start] == '\r') ++start;
+        if (start < text.size() && text[start] == '\n') ++start;
+    }
+}
+
+std::vector<std::string_view> tokens_of(std::string_view line) {
+    std::vector<std::string_view> tokens;
+    std::size_t at = 0;
+    while (at < line.size()) {
+        at = line.find_first_not_of(" \t", at);
+        if (at == std::string_view::npos) break;
+        std::size_t end = line.find_first_of(" \t", at);
+        if (end == std::string_view::npos) end = line.size();
+        tokens.push_back(line.substr(at, end - at));
+        at = end;
+    }
+    return tokens;
+}
+
+bool parse_number(std::string_view token, double& value) {
+    const char* end = token.data() + token.size();
+    const auto result = std::from_chars(token.data(), end, value);
+    return result.ec == std::errc() && result.ptr == end && std::isfinite(value);
+}
+
+std::string quoted(std::string_view token) {
+    constexpr std::size_t kShown = 40;
+    std::string text;
+    for (char c : token.substr(0, kShown)) text += (c >= 0x20 && c < 0x7f) ? c : '?';
+    return "'" + text + (token.size() > kShown ? "...'" : "'");
+}
+
+// The numbers of a `v`, `vn` or `vt` line: at least `least`, each finite; the first three of
+// a position within the coordinate range.
+std::string check_numbers(const std::vector<std::string_view>& tokens, std::size_t least, bool position) {
+    const std::string_view keyword = tokens[0];
+    if (tokens.size() - 1 < least) {
+        return "'" + std::string(keyword) + "' needs " + std::to_string(least) + " numbers, the line has " +
+               std::to_string(tokens.size() - 1);
+    }
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+        double value = 0;
+        if (!parse_number(tokens[i], value)) {
+            return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is not a finite number";
+        }
+        if (position && i <= 3 && std::fabs(value) > kMaxCoordinate) {
+            return "'v': " + quoted(tokens[i]) + " is out of range: " + position_range_text();
+        }
+    }
+    return {};
+}
+
+// One index of a corner: non-zero; positive counts from the file's first entry, negative back
+// from the latest entry before this line. `defined` entries precede the line, `total` are in
+// the file.
+std::string check_index(std::string_view token, const char* what, std::uint64_t defined, std::uint64_t total) {
+    long long index = 0;
+    const char* end = token.data() + token.size();
+    const auto result = std::from_chars(token.data(), end, index);
+    if (result.ec != std::errc() || result.ptr != end) return quoted(token) + " is not a " + std::string(what) + " index";
+    if (index == 0) return std::string(what) + " index 0: indices count from 1 (or back from -1)";
+    if (index > 0 && static_cast<std::uint64_t>(index) > total) {
+        return std::string(what) + " index " + std::to_string(index) + " is out of range: the file has " +
+               std::to_string(total);
+    }
+    if (index < 0 && static_cast<std::uint64_t>(-(index + 1)) >= defined) {
+        return std::string(what) + " index " + std::to_string(index) + " is out of range: " + std::to_string(defined) +
+               " precede this line";
+    }
+    return {};
+}
+
+// A face corner "p", "p/t", "p//n" or "p/t/n".
+std::string check_corner(std::string_view corner, const ObjTextCounts& before, const ObjTextCounts& total) {
+    std::string_view parts[3];
+    int count = 0;
+    std::size_t start = 0;
+    while (count < 3) {
+        const std::size_t slash = corner.find('/', start);
+        parts[count++] = corner.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+        if (slash == std::string_view::npos) break;
+        start = slash + 1;
+        if (count == 3) return quoted(corner) + " is not a corner (p, p/t, p//n or p/t/n)";
+    }
+    std::string problem = check_index(parts[0], "position", before.positions, total.positions);
+    if (problem.empty() && count >= 2 && !parts[1].empty()) {
+        problem = check_index(parts[1], "texture coordinate", before.texcoords, total.texcoords);
+    }
+    if (problem.empty() && count == 3) problem = check_index(parts[2], "normal", before.normals, total.normals);
+    return problem;
+}
+
+// The entries each keyword adds, counted in a first pass so that a face may name a position
+// defined after it, as tinyobjloader allows.
+void count_entry(std::string_view keyword, ObjTextCounts& counts) {
+    if (keyword == "v") ++counts.positions;
+    else if (keyword == "vn") ++counts.normals;
+    else if (keyword == "vt") ++counts.texcoords;
+}
+
+// The first word of a line ("" for a blank one).
+std::string_view keyword_of(std::string_view line) {
+    const std::size_t at = line.find_first_not_of(" \t");
+    if (at == std::string_view::npos) return {};
+    const std::size_t end = line.find_first_of(" \t", at);
+    return line.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
+}
+
+template <typename Keep>
+std::string statements_kept(std::string_view text, Keep&& keep) {
+    std::string kept;
+    kept.reserve(text.size() + 1);
+    for_each_line(text, [&](std::uint64_t, std::string_view line) {
+        if (keep(keyword_of(line))) kept.append(line);
+        kept.push_back('\n');
+        return true;
+    });
+    return kept;
+}
+
+}  // namespace
+
+std::string obj_statements_used(std::string_view text) {
+    return statements_kept(text, [](std::string_view keyword) {
+        return keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "f" || keyword == "o" ||
+               keyword == "g" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib";
+    });
+}
+
+std::string mtl_statements_used(std::string_view text) {
+    return statements_kept(text, [](std::string_view keyword) { return keyword == "newmtl" || keyword == "Kd"; });
+}
+
+ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem) {
+    problem = {};
+    ObjTextCounts total;
+    for_each_line(text, [&](std::uint64_t, std::string_view line) {
+        count_entry(keyword_of(line), total);
+        return true;
+    });
+
+    ObjTextCounts counts;
+    for_each_line(text, [&](std::uint64_t number, std::string_view line) {
+        const std::vector<std::string_view> tokens = tokens_of(line);
+        if (tokens.empty()) return true;
+        const std::string_view keyword = tokens[0];
+        std::string detail;
+        if (keyword == "v") detail = check_numbers(tokens, 3, true);
+        else if (keyword == "vn") detail = check_numbers(tokens, 3, false);
+        else if (keyword == "vt") detail = check_numbers(tokens, 1, false);
+        else if (keyword == "f") {
+            if (tokens.size() < 4) {
+                detail = "a face needs 3 corners or more, this one has " + std::to_string(tokens.size() - 1);
+            }
+            for (std::size_t i = 1; detail.empty() && i < tokens.size(); ++i) {
+                detail = check_corner(tokens[i], counts, total);
+                if (!detail.empty()) detail = "corner " + std::to_string(i) + ": " + detail;
+            }
+            if (detail.empty()) {
+                ++counts.faces;
+                counts.triangles += tokens.size() - 3;
+                if (counts.triangles > max_triangles) {
+                    detail = "the faces up to this line make " + std::to_string(counts.triangles) +
+                             " triangles, more than the limit of " + std::to_string(max_triangles);
+                }
+            }
+        }
+        if (!detail.empty()) {
+            problem = {number, detail};
+            return false;
+        }
+        count_entry(keyword, counts);
+        return true;
+    });
+    return counts;
+}
+
+}  // namespace clr

@@ -1,0 +1,50 @@
+// The checks a Wavefront OBJ file's text must pass before tinyobjloader builds its mesh
+// (obj_reader.h). tinyobjloader accepts what clrender must refuse with the file and line:
+// it reads "nan" or "1e999" as a number, keeps an index beyond the vertices with only a
+// warning, resolves a relative index before the first vertex to a negative one and drops a
+// face of one or two corners in silence. This pass reads the lines only as far as those
+// checks need; building the mesh stays the library's.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace clr {
+
+// What the checks counted, for the reader's limits and its consistency check.
+struct ObjTextCounts {
+    std::uint64_t positions = 0;  // `v` lines
+    std::uint64_t normals = 0;    // `vn` lines
+    std::uint64_t texcoords = 0;  // `vt` lines
+    std::uint64_t faces = 0;      // `f` lines
+    std::uint64_t triangles = 0;  // a face of n corners fans into n - 2
+};
+
+// A line the checks refuse: its number (from 1) and why, in a user's terms.
+struct ObjTextProblem {
+    std::uint64_t line = 0;
+    std::string detail;
+};
+
+// Checks every `v`, `vn`, `vt` and `f` line of `text`: coordinates are finite numbers within
+// clrender's coordinate range; a face has three corners or more, each naming a position
+// (and optionally a texture coordinate and a normal) by a non-zero index, counted from the
+// start (1 is the first) or, negative, back from the latest one before the face, that
+// names an entry of the file. Stops at the first problem. Also stops when the faces fan
+// into more than `max_triangles` triangles (the memory budget). Other lines (`o`, `g`, `s`,
+// `usemtl`, `mtllib`, comments, unknown commands) are the library's.
+// Returns the counts; sets `problem` (line 0: none) to the first problem found.
+ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem);
+
+// `text` with only the statements clrender uses kept for tinyobjloader (`v`, `vn`, `vt`, `f`,
+// `o`, `g`, `s`, `usemtl`, `mtllib`); every other line (comments, lines, points, skin weights,
+// tags, curves) is left empty, so that lines keep their numbers and the library never parses
+// what clrender ignores (its `vw` parser turns an out-of-range number into an int, undefined
+// behaviour). Every line ends in "\n".
+std::string obj_statements_used(std::string_view text);
+
+// The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.
+std::string mtl_statements_used(std::string_view text);
+
+}  // namespace clr
