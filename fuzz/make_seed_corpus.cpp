@@ -314,6 +314,22 @@ int main(int argc, char** argv) {
         write(out / "ppm_p3", "demo_sign.ppm", read(demo / "sign.ppm"));
         for (const NamedPpm& ppm : ppms(false)) write(out / "ppm_p6", ppm.name, clr::fuzz::encode_ppm(ppm.spec));
 
+        // OBJ meshes (obj_fuzzer.cpp, which puts materials.mtl beside them): every corner form,
+        // relative indices, polygons, groups, materials, CRLF and CR line ends.
+        const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+        write(out / "obj", "triangle.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        write(out / "obj", "quad_forms.obj",
+              "mtllib materials.mtl\no square\ng front\ns 1\n" + square +
+                  "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nusemtl red\nf 1/1/1 2/2/1 3/3/1 4/3/1\n"
+                  "usemtl grey\nf 1//1 3//1 4//1\nf 1/1 2/2 3/3\ns off\nf -4 -3 -2 -1\n");
+        write(out / "obj", "pentagon_crlf.obj", "v 0 0 0\r\nv 2 0 0\r\nv 2 2 0\r\nv 1 3 0\r\nv 0 2 0\r\nf 1 2 3 4 5\r\n");
+        write(out / "obj", "cr_only.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+        write(out / "obj", "cube.obj",
+              "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+              "vn 0 0 -1\nvn 0 0 1\nvn -1 0 0\nvn 1 0 0\nvn 0 -1 0\nvn 0 1 0\n"
+              "f 1//1 4//1 3//1 2//1\nf 5//2 6//2 7//2 8//2\nf 1//3 5//3 8//3 4//3\n"
+              "f 2//4 3//4 7//4 6//4\nf 1//5 2//5 6//5 5//5\nf 4//6 8//6 7//6 3//6\n");
+
         // Viewer requests (view_request_fuzzer.cpp): METHOD, PATH, HOST, ORIGIN, COOKIE lines, then
         // query parameters; a POST body of camera keys.
         const std::string token = "token=0123456789abcdef0123456789abcdef";

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang into build-fuzz/ and runs each for a bounded time:
 # the scene loader, the image loader once per decoder path (PNG, JPEG, PPM P3, PPM P6), and the
-# viewer's request handling (clrender view),
+# viewer's request handling (clrender view) and the OBJ reader,
 # each run with its own seed corpus and dictionary. Prints the executions per target and
 # fails if any target found a crash, a hang, a leak or a sanitizer report.
 #
@@ -22,7 +22,7 @@ bash "$root/scripts/install-deps.sh"
 # instrumentation would only slow them down.
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
     -DCLRENDER_BUILD_FUZZERS=ON -DCLRENDER_BUILD_TESTS=OFF -DCLRENDER_BUILD_BENCH=OFF >/dev/null
-cmake --build "$build" -j"$(nproc)" --target clrender_fuzz_scene_loader clrender_fuzz_image_loader clrender_fuzz_view_request \
+cmake --build "$build" -j"$(nproc)" --target clrender_fuzz_scene_loader clrender_fuzz_image_loader clrender_fuzz_view_request clrender_fuzz_obj_reader \
     clrender_fuzz_seeds
 
 work="$build/fuzz"
@@ -38,6 +38,7 @@ targets=(
     "ppm_p3     clrender_fuzz_image_loader ppm_p3 ppm.dict"
     "ppm_p6     clrender_fuzz_image_loader ppm_p6 ppm.dict"
     "view       clrender_fuzz_view_request view   view.dict"
+    "obj        clrender_fuzz_obj_reader   obj    obj.dict"
 )
 
 # The fuzzers load scenes, whose images would otherwise go to the user's decoded-image cache.
