@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "render/scene_item.h"
+
 namespace clr {
 namespace {
 
@@ -45,7 +47,7 @@ std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& ori
         const Sphere& s = frame.spheres()[i];
         Vec3 r{s.radius, s.radius, s.radius};
         Vec3 center = s.center - origin;
-        Primitive p{{}, center, static_cast<std::uint32_t>(i)};
+        Primitive p{{}, center, scene_item(CLR_HIT_SPHERE, i)};
         p.box.grow(center - r);
         p.box.grow(center + r);
         primitives.push_back(p);
@@ -55,7 +57,7 @@ std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& ori
         Vec3 shift = origin - frame.billboard_origin(i);  // zero for placed impostors: exact
         Vec3 upper_left = b.upper_left - shift, upper_right = b.upper_right - shift, lower_left = b.lower_left - shift;
         Vec3 lower_right = upper_right + (lower_left - upper_left);
-        Primitive p{{}, (upper_left + lower_right) * 0.5, static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD};
+        Primitive p{{}, (upper_left + lower_right) * 0.5, scene_item(CLR_HIT_BILLBOARD, i)};
         for (const Vec3& corner : {upper_left, upper_right, lower_left, lower_right}) p.box.grow(corner);
         primitives.push_back(p);
     }

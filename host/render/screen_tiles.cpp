@@ -11,6 +11,7 @@
 #include "core/radix_sort.h"
 #include "core/usable_cpus.h"
 #include "render/object_bounds.h"
+#include "render/scene_item.h"
 
 namespace clr {
 namespace {
@@ -72,13 +73,13 @@ std::optional<Placed> place(const FrameGeometry& frame, std::size_t index, const
     PixelBounds pixels;
     if (index < spheres) {
         const Sphere& sphere = frame.spheres()[index];
-        item = static_cast<std::uint32_t>(index);
+        item = scene_item(CLR_HIT_SPHERE, index);
         nearest = bounds.sphere_distance(sphere);
         pixels = bounds.sphere(sphere);
     } else {
         const Billboard& billboard = frame.billboard(index - spheres);
         const Vec3 corners_origin = frame.billboard_origin(index - spheres);
-        item = static_cast<std::uint32_t>(index - spheres) | CLR_TILE_BILLBOARD;
+        item = scene_item(CLR_HIT_BILLBOARD, index - spheres);
         nearest = bounds.billboard_distance(billboard, corners_origin);
         pixels = bounds.billboard(billboard, corners_origin);
     }
