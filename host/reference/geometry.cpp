@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinds/kinds.h"
+
 namespace clr::reference::detail {
 
 SphereRoots sphere_roots(const Sphere& sphere, const Ray& ray) {
@@ -109,6 +111,15 @@ SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
         surface.is_mirror = billboard.is_mirror;
     }
     return surface;
+}
+
+bool is_lit(HitKind kind) {
+    switch (kind) {
+        case HitKind::Sphere: return SphereKind::kLit;
+        case HitKind::Billboard: return BillboardKind::kLit;
+        case HitKind::None: break;
+    }
+    return false;
 }
 
 Ray reflect(const Ray& ray, const SurfacePoint& surface) {

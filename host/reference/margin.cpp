@@ -89,7 +89,7 @@ double ray_margin(const Scene& scene, const Ray& ray, double t_max, SurfaceId le
 }  // namespace detail
 
 // The margin of every ray trace() follows for this pixel: the primary ray, each reflected
-// ray, and the shadow ray of a lit sphere, plus how squarely each mirror is met (d.n near 0
+// ray, and the shadow ray of a lit surface, plus how squarely each mirror is met (d.n near 0
 // is where front turns into back). For a ray that hits a plain surface in flat mode this is
 // the primary ray's margin alone.
 double decision_margin(const Scene& scene, const Ray& ray) {
@@ -109,7 +109,7 @@ double decision_margin(const Scene& scene, const Ray& ray) {
             leaving = surface.id;
             continue;
         }
-        if (hit.kind == HitKind::Sphere && scene.lit()) {
+        if (detail::is_lit(hit.kind) && scene.lit()) {
             const auto sun = detail::sun_direction(scene, surface.point);
             if (sun.exists && dot(surface.normal, sun.l) > 0) {
                 const Ray shadow_ray{surface.point, sun.l};

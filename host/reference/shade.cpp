@@ -28,15 +28,14 @@ double sun_visibility(const Scene& scene, const SurfacePoint& surface, const det
 }
 
 // ambient * max(0, n.l) * s; the shadow ray is only worth casting when n.l > 0.
-Color lit_sphere_color(const Scene& scene, const Sphere& sphere, const SurfacePoint& surface, int depth,
-                       TraceObserver* observer) {
+Color lit_color(const Scene& scene, const Color& ambient, const SurfacePoint& surface, int depth,
+                TraceObserver* observer) {
     const auto sun = detail::sun_direction(scene, surface.point);
     if (!sun.exists) return found(observer, ColourSource::SphereLit, kBlack);
     const double cosine = dot(surface.normal, sun.l);
     if (observer) observer->sun_seen(sun, cosine);
     if (cosine <= 0) return found(observer, ColourSource::SphereLit, kBlack);
-    return found(observer, ColourSource::SphereLit,
-                 sphere.ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
+    return found(observer, ColourSource::SphereLit, ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
 }
 
 Color billboard_color(const Billboard& billboard, const Hit& hit, TraceObserver* observer) {
@@ -46,13 +45,18 @@ Color billboard_color(const Billboard& billboard, const Hit& hit, TraceObserver*
                  detail::texel_color(*billboard.image, detail::texel_at(*billboard.image, hit.a, hit.b)));
 }
 
-// The colour of a surface that is not a mirror. Billboards are pictures: never lit.
+// A surface's ambient colour: what the sun lights.
+const Color& ambient_of(const Scene& scene, const Hit& hit) {
+    return hit.kind == HitKind::Sphere ? scene.spheres[hit.index].ambient : scene.billboards[hit.index].ambient;
+}
+
+// The colour of a surface that is not a mirror: lit by the sun when the scene is lit and its
+// kind is (detail::is_lit: spheres; billboards are pictures), else its own colour.
 Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surface, int depth,
                     TraceObserver* observer) {
+    if (scene.lit() && detail::is_lit(hit.kind)) return lit_color(scene, ambient_of(scene, hit), surface, depth, observer);
     if (hit.kind == HitKind::Billboard) return billboard_color(scene.billboards[hit.index], hit, observer);
-    const Sphere& sphere = scene.spheres[hit.index];
-    return scene.lit() ? lit_sphere_color(scene, sphere, surface, depth, observer)
-                       : found(observer, ColourSource::SphereAmbient, sphere.ambient);
+    return found(observer, ColourSource::SphereAmbient, scene.spheres[hit.index].ambient);
 }
 
 }  // namespace
