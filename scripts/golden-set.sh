@@ -165,8 +165,8 @@ else
     echo "golden-set: no course scenes under $shared: skipped"
 fi
 
-# What the explainer says of pixels on a lit sphere, a textured billboard and a mirror, and
-# --check's summary.
+# What the explainer says of pixels on a lit sphere, a textured billboard and a mirror;
+# --check's summary; the double-precision reference renderer's images.
 run_case explain-sphere "$showcase" --explain-pixel 300,250 --frames 3
 run_case explain-billboard "$demo" --explain-pixel 200,120
 run_case explain-mirror "$showcase" --explain-pixel 480,290 --frames 10
@@ -174,6 +174,8 @@ run_case explain-stress "$stress" --explain-pixel 160,120
 run_case explain-double "$showcase" --explain-pixel 470,300 --precision double
 run_case check-showcase "$showcase" --check
 run_case reference-demo "$demo" --reference -o ref.png --size 160x90
+run_case reference-stress "$stress" --reference -o ref.png --size 120x90
+run_case reference-showcase "$showcase" --reference -o 'ref_%04d.png' --frames 2,40 --size 120x68
 
 # The benchmark's scenes, from each bench binary's own image of every scene.
 if [ -n "${GOLDEN_OLD_BENCH:-}" ] && [ -n "${GOLDEN_NEW_BENCH:-}" ]; then

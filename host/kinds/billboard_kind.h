@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "core/box3.h"
 #include "render/frame_geometry.h"
@@ -17,6 +18,13 @@ namespace clr {
 
 class ObjectBounds;
 struct PixelBounds;
+namespace reference {
+enum class HitKind;
+struct Hit;
+struct Ray;
+struct SurfaceId;
+class TraceObserver;
+}  // namespace reference
 
 struct BillboardKind {
     using Object = Billboard;
@@ -46,6 +54,20 @@ struct BillboardKind {
     // its flat colour), and the part of it that moves with the frame's origin.
     static ClrBillboard device(const Billboard& billboard, const TextureSlot* texture, const Vec3& origin);
     static void move(ClrBillboard& device, const Billboard& billboard, const Vec3& origin);
+
+    // The double-precision reference's half (kinds/billboard_reference.cpp, from the lecture's
+    // formulas in reference/geometry), for reference::intersect(), decision_margin() and
+    // trace(): the kind's reference::HitKind; a test of the scene's billboards but `leaving`
+    // that keeps in `nearest` any hit nearer than `nearest_t` (telling `observer`); the
+    // billboards' decision margin on the segment (0, t_max), adding their accepted hits' t to
+    // `hit_ts`; and the unit front normal at a point of billboard `index`, and its mirror flag.
+    static reference::HitKind reference_kind();
+    static void reference_nearest(const Scene& scene, const reference::Ray& ray, const reference::SurfaceId& leaving,
+                                  double& nearest_t, reference::Hit& nearest, reference::TraceObserver* observer);
+    static double reference_margin(const Scene& scene, const reference::Ray& ray, double t_max,
+                                   const reference::SurfaceId& leaving, std::vector<double>& hit_ts);
+    static Vec3 reference_normal(const Scene& scene, int index, const Vec3& point);
+    static bool reference_is_mirror(const Scene& scene, int index);
 };
 
 }  // namespace clr
