@@ -89,4 +89,19 @@ Vec3 BillboardKind::reference_normal(const Scene& scene, int index, const Vec3&)
 
 bool BillboardKind::reference_is_mirror(const Scene& scene, int index) { return scene.billboards[index].is_mirror; }
 
+// Its flat colour, or the texel under the hit (intersect() only returns opaque texels, so the
+// texel's alpha needs no blending).
+reference::ColourSource BillboardKind::reference_own_color(const Scene& scene, const reference::Hit& hit,
+                                                           Color& colour) {
+    const Billboard& billboard = scene.billboards[hit.index];
+    if (!is_textured(billboard)) {
+        colour = billboard.ambient;
+        return reference::ColourSource::BillboardAmbient;
+    }
+    colour = reference::detail::texel_color(*billboard.image, texel_at(*billboard.image, hit.a, hit.b));
+    return reference::ColourSource::BillboardTexel;
+}
+
+const Color& BillboardKind::reference_ambient(const Scene& scene, int index) { return scene.billboards[index].ambient; }
+
 }  // namespace clr

@@ -17,6 +17,7 @@ namespace clr {
 class ObjectBounds;
 struct PixelBounds;
 namespace reference {
+enum class ColourSource;
 enum class HitKind;
 struct Hit;
 struct Ray;
@@ -59,7 +60,9 @@ struct SphereKind {
     // trace(): the kind's reference::HitKind; a test of the scene's spheres but `leaving`
     // that keeps in `nearest` any hit nearer than `nearest_t` (telling `observer`); the
     // spheres' decision margin on the segment (0, t_max), adding their accepted hits' t to
-    // `hit_ts`; and the unit front normal at a point of sphere `index`, and its mirror flag.
+    // `hit_ts`; the unit front normal at a point of sphere `index`, and its mirror flag; its
+    // colour before lighting at `hit` and what gives it (reference/trace_observer.h), and the
+    // ambient colour that the sun lights.
     static reference::HitKind reference_kind();
     static void reference_nearest(const Scene& scene, const reference::Ray& ray, const reference::SurfaceId& leaving,
                                   double& nearest_t, reference::Hit& nearest, reference::TraceObserver* observer);
@@ -67,6 +70,8 @@ struct SphereKind {
                                    const reference::SurfaceId& leaving, std::vector<double>& hit_ts);
     static Vec3 reference_normal(const Scene& scene, int index, const Vec3& point);
     static bool reference_is_mirror(const Scene& scene, int index);
+    static reference::ColourSource reference_own_color(const Scene& scene, const reference::Hit& hit, Color& colour);
+    static const Color& reference_ambient(const Scene& scene, int index);
 };
 
 }  // namespace clr

@@ -68,4 +68,11 @@ Vec3 SphereKind::reference_normal(const Scene& scene, int index, const Vec3& poi
 
 bool SphereKind::reference_is_mirror(const Scene& scene, int index) { return scene.spheres[index].is_mirror; }
 
+reference::ColourSource SphereKind::reference_own_color(const Scene& scene, const reference::Hit& hit, Color& colour) {
+    colour = scene.spheres[hit.index].ambient;
+    return reference::ColourSource::SphereAmbient;
+}
+
+const Color& SphereKind::reference_ambient(const Scene& scene, int index) { return scene.spheres[index].ambient; }
+
 }  // namespace clr

@@ -1,5 +1,6 @@
 // Reference shading: what colour a ray sees (docs/scene-format.md, Conventions: Lighting and
 // shadows; docs/scene-format.md, Conventions: Mirrors).
+#include "kinds/kinds.h"
 #include "reference/geometry.h"
 #include "reference/trace_observer.h"
 
@@ -38,25 +39,23 @@ Color lit_color(const Scene& scene, const Color& ambient, const SurfacePoint& su
     return found(observer, ColourSource::SphereLit, ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
 }
 
-Color billboard_color(const Billboard& billboard, const Hit& hit, TraceObserver* observer) {
-    if (!detail::is_textured(billboard)) return found(observer, ColourSource::BillboardAmbient, billboard.ambient);
-    // intersect() only returns opaque texels, so the texel's alpha needs no blending here.
-    return found(observer, ColourSource::BillboardTexel,
-                 detail::texel_color(*billboard.image, detail::texel_at(*billboard.image, hit.a, hit.b)));
-}
-
-// A surface's ambient colour: what the sun lights.
-const Color& ambient_of(const Scene& scene, const Hit& hit) {
-    return hit.kind == HitKind::Sphere ? scene.spheres[hit.index].ambient : scene.billboards[hit.index].ambient;
-}
-
 // The colour of a surface that is not a mirror: lit by the sun when the scene is lit and its
-// kind is (detail::is_lit: spheres; billboards are pictures), else its own colour.
+// kind is (detail::is_lit: spheres; billboards are pictures), else its own colour (each
+// kind's reference_own_color(): an ambient colour or a texel).
 Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surface, int depth,
                     TraceObserver* observer) {
-    if (scene.lit() && detail::is_lit(hit.kind)) return lit_color(scene, ambient_of(scene, hit), surface, depth, observer);
-    if (hit.kind == HitKind::Billboard) return billboard_color(scene.billboards[hit.index], hit, observer);
-    return found(observer, ColourSource::SphereAmbient, scene.spheres[hit.index].ambient);
+    const bool lit = scene.lit() && detail::is_lit(hit.kind);
+    Color colour;
+    ColourSource source = ColourSource::Background;
+    for_each_kind([&](auto kind) {
+        using Kind = decltype(kind);
+        if (hit.kind != Kind::reference_kind()) return;
+        if (lit)
+            colour = lit_color(scene, Kind::reference_ambient(scene, hit.index), surface, depth, observer);
+        else
+            source = Kind::reference_own_color(scene, hit, colour);
+    });
+    return lit ? colour : found(observer, source, colour);
 }
 
 }  // namespace
