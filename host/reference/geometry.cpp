@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinds/kinds.h"
+
 namespace clr::reference::detail {
 
 SphereRoots sphere_roots(const Sphere& sphere, const Ray& ray) {
@@ -99,16 +101,19 @@ SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     SurfacePoint surface;
     surface.point = point_at(ray, hit.t);
     surface.id = {hit.kind, hit.index};
-    if (hit.kind == HitKind::Sphere) {
-        const Sphere& sphere = scene.spheres[hit.index];
-        surface.normal = (surface.point - sphere.center) / sphere.radius;
-        surface.is_mirror = sphere.is_mirror;
-    } else {
-        const Billboard& billboard = scene.billboards[hit.index];
-        surface.normal = billboard_front_normal(billboard);
-        surface.is_mirror = billboard.is_mirror;
-    }
+    for_each_kind([&](auto kind) {
+        using Kind = decltype(kind);
+        if (hit.kind != Kind::reference_kind()) return;
+        surface.normal = Kind::reference_normal(scene, hit.index, surface.point);
+        surface.is_mirror = Kind::reference_is_mirror(scene, hit.index);
+    });
     return surface;
+}
+
+bool is_lit(HitKind kind) {
+    bool lit = false;
+    for_each_kind([&](auto each) { lit |= kind == decltype(each)::reference_kind() && decltype(each)::kLit; });
+    return lit;
 }
 
 Ray reflect(const Ray& ray, const SurfacePoint& surface) {

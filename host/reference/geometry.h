@@ -66,6 +66,9 @@ struct SurfacePoint {
 };
 SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
 
+// Whether the sun lights surfaces of `kind`: each kind's shading rule (host/kinds/).
+bool is_lit(HitKind kind);
+
 // A ray sees a surface's front side when it travels against the normal.
 inline bool sees_front(const Ray& ray, const SurfacePoint& surface) { return dot(ray.direction, surface.normal) < 0; }
 

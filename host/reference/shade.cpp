@@ -1,5 +1,6 @@
 // Reference shading: what colour a ray sees (docs/scene-format.md, Conventions: Lighting and
 // shadows; docs/scene-format.md, Conventions: Mirrors).
+#include "kinds/kinds.h"
 #include "reference/geometry.h"
 #include "reference/trace_observer.h"
 
@@ -28,31 +29,33 @@ double sun_visibility(const Scene& scene, const SurfacePoint& surface, const det
 }
 
 // ambient * max(0, n.l) * s; the shadow ray is only worth casting when n.l > 0.
-Color lit_sphere_color(const Scene& scene, const Sphere& sphere, const SurfacePoint& surface, int depth,
-                       TraceObserver* observer) {
+Color lit_color(const Scene& scene, const Color& ambient, const SurfacePoint& surface, int depth,
+                TraceObserver* observer) {
     const auto sun = detail::sun_direction(scene, surface.point);
     if (!sun.exists) return found(observer, ColourSource::SphereLit, kBlack);
     const double cosine = dot(surface.normal, sun.l);
     if (observer) observer->sun_seen(sun, cosine);
     if (cosine <= 0) return found(observer, ColourSource::SphereLit, kBlack);
-    return found(observer, ColourSource::SphereLit,
-                 sphere.ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
+    return found(observer, ColourSource::SphereLit, ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
 }
 
-Color billboard_color(const Billboard& billboard, const Hit& hit, TraceObserver* observer) {
-    if (!detail::is_textured(billboard)) return found(observer, ColourSource::BillboardAmbient, billboard.ambient);
-    // intersect() only returns opaque texels, so the texel's alpha needs no blending here.
-    return found(observer, ColourSource::BillboardTexel,
-                 detail::texel_color(*billboard.image, detail::texel_at(*billboard.image, hit.a, hit.b)));
-}
-
-// The colour of a surface that is not a mirror. Billboards are pictures: never lit.
+// The colour of a surface that is not a mirror: lit by the sun when the scene is lit and its
+// kind is (detail::is_lit: spheres; billboards are pictures), else its own colour (each
+// kind's reference_own_color(): an ambient colour or a texel).
 Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surface, int depth,
                     TraceObserver* observer) {
-    if (hit.kind == HitKind::Billboard) return billboard_color(scene.billboards[hit.index], hit, observer);
-    const Sphere& sphere = scene.spheres[hit.index];
-    return scene.lit() ? lit_sphere_color(scene, sphere, surface, depth, observer)
-                       : found(observer, ColourSource::SphereAmbient, sphere.ambient);
+    const bool lit = scene.lit() && detail::is_lit(hit.kind);
+    Color colour;
+    ColourSource source = ColourSource::Background;
+    for_each_kind([&](auto kind) {
+        using Kind = decltype(kind);
+        if (hit.kind != Kind::reference_kind()) return;
+        if (lit)
+            colour = lit_color(scene, Kind::reference_ambient(scene, hit.index), surface, depth, observer);
+        else
+            source = Kind::reference_own_color(scene, hit, colour);
+    });
+    return lit ? colour : found(observer, source, colour);
 }
 
 }  // namespace

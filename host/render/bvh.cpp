@@ -5,32 +5,17 @@
 #include <cmath>
 #include <limits>
 
+#include "core/box3.h"
+#include "kinds/kinds.h"
+#include "render/scene_item.h"
+
 namespace clr {
 namespace {
 
 constexpr int kBins = 16;         // candidate split planes per axis
 constexpr std::uint32_t kLeafSize = 4;
 
-struct Box {
-    Vec3 lower{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-               std::numeric_limits<double>::infinity()};
-    Vec3 upper = -lower;
-
-    void grow(const Vec3& p) {
-        lower = {std::min(lower.x, p.x), std::min(lower.y, p.y), std::min(lower.z, p.z)};
-        upper = {std::max(upper.x, p.x), std::max(upper.y, p.y), std::max(upper.z, p.z)};
-    }
-    void grow(const Box& b) {
-        if (b.lower.x > b.upper.x) return;  // empty (an unused bin): growing by its infinities would be wrong
-        grow(b.lower);
-        grow(b.upper);
-    }
-    double area() const {
-        if (lower.x > upper.x) return 0;
-        Vec3 d = upper - lower;
-        return 2 * (d.x * d.y + d.y * d.z + d.z * d.x);
-    }
-};
+using Box = Box3;
 
 struct Primitive {
     Box box;
@@ -38,27 +23,20 @@ struct Primitive {
     std::uint32_t item;
 };
 
-// The frame's objects' boxes relative to `origin`.
+// The frame's objects' boxes relative to `origin`, kind by kind (kinds/kinds.h).
 std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& origin) {
     std::vector<Primitive> primitives;
-    for (std::size_t i = 0; i < frame.spheres().size(); ++i) {
-        const Sphere& s = frame.spheres()[i];
-        Vec3 r{s.radius, s.radius, s.radius};
-        Vec3 center = s.center - origin;
-        Primitive p{{}, center, static_cast<std::uint32_t>(i)};
-        p.box.grow(center - r);
-        p.box.grow(center + r);
-        primitives.push_back(p);
-    }
-    for (std::size_t i = 0; i < frame.billboard_count(); ++i) {
-        const Billboard& b = frame.billboard(i);
-        Vec3 shift = origin - frame.billboard_origin(i);  // zero for placed impostors: exact
-        Vec3 upper_left = b.upper_left - shift, upper_right = b.upper_right - shift, lower_left = b.lower_left - shift;
-        Vec3 lower_right = upper_right + (lower_left - upper_left);
-        Primitive p{{}, (upper_left + lower_right) * 0.5, static_cast<std::uint32_t>(i) | CLR_TILE_BILLBOARD};
-        for (const Vec3& corner : {upper_left, upper_right, lower_left, lower_right}) p.box.grow(corner);
-        primitives.push_back(p);
-    }
+    for_each_kind([&](auto kind) {
+        using Kind = decltype(kind);
+        for (std::size_t i = 0; i < Kind::count(frame); ++i) {
+            // Zero for placed impostors, whose corners are relative to `origin` already: exact.
+            const Vec3 shift = origin - Kind::origin(frame, i);
+            Primitive p;
+            p.box = Kind::box(Kind::object(frame, i), shift, p.centroid);
+            p.item = scene_item(Kind::kHit, i);
+            primitives.push_back(p);
+        }
+    });
     return primitives;
 }
 

@@ -25,7 +25,7 @@ struct Bvh {
         std::uint32_t count = 0;  // leaf: number of items; 0 for an inner node
     };
     std::vector<Node> nodes;          // nodes[0] is the root (absent for an empty scene)
-    std::vector<std::uint32_t> items;  // object index, with CLR_TILE_BILLBOARD for billboards
+    std::vector<std::uint32_t> items;  // scene items (render/scene_item.h)
     // What the bounds are relative to: the frame's impostor_origin(), so that placed impostors
     // (relative to their eye) are bounded exactly; (0, 0, 0) for a scene without them.
     Vec3 origin;

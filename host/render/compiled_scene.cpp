@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "kinds/kinds.h"
 #include "render/coverage_mask.h"
 #include "render/device_structs.h"
 
@@ -12,20 +13,6 @@ namespace clr {
 namespace {
 
 constexpr std::uint64_t kMaxPackedTexels = 0xFFFFFFFFull;
-
-// The parts of the device structs that depend on the frame's origin.
-clr_float4 center_radius_of(const Sphere& sphere, const Vec3& origin) {
-    return to_float4(sphere.center - origin, static_cast<float>(sphere.radius));
-}
-clr_float4 corner_of(const Billboard& billboard, const Vec3& origin) { return to_float4(billboard.upper_left - origin); }
-
-ClrSphere compile_sphere(const Sphere& sphere, const Vec3& origin) {
-    ClrSphere out{};
-    out.center_radius = center_radius_of(sphere, origin);
-    out.color = to_float4(sphere.ambient);
-    out.flags = sphere.is_mirror ? CLR_SURFACE_MIRROR : 0u;
-    return out;
-}
 
 // Appends each distinct image's texels once, however many billboards and views show it, and
 // scans it for transparency once, into its flag and its coverage bits.
@@ -73,41 +60,15 @@ const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& c
 
 }  // namespace
 
-ClrBillboard compile_billboard(const Billboard& billboard, const TextureSlot* texture, const Vec3& origin) {
-    // P = UL + a*edge_a + b*edge_b. With m = edge_a x edge_b, the dual vectors
-    // (edge_b x m)/|m|^2 and (m x edge_a)/|m|^2 pick a and b out of P - UL by one dot product
-    // each, for any parallelogram, and are computed here in double once per billboard.
-    Vec3 edge_a = billboard.upper_right - billboard.upper_left;
-    Vec3 edge_b = billboard.lower_left - billboard.upper_left;
-    Vec3 m = cross(edge_a, edge_b);
-    double m2 = dot(m, m);
-
-    ClrBillboard out{};
-    out.corner = corner_of(billboard, origin);
-    out.normal = to_float4(normalize(cross(edge_b, edge_a)));  // front: (LL-UL) x (UR-UL)
-    out.dual_a = to_float4(cross(edge_b, m) / m2);
-    out.dual_b = to_float4(cross(m, edge_a) / m2);
-    out.color = to_float4(billboard.ambient);
-    out.flags = billboard.is_mirror ? CLR_SURFACE_MIRROR : 0u;
-    if (texture) {
-        out.flags |= CLR_SURFACE_TEXTURED;
-        out.texel_offset = texture->offset;
-        out.texture_width = texture->width;
-        out.texture_height = texture->height;
-        if (texture->holes) out.flags |= CLR_SURFACE_HOLES;  // only these need alpha tests
-    }
-    return out;
-}
-
 CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     const Scene& scene = frame.scene();
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);
-    for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(compile_sphere(sphere, origin));
+    for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(SphereKind::device(sphere, origin));
     reserve_texels(scene, compiled);
     for (const Billboard& billboard : scene.billboards) {
         if (!billboard.is_mirror) pack_texture(billboard.image.get(), compiled);
-        compiled.billboards.push_back(compile_billboard(billboard, texture_of(billboard, compiled), origin));
+        compiled.billboards.push_back(BillboardKind::device(billboard, texture_of(billboard, compiled), origin));
     }
     // Every view, not only those placed for this frame: a later frame may show any of them.
     for (const Impostor& impostor : scene.impostors) {
@@ -124,9 +85,9 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
 void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Vec3& origin) {
     const Scene& scene = frame.scene();
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        compiled.spheres[i].center_radius = center_radius_of(scene.spheres[i], origin);
+        SphereKind::move(compiled.spheres[i], scene.spheres[i], origin);
     for (std::size_t i = 0; i < scene.billboards.size(); ++i)
-        compiled.billboards[i].corner = corner_of(scene.billboards[i], origin);
+        BillboardKind::move(compiled.billboards[i], scene.billboards[i], origin);
     compiled.billboards.resize(frame.billboard_count());
     const std::size_t first = frame.first_impostor();
     compiled.impostor_textures.resize(frame.billboard_count() - first, {nullptr, nullptr});
@@ -139,7 +100,7 @@ void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Ve
         }
         // Placed relative to the key's eye: with that eye as `origin` (as the renderer has it)
         // the corners go to float as they were placed, exactly.
-        compiled.billboards[i] = compile_billboard(billboard, texture, origin - frame.billboard_origin(i));
+        compiled.billboards[i] = BillboardKind::device(billboard, texture, origin - frame.billboard_origin(i));
     }
     compiled.info.sun = to_float4(scene.sun_location - origin);
     compiled.info.billboard_count = static_cast<int>(compiled.billboards.size());

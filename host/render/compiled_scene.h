@@ -1,6 +1,6 @@
 // The seam between the scene model and the device: a frame's geometry flattened into the
-// shared structs of kernels/shared/clr_types.h, the texel buffer, its coverage mask and the
-// feature set.
+// shared structs of kernels/shared/clr_types.h (each kind's struct made by its unit,
+// host/kinds/), the texel buffer, its coverage mask and the feature set.
 #pragma once
 
 #include <cstdint>
@@ -10,17 +10,11 @@
 #include "render/feature_set.h"
 #include "render/page_aligned_allocator.h"
 #include "render/frame_geometry.h"
+#include "render/texture_slot.h"
 #include "scene/scene.h"
 #include "shared/clr_types.h"
 
 namespace clr {
-
-// Where one image's texels sit in the texel buffer, and what the kernels need to know of it.
-struct TextureSlot {
-    std::uint32_t offset = 0;  // first texel
-    int width = 0, height = 0;
-    bool holes = false;  // some alpha below 255: rays must test it
-};
 
 struct CompiledScene {
     std::vector<ClrSphere> spheres;
@@ -49,9 +43,5 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin = {})
 // positions re-expressed and the placed impostors compiled anew, texels, flags and features
 // left as they are. What each frame of an animation needs, without repacking images.
 void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Vec3& origin);
-
-// The device form of one billboard, relative to `origin`, showing the image at `texture`
-// (null: its flat colour).
-ClrBillboard compile_billboard(const Billboard& billboard, const TextureSlot* texture, const Vec3& origin = {});
 
 }  // namespace clr

@@ -3,6 +3,8 @@
 #include <map>
 #include <set>
 
+#include "kinds/kinds.h"
+
 namespace clr {
 
 FeatureSet FeatureSet::all() {
@@ -17,7 +19,7 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     FeatureSet features;
     features.spheres = !scene.spheres.empty();
     features.billboards = !scene.billboards.empty();
-    features.sun = scene.lit() && features.spheres;  // only spheres are lit
+    features.sun = scene.lit() && has_lit_objects(scene);  // the kinds the sun lights (kinds/kinds.h)
     for (const Sphere& sphere : scene.spheres) features.mirrors |= sphere.is_mirror;
     features.billboards |= !scene.impostors.empty();  // each impostor is a billboard in every frame
     std::set<const Image*> shown;  // each image once: thousands of impostors share a few

@@ -41,7 +41,7 @@ struct SceneArgs {
 // One frame's screen tiles (render/screen_tiles.h), the last parameters of render_packets.
 struct TileArgs {
     cl::Buffer offsets;  // uint: tile t lists items [offsets[t], offsets[t + 1])
-    cl::Buffer items;    // uint object indices, CLR_TILE_BILLBOARD for billboards
+    cl::Buffer items;    // uint scene items (render/scene_item.h)
     cl::Buffer nearest;  // float: a lower bound on each item's hit distance
     cl::Buffer rows;     // uint: the pixel rows each item may cover
     cl_int tiles_x = 0;  // tiles per row of the screen

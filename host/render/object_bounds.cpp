@@ -1,7 +1,6 @@
 #include "render/object_bounds.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -16,10 +15,6 @@ constexpr double kClipMarginPixels = 4;
 // A polygon that passes within this fraction of its distance from the eye counts as touching
 // it (float positions are exact to about 6e-8 of their distance).
 constexpr double kNearEyeFraction = 1e-5;
-
-// Whether bounds made of corners say that an object reaches behind the eye plane: then the
-// corners' projection says nothing, and its bounds are those of its part inside the frustum.
-bool reaches_behind_eye(const PixelBounds& bounds) { return bounds.whole_screen && bounds.in_front; }
 
 }  // namespace
 
@@ -88,66 +83,6 @@ bool ObjectBounds::box_clearly_in_front(const Vec3& center, double half_size) co
     const double least_depth =
         dot(rel, forward_) - half_size * (std::fabs(forward_.x) + std::fabs(forward_.y) + std::fabs(forward_.z));
     return least_depth > 1e-6 * (length(rel) + half_size * std::sqrt(3.0));
-}
-
-PixelBounds ObjectBounds::sphere(const Sphere& sphere) const {
-    PixelBounds bounds;
-    const double r = sphere.radius;
-    if (box_clearly_in_front(sphere.center, r)) {
-        // The box's corners in camera coordinates: the centre's, plus or minus the radius
-        // along each axis (a few additions instead of projecting every corner anew).
-        const Vec3 rel = sphere.center - eye_;
-        const Vec3 center{dot(rel, right_scaled_), dot(rel, up_scaled_), dot(rel, forward_)};
-        const std::array<Vec3, 3> axes = {Vec3{right_scaled_.x, up_scaled_.x, forward_.x} * r,
-                                          Vec3{right_scaled_.y, up_scaled_.y, forward_.y} * r,
-                                          Vec3{right_scaled_.z, up_scaled_.z, forward_.z} * r};
-        for (int bits = 0; bits < 8; ++bits) {
-            const Vec3 p = center + (bits & 1 ? axes[0] : -axes[0]) + (bits & 2 ? axes[1] : -axes[1]) +
-                           (bits & 4 ? axes[2] : -axes[2]);
-            widen(bounds, p.x, p.y, p.z);
-        }
-        bounds.in_front = true;
-        return bounds;
-    }
-    auto corner = [&](int bits) {
-        return sphere.center + Vec3{bits & 1 ? r : -r, bits & 2 ? r : -r, bits & 4 ? r : -r};
-    };
-    for (int bits = 0; bits < 8; ++bits) add(corner(bits), eye_, bounds);
-    if (!reaches_behind_eye(bounds)) return bounds;
-    // Reaching behind the eye: the box's faces are clipped (a ray from outside the box enters
-    // through one; from inside, every direction meets one).
-    bounds = {};
-    for (int axis = 0; axis < 3; ++axis) {
-        const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
-        for (int side : {0, 1 << axis}) {
-            const std::array<Vec3, 4> face = {corner(side), corner(side | u), corner(side | u | v), corner(side | v)};
-            add_clipped(face.data(), 4, eye_, bounds);
-        }
-    }
-    return bounds;
-}
-
-PixelBounds ObjectBounds::billboard(const Billboard& billboard, const Vec3& corners_origin) const {
-    const Vec3 eye = eye_ - corners_origin;  // zero for impostors placed for this eye: exact
-    PixelBounds bounds;
-    const std::array<Vec3, 4> corners = {billboard.upper_left, billboard.upper_right,
-                                         billboard.upper_right + (billboard.lower_left - billboard.upper_left),
-                                         billboard.lower_left};
-    for (const Vec3& corner : corners) add(corner, eye, bounds);
-    if (reaches_behind_eye(bounds)) {
-        bounds = {};
-        add_clipped(corners.data(), 4, eye, bounds);
-    }
-    return bounds;
-}
-
-double ObjectBounds::sphere_distance(const Sphere& sphere) const {
-    return std::max(0.0, length(sphere.center - eye_) - sphere.radius);
-}
-
-double ObjectBounds::billboard_distance(const Billboard& billboard, const Vec3& corners_origin) const {
-    Vec3 normal = normalize(cross(billboard.upper_right - billboard.upper_left, billboard.lower_left - billboard.upper_left));
-    return std::fabs(dot((eye_ - corners_origin) - billboard.upper_left, normal));
 }
 
 }  // namespace clr

@@ -21,27 +21,34 @@ struct PixelBounds {
     bool in_front = false;
 };
 
-// Projects objects for the view of one frame's camera.
+// Projects points and polygons for the view of one frame's camera: the tools each kind's
+// screen bounds are made of (host/kinds/: pixel_bounds, least_distance).
 class ObjectBounds {
 public:
     explicit ObjectBounds(const FrameCamera& camera);
 
-    // A sphere lies inside its axis-aligned box, whose projection bounds the sphere's.
-    PixelBounds sphere(const Sphere& sphere) const;
-    // A parallelogram projects inside the hull of its corners, which are relative to
-    // `corners_origin` ((0, 0, 0): in scene coordinates; FrameGeometry::billboard_origin).
-    PixelBounds billboard(const Billboard& billboard, const Vec3& corners_origin) const;
+    // The eye in scene coordinates, and the view's axes: forward, and right and up scaled so
+    // that a point's dot with them over its depth is its screen coordinate in [-1, 1].
+    const Vec3& eye() const { return eye_; }
+    const Vec3& forward() const { return forward_; }
+    const Vec3& right_scaled() const { return right_scaled_; }
+    const Vec3& up_scaled() const { return up_scaled_; }
 
-    // No hit on the sphere is nearer than its surface, none on a billboard nearer than its plane.
-    double sphere_distance(const Sphere& sphere) const;
-    double billboard_distance(const Billboard& billboard, const Vec3& corners_origin) const;
+    // Widens `bounds` by the point at camera coordinates x, y (scaled) and depth.
+    void widen(PixelBounds& bounds, double x, double y, double depth) const;
+    // Widens `bounds` by the projection of `point` seen from `eye` (in the point's coordinates).
+    void add(const Vec3& point, const Vec3& eye, PixelBounds& bounds) const;
+    // Widens `bounds` by the part of convex polygon `corners` that rays can reach, for objects
+    // that reach behind the eye plane.
+    void add_clipped(const Vec3* corners, int count, const Vec3& eye, PixelBounds& bounds) const;
+    // Whether every corner of the box of half size `half_size` around `center` lies clearly in
+    // front of the eye.
+    bool box_clearly_in_front(const Vec3& center, double half_size) const;
+    // Whether bounds made by add() say that the object reaches behind the eye plane: then its
+    // corners' projection says nothing, and its bounds are those of its part inside the frustum.
+    static bool reaches_behind_eye(const PixelBounds& bounds) { return bounds.whole_screen && bounds.in_front; }
 
 private:
-    void add(const Vec3& point, const Vec3& eye, PixelBounds& bounds) const;
-    void add_clipped(const Vec3* corners, int count, const Vec3& eye, PixelBounds& bounds) const;
-    void widen(PixelBounds& bounds, double x, double y, double depth) const;
-    bool box_clearly_in_front(const Vec3& center, double half_size) const;
-
     Vec3 eye_, forward_, right_, up_;
     Vec3 right_scaled_, up_scaled_;  // right / |right|^2, up / |up|^2: x / depth gives sx
     int width_, height_;

@@ -10,7 +10,9 @@
 #include "core/parallel_for.h"
 #include "core/radix_sort.h"
 #include "core/usable_cpus.h"
+#include "kinds/kinds.h"
 #include "render/object_bounds.h"
+#include "render/scene_item.h"
 
 namespace clr {
 namespace {
@@ -62,26 +64,29 @@ constexpr std::size_t kParallelFrom = 16384;
 constexpr std::size_t kPlaceChunk = 4096;
 constexpr int kBandsPerThread = 4;
 
-// Object `index` of the frame (its spheres, then its billboards) as the tiles list it, or
-// nothing when no tile does.
+// Object `index` of the frame (kind by kind, kinds/kinds.h) as the tiles list it, or nothing
+// when no tile does.
 std::optional<Placed> place(const FrameGeometry& frame, std::size_t index, const ObjectBounds& bounds,
                             const ScreenTiles& tiles, const FrameCamera& camera) {
-    const std::size_t spheres = frame.spheres().size();
-    std::uint32_t item;
-    double nearest;
+    std::uint32_t item = 0;
+    double nearest = 0;
     PixelBounds pixels;
-    if (index < spheres) {
-        const Sphere& sphere = frame.spheres()[index];
-        item = static_cast<std::uint32_t>(index);
-        nearest = bounds.sphere_distance(sphere);
-        pixels = bounds.sphere(sphere);
-    } else {
-        const Billboard& billboard = frame.billboard(index - spheres);
-        const Vec3 corners_origin = frame.billboard_origin(index - spheres);
-        item = static_cast<std::uint32_t>(index - spheres) | CLR_TILE_BILLBOARD;
-        nearest = bounds.billboard_distance(billboard, corners_origin);
-        pixels = bounds.billboard(billboard, corners_origin);
-    }
+    bool found = false;
+    for_each_kind([&](auto kind) {
+        using Kind = decltype(kind);
+        const std::size_t count = Kind::count(frame);
+        if (found) return;
+        if (index >= count) {
+            index -= count;
+            return;
+        }
+        found = true;
+        const auto& object = Kind::object(frame, index);
+        const Vec3 object_origin = Kind::origin(frame, index);
+        item = scene_item(Kind::kHit, index);
+        nearest = Kind::least_distance(bounds, object, object_origin);
+        pixels = Kind::pixel_bounds(bounds, object, object_origin);
+    });
     Placed placed;
     if (!tile_range(pixels, tiles, camera.width, camera.height, pixel_margin(camera.samples), placed.range, placed.rows))
         return std::nullopt;

@@ -17,7 +17,7 @@ namespace clr {
 struct ScreenTiles {
     int tiles_x = 0, tiles_y = 0;
     std::vector<std::uint32_t> offsets;  // tile t's items are items[offsets[t] .. offsets[t+1])
-    std::vector<std::uint32_t> items;    // object index, with CLR_TILE_BILLBOARD for billboards
+    std::vector<std::uint32_t> items;    // scene items (render/scene_item.h)
     std::vector<float> nearest;          // per item: a lower bound on any hit distance
     // Per item: the pixel rows it may cover, first << 16 | last. A row of a tile skips the
     // tile's objects that cannot reach it: small distant objects cover few of its 16 rows.

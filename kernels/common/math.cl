@@ -66,7 +66,7 @@ uchar color_to_byte(float c)
 /* Mirror direction of d about the unit normal n. */
 real3 reflect_direction(real3 d, real3 n)
 {
-    return d - 2.0f * dot3(d, n) * n; /* dot3, not dot(): see sphere_color() */
+    return d - 2.0f * dot3(d, n) * n; /* dot3, not dot(): see surface_color() in shade.cl */
 }
 
 #endif /* CLR_COMMON_MATH_CL */

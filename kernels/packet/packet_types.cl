@@ -29,6 +29,12 @@ typedef struct {
 /* The objects binned to one screen tile (host/render/screen_tiles.h), entries first .. end - 1
  * of its lists: items[k] (common/scene_items.cl), nearest first; nearest[k], a lower bound on
  * the object's hit distance; rows[k], the pixel rows it may cover (first << 16 | last). */
+/* dot3() of a vector with each of 16 directions. */
+CLR_PACKET_INLINE real16 dot16(real3 a, Directions16 d)
+{
+    return a.x * d.x + a.y * d.y + a.z * d.z;
+}
+
 typedef struct {
     __global const uint* items;
     __global const float* nearest;

@@ -7,6 +7,7 @@
 #include "common/math.cl"
 #include "common/rgba_words.cl"
 #include "common/scene_params.cl"
+#include "kinds/kinds.cl"
 #include "packet/intersect_packet.cl"
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
@@ -76,8 +77,9 @@ CLR_PACKET_INLINE void sample_offsets16(ClrCamera camera, int col0, int row, int
 }
 
 /* The colours of 16 rays from the eye with nearest hits `hits`, each path shaded by
- * trace_path(). Given `flat` (the intersection loop's flat colours), only lanes on spheres
- * are traced and the others keep their flat colour; without (0), every lane is traced. */
+ * trace_path(). Given `flat` (the intersection loop's flat colours), only lanes on lit kinds
+ * (kind_is_lit()) are traced and the others keep their flat colour; without (0), every lane
+ * is traced. */
 CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hits, const Colors16* flat,
                                            CLR_SCENE_PARAMS)
 {
@@ -96,7 +98,7 @@ CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hit
     vstore16(d.y, 0, ys);
     vstore16(d.z, 0, zs);
     for (int lane = 0; lane < 16; ++lane) {
-        if (flat && kinds[lane] != CLR_HIT_SPHERE)
+        if (flat && !kind_is_lit(kinds[lane]))
             continue; /* its flat colour is in rl, gl, bl already */
         Hit hit;
         hit.t = ts[lane];
@@ -124,10 +126,10 @@ CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hit
     return flat;
 }
 #elif CLR_LOOP_COLORS
-/* Sun without mirrors: the loop's flat colours, with lanes on spheres lit one by one. */
+/* Sun without mirrors: the loop's flat colours, with lanes on lit kinds lit one by one. */
 CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    if (!any_lanes16(hits.kind == (int16)(CLR_HIT_SPHERE))) /* no lane needs the sun */
+    if (!any_lanes16(lit_lanes16(hits.kind))) /* no lane needs the sun */
         return flat;
     return traced_colors16(eye, d, hits, &flat, CLR_SCENE_ARGS);
 }

@@ -37,18 +37,25 @@ typedef cl_uint clr_uint;
 #define CLR_COVERAGE_WINDOW_WORDS 32u
 
 /* Screen tiles for primary rays (host/render/screen_tiles.h): a tile is
- * kClrTileSize x kClrTileSize pixels, and a tile item is an object index, with this bit set
- * for billboards. */
-#define CLR_TILE_BILLBOARD 0x80000000u
+ * kClrTileSize x kClrTileSize pixels. */
 #define CLR_TILE_SIZE 16
 #ifndef __OPENCL_VERSION__
 constexpr int kClrTileSize = CLR_TILE_SIZE;
 #endif
 
-/* What a ray hit (ClrHit.kind). */
+/* What a ray hit (ClrHit.kind): the primitive kinds, in the order that ranks equally near
+ * hits (kernels/common/hit_order.cl). kernels/kinds/kinds.cl lists them. */
 #define CLR_HIT_NONE 0
 #define CLR_HIT_SPHERE 1
 #define CLR_HIT_BILLBOARD 2
+
+/* A scene item, as screen-tile lists and BVH leaves store an object: its kind (CLR_HIT_*) in
+ * the top CLR_ITEM_KIND_BITS bits, its index among the objects of that kind in the others
+ * (kernels/common/scene_items.cl, host/render/scene_item.h). Four bits leave room for 15
+ * kinds; 28 for 268 million objects of a kind, more than a scene file can describe. */
+#define CLR_ITEM_KIND_BITS 4
+#define CLR_ITEM_INDEX_BITS 28
+#define CLR_ITEM_INDEX_MASK 0x0FFFFFFFu
 
 /* The pinhole camera of one frame, flattened from the scene's camera
  * (docs/scene-format.md, Conventions: Camera). The direction through
@@ -104,7 +111,7 @@ typedef struct {
     clr_float4 lower; /* xyz = lower corner of the bounds */
     clr_float4 upper; /* xyz = upper corner */
     clr_uint first;   /* inner node: left child (the right child is first + 1); leaf: first item */
-    clr_uint count;   /* leaf: number of items (object indices, CLR_TILE_BILLBOARD for billboards); 0: inner */
+    clr_uint count;   /* leaf: number of items (scene items, see CLR_ITEM_KIND_BITS); 0: inner */
     clr_uint pad0, pad1;
 } ClrBvhNode;
 

@@ -7,6 +7,7 @@
 
 #include <set>
 
+#include "render/scene_item.h"
 #include "support/random_scene.h"
 #include "support/scene_builder.h"
 
@@ -38,8 +39,8 @@ void check_structure(const Scene& scene, const Bvh& bvh) {
         for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
             std::uint32_t item = bvh.items[k];
             seen.insert(item);
-            std::uint32_t i = item & ~CLR_TILE_BILLBOARD;
-            if (item & CLR_TILE_BILLBOARD) {
+            std::uint32_t i = scene_item_index(item);
+            if (scene_item_kind(item) == CLR_HIT_BILLBOARD) {
                 const Billboard& b = scene.billboards[i];
                 for (const Vec3& corner : {b.upper_left, b.lower_left, b.upper_right, b.upper_right + (b.lower_left - b.upper_left)})
                     EXPECT_TRUE(contains(node, corner, corner)) << "billboard " << i;

@@ -15,6 +15,7 @@
 #include "render/frame_geometry.h"
 #include "render/frustum_clip.h"
 #include "render/renderer.h"
+#include "render/scene_item.h"
 #include "support/opencl_test_device.h"
 #include "support/scene_builder.h"
 
@@ -44,7 +45,7 @@ TEST(ScreenTiles, BillboardBesideTheEyeIsListedOnlyWhereItsVisiblePartProjects) 
     FrameGeometry frame(scene);
     FrameCamera camera = frame_camera(scene, scene.camera_path.front(), 0);
     ScreenTiles tiles = bin_screen_tiles(frame, camera);
-    std::set<int> columns = tile_columns_listing(tiles, 0 | CLR_TILE_BILLBOARD);
+    std::set<int> columns = tile_columns_listing(tiles, scene_item(CLR_HIT_BILLBOARD, 0));
     ASSERT_FALSE(columns.empty());
     // Pixel 199 lies in tile 12; a few pixels of margin may reach tile 11, never further.
     EXPECT_GE(*columns.begin(), 11) << "listed in tiles left of its visible part";
@@ -60,7 +61,7 @@ TEST(ScreenTiles, SphereAroundTheEyePlaneIsListedOnlyWhereItsVisiblePartProjects
     FrameGeometry frame(scene);
     FrameCamera camera = frame_camera(scene, scene.camera_path.front(), 0);
     ScreenTiles tiles = bin_screen_tiles(frame, camera);
-    std::set<int> columns = tile_columns_listing(tiles, 0);
+    std::set<int> columns = tile_columns_listing(tiles, scene_item(CLR_HIT_SPHERE, 0));
     ASSERT_FALSE(columns.empty());
     EXPECT_EQ(*columns.begin(), 0);
     // A few pixels of margin may reach tile 5, never further.
@@ -102,14 +103,14 @@ TEST(ScreenTiles, ListsOnlyThePixelsWhoseRaysCanMeetTheObject) {
     scene.billboards.push_back(testing::make_billboard({-1, 1, -10}, {-1, -1, -10}, {1, 1, -10}, {1, 0, 0}));
     FrameGeometry frame(scene);
     const Listing centres = listing_of(bin_screen_tiles(frame, frame_camera(scene, scene.camera_path.front(), 0)),
-                                       0 | CLR_TILE_BILLBOARD);
+                                       scene_item(CLR_HIT_BILLBOARD, 0));
     EXPECT_EQ(centres.first_row, 64);
     EXPECT_EQ(centres.last_row, 95);
     EXPECT_EQ(centres.tile_columns, (std::set<int>{9, 10}));
 
     scene.sampling.samples_per_pixel = 4;
     const Listing spread = listing_of(bin_screen_tiles(frame, frame_camera(scene, scene.camera_path.front(), 0)),
-                                      0 | CLR_TILE_BILLBOARD);
+                                      scene_item(CLR_HIT_BILLBOARD, 0));
     EXPECT_EQ(spread.first_row, 63);
     EXPECT_EQ(spread.last_row, 96);
     EXPECT_EQ(spread.tile_columns, (std::set<int>{8, 9, 10, 11}));
@@ -137,9 +138,9 @@ TEST(ScreenTiles, ListsRunNearestFirstWithBoundsBelowTheObjectsDistances) {
             if (k > tiles.offsets[t]) {
                 EXPECT_LE(tiles.nearest[k - 1], tiles.nearest[k]) << "tile " << t << " entry " << k;
             }
-            const std::uint32_t index = tiles.items[k] & ~CLR_TILE_BILLBOARD;
+            const std::uint32_t index = scene_item_index(tiles.items[k]);
             double distance;
-            if (tiles.items[k] & CLR_TILE_BILLBOARD) {
+            if (scene_item_kind(tiles.items[k]) == CLR_HIT_BILLBOARD) {
                 const Billboard& b = frame.billboard(index);
                 const Vec3 normal = normalize(cross(b.upper_right - b.upper_left, b.lower_left - b.upper_left));
                 distance = std::fabs(dot(eye - b.upper_left, normal));
@@ -152,8 +153,8 @@ TEST(ScreenTiles, ListsRunNearestFirstWithBoundsBelowTheObjectsDistances) {
 
 // The object's place in the frame: its spheres, then its billboards.
 std::size_t frame_index(const FrameGeometry& frame, std::uint32_t item) {
-    const std::size_t index = item & ~CLR_TILE_BILLBOARD;
-    return (item & CLR_TILE_BILLBOARD) ? frame.spheres().size() + index : index;
+    const std::size_t index = scene_item_index(item);
+    return scene_item_kind(item) == CLR_HIT_BILLBOARD ? frame.spheres().size() + index : index;
 }
 
 // A frame of 20,000 objects bins on every usable core (bands of tile rows, chunks of objects):

@@ -1,0 +1,115 @@
+/* The sphere kind (ClrSphere): where a ray meets it, one ray and 16 at a time, its normal and
+ * its colour. Every kind gives kinds/kinds.cl the same functions, with the same parameters. */
+#ifndef CLR_KINDS_SPHERE_CL
+#define CLR_KINDS_SPHERE_CL
+
+#include "common/math.cl"
+#include "common/scene_params.cl"
+#include "packet/lane_masks.cl"
+#include "packet/packet_types.cl"
+#include "shared/clr_types.h"
+
+/* Distance along the unit direction to the nearest intersection with t > 0, or +inf.
+ * Float32-robust form (Ray Tracing Gems, ch. 7): the discriminant is computed from the
+ * distance between the centre and the ray's closest point instead of b*b - c, which would
+ * cancel catastrophically for small or distant spheres, and the two roots come from
+ * q = b + sign(b) sqrt(discriminant) as c/q and q, so neither subtracts nearly equal values. */
+real sphere_distance(float4 center_radius, real3 origin, real3 direction)
+{
+    real radius = center_radius.w;
+    real3 oc = origin - convert_real3(center_radius.xyz);
+    real b = -dot3(oc, direction);              /* t of the closest approach */
+    real3 closest_offset = oc + b * direction; /* centre -> closest point on the ray */
+    real discriminant = radius * radius - dot3(closest_offset, closest_offset);
+    if (discriminant < 0.0f)
+        return INFINITY;
+    real c = dot3(oc, oc) - radius * radius;
+    real q = b + copysign(sqrt(discriminant), b);
+    if (q == 0.0f) /* tangent exactly at the origin */
+        return INFINITY;
+    real t0 = c / q;
+    real t1 = q;
+    real t_near = fmin(t0, t1);
+    real t_far = fmax(t0, t1);
+    if (t_near > 0.0f)
+        return t_near;
+    return t_far > 0.0f ? t_far : INFINITY; /* origin inside the sphere: the far side */
+}
+
+/* sphere_distance() for 16 rays from one origin. */
+CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, Directions16 d)
+{
+    real radius = center_radius.w;
+    real3 oc = origin - convert_real3(center_radius.xyz);
+    real16 b = -dot16(oc, d);
+    real16 cx = oc.x + b * d.x, cy = oc.y + b * d.y, cz = oc.z + b * d.z;
+    real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
+    if (!any_lanes16(discriminant >= 0.0f))
+        return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
+    real c = dot3(oc, oc) - radius * radius;
+    real16 q = b + copysign(sqrt(discriminant), b);
+    real16 t0 = c / q;
+    real16 t1 = q;
+    real16 t_near = fmin(t0, t1);
+    real16 t_far = fmax(t0, t1);
+    real16 t = select(select((real16)(INFINITY), t_far, t_far > 0.0f), t_near, t_near > 0.0f);
+    return select(t, (real16)(INFINITY), discriminant < 0.0f || q == 0.0f);
+}
+
+/* The kind's functions for kinds/kinds.cl. */
+
+/* Sphere `index` as a ray from `origin` meets it, with 0 < t < t_max or +inf (a sphere's hit
+ * needs no t_max: the caller compares). */
+real sphere_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
+{
+    return sphere_distance(spheres[index].center_radius, origin, direction);
+}
+
+/* sphere_hit_distance() for 16 primary rays; a sphere shows no texels. */
+CLR_PACKET_INLINE real16 sphere_hit_distance16(int index, real3 origin, Directions16 d, int want_texels,
+                                               uint16* texel, CLR_SCENE_PARAMS)
+{
+    return sphere_distance16(spheres[index].center_radius, origin, d);
+}
+
+/* The unit outward normal at `point` on the sphere. */
+real3 sphere_normal(int index, real3 point, CLR_SCENE_PARAMS)
+{
+    return unit3(point - convert_real3(spheres[index].center_radius.xyz));
+}
+
+uint sphere_flags(int index, CLR_SCENE_PARAMS)
+{
+    return spheres[index].flags;
+}
+
+/* The colour before lighting: the ambient colour. */
+float3 sphere_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
+{
+    return spheres[index].color.xyz;
+}
+
+/* sphere_surface_color() of 16 lanes that hit the sphere. */
+CLR_PACKET_INLINE Colors16 sphere_flat_colors16(int index, uint16 texel, CLR_SCENE_PARAMS)
+{
+    float3 color = spheres[index].color.xyz;
+    Colors16 out;
+    out.r = (float16)(color.x);
+    out.g = (float16)(color.y);
+    out.b = (float16)(color.z);
+    return out;
+}
+
+/* Spheres are lit by the sun (docs/scene-format.md, Conventions: Lighting and shadows): in a
+ * lit scene shade.cl scales their colour by max(0, n.l) and the sun's visibility. */
+bool sphere_is_lit(void)
+{
+    return true;
+}
+
+/* Nothing to fetch ahead of a sphere's test. */
+CLR_PACKET_INLINE void sphere_prefetch(int index, CLR_SCENE_PARAMS)
+{
+}
+
+#endif /* CLR_KINDS_SPHERE_CL */
