@@ -46,7 +46,7 @@ class BuildTargets : public ::testing::Test {
 protected:
     void SetUp() override {
         fs::create_directories(folder.file("repo/scripts"));
-        for (const char* script : {"demo.sh", "build.sh", "install-deps.sh", "test.sh"})
+        for (const char* script : {"demo.sh", "build.sh", "install-deps.sh", "test.sh", "name-retried-tests.sh"})
             fs::copy_file(std::string(CLRENDER_SOURCE_DIR) + "/scripts/" + script,
                           folder.file(std::string("repo/scripts/") + script));
         fs::create_directories(folder.file("bin"));
