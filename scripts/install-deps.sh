@@ -25,6 +25,8 @@ demo_packages=(
   libjpeg62-turbo-dev
   # OBJ meshes: tinyobjloader parses the files (host/scene/obj_reader.cpp)
   libtinyobjloader-dev
+  # `clrender view`'s web server (host/view/, part of clrender) and its tests' HTTP client
+  libcpp-httplib-dev
 )
 
 # The tests, the benchmarks and the other scripts, besides.
@@ -32,8 +34,6 @@ packages=(
   "${demo_packages[@]}"
   clinfo
   googletest libgtest-dev
-  # `clrender view`'s web server (host/view/) and its tests' HTTP client
-  libcpp-httplib-dev
   # the man page, made from --help at build time (cmake/write_man_page.cmake)
   help2man
   parallel
