@@ -6,13 +6,18 @@
 set -euo pipefail
 log="$1"
 [ -f "$log" ] || exit 0
-# CTest prints "Test #N: NAME ...***Failed" (or ***Exception, ***Timeout) for each failed try.
-{ grep -E '^ *([0-9]+/[0-9]+ )?Test +#[0-9]+: .*\*\*\*(Failed|Exception|Timeout)' "$log" || true; } |
-    sed -E 's/^ *([0-9]+\/[0-9]+ )?Test +#[0-9]+: ([^ ]+).*/\2/' | sort -u |
-    while IFS= read -r name; do
-        if grep -qE "Test +#[0-9]+: $(printf '%s' "$name" | sed 's/[][\.*^$/]/\\&/g') .*Passed" "$log"; then
-            echo "retried test: $name failed once and passed when run again (flaky: see its log above)"
-        else
-            echo "failed test: $name failed twice"
-        fi
-    done
+# CTest prints "[i/n] Test #N: NAME ... Passed" for a try that passed and "***Failed" (or
+# ***Exception, ***Timeout) for one that did not; the name is the word after "#N:".
+awk '
+    match($0, /Test +#[0-9]+: [^ ]+/) {
+        name = substr($0, RSTART, RLENGTH)
+        sub(/^Test +#[0-9]+: /, "", name)
+        if ($0 ~ /\*\*\*(Failed|Exception|Timeout)/) { failed[name] = 1 }
+        else if ($0 ~ / Passed /) { passed[name] = 1 }
+    }
+    END {
+        for (name in failed) {
+            if (name in passed) print "retried test: " name " failed once and passed when run again (flaky: see its log above)"
+            else print "failed test: " name " failed twice"
+        }
+    }' "$log" | sort
