@@ -58,17 +58,23 @@ std::string shared_forest() {
     const std::string name = "forest-" + std::to_string(binary.st_mtim.tv_sec) + "." +
                              std::to_string(binary.st_mtim.tv_nsec) + "-" + std::to_string(binary.st_size);
     fs::create_directories(cache);
-    const int lock = ::open((cache / "forest.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (lock < 0 || ::flock(lock, LOCK_EX) != 0) throw std::runtime_error("cannot lock the shared forest");
+    // Held until this function returns or throws: closing the descriptor releases the lock.
+    struct Lock {
+        int fd;
+        ~Lock() {
+            if (fd >= 0) ::close(fd);
+        }
+    } lock{::open((cache / "forest.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)};
+    if (lock.fd < 0 || ::flock(lock.fd, LOCK_EX) != 0) throw std::runtime_error("cannot lock the shared forest");
     const fs::path folder = cache / name;
     if (!fs::exists(folder / "complete")) {
         for (const auto& entry : fs::directory_iterator(cache)) {  // forests of earlier builds
             if (entry.path().filename().string().rfind("forest-", 0) == 0) fs::remove_all(entry.path());
         }
         forest::write_forest(small_forest(7), folder);
-        std::ofstream(folder / "complete").flush();
+        std::ofstream complete(folder / "complete");
+        if (!complete.flush()) throw std::runtime_error("cannot mark the shared forest complete");
     }
-    ::close(lock);  // releases the lock
     return folder.string();
 }
 
