@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <array>
 #include <string>
@@ -164,6 +165,15 @@ TEST(ObjReader, FilesThatAreNotMeshesAreRefusedAtOnce) {
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     EXPECT_THROW(read_obj(fifo), ObjError);  // no writer: refused, not waited for
     EXPECT_THROW(read_obj("/dev/zero"), ObjError);
+    // A file beyond the limit is refused by its size, before a byte is read (a sparse file).
+    const std::string huge = folder.write("huge.obj", "");
+    ASSERT_EQ(::truncate(huge.c_str(), static_cast<off_t>(kMaxObjFileBytes + 1)), 0);
+    try {
+        read_obj(huge);
+        ADD_FAILURE() << "a file beyond the limit was read";
+    } catch (const ObjError& error) {
+        EXPECT_NE(std::string(error.what()).find("more than the limit of 1 GiB"), std::string::npos) << error.what();
+    }
 }
 
 // Statements clrender does not draw reach no parser: a skin weight of 1e400 once reached
