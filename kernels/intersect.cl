@@ -41,7 +41,7 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
     real3 inverse = safe_inverse(direction);
     uint stack[CLR_BVH_STACK];
     int top = 0;
-    if (info.sphere_count + info.billboard_count > 0)
+    if (info.sphere_count + info.billboard_count + info.triangle_count > 0)
         stack[top++] = 0;
     while (top > 0) {
         __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];

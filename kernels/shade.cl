@@ -32,7 +32,7 @@ float3 surface_color(Hit hit, real3 origin, real3 direction, CLR_SCENE_PARAMS)
     if (!info.lit || !kind_is_lit(hit.kind))
         return color;
     real3 point = origin + hit.t * direction;
-    real3 normal = kind_normal(hit.kind, hit.index, point, CLR_SCENE_ARGS);
+    real3 normal = kind_normal(hit.kind, hit.index, point, direction, CLR_SCENE_ARGS);
     real3 to_sun = convert_real3(info.sun.xyz) - point;
     real sun_distance = sqrt(dot3(to_sun, to_sun));
     real3 light = to_sun / sun_distance;
@@ -57,7 +57,7 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
 #if CLR_FEATURE_MIRRORS
     if (kind_flags(hit.kind, hit.index, CLR_SCENE_ARGS) & CLR_SURFACE_MIRROR) {
         real3 point = origin + hit.t * direction;
-        real3 normal = kind_normal(hit.kind, hit.index, point, CLR_SCENE_ARGS);
+        real3 normal = kind_normal(hit.kind, hit.index, point, direction, CLR_SCENE_ARGS);
         if (dot3(direction, normal) >= 0.0f) {
             result.color = (float3)(0.0f); /* the back of a mirror is black */
             return result;

@@ -8,6 +8,7 @@
 #include "core/printable_text.h"
 #include "render/feature_set.h"
 #include "scene/camera_path.h"
+#include "shared/clr_types.h"
 
 namespace clr {
 namespace {
@@ -38,6 +39,26 @@ std::string objects_line(const std::vector<Object>& objects) {
     return std::to_string(objects.size()) + (mirrors ? " (" + count_of(mirrors, "mirror", "mirrors") + ")" : "");
 }
 
+// "2 (1 mirror, 1 placeholder), 5120 triangles (2.2 MB on the device)": the device holds
+// each triangle's struct and, where the mesh gives them, its three corner normals.
+std::string meshes_line(const Scene& scene) {
+    std::size_t mirrors = 0, placeholders = 0;
+    for (const Mesh& mesh : scene.meshes) {
+        mirrors += mesh.is_mirror;
+        placeholders += mesh.placeholder;
+    }
+    std::string notes;
+    if (mirrors) notes += count_of(mirrors, "mirror", "mirrors");
+    if (placeholders) notes += (notes.empty() ? "" : ", ") + count_of(placeholders, "placeholder", "placeholders");
+    const double bytes = static_cast<double>(scene.triangles.size() * sizeof(ClrTriangle) +
+                                             scene.corner_normals.size() * 3 * sizeof(cl_float4));
+    char size[32];
+    std::snprintf(size, sizeof size, "%.3g", bytes / 1e6);
+    return std::to_string(scene.meshes.size()) + (notes.empty() ? "" : " (" + notes + ")") + ", " +
+           count_of(scene.triangles.size(), "triangle", "triangles") +
+           (scene.triangles.empty() ? "" : " (" + std::string(size) + " MB on the device)");
+}
+
 std::string images_line(const Scene& scene) {
     if (scene.image_files.empty()) return "none";
     long long pixels = 0;
@@ -61,7 +82,8 @@ std::string images_line(const Scene& scene) {
 std::string features_line(const Scene& scene, bool double_precision) {
     const FeatureSet features = FeatureSet::of(scene);
     const std::vector<std::pair<const char*, bool>> named = {
-        {"spheres", features.spheres}, {"billboards", features.billboards}, {"textures", features.textures},
+        {"spheres", features.spheres}, {"billboards", features.billboards}, {"triangles", features.triangles},
+        {"textures", features.textures},
         {"alpha", features.alpha},     {"sun", features.sun},               {"mirrors", features.mirrors},
         {"bvh", features.bvh},         {"double", double_precision},
     };
@@ -84,6 +106,7 @@ std::string check_summary(const Scene& scene, bool double_precision) {
     out << "spheres:    " << objects_line(scene.spheres) << "\n";
     out << "billboards: " << objects_line(scene.billboards) << "\n";
     out << "impostors:  " << scene.impostors.size() << "\n";
+    out << "meshes:     " << meshes_line(scene) << "\n";
     out << "images:     " << printable(images_line(scene)) << "\n";
     out << "features:   " << features_line(scene, double_precision) << "\n";
     out << "warnings:   " << scene.warnings.size()

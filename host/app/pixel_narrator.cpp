@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "kinds/kinds.h"
+
 namespace clr {
 
 using reference::ColourSource;
@@ -38,6 +40,12 @@ std::string colour_text(const Color& colour) { return explain_vector(colour); }
 
 std::string PixelNarrator::surface_name(HitKind kind, int index) const {
     if (kind == HitKind::Sphere) return "sphere " + std::to_string(index);
+    if (kind == HitKind::Triangle) {
+        const Triangle& triangle = scene_.triangles[index];
+        const Mesh& mesh = scene_.meshes[triangle.mesh];
+        return "triangle " + std::to_string(index - mesh.first_triangle) + " of mesh " + std::to_string(triangle.mesh) +
+               " ('" + mesh.filename + "')";
+    }
     if (index < own_billboards_) return "billboard " + std::to_string(index);
     return "impostor " + std::to_string(index - own_billboards_) + " (placed as billboard " + std::to_string(index) + ")";
 }
@@ -150,7 +158,43 @@ void PixelNarrator::billboard_tested(int index, const PlaneHit& plane, double t_
     if (accepted) found_in_search_ = true;
 }
 
+// In the lecture's terms: the ray meets the triangle's plane at t_hit, and the point there is
+// inside when the orientation test of each edge with the point turns the same way as the
+// triangle's corners (counter-clockwise about n); the three tests over |n|^2 are the point's
+// barycentric coordinates. Only triangles the point falls inside are narrated.
+void PixelNarrator::triangle_tested(int index, const reference::detail::TriangleTest& test, double t_max,
+                                    bool accepted) {
+    if (!test.meets_plane || !test.inside) {
+        ++triangles_missed_;
+        return;
+    }
+    const Triangle& triangle = scene_.triangles[index];
+    out_ << surface_name(HitKind::Triangle, index) << " (c0 = " << position(triangle.corners[0])
+         << ", c1 = " << position(triangle.corners[1]) << ", c2 = " << position(triangle.corners[2]) << ")\n    ";
+    out_ << "plane n = (c1 - c0) x (c2 - c0), t_hit = ((c0 - o).n) / (d.n) = " << explain_number(test.t)
+         << ", point " << position(reference::detail::point_at(ray_, test.t))
+         << "; orientation tests: the point is on the inner side of all three edges, barycentric (b0, b1, b2) = ("
+         << explain_number(test.weights[0]) << ", " << explain_number(test.weights[1]) << ", "
+         << explain_number(test.weights[2]) << ")\n    ";
+    if (test.t <= 0)
+        out_ << "rejected: the plane is behind the ray's origin (t_hit <= 0)\n";
+    else if (!test.ahead)
+        out_ << "rejected: t_hit is within rounding of the point the ray leaves (a neighbour of its triangle)\n";
+    else if (test.t >= t_max)
+        out_ << "rejected: not nearer than " << bound_name() << " (" << explain_number(t_max) << ")\n";
+    else if (accepted)
+        out_ << "hit, the nearest so far\n";
+    else
+        out_ << "rejected\n";
+    if (accepted) found_in_search_ = true;
+}
+
 void PixelNarrator::nearest_found(const reference::Hit& hit) {
+    if (triangles_missed_ > 0) {
+        out_ << triangles_missed_ << (triangles_missed_ == 1 ? " triangle" : " triangles")
+             << ": the ray passes outside (an orientation test fails) or runs parallel to the plane\n";
+        triangles_missed_ = 0;
+    }
     if (role_ == RayRole::Shadow) {
         shadowed_ = hit.kind != HitKind::None;
         if (shadowed_)
@@ -196,13 +240,20 @@ void PixelNarrator::colour_found(ColourSource source, const Color& colour) {
         case ColourSource::SphereAmbient:
             out_ << "colour: the sphere's ambient colour " << colour_text(colour) << " (unlit)\n";
             break;
-        case ColourSource::SphereLit: {
-            const Color& ambient = scene_.spheres[surface_hit_.index].ambient;
+        case ColourSource::SunLit: {
+            Color ambient;
+            for_each_kind([&](auto kind) {
+                using Kind = decltype(kind);
+                if (surface_hit_.kind == Kind::reference_kind()) ambient = Kind::reference_ambient(scene_, surface_hit_.index);
+            });
             out_ << "colour = ambient * max(0, n.l) * s = " << colour_text(ambient) << " * "
                  << explain_number(cosine_ > 0 ? cosine_ : 0) << " * " << (cosine_ > 0 && !shadowed_ ? 1 : 0) << " = "
                  << colour_text(colour) << "\n";
             break;
         }
+        case ColourSource::MeshAmbient:
+            out_ << "colour: the mesh's ambient colour " << colour_text(colour) << " (unlit)\n";
+            break;
         case ColourSource::BillboardAmbient:
             out_ << "colour: the billboard's flat colour " << colour_text(colour) << "\n";
             break;

@@ -33,12 +33,13 @@ public:
     void ray_cast(reference::RayRole role, int depth, const reference::Ray& ray, double t_max) override;
     void sphere_tested(int index, const reference::detail::SphereRoots& roots, double t_max, double t) override;
     void billboard_tested(int index, const reference::detail::PlaneHit& plane, double t_max, bool accepted) override;
+    void triangle_tested(int index, const reference::detail::TriangleTest& test, double t_max, bool accepted) override;
     void nearest_found(const reference::Hit& hit) override;
     void surface_reached(const reference::Hit& hit, const reference::detail::SurfacePoint& surface) override;
     void sun_seen(const reference::detail::SunDirection& sun, double cosine) override;
     void colour_found(reference::ColourSource source, const Color& colour) override;
 
-    // "sphere 2", "billboard 0", "impostor 1 (placed as billboard 3)".
+    // "sphere 2", "billboard 0", "impostor 1 (placed as billboard 3)", "triangle 5 of mesh 0".
     std::string surface_name(reference::HitKind kind, int index) const;
 
 private:
@@ -63,6 +64,9 @@ private:
     reference::detail::SurfacePoint surface_;
     double cosine_ = 0;              // n.l of the last lit point
     bool shadowed_ = false;          // the last shadow ray met a blocker
+    // Triangles whose plane the ray meets outside them, counted rather than narrated one by
+    // one (a mesh has thousands): said once when the search ends.
+    long long triangles_missed_ = 0;
 };
 
 }  // namespace clr

@@ -26,6 +26,7 @@
 #include "core/message_lines.h"
 #include "core/printable_text.h"
 #include "core/stopwatch.h"
+#include "shared/clr_types.h"
 #include "core/usable_cpus.h"
 #include "core/worker_threads.h"
 #include "app/output_plan.h"
@@ -67,7 +68,20 @@ struct RunReport {
     std::size_t tiles_joined = 0;  // --join
     bool image_was_finished = false;  // --resume found the one image finished: nothing written but the stats
     std::size_t frames_skipped = 0;   // frames --resume found finished
+    nlohmann::json scene_objects;     // what the scene holds, by kind
 };
+
+// The scene's objects by kind, and what its meshes take on the device (each triangle's
+// struct, and three corner normals where the mesh gives them).
+nlohmann::json scene_objects(const Scene& scene) {
+    return {{"spheres", scene.spheres.size()},
+            {"billboards", scene.billboards.size()},
+            {"impostors", scene.impostors.size()},
+            {"meshes", scene.meshes.size()},
+            {"triangles", scene.triangles.size()},
+            {"triangle_device_bytes", scene.triangles.size() * sizeof(ClrTriangle) +
+                                          scene.corner_normals.size() * 3 * sizeof(cl_float4)}};
+}
 
 std::string stats_text(const RunReport& report) {
     nlohmann::json frames = nlohmann::json::array();
@@ -79,6 +93,7 @@ std::string stats_text(const RunReport& report) {
         {"build_ms", report.build_ms},
         {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
         {"store_hits", report.store_hits},  // programs built from the store installed with clrender
+        {"scene", report.scene_objects},
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
                        {"write", report.write_ms}, {"total", report.total_ms}}},
         {"frames", frames},
@@ -387,6 +402,7 @@ int run(const Options& options) {
     }
     Scene scene = load(options);
     report.load_ms = run_time.elapsed_ms();
+    report.scene_objects = scene_objects(scene);
     if (options.print_frame_count) {
         std::cout << animation_frame_count(scene) << "\n";
         return kExitOk;

@@ -69,7 +69,7 @@ struct BillboardKind {
                                   double& nearest_t, reference::Hit& nearest, reference::TraceObserver* observer);
     static double reference_margin(const Scene& scene, const reference::Ray& ray, double t_max,
                                    const reference::SurfaceId& leaving, std::vector<double>& hit_ts);
-    static Vec3 reference_normal(const Scene& scene, int index, const Vec3& point);
+    static Vec3 reference_normal(const Scene& scene, int index, const Vec3& point, const Vec3& direction);
     static bool reference_is_mirror(const Scene& scene, int index);
     static reference::ColourSource reference_own_color(const Scene& scene, const reference::Hit& hit, Color& colour);
     static const Color& reference_ambient(const Scene& scene, int index);

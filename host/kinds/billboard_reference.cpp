@@ -83,7 +83,7 @@ double BillboardKind::reference_margin(const Scene& scene, const reference::Ray&
     return margin;
 }
 
-Vec3 BillboardKind::reference_normal(const Scene& scene, int index, const Vec3&) {
+Vec3 BillboardKind::reference_normal(const Scene& scene, int index, const Vec3&, const Vec3&) {
     return reference::detail::billboard_front_normal(scene.billboards[index]);
 }
 

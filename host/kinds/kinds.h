@@ -8,6 +8,7 @@
 
 #include "kinds/billboard_kind.h"
 #include "kinds/sphere_kind.h"
+#include "kinds/triangle_kind.h"
 
 namespace clr {
 
@@ -16,6 +17,7 @@ template <typename Visit>
 void for_each_kind(Visit&& visit) {
     visit(SphereKind{});
     visit(BillboardKind{});
+    visit(TriangleKind{});
 }
 
 // Whether the sun lights surfaces of hit kind `hit` (CLR_HIT_*); CLR_HIT_NONE is not lit.

@@ -61,7 +61,7 @@ double SphereKind::reference_margin(const Scene& scene, const reference::Ray& ra
     return margin;
 }
 
-Vec3 SphereKind::reference_normal(const Scene& scene, int index, const Vec3& point) {
+Vec3 SphereKind::reference_normal(const Scene& scene, int index, const Vec3& point, const Vec3&) {
     const Sphere& sphere = scene.spheres[index];
     return (point - sphere.center) / sphere.radius;
 }

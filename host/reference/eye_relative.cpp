@@ -12,6 +12,8 @@ EyeRelative relative_to_eye(const Scene& scene, const CameraFrame& camera) {
         billboard.lower_left = billboard.lower_left - eye;
         billboard.upper_right = billboard.upper_right - eye;
     }
+    for (Triangle& triangle : moved.triangles)
+        for (Vec3& corner : triangle.corners) corner = corner - eye;
     for (Impostor& impostor : moved.impostors) impostor.center = impostor.center - eye;
     moved.sun_location = moved.sun_location - eye;
     for (CameraKey& key : moved.camera_path) {

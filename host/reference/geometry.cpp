@@ -104,7 +104,7 @@ SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     for_each_kind([&](auto kind) {
         using Kind = decltype(kind);
         if (hit.kind != Kind::reference_kind()) return;
-        surface.normal = Kind::reference_normal(scene, hit.index, surface.point);
+        surface.normal = Kind::reference_normal(scene, hit.index, surface.point, ray.direction);
         surface.is_mirror = Kind::reference_is_mirror(scene, hit.index);
     });
     return surface;

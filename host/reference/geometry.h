@@ -42,6 +42,17 @@ PlaneHit billboard_plane_hit(const Billboard& billboard, const Ray& ray);
 
 inline bool inside_unit_square(double a, double b) { return a >= 0 && a <= 1 && b >= 0 && b <= 1; }
 
+// A ray tested against a triangle (kinds/triangle_reference.cpp): where it meets the
+// triangle's plane, and the point's barycentric coordinates there (weights[i] of corner i,
+// each the orientation test of the opposite edge over |n|^2).
+struct TriangleTest {
+    bool meets_plane = false;  // false: the ray runs parallel to the plane
+    double t = 0;
+    double weights[3] = {0, 0, 0};
+    bool inside = false;  // every weight >= 0
+    bool ahead = false;   // t beyond the secondary ray's rounding gap (> 0 for a primary ray)
+};
+
 // Billboards that show an image (a mirror ignores its image: docs/scene-format.md,
 // Conventions: Mirrors).
 inline bool is_textured(const Billboard& billboard) { return billboard.image && !billboard.is_mirror; }
@@ -60,7 +71,7 @@ Vec3 billboard_front_normal(const Billboard& billboard);
 // What trace() needs to know about the surface a hit landed on.
 struct SurfacePoint {
     Vec3 point;
-    Vec3 normal;  // unit; a sphere's outward normal, a billboard's front normal
+    Vec3 normal;  // unit; a sphere's outward normal, a billboard's front normal, a triangle's facing the ray
     bool is_mirror = false;
     SurfaceId id;
 };

@@ -50,13 +50,15 @@ Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, 
 
 class TraceObserver;  // reference/trace_observer.h
 
-enum class HitKind { None, Sphere, Billboard };
+enum class HitKind { None, Sphere, Billboard, Triangle };
 
 struct Hit {
     HitKind kind = HitKind::None;
     int index = -1;
     double t = kInfinity;  // distance along the unit direction
-    double a = 0, b = 0;   // billboard coordinates of the hit: P = UL + a(UR-UL) + b(LL-UL)
+    // Billboard coordinates of the hit, P = UL + a(UR-UL) + b(LL-UL); on a triangle, its
+    // barycentric coordinates of corners 1 and 2, P = c0 + a(c1-c0) + b(c2-c0).
+    double a = 0, b = 0;
 };
 
 // The surface a secondary ray leaves, which it must not hit again.

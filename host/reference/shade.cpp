@@ -32,11 +32,11 @@ double sun_visibility(const Scene& scene, const SurfacePoint& surface, const det
 Color lit_color(const Scene& scene, const Color& ambient, const SurfacePoint& surface, int depth,
                 TraceObserver* observer) {
     const auto sun = detail::sun_direction(scene, surface.point);
-    if (!sun.exists) return found(observer, ColourSource::SphereLit, kBlack);
+    if (!sun.exists) return found(observer, ColourSource::SunLit, kBlack);
     const double cosine = dot(surface.normal, sun.l);
     if (observer) observer->sun_seen(sun, cosine);
-    if (cosine <= 0) return found(observer, ColourSource::SphereLit, kBlack);
-    return found(observer, ColourSource::SphereLit, ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
+    if (cosine <= 0) return found(observer, ColourSource::SunLit, kBlack);
+    return found(observer, ColourSource::SunLit, ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
 }
 
 // The colour of a surface that is not a mirror: lit by the sun when the scene is lit and its

@@ -23,9 +23,10 @@ enum class ColourSource {
     DepthExhausted,    // a mirror would reflect once more than MaxDepth allows: the background
     BackOfMirror,      // black
     SphereAmbient,     // an unlit sphere's colour
-    SphereLit,         // ambient * max(0, n.l) * s
+    SunLit,            // a lit sphere or mesh: ambient * max(0, n.l) * s
     BillboardAmbient,  // a flat billboard's colour
     BillboardTexel,    // the texel under (alpha, beta)
+    MeshAmbient,       // an unlit mesh's colour
 };
 
 class TraceObserver {
@@ -48,6 +49,10 @@ public:
     // became the nearest hit.
     virtual void billboard_tested(int /*index*/, const detail::PlaneHit& /*plane*/, double /*t_max*/,
                                   bool /*accepted*/) {}
+    // Triangle `index` tested against a nearest distance of `t_max`; `accepted` is whether it
+    // became the nearest hit.
+    virtual void triangle_tested(int /*index*/, const detail::TriangleTest& /*test*/, double /*t_max*/,
+                                 bool /*accepted*/) {}
     // What the search found (kind None: nothing).
     virtual void nearest_found(const Hit& /*hit*/) {}
 

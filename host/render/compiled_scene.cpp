@@ -65,6 +65,12 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     CompiledScene compiled;
     compiled.features = FeatureSet::of(scene);
     for (const Sphere& sphere : scene.spheres) compiled.spheres.push_back(SphereKind::device(sphere, origin));
+    compiled.triangles.reserve(scene.triangles.size());
+    for (const Triangle& triangle : scene.triangles)
+        compiled.triangles.push_back(TriangleKind::device(scene, triangle, origin));
+    compiled.triangle_normals.reserve(scene.corner_normals.size() * 3);
+    for (const auto& normals : scene.corner_normals)
+        for (const Vec3& normal : normals) compiled.triangle_normals.push_back(to_float4(normal));
     reserve_texels(scene, compiled);
     for (const Billboard& billboard : scene.billboards) {
         if (!billboard.is_mirror) pack_texture(billboard.image.get(), compiled);
@@ -78,6 +84,7 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     compiled.info.max_depth = scene.max_depth;
     compiled.info.lit = scene.lit() ? 1 : 0;
     compiled.info.sphere_count = static_cast<int>(scene.spheres.size());
+    compiled.info.triangle_count = static_cast<int>(scene.triangles.size());
     compile_frame(compiled, frame, origin);
     return compiled;
 }
@@ -88,6 +95,8 @@ void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Ve
         SphereKind::move(compiled.spheres[i], scene.spheres[i], origin);
     for (std::size_t i = 0; i < scene.billboards.size(); ++i)
         BillboardKind::move(compiled.billboards[i], scene.billboards[i], origin);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        TriangleKind::move(compiled.triangles[i], scene.triangles[i], origin);
     compiled.billboards.resize(frame.billboard_count());
     const std::size_t first = frame.first_impostor();
     compiled.impostor_textures.resize(frame.billboard_count() - first, {nullptr, nullptr});

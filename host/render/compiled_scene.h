@@ -19,6 +19,8 @@ namespace clr {
 struct CompiledScene {
     std::vector<ClrSphere> spheres;
     std::vector<ClrBillboard> billboards;  // the frame's billboards, in FrameGeometry's order
+    std::vector<ClrTriangle> triangles;    // the scene's mesh triangles
+    std::vector<cl_float4> triangle_normals;  // Scene::corner_normals, three a triangle
     // RGBA bytes of every image a billboard or view may show; page-aligned, so that a device can
     // read them where they are (Renderer keeps them as the texel buffer's host memory).
     PageAlignedVector<std::uint8_t> texels;

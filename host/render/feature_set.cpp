@@ -9,7 +9,7 @@ namespace clr {
 
 FeatureSet FeatureSet::all() {
     FeatureSet features;
-    features.spheres = features.billboards = features.textures = true;
+    features.spheres = features.billboards = features.triangles = features.textures = true;
     features.alpha = features.sun = features.mirrors = true;
     features.bvh = true;
     return features;
@@ -19,8 +19,10 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     FeatureSet features;
     features.spheres = !scene.spheres.empty();
     features.billboards = !scene.billboards.empty();
+    features.triangles = !scene.triangles.empty();
     features.sun = scene.lit() && has_lit_objects(scene);  // the kinds the sun lights (kinds/kinds.h)
     for (const Sphere& sphere : scene.spheres) features.mirrors |= sphere.is_mirror;
+    for (const Mesh& mesh : scene.meshes) features.mirrors |= mesh.is_mirror && mesh.triangle_count > 0;
     features.billboards |= !scene.impostors.empty();  // each impostor is a billboard in every frame
     std::set<const Image*> shown;  // each image once: thousands of impostors share a few
     for (const Billboard& billboard : scene.billboards) {
@@ -35,7 +37,7 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     for (const Image* image : shown) features.alpha |= image->has_transparency();
     // Primary rays are culled by screen tiles; shadow and mirror rays test every object
     // unless a BVH is compiled in, which pays from a few dozen objects on.
-    std::size_t objects = scene.spheres.size() + scene.billboards.size() + scene.impostors.size();
+    std::size_t objects = scene.spheres.size() + scene.billboards.size() + scene.impostors.size() + scene.triangles.size();
     features.bvh = (features.sun || features.mirrors) && objects > kBvhMinObjects;
     return features;
 }
@@ -48,6 +50,7 @@ std::string FeatureSet::build_options() const {
         {"CLR_FEATURE_FLOAT_OUTPUT", float_output},
         {"CLR_FEATURE_MIRRORS", mirrors},     {"CLR_FEATURE_SPHERES", spheres},
         {"CLR_FEATURE_SUN", sun},             {"CLR_FEATURE_TEXTURES", textures},
+        {"CLR_FEATURE_TRIANGLES", triangles},
     };
     std::string options;
     for (const auto& [name, on] : macros) options += (options.empty() ? "" : " ") + ("-D" + name + "=" + (on ? "1" : "0"));

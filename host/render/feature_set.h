@@ -15,6 +15,7 @@ constexpr std::size_t kBvhMinObjects = 16;
 struct FeatureSet {
     bool spheres = false;      // at least one sphere
     bool billboards = false;   // at least one billboard
+    bool triangles = false;    // at least one mesh triangle
     bool textures = false;     // a billboard shows an image
     bool alpha = false;        // a shown image has a texel with alpha below 255
     bool sun = false;          // sun lighting with shadow rays

@@ -25,6 +25,7 @@ public:
 
     const Scene& scene() const { return *scene_; }
     const std::vector<Sphere>& spheres() const { return scene_->spheres; }
+    const std::vector<Triangle>& triangles() const { return scene_->triangles; }
 
     // Billboard i as the kernels index it: the scene's own billboards first, then its impostors
     // as placed, in the scene's order.
@@ -39,7 +40,7 @@ public:
     // corner - (O - billboard_origin(i)): exact for an impostor when O is the eye it was placed for.
     Vec3 billboard_origin(std::size_t i) const { return i < first_impostor() ? Vec3{} : impostor_origin_; }
 
-    std::size_t object_count() const { return spheres().size() + billboard_count(); }
+    std::size_t object_count() const { return spheres().size() + billboard_count() + triangles().size(); }
 
 private:
     const Scene* scene_;

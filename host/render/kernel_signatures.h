@@ -20,6 +20,8 @@ CLR_KERNEL_VALUE_TYPE(ClrSceneInfo, "ClrSceneInfo")
 struct SceneArgs {
     cl::Buffer spheres;     // ClrSphere[info.sphere_count]
     cl::Buffer billboards;  // ClrBillboard[info.billboard_count]
+    cl::Buffer triangles;   // ClrTriangle[info.triangle_count]
+    cl::Buffer triangle_normals;  // float4: three corner normals per triangle that has them
     cl::Buffer texels;      // uchar4, every billboard image one after another
     cl::Buffer coverage;    // uint: bit k % 32 of word k / 32 is set where texel k stops rays
     ClrSceneInfo info{};
@@ -30,6 +32,8 @@ struct SceneArgs {
     void for_each_arg(Visit& visit) const {
         visit("spheres", spheres);
         visit("billboards", billboards);
+        visit("triangles", triangles);
+        visit("triangle_normals", triangle_normals);
         visit("texels", texels);
         visit("coverage", coverage);
         visit("info", info);

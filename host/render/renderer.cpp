@@ -112,6 +112,8 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
 void Renderer::upload_geometry() {
     scene_args_.spheres = upload(device_.context(), compiled_.spheres);
     scene_args_.billboards = upload(device_.context(), compiled_.billboards);
+    scene_args_.triangles = upload(device_.context(), compiled_.triangles);
+    scene_args_.triangle_normals = upload(device_.context(), compiled_.triangle_normals);
     scene_args_.bvh_nodes = upload(device_.context(), compile_bvh(bvh_, origin_));
     scene_args_.bvh_items = upload(device_.context(), bvh_.items);
     scene_args_.info = compiled_.info;

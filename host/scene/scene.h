@@ -2,6 +2,8 @@
 // applied. Nothing here knows about OpenCL; render/ turns a Scene into device data.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +30,27 @@ struct Billboard {
     Color ambient;
     std::shared_ptr<const Image> image;  // null: flat `ambient` colour (or a mirror)
     bool is_mirror = false;
+};
+
+// One `obj` object of a scene: a Wavefront OBJ model placed as p * scale + position
+// (docs/scene-format.md, Meshes). Its triangles are Scene::triangles[first_triangle, +count).
+struct Mesh {
+    std::string filename;  // as the scene names it, for messages and --check
+    Vec3 position;
+    Vec3 scale{1, 1, 1};
+    Color ambient;  // the scene's, else the OBJ material's Kd, else 0.8 grey
+    bool is_mirror = false;
+    bool placeholder = false;  // --placeholders stood in a cube for a missing file
+    std::size_t first_triangle = 0;
+    std::size_t triangle_count = 0;
+};
+
+// One triangle of a mesh, in scene coordinates. Corners in the face's order; the geometric
+// normal is (c1 - c0) x (c2 - c0), and a mesh is seen from both sides.
+struct Triangle {
+    std::array<Vec3, 3> corners;
+    std::uint32_t mesh = 0;      // index in Scene::meshes
+    std::int32_t normals = -1;   // index in Scene::corner_normals, or -1: the geometric normal
 };
 
 // Which way a camera-facing billboard may turn (docs/scene-format.md, Impostors).
@@ -111,6 +134,11 @@ struct Scene {
     std::vector<Sphere> spheres;
     std::vector<Billboard> billboards;
     std::vector<Impostor> impostors;  // "clrender"/"impostors"; shown after the billboards
+    std::vector<Mesh> meshes;          // "obj"
+    std::vector<Triangle> triangles;   // every mesh's, mesh by mesh
+    // Unit normals at a triangle's three corners, where its face names one for every corner
+    // (transformed by the mesh's scale as normals are: divided by it, then normalised).
+    std::vector<std::array<Vec3, 3>> corner_normals;
 
     // What decides the pixels, as a label for image descriptions (scene/scene_digest.h); ""
     // when the images were not decoded (--check).

@@ -17,6 +17,7 @@
 #include "scene/image_library.h"
 #include "scene/json_reader.h"
 #include "scene/key_hints.h"
+#include "scene/mesh_loader.h"
 #include "scene/scene_digest.h"
 #include "scene/scene_overrides.h"
 #include "core/printable_text.h"
@@ -478,7 +479,6 @@ void load_scene_images(Scene& scene, const PendingBillboardImages& billboards, I
 void note_unsupported_keys(ObjectReader& file) {
     file.note_ignored("near", "near clipping plane is not supported (ignored)");
     file.note_ignored("far", "far clipping plane is not supported (ignored)");
-    file.note_ignored("obj", "OBJ meshes are not supported (ignored)");
     const std::string older_format =
         "unknown key (ignored); this looks like the older (fall 2019) scene format, which clrender does not read: "
         "use 'spheres', 'billboards' and 'SunLocation'";
@@ -591,6 +591,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     read_lighting(file, scene);
     PendingBillboardImages billboard_images;
     read_objects(file, scene, billboard_images);
+    const std::vector<PendingMesh> meshes = read_mesh_objects(file);
     ImpostorViews impostor_views;
     read_extensions(file, scene, impostor_views);
     check_animation_length(file, scene);
@@ -604,7 +605,10 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     note_unsupported_keys(file);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
-    if (!options.count_frames_only) load_scene_images(scene, billboard_images, impostor_views, options);
+    if (!options.count_frames_only) {
+        load_scene_images(scene, billboard_images, impostor_views, options);
+        load_meshes(scene, meshes, options.placeholder_images);
+    }
     if (options.decode_images) scene.digest = scene_digest(text, options.overrides, scene);
     diagnostics.summarise_warnings();
     return scene;

@@ -122,7 +122,7 @@ CLR_PACKET_INLINE real16 billboard_hit_distance16(int index, real3 origin, Direc
 }
 
 /* The unit front normal, the same at every point. */
-real3 billboard_normal(int index, real3 point, CLR_SCENE_PARAMS)
+real3 billboard_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
 {
     return convert_real3(billboards[index].normal.xyz);
 }

@@ -11,7 +11,8 @@
  *     the hit's distance with 0 < t < t_max, or +inf
  *   real16 <name>_hit_distance16(int index, real3 origin, Directions16 d, int want_texels,
  *                                uint16* texel, CLR_SCENE_PARAMS)   the same for 16 primary rays
- *   real3 <name>_normal(int index, real3 point, CLR_SCENE_PARAMS)   the unit front (outer) normal
+ *   real3 <name>_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
+ *     the unit front (outer) normal; a kind seen from both sides turns it to face `direction`
  *   uint <name>_flags(int index, CLR_SCENE_PARAMS)                  CLR_SURFACE_*
  *   float3 <name>_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
  *     its colour before lighting
@@ -28,13 +29,15 @@
 #include "common/scene_params.cl"
 #include "kinds/billboard.cl"
 #include "kinds/sphere.cl"
+#include "kinds/triangle.cl"
 #include "packet/packet_types.cl"
 #include "shared/clr_types.h"
 
 /* X(HIT_KIND, name, FEATURE) for each kind, by HIT_KIND. */
 #define CLR_KINDS(X)                                      \
     X(CLR_HIT_SPHERE, sphere, CLR_FEATURE_SPHERES)        \
-    X(CLR_HIT_BILLBOARD, billboard, CLR_FEATURE_BILLBOARDS)
+    X(CLR_HIT_BILLBOARD, billboard, CLR_FEATURE_BILLBOARDS)  \
+    X(CLR_HIT_TRIANGLE, triangle, CLR_FEATURE_TRIANGLES)
 
 /* Object `index` of `kind` as a ray meets it (<name>_hit_distance). */
 #define CLR_KIND_HIT_DISTANCE(KIND, name, FEATURE) \
@@ -83,11 +86,12 @@ Hit nearest_of_all_kinds(real3 origin, real3 direction, real t_max, int skip_kin
     return hit;
 }
 
-/* The unit front normal of object `index` of `kind` at `point` (<name>_normal). */
+/* The unit front normal of object `index` of `kind` at `point`, met along `direction`
+ * (<name>_normal). */
 #define CLR_KIND_NORMAL(KIND, name, FEATURE) \
     if (FEATURE && kind == KIND)             \
-        return name##_normal(index, point, CLR_SCENE_ARGS);
-real3 kind_normal(int kind, int index, real3 point, CLR_SCENE_PARAMS)
+        return name##_normal(index, point, direction, CLR_SCENE_ARGS);
+real3 kind_normal(int kind, int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
 {
     CLR_KINDS(CLR_KIND_NORMAL)
     return (real3)(0.0f);

@@ -73,7 +73,7 @@ CLR_PACKET_INLINE real16 sphere_hit_distance16(int index, real3 origin, Directio
 }
 
 /* The unit outward normal at `point` on the sphere. */
-real3 sphere_normal(int index, real3 point, CLR_SCENE_PARAMS)
+real3 sphere_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
 {
     return unit3(point - convert_real3(spheres[index].center_radius.xyz));
 }

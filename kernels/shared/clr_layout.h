@@ -38,6 +38,15 @@
     CLR_LAYOUT_FIELD(ClrBillboard, texture_width)   \
     CLR_LAYOUT_FIELD(ClrBillboard, texture_height)  \
     CLR_LAYOUT_FIELD(ClrBillboard, flags)           \
+    CLR_LAYOUT_STRUCT(ClrTriangle)                  \
+    CLR_LAYOUT_FIELD(ClrTriangle, corner0)          \
+    CLR_LAYOUT_FIELD(ClrTriangle, corner1)          \
+    CLR_LAYOUT_FIELD(ClrTriangle, corner2)          \
+    CLR_LAYOUT_FIELD(ClrTriangle, color)            \
+    CLR_LAYOUT_FIELD(ClrTriangle, flags)            \
+    CLR_LAYOUT_FIELD(ClrTriangle, normals)          \
+    CLR_LAYOUT_FIELD(ClrTriangle, pad0)             \
+    CLR_LAYOUT_FIELD(ClrTriangle, pad1)             \
     CLR_LAYOUT_STRUCT(ClrRay)                       \
     CLR_LAYOUT_FIELD(ClrRay, origin)                \
     CLR_LAYOUT_FIELD(ClrRay, direction)             \
@@ -59,6 +68,10 @@
     CLR_LAYOUT_FIELD(ClrSceneInfo, sphere_count)    \
     CLR_LAYOUT_FIELD(ClrSceneInfo, billboard_count) \
     CLR_LAYOUT_FIELD(ClrSceneInfo, max_depth)       \
-    CLR_LAYOUT_FIELD(ClrSceneInfo, lit)
+    CLR_LAYOUT_FIELD(ClrSceneInfo, lit)             \
+    CLR_LAYOUT_FIELD(ClrSceneInfo, triangle_count)  \
+    CLR_LAYOUT_FIELD(ClrSceneInfo, pad0)            \
+    CLR_LAYOUT_FIELD(ClrSceneInfo, pad1)            \
+    CLR_LAYOUT_FIELD(ClrSceneInfo, pad2)
 
 #endif /* CLR_LAYOUT_H */

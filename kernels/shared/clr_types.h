@@ -21,7 +21,7 @@ typedef cl_int clr_int;
 typedef cl_uint clr_uint;
 #endif
 
-/* Surface flags (ClrSphere.flags, ClrBillboard.flags). */
+/* Surface flags (ClrSphere.flags, ClrBillboard.flags, ClrTriangle.flags). */
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
 #define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below CLR_OPAQUE_ALPHA */
@@ -48,6 +48,7 @@ constexpr int kClrTileSize = CLR_TILE_SIZE;
 #define CLR_HIT_NONE 0
 #define CLR_HIT_SPHERE 1
 #define CLR_HIT_BILLBOARD 2
+#define CLR_HIT_TRIANGLE 3
 
 /* A scene item, as screen-tile lists and BVH leaves store an object: its kind (CLR_HIT_*) in
  * the top CLR_ITEM_KIND_BITS bits, its index among the objects of that kind in the others
@@ -92,6 +93,19 @@ typedef struct {
     clr_uint flags;         /* CLR_SURFACE_* */
 } ClrBillboard;
 
+/* A triangle of a mesh: corners c0, c1, c2 in the face's order, seen from both sides. Its
+ * normal is the corner normals (triangle_normals[normals + 0..2], xyz) interpolated by the
+ * hit's barycentric coordinates where the OBJ gives them, else (c1 - c0) x (c2 - c0). */
+typedef struct {
+    clr_float4 corner0; /* xyz = c0; w unused */
+    clr_float4 corner1; /* xyz = c1; w unused */
+    clr_float4 corner2; /* xyz = c2; w unused */
+    clr_float4 color;   /* xyz = its mesh's ambient colour; w unused */
+    clr_uint flags;     /* CLR_SURFACE_* */
+    clr_int normals;    /* first of its three corner normals in triangle_normals, or -1 */
+    clr_uint pad0, pad1;
+} ClrTriangle;
+
 typedef struct {
     clr_float4 origin;    /* xyz = origin; w unused */
     clr_float4 direction; /* xyz = unit direction; w unused */
@@ -100,7 +114,7 @@ typedef struct {
 typedef struct {
     clr_float t;    /* distance along the (unit) ray direction; +inf when kind is NONE */
     clr_int kind;   /* CLR_HIT_* */
-    clr_int index;  /* sphere or billboard index; -1 when kind is NONE */
+    clr_int index;  /* index among the objects of its kind; -1 when kind is NONE */
     clr_int pad0;
 } ClrHit;
 
@@ -123,6 +137,8 @@ typedef struct {
     clr_int billboard_count;
     clr_int max_depth; /* mirror reflections allowed along one path */
     clr_int lit;       /* 1: sun lighting (a kernel compiled without CLR_FEATURE_SUN ignores it) */
+    clr_int triangle_count;
+    clr_int pad0, pad1, pad2;
 } ClrSceneInfo;
 
 #ifndef __OPENCL_VERSION__
@@ -131,7 +147,8 @@ static_assert(sizeof(ClrSphere) == 48, "ClrSphere layout");
 static_assert(sizeof(ClrBillboard) == 96, "ClrBillboard layout");
 static_assert(sizeof(ClrRay) == 32, "ClrRay layout");
 static_assert(sizeof(ClrHit) == 16, "ClrHit layout");
-static_assert(sizeof(ClrSceneInfo) == 48, "ClrSceneInfo layout");
+static_assert(sizeof(ClrTriangle) == 80, "ClrTriangle layout");
+static_assert(sizeof(ClrSceneInfo) == 64, "ClrSceneInfo layout");
 static_assert(sizeof(ClrBvhNode) == 48, "ClrBvhNode layout");
 #endif
 

@@ -115,13 +115,13 @@ TEST(FeatureSet, OptionsAreDeterministicAndComplete) {
               "-DCLR_FEATURE_FLOAT_OUTPUT=0 "
               "-DCLR_FEATURE_MIRRORS=0 "
               "-DCLR_FEATURE_SPHERES=0 "
-              "-DCLR_FEATURE_SUN=0 -DCLR_FEATURE_TEXTURES=0");
+              "-DCLR_FEATURE_SUN=0 -DCLR_FEATURE_TEXTURES=0 -DCLR_FEATURE_TRIANGLES=0");
     EXPECT_EQ(FeatureSet::all().build_options(),
               "-DCLR_FEATURE_ALPHA=1 -DCLR_FEATURE_BILLBOARDS=1 -DCLR_FEATURE_BVH=1 -DCLR_FEATURE_DOUBLE=0 "
               "-DCLR_FEATURE_FLOAT_OUTPUT=0 "
               "-DCLR_FEATURE_MIRRORS=1 "
               "-DCLR_FEATURE_SPHERES=1 "
-              "-DCLR_FEATURE_SUN=1 -DCLR_FEATURE_TEXTURES=1");
+              "-DCLR_FEATURE_SUN=1 -DCLR_FEATURE_TEXTURES=1 -DCLR_FEATURE_TRIANGLES=1");
 }
 
 TEST(FeatureSet, AnalysisFollowsTheScene) {

@@ -20,11 +20,12 @@ bool inside(const Box3& box, const Vec3& p) {
 TEST(PrimitiveKinds, ListedInHitOrderEachOnce) {
     std::vector<int> hits;
     for_each_kind([&](auto kind) { hits.push_back(decltype(kind)::kHit); });
-    EXPECT_EQ(hits, (std::vector<int>{CLR_HIT_SPHERE, CLR_HIT_BILLBOARD}));
+    EXPECT_EQ(hits, (std::vector<int>{CLR_HIT_SPHERE, CLR_HIT_BILLBOARD, CLR_HIT_TRIANGLE}));
 }
 
-TEST(PrimitiveKinds, OnlySpheresAreLit) {
+TEST(PrimitiveKinds, SpheresAndMeshesAreLitBillboardsAreNot) {
     EXPECT_TRUE(kind_is_lit(CLR_HIT_SPHERE));
+    EXPECT_TRUE(kind_is_lit(CLR_HIT_TRIANGLE));
     EXPECT_FALSE(kind_is_lit(CLR_HIT_BILLBOARD));
     EXPECT_FALSE(kind_is_lit(CLR_HIT_NONE));
 
@@ -51,6 +52,13 @@ TEST(PrimitiveKinds, BoxesHoldTheirObjects) {
     for (const Vec3& corner : {billboard.upper_left, billboard.upper_right, billboard.lower_left, lower_right})
         EXPECT_TRUE(inside(billboard_box, corner - shift));
     EXPECT_EQ(centroid, (billboard.upper_left + lower_right) * 0.5 - shift);
+
+    Triangle triangle;
+    triangle.corners = {Vec3{0, 0, 0}, Vec3{2, 1, 0}, Vec3{-1, 3, 4}};
+    const Box3 triangle_box = TriangleKind::box(triangle, shift, centroid);
+    for (const Vec3& corner : triangle.corners) EXPECT_TRUE(inside(triangle_box, corner - shift));
+    EXPECT_EQ(triangle_box.lower, (Vec3{-1, 0, 0} - shift));
+    EXPECT_EQ(triangle_box.upper, (Vec3{2, 3, 4} - shift));
 }
 
 }  // namespace

@@ -741,12 +741,10 @@ TEST(SceneLoader, UnsupportedCourseKeysAreWarnedNotErrors) {
     Json json = minimal_scene();
     json["near"] = 3;
     json["far"] = 20;
-    json["obj"] = Json::parse(R"({"type": "obj", "position": [2, 0, 8], "filename": "obj1.obj"})");
     const Scene scene = parse(json);
-    EXPECT_EQ(scene.warnings.size(), 3u) << all_warnings(scene);
+    EXPECT_EQ(scene.warnings.size(), 2u) << all_warnings(scene);
     EXPECT_TRUE(has_warning(scene, "/near: near clipping plane is not supported")) << all_warnings(scene);
     EXPECT_TRUE(has_warning(scene, "/far: far clipping plane is not supported")) << all_warnings(scene);
-    EXPECT_TRUE(has_warning(scene, "/obj: OBJ meshes are not supported")) << all_warnings(scene);
 }
 
 TEST(SceneLoader, OlderFormatKeysAreRecognised) {
@@ -1006,7 +1004,12 @@ TEST(SceneLoader, LoadsTheSpring2025WebglScene) {
     EXPECT_TRUE(scene.billboards[1].is_mirror);
     EXPECT_TRUE(has_warning(scene, "/near:")) << all_warnings(scene);
     EXPECT_TRUE(has_warning(scene, "/far:")) << all_warnings(scene);
-    EXPECT_TRUE(has_warning(scene, "/obj:")) << all_warnings(scene);
+    // obj1.obj was never published: a placeholder cube stands in, as for a missing image.
+    EXPECT_TRUE(has_warning(scene, "/obj/filename: cannot read OBJ")) << all_warnings(scene);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_TRUE(scene.meshes[0].placeholder);
+    EXPECT_EQ(scene.triangles.size(), 12u);
+    EXPECT_EQ(scene.triangles[0].corners[0], Vec3(1.5, -0.5, 7.5)) << "the cube's corner, placed at [2, 0, 8]";
     EXPECT_EQ(scene.warnings.size(), 3u) << all_warnings(scene);
 }
 

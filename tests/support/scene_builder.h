@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -32,5 +33,26 @@ std::shared_ptr<Image> make_image(int width, int height, Pick pick) {
         }
     return image;
 }
+
+}  // namespace clr::testing
+
+namespace clr::testing {
+
+// Triangles of a test mesh, corners in scene coordinates, and optional corner normals.
+struct TestMesh {
+    std::vector<std::array<Vec3, 3>> triangles;
+    std::vector<std::array<Vec3, 3>> normals;  // empty, or one per triangle
+};
+
+// Appends `mesh` to `scene` as one `obj` mesh of colour `ambient`.
+void add_mesh(Scene& scene, const TestMesh& mesh, const Color& ambient, bool mirror = false);
+
+// A sphere of `slices` x `stacks` quads (two triangles each), with its exact normals at the
+// corners when `smooth`.
+TestMesh sphere_mesh(const Vec3& center, double radius, int slices, int stacks, bool smooth);
+
+// The parallelogram corner + a * edge_a + b * edge_b, 0 <= a, b <= 1, as nx x ny cells of
+// two triangles each, split along the cell's diagonal from (0, 0) to (1, 1).
+TestMesh grid_mesh(const Vec3& corner, const Vec3& edge_a, const Vec3& edge_b, int nx, int ny);
 
 }  // namespace clr::testing

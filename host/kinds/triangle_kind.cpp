@@ -1,0 +1,54 @@
+#include "kinds/triangle_kind.h"
+
+#include <cmath>
+
+#include "render/device_structs.h"
+#include "render/object_bounds.h"
+
+namespace clr {
+
+Box3 TriangleKind::box(const Triangle& triangle, const Vec3& shift, Vec3& centroid) {
+    Box3 box;
+    for (const Vec3& corner : triangle.corners) box.grow(corner - shift);
+    centroid = (box.lower + box.upper) * 0.5;
+    return box;
+}
+
+PixelBounds TriangleKind::pixel_bounds(const ObjectBounds& view, const Triangle& triangle, const Vec3& object_origin) {
+    const Vec3 eye = view.eye() - object_origin;
+    PixelBounds bounds;
+    for (const Vec3& corner : triangle.corners) view.add(corner, eye, bounds);
+    if (ObjectBounds::reaches_behind_eye(bounds)) {
+        bounds = {};
+        view.add_clipped(triangle.corners.data(), 3, eye, bounds);
+    }
+    return bounds;
+}
+
+// The distance from the eye to the triangle's plane: every point of the triangle is at
+// least that far. (The loader keeps no triangle without area, whose plane is undefined.)
+double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& triangle, const Vec3& object_origin) {
+    const auto& c = triangle.corners;
+    const Vec3 normal = cross(c[1] - c[0], c[2] - c[0]);
+    const double area2 = length(normal);
+    if (!(area2 > 0)) return 0;
+    return std::fabs(dot((view.eye() - object_origin) - c[0], normal / area2));
+}
+
+ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {
+    const Mesh& mesh = scene.meshes[triangle.mesh];
+    ClrTriangle out{};
+    move(out, triangle, origin);
+    out.color = to_float4(mesh.ambient);
+    out.flags = mesh.is_mirror ? CLR_SURFACE_MIRROR : 0u;
+    out.normals = triangle.normals < 0 ? -1 : triangle.normals * 3;
+    return out;
+}
+
+void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
+    device.corner0 = to_float4(triangle.corners[0] - origin);
+    device.corner1 = to_float4(triangle.corners[1] - origin);
+    device.corner2 = to_float4(triangle.corners[2] - origin);
+}
+
+}  // namespace clr

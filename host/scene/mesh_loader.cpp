@@ -1,0 +1,155 @@
+#include "scene/mesh_loader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <new>
+
+#include "core/printable_text.h"
+#include "scene/obj_reader.h"
+#include "scene/value_ranges.h"
+
+namespace clr {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The course's default colour for a mesh whose scene and material give none.
+const Color kDefaultMeshColor{0.8, 0.8, 0.8};
+
+// A scale is a number (the same on every axis) or [sx, sy, sz]; each factor non-zero and
+// within the length range, so that a scaled mesh keeps an area and stays renderable.
+Vec3 read_scale(const Node& node) {
+    const Vec3 scale = node.json().is_number() ? Vec3{1, 1, 1} * node.number() : node.vec3("[sx, sy, sz]");
+    for (int axis = 0; axis < 3; ++axis) {
+        const double factor = std::fabs(scale[axis]);
+        if (!(factor >= kMinLength && factor <= kMaxLength))
+            node.fail("scale must be a non-zero factor of magnitude " + length_range_text() + " on every axis (got " +
+                      number_text(scale[axis]) + ")");
+    }
+    return scale;
+}
+
+PendingMesh read_mesh_object(const Node& node) {
+    ObjectReader fields(node, "obj");
+    if (const auto type = fields.optional("type"); type && type->string() != "obj")
+        type->fail("type must be \"obj\" here, got " + type->shown());
+    const Node filename = fields.required("filename");
+    if (filename.string().empty()) filename.fail("filename must not be empty");
+    if (filename.string().find('\0') != std::string::npos)
+        filename.fail("filename contains a NUL character (\\u0000), which no file name can hold");
+    PendingMesh pending{Mesh{}, filename, node, false};
+    Mesh& mesh = pending.mesh;
+    mesh.filename = filename.string();
+    if (const auto position = fields.optional("position")) mesh.position = read_position(*position);
+    if (const auto scale = fields.optional("scale")) mesh.scale = read_scale(*scale);
+    if (const auto ambient = fields.optional("ambient")) {
+        mesh.ambient = ambient->color();
+        pending.ambient_given = true;
+    }
+    if (const auto mirror = fields.optional("IsMirror")) mesh.is_mirror = mirror->flag();
+    fields.warn_about_unknown_keys();
+    return pending;
+}
+
+// The placeholder's model: a unit cube centred on the origin, twelve triangles facing out.
+ObjMesh placeholder_cube() {
+    ObjMesh cube;
+    for (int i = 0; i < 8; ++i) cube.positions.push_back({i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5});
+    const std::uint32_t faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& face : faces) {
+        cube.triangles.push_back({face[0], face[1], face[2]});
+        cube.triangles.push_back({face[0], face[2], face[3]});
+        cube.triangle_normals.push_back({-1, -1, -1});
+        cube.triangle_normals.push_back({-1, -1, -1});
+    }
+    cube.faces = 6;
+    return cube;
+}
+
+// Normals transform by the inverse of the scale (then made unit again); a zero normal in the
+// file has no direction, and leaves its triangle to the geometric normal.
+bool transformed_normal(const Vec3& normal, const Vec3& scale, Vec3& out) {
+    const Vec3 scaled{normal.x / scale.x, normal.y / scale.y, normal.z / scale.z};
+    const double size = length(scaled);
+    if (!(size > 0) || !std::isfinite(size)) return false;
+    out = scaled / size;
+    return true;
+}
+
+// Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
+// once placed are left out: no ray can hit them, and their plane has no normal.
+void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename) {
+    std::vector<Vec3> placed(model.positions.size());
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        const Vec3& p = model.positions[i];
+        placed[i] = Vec3{p.x * mesh.scale.x, p.y * mesh.scale.y, p.z * mesh.scale.z} + mesh.position;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!(std::fabs(placed[i][axis]) <= kMaxCoordinate))
+                filename.fail("mesh '" + printable(mesh.filename) + "': vertex " + std::to_string(i + 1) +
+                              " lies at " + number_text(placed[i][axis]) + " once scaled and placed; " +
+                              position_range_text());
+        }
+    }
+    const std::uint32_t mesh_index = static_cast<std::uint32_t>(scene.meshes.size());
+    mesh.first_triangle = scene.triangles.size();
+    if (scene.triangles.size() + model.triangles.size() > kMaxSceneTriangles)
+        filename.fail("mesh '" + printable(mesh.filename) + "' brings the scene's triangles to " +
+                      std::to_string(scene.triangles.size() + model.triangles.size()) + ", more than the limit of " +
+                      std::to_string(kMaxSceneTriangles));
+    for (std::size_t f = 0; f < model.triangles.size(); ++f) {
+        Triangle triangle;
+        for (int k = 0; k < 3; ++k) triangle.corners[k] = placed[model.triangles[f][k]];
+        const Vec3 area = cross(triangle.corners[1] - triangle.corners[0], triangle.corners[2] - triangle.corners[0]);
+        if (!(dot(area, area) > 0)) continue;
+        triangle.mesh = mesh_index;
+        const auto& normal_indices = model.triangle_normals[f];
+        std::array<Vec3, 3> normals;
+        bool has_normals = normal_indices[0] >= 0;
+        for (int k = 0; k < 3 && has_normals; ++k)
+            has_normals = transformed_normal(model.normals[normal_indices[k]], mesh.scale, normals[k]);
+        if (has_normals) {
+            triangle.normals = static_cast<std::int32_t>(scene.corner_normals.size());
+            scene.corner_normals.push_back(normals);
+        }
+        scene.triangles.push_back(triangle);
+    }
+    mesh.triangle_count = scene.triangles.size() - mesh.first_triangle;
+    scene.meshes.push_back(std::move(mesh));
+}
+
+}  // namespace
+
+std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
+    std::vector<PendingMesh> meshes;
+    const std::optional<Node> node = file.optional("obj");
+    if (!node) return meshes;
+    if (node->json().is_array()) {
+        for (const Node& element : node->elements()) meshes.push_back(read_mesh_object(element));
+    } else {
+        meshes.push_back(read_mesh_object(*node));
+    }
+    return meshes;
+}
+
+void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders) {
+    const fs::path folder = fs::path(scene.path).parent_path();
+    for (const PendingMesh& each : pending) {
+        const fs::path name(each.mesh.filename);
+        const std::string path = (name.is_absolute() ? name : folder / name).lexically_normal().string();
+        Mesh mesh = each.mesh;
+        ObjMesh model;
+        try {
+            model = read_obj(path);
+        } catch (const ObjError& error) {
+            const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
+            if (!placeholders) each.filename.fail(problem);
+            each.filename.warn(problem + "; rendering a placeholder cube instead");
+            model = placeholder_cube();
+            mesh.placeholder = true;
+        }
+        if (!each.ambient_given) mesh.ambient = model.diffuse && !mesh.placeholder ? *model.diffuse : kDefaultMeshColor;
+        add_mesh(scene, std::move(mesh), model, each.filename);
+    }
+}
+
+}  // namespace clr

@@ -1,0 +1,34 @@
+// The scene's `obj` objects: Wavefront OBJ meshes placed in the scene (docs/scene-format.md,
+// Meshes). Reading a scene takes two steps, as for images: the `obj` values are checked with
+// the rest of the scene (read_mesh_objects), and the files are read only once the whole scene
+// is valid (load_meshes), each into Scene::triangles in scene coordinates.
+#pragma once
+
+#include <vector>
+
+#include "scene/json_reader.h"
+#include "scene/scene.h"
+
+namespace clr {
+
+// Most triangles all of a scene's meshes may hold together: the renderer keeps about 250
+// bytes a triangle on the host and the device (scene model, device struct, normals, BVH).
+constexpr std::size_t kMaxSceneTriangles = std::size_t(1) << 24;
+
+// A mesh whose file is still to be read: its settings, and its "filename" value.
+struct PendingMesh {
+    Mesh mesh;
+    Node filename;
+    Node node;  // the `obj` object, for messages about the whole mesh
+    bool ambient_given = false;
+};
+
+// Checks the scene's "obj" value (one object or a list of them) and its keys.
+std::vector<PendingMesh> read_mesh_objects(ObjectReader& file);
+
+// Reads each mesh's OBJ (relative to the scene's folder) into `scene`'s meshes, triangles and
+// corner normals. A file that cannot be read is the scene's error at its "filename", or, with
+// `placeholders`, a warning and a unit cube in its place.
+void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders);
+
+}  // namespace clr

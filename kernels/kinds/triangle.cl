@@ -1,0 +1,165 @@
+/* The triangle kind (ClrTriangle): a triangle of a mesh, seen from both sides. Where a ray
+ * meets it, one ray and 16 at a time, its normal and its colour, as kinds/kinds.cl asks
+ * every kind.
+ *
+ * The test is watertight: a ray through an edge that two triangles share, or through a
+ * vertex, hits at least one of them, never neither (docs/scene-format.md, Meshes). Each
+ * edge's side test is the signed volume d.((p - o) x (q - o)) of the ray and the edge's
+ * corners p, q relative to the ray's origin o; the triangle on the other side of the edge
+ * computes it from the same corners in the other order, which in IEEE arithmetic without
+ * fused multiply-adds (common/math.cl) is exactly the negated value. So no rounding can put
+ * the ray outside both triangles: either one of them sees it inside, or the value is exactly
+ * zero and both do. The three volumes are also the hit's barycentric weights (Woop, Benthin
+ * and Wald 2013 use the same edge functions, after a shear). */
+#ifndef CLR_KINDS_TRIANGLE_CL
+#define CLR_KINDS_TRIANGLE_CL
+
+#include "common/math.cl"
+#include "common/scene_params.cl"
+#include "packet/lane_masks.cl"
+#include "packet/packet_types.cl"
+#include "shared/clr_types.h"
+
+/* A secondary ray leaves a point of a triangle, which float rounding puts a little off its
+ * plane: a neighbour of that triangle in the same plane (or in a crease) could then be met
+ * again at a distance of the order of that rounding, a speck of false shadow. Hits nearer
+ * than this share of the origin's distance from the eye are such rounding, and are
+ * ignored; it is far below a pixel's footprint at that distance. Primary rays start at the
+ * eye (0, 0, 0), for which it is zero. */
+#if CLR_FEATURE_DOUBLE
+#define CLR_TRIANGLE_SELF_GAP 1e-12
+#else
+#define CLR_TRIANGLE_SELF_GAP 1.5e-5f
+#endif
+
+real triangle_nearest_t(real3 origin)
+{
+    return (real)CLR_TRIANGLE_SELF_GAP * (fabs(origin.x) + fabs(origin.y) + fabs(origin.z));
+}
+
+/* The triangle's corners relative to `origin`. */
+typedef struct {
+    real3 a, b, c;
+} TriangleCorners;
+
+TriangleCorners triangle_corners(__global const ClrTriangle* triangle, real3 origin)
+{
+    TriangleCorners corners;
+    corners.a = convert_real3(triangle->corner0.xyz) - origin;
+    corners.b = convert_real3(triangle->corner1.xyz) - origin;
+    corners.c = convert_real3(triangle->corner2.xyz) - origin;
+    return corners;
+}
+
+/* p x q, written out so that q x p is exactly its negation. */
+real3 edge_cross(real3 p, real3 q)
+{
+    return (real3)(p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x);
+}
+
+/* Distance along the unit direction to the triangle with t_min < t < t_max, or +inf. */
+real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3 direction, real t_max)
+{
+    TriangleCorners k = triangle_corners(triangle, origin);
+    real u = dot3(edge_cross(k.b, k.c), direction); /* weight of corner 0 */
+    real v = dot3(edge_cross(k.c, k.a), direction); /* weight of corner 1 */
+    real w = dot3(edge_cross(k.a, k.b), direction); /* weight of corner 2 */
+    bool inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
+    real det = u + v + w;
+    if (!inside || det == 0.0f)
+        return INFINITY;
+    real t = (u * dot3(k.a, direction) + v * dot3(k.b, direction) + w * dot3(k.c, direction)) / det;
+    return t > triangle_nearest_t(origin) && t < t_max ? t : INFINITY;
+}
+
+/* triangle_distance() for 16 rays from one origin (t_max = infinity): the edges' cross
+ * products do not depend on the direction, so they are made once for the 16 lanes. */
+CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangle, real3 origin, Directions16 d)
+{
+    TriangleCorners k = triangle_corners(triangle, origin);
+    real16 u = dot16(edge_cross(k.b, k.c), d);
+    real16 v = dot16(edge_cross(k.c, k.a), d);
+    real16 w = dot16(edge_cross(k.a, k.b), d);
+    mask16 inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
+    real16 det = u + v + w;
+    mask16 hit = inside && det != 0.0f;
+    if (!any_lanes16(hit))
+        return (real16)(INFINITY);
+    real16 t = (u * dot16(k.a, d) + v * dot16(k.b, d) + w * dot16(k.c, d)) / det;
+    hit = hit && t > triangle_nearest_t(origin);
+    return select((real16)(INFINITY), t, hit);
+}
+
+/* The kind's functions for kinds/kinds.cl. */
+
+real triangle_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
+{
+    return triangle_distance(&triangles[index], origin, direction, t_max);
+}
+
+/* triangle_hit_distance() for 16 primary rays; a triangle shows no texels. */
+CLR_PACKET_INLINE real16 triangle_hit_distance16(int index, real3 origin, Directions16 d, int want_texels,
+                                                 uint16* texel, CLR_SCENE_PARAMS)
+{
+    return triangle_distance16(&triangles[index], origin, d);
+}
+
+/* The unit normal at `point`, turned to face the ray that arrives along `direction` (a mesh
+ * has no back): the corner normals interpolated with the point's barycentric coordinates
+ * where the mesh gives them, else the geometric normal. */
+real3 triangle_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
+{
+    __global const ClrTriangle* triangle = &triangles[index];
+    real3 c0 = convert_real3(triangle->corner0.xyz);
+    real3 e1 = convert_real3(triangle->corner1.xyz) - c0;
+    real3 e2 = convert_real3(triangle->corner2.xyz) - c0;
+    real3 geometric = edge_cross(e1, e2);
+    real3 normal = geometric;
+    if (triangle->normals >= 0) {
+        /* p - c0 = b1 e1 + b2 e2: b1 = ((p - c0) x e2).n / n.n, b2 = (e1 x (p - c0)).n / n.n */
+        real3 p = point - c0;
+        real area2 = dot3(geometric, geometric);
+        real b1 = dot3(edge_cross(p, e2), geometric) / area2;
+        real b2 = dot3(edge_cross(e1, p), geometric) / area2;
+        real b0 = 1.0f - b1 - b2;
+        __global const float4* n = &triangle_normals[triangle->normals];
+        real3 blended = b0 * convert_real3(n[0].xyz) + b1 * convert_real3(n[1].xyz) + b2 * convert_real3(n[2].xyz);
+        if (dot3(blended, blended) > 0.0f)
+            normal = blended;
+    }
+    normal = unit3(normal);
+    return dot3(normal, direction) > 0.0f ? -normal : normal;
+}
+
+uint triangle_flags(int index, CLR_SCENE_PARAMS)
+{
+    return triangles[index].flags;
+}
+
+/* The colour before lighting: the mesh's ambient colour. */
+float3 triangle_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
+{
+    return triangles[index].color.xyz;
+}
+
+CLR_PACKET_INLINE Colors16 triangle_flat_colors16(int index, uint16 texel, CLR_SCENE_PARAMS)
+{
+    float3 color = triangles[index].color.xyz;
+    Colors16 out;
+    out.r = (float16)(color.x);
+    out.g = (float16)(color.y);
+    out.b = (float16)(color.z);
+    return out;
+}
+
+/* Meshes are lit by the sun as spheres are (docs/scene-format.md, Meshes). */
+bool triangle_is_lit(void)
+{
+    return true;
+}
+
+CLR_PACKET_INLINE void triangle_prefetch(int index, CLR_SCENE_PARAMS)
+{
+}
+
+#endif /* CLR_KINDS_TRIANGLE_CL */

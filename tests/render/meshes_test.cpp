@@ -1,0 +1,175 @@
+// Mesh triangles in whole kernel images (kernels/kinds/triangle.cl against the reference's
+// kinds/triangle_reference.cpp): smooth and faceted meshes lit by the sun with shadows,
+// mirror meshes, both sides of a triangle, a concave mesh shadowing itself, no false shadow
+// on a flat mesh, and no crack where rays pass exactly through shared edges and vertices.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "support/image_compare.h"
+#include "support/render_helpers.h"
+#include "support/scene_builder.h"
+
+namespace clr {
+namespace {
+
+using testing::add_mesh;
+using testing::grid_mesh;
+using testing::sphere_mesh;
+
+void expect_matches_reference(const Scene& scene, const std::string& what, const RendererOptions& options = {}) {
+    const testing::ImageComparison comparison =
+        testing::compare_images(testing::render_with_kernels(scene, options), testing::render_with_reference(scene));
+    EXPECT_LE(comparison.differing_fraction(), 0.002) << what << ": " << comparison.differing << " pixels differ";
+    EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
+}
+
+// A smooth ball, a faceted ball and a sphere above a tessellated floor, lit by the sun: the
+// balls' shading and their shadows on the floor and on each other.
+Scene lit_meshes() {
+    Scene scene = testing::make_scene({0, 3, 9}, {0, 0, 0}, {0, 1, 0}, 55, 160, 120);
+    scene.background = {0.1, 0.1, 0.3};
+    scene.has_sun = true;
+    scene.sun_location = {6, 9, 5};
+    add_mesh(scene, sphere_mesh({-1.6, 0, 0}, 1, 24, 12, true), {0.9, 0.2, 0.2});
+    add_mesh(scene, sphere_mesh({1.2, 0.2, -0.5}, 0.9, 10, 6, false), {0.2, 0.9, 0.3});
+    add_mesh(scene, grid_mesh({-5, -1.2, 4}, {10, 0, 0}, {0, 0, -10}, 7, 7), {0.8, 0.8, 0.8});
+    scene.spheres.push_back(testing::make_sphere({0, 2.2, 1}, 0.5, {0.9, 0.9, 0.2}));
+    return scene;
+}
+
+TEST(Meshes, LitMeshesAndTheirShadowsMatchTheReference) {
+    const Scene scene = lit_meshes();
+    expect_matches_reference(scene, "screen tiles");
+    RendererOptions brute_force;
+    brute_force.screen_tiles = false;
+    expect_matches_reference(scene, "brute force", brute_force);
+    RendererOptions double_precision;
+    double_precision.double_precision = true;
+    expect_matches_reference(scene, "double", double_precision);
+}
+
+TEST(Meshes, FlatShadedMeshesMatchTheReference) {
+    Scene scene = lit_meshes();
+    scene.has_sun = false;
+    expect_matches_reference(scene, "flat");
+}
+
+// A mirror made of a tessellated wall, and a faceted mirror ball, reflecting the lit scene.
+TEST(Meshes, MirrorMeshesReflectLikeMirrorSpheres) {
+    Scene scene = lit_meshes();
+    add_mesh(scene, grid_mesh({-5, -1.2, -3}, {10, 0, 0}, {0, 6, 0}, 3, 2), {0, 0, 0}, true);
+    add_mesh(scene, sphere_mesh({2.8, 1.5, 1}, 0.7, 12, 6, true), {0, 0, 0}, true);
+    scene.max_depth = 3;
+    expect_matches_reference(scene, "mirrors");
+    const Image image = testing::render_with_kernels(scene);
+    Scene without = lit_meshes();
+    EXPECT_NE(image.rgba, testing::render_with_kernels(without).rgba);
+}
+
+// A mesh has no back: a triangle whose corners are listed the other way round shows the
+// same, lit from the viewer's side.
+TEST(Meshes, BothSidesOfATriangleAreLitAlike) {
+    Scene front = testing::make_scene({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60, 48, 48);
+    front.has_sun = true;
+    front.sun_location = {1, 2, 6};
+    Scene back = front;
+    testing::TestMesh one;
+    one.triangles.push_back({Vec3{-2, -2, 0}, Vec3{2, -2, 0}, Vec3{0, 2, 0}});
+    testing::TestMesh reversed;
+    reversed.triangles.push_back({Vec3{-2, -2, 0}, Vec3{0, 2, 0}, Vec3{2, -2, 0}});
+    add_mesh(front, one, {0.9, 0.6, 0.3});
+    add_mesh(back, reversed, {0.9, 0.6, 0.3});
+    const Image image = testing::render_with_kernels(front);
+    EXPECT_EQ(image.rgba, testing::render_with_kernels(back).rgba);
+    EXPECT_GT(image.at(24, 30, 0), 100) << "lit, not black";
+    expect_matches_reference(back, "reversed");
+}
+
+// A floor of many triangles, the sun low over it and nothing above it: no pixel of the floor
+// may be in shadow. A shadow ray leaving one triangle must not meet its neighbours, which
+// rounding puts a hair above the point it leaves.
+TEST(Meshes, AFlatMeshCastsNoShadowOnItself) {
+    // Seen from afar, so that the hit points' rounding is large, with the sun 2 degrees up.
+    Scene scene = testing::make_scene({0, 400, 900}, {0, 0, 0}, {0, 1, 0}, 8, 256, 192);
+    scene.background = {0, 0, 1};
+    scene.has_sun = true;
+    scene.sun_location = {-5000, 200, -300};
+    add_mesh(scene, grid_mesh({-60, 0, 60}, {120, 0, 0}, {0, 0, -120}, 60, 60), {1, 1, 1});
+    for (bool double_precision : {false, true}) {
+        RendererOptions options;
+        options.double_precision = double_precision;
+        const Image image = testing::render_with_kernels(scene, options);
+        long long floor = 0, dark = 0;
+        for (int row = 0; row < image.height; ++row)
+            for (int col = 0; col < image.width; ++col) {
+                if (image.at(col, row, 2) == 255 && image.at(col, row, 0) == 0) continue;  // background
+                ++floor;
+                if (image.at(col, row, 0) == 0) ++dark;
+            }
+        EXPECT_GT(floor, 5000);
+        EXPECT_EQ(dark, 0) << (double_precision ? "double" : "float") << ": floor pixels in a false shadow";
+    }
+}
+
+// A fold: a wall standing on a floor, both of one mesh, the sun behind the wall. The wall
+// shadows the floor in front of it: a shadow ray skips only the triangle it leaves.
+TEST(Meshes, AConcaveMeshShadowsItself) {
+    Scene scene = testing::make_scene({0, 3, 8}, {0, 0, 0}, {0, 1, 0}, 60, 96, 72);
+    scene.has_sun = true;
+    scene.sun_location = {0, 4, -10};
+    testing::TestMesh fold = grid_mesh({-4, 0, 4}, {8, 0, 0}, {0, 0, -6}, 4, 3);
+    const testing::TestMesh wall = grid_mesh({-2, 0, -1}, {4, 0, 0}, {0, 3, 0}, 2, 2);
+    fold.triangles.insert(fold.triangles.end(), wall.triangles.begin(), wall.triangles.end());
+    add_mesh(scene, fold, {0.9, 0.9, 0.9});
+    const Image image = testing::render_with_kernels(scene);
+    // The floor just in front of the wall, at (0, 0, -0.5), lies in its shadow.
+    EXPECT_EQ(image.at(48, 44, 0), 0);
+    expect_matches_reference(scene, "fold");
+}
+
+// Every pixel-centre ray passes through an edge or vertex that several triangles share: a
+// grid whose vertices sit at the pixel centres' points of the plane, its diagonals through
+// them too. The mesh fills the image, so a single background pixel is a crack.
+long long background_pixels(const Scene& scene, const RendererOptions& options) {
+    const Image image = testing::render_with_kernels(scene, options);
+    long long count = 0;
+    for (int row = 0; row < image.height; ++row)
+        for (int col = 0; col < image.width; ++col) count += image.at(col, row, 1) == 0;
+    return count;
+}
+
+TEST(Meshes, RaysThroughSharedEdgesAndVerticesFindNoCrack) {
+    // 64 x 64 pixels at 90 degrees from 32 units: pixel centres meet z = 0 at half-integers.
+    Scene scene = testing::make_scene({0, 0, 32}, {0, 0, 0}, {0, 1, 0}, 90, 64, 64);
+    add_mesh(scene, grid_mesh({-32.5, -32.5, 0}, {65, 0, 0}, {0, 65, 0}, 65, 65), {1, 1, 1});
+    // A fan of thin triangles around the centre of an odd-sized image, whose middle ray runs
+    // exactly through the fan's shared vertex.
+    Scene fan = testing::make_scene({0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 60, 65, 65);
+    testing::TestMesh blades;
+    const int count = 97;
+    for (int k = 0; k < count; ++k) {
+        const double a0 = 2 * 3.14159265358979 * k / count, a1 = 2 * 3.14159265358979 * (k + 1) / count;
+        blades.triangles.push_back({Vec3{0, 0, 0}, Vec3{30 * std::cos(a0), 30 * std::sin(a0), 0},
+                                    Vec3{30 * std::cos(a1), 30 * std::sin(a1), 0}});
+    }
+    add_mesh(fan, blades, {1, 1, 1});
+    for (bool tiles : {true, false})
+        for (bool double_precision : {false, true}) {
+            RendererOptions options;
+            options.screen_tiles = tiles;
+            options.double_precision = double_precision;
+            const std::string what = std::string(tiles ? "tiles" : "brute force") + (double_precision ? ", double" : "");
+            EXPECT_EQ(background_pixels(scene, options), 0) << what << ": cracks in the grid";
+            EXPECT_EQ(background_pixels(fan, options), 0) << what << ": cracks in the fan";
+        }
+    // Tilted, so that the edges run across the rays at every angle; the grid reaches well
+    // past the view.
+    Scene tilted = testing::make_scene({3, -2, 30}, {0.5, 0.25, 0}, {0, 1, 0}, 90, 64, 64);
+    add_mesh(tilted, grid_mesh({-100.5, -100.5, 0}, {201, 0, 0}, {0, 201, 0}, 201, 201), {1, 1, 1});
+    EXPECT_EQ(background_pixels(tilted, {}), 0) << "tilted grid";
+}
+
+}  // namespace
+}  // namespace clr

@@ -1,0 +1,184 @@
+// A scene's `obj` meshes (scene/mesh_loader): one object or a list, placed as
+// p * scale + position with a number or per-axis scale, normals transformed as normals, the
+// ambient colour from the scene, else the .mtl's Kd, else 0.8 grey; a missing or bad OBJ is
+// the scene's error at its "filename" (or a placeholder cube with --placeholders); bad
+// settings are refused where they are written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/errors.h"
+#include "scene/mesh_loader.h"
+#include "scene/scene_loader.h"
+#include "support/scene_json.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+using testing::TempFolder;
+using testing::scene_json::Json;
+using testing::scene_json::minimal_scene;
+
+// Two triangles of the unit square in z = 0, with a normal per corner tilted away from +z.
+const std::string kSquareObj =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 1 0 1\nvn 0 1 1\nvn 0 0 1\nf 1//1 2//2 3//3 4//3\n";
+
+// Writes `scene` beside the files already in `folder` and loads it.
+Scene load_in(const TempFolder& folder, const Json& scene, const LoadOptions& options = {}) {
+    return load_scene(folder.write("scene.json", scene.dump()), options);
+}
+
+Json with_obj(const Json& obj) {
+    Json scene = minimal_scene();
+    scene["obj"] = obj;
+    return scene;
+}
+
+// The SceneError loading `scene` in `folder` gives: "location: detail", or "" when it loads.
+std::string error_of(const TempFolder& folder, const Json& scene, const LoadOptions& options = {}) {
+    try {
+        load_in(folder, scene, options);
+    } catch (const SceneError& error) {
+        return error.location() + ": " + error.detail();
+    }
+    return "";
+}
+
+TEST(MeshLoader, OneObjectIsPlacedAsScaleThenPosition) {
+    TempFolder folder;
+    folder.write("square.obj", kSquareObj);
+    const Scene scene = load_in(folder, with_obj({{"type", "obj"}, {"filename", "square.obj"}, {"position", {2, 0, 8}},
+                                                  {"scale", {2, 3, 4}}}));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.triangles.size(), 2u);  // the quad, fanned
+    EXPECT_EQ(scene.meshes[0].triangle_count, 2u);
+    // Corner 3 of the file, (1, 1, 0): (2, 3, 0) scaled, then moved by (2, 0, 8).
+    EXPECT_EQ(scene.triangles[0].corners[2], (Vec3{4, 3, 8}));
+    EXPECT_EQ(scene.triangles[1].corners[2], (Vec3{2, 3, 8}));  // corner 4, (0, 1, 0)
+    EXPECT_EQ(scene.meshes[0].ambient, (Vec3{0.8, 0.8, 0.8})) << "no ambient and no material: 0.8 grey";
+    EXPECT_FALSE(scene.meshes[0].is_mirror);
+}
+
+TEST(MeshLoader, NormalsAreDividedByTheScaleAndMadeUnit) {
+    TempFolder folder;
+    folder.write("square.obj", kSquareObj);
+    const Scene scene = load_in(folder, with_obj({{"filename", "square.obj"}, {"scale", {2, 1, 0.5}}}));
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    ASSERT_GE(scene.triangles[0].normals, 0);
+    // (1, 0, 1) / (2, 1, 0.5) = (0.5, 0, 2), made unit.
+    const Vec3 n = scene.corner_normals[scene.triangles[0].normals][0];
+    const double size = std::sqrt(0.25 + 4);
+    EXPECT_NEAR(n.x, 0.5 / size, 1e-15);
+    EXPECT_NEAR(n.y, 0, 1e-15);
+    EXPECT_NEAR(n.z, 2 / size, 1e-15);
+}
+
+TEST(MeshLoader, AListOfMeshesAUniformScaleAndTheirOwnColours) {
+    TempFolder folder;
+    folder.write("square.obj", kSquareObj);
+    folder.write("red.mtl", "newmtl red\nKd 0.9 0.1 0.2\n");
+    folder.write("red.obj", "mtllib red.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Scene scene = load_in(folder, with_obj(Json::array({
+                                            {{"filename", "square.obj"}, {"scale", 3}, {"ambient", {0, 1, 0}}, {"IsMirror", 1}},
+                                            {{"filename", "red.obj"}},
+                                        })));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    ASSERT_EQ(scene.triangles.size(), 3u);
+    EXPECT_EQ(scene.triangles[0].corners[2], (Vec3{3, 3, 0}));
+    EXPECT_EQ(scene.meshes[0].ambient, (Vec3{0, 1, 0}));
+    EXPECT_TRUE(scene.meshes[0].is_mirror);
+    EXPECT_EQ(scene.meshes[1].ambient, (Vec3{0.9, 0.1, 0.2})) << "the material's Kd";
+    EXPECT_EQ(scene.meshes[1].first_triangle, 2u);
+    EXPECT_EQ(scene.triangles[2].mesh, 1u);
+    EXPECT_EQ(scene.triangles[2].normals, -1) << "no vn: the geometric normal";
+}
+
+TEST(MeshLoader, TrianglesWithoutAreaAreLeftOut) {
+    TempFolder folder;
+    folder.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\nf 1 1 4\n");
+    const Scene scene = load_in(folder, with_obj({{"filename", "flat.obj"}}));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    EXPECT_EQ(scene.triangles[0].corners[2], (Vec3{0, 1, 0}));
+}
+
+TEST(MeshLoader, AMissingFileIsTheScenesErrorAtItsFilename) {
+    TempFolder folder;
+    const std::string error = error_of(folder, with_obj({{"filename", "gone.obj"}}));
+    EXPECT_NE(error.find("/obj/filename: cannot read OBJ '"), std::string::npos) << error;
+    EXPECT_NE(error.find("gone.obj"), std::string::npos) << error;
+    const std::string listed = error_of(folder, with_obj(Json::array({{{"filename", "gone.obj"}}})));
+    EXPECT_EQ(listed.rfind("/obj/0/filename: ", 0), 0u) << listed;
+}
+
+TEST(MeshLoader, ABadLineIsNamedWithTheScenesLocation) {
+    TempFolder folder;
+    folder.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    const std::string error = error_of(folder, with_obj({{"filename", "bad.obj"}}));
+    EXPECT_NE(error.find("/obj/filename: cannot read OBJ"), std::string::npos) << error;
+    EXPECT_NE(error.find("line 4"), std::string::npos) << error;
+}
+
+TEST(MeshLoader, PlaceholdersStandACubeInForAMissingFile) {
+    TempFolder folder;
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene = load_in(folder, with_obj({{"filename", "gone.obj"}, {"position", {0, 0, -3}}, {"scale", 2}}),
+                                options);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_TRUE(scene.meshes[0].placeholder);
+    ASSERT_EQ(scene.triangles.size(), 12u);
+    for (const Triangle& triangle : scene.triangles)
+        for (const Vec3& corner : triangle.corners) {
+            EXPECT_EQ(std::fabs(corner.x), 1.0);
+            EXPECT_EQ(std::fabs(corner.z + 3), 1.0);
+        }
+    EXPECT_TRUE(testing::scene_json::has_warning(scene, "placeholder cube")) << testing::scene_json::all_warnings(scene);
+}
+
+TEST(MeshLoader, BadSettingsAreRefusedWhereTheyAreWritten) {
+    TempFolder folder;
+    folder.write("square.obj", kSquareObj);
+    const auto fails = [&](const Json& obj, const std::string& expected) {
+        const std::string error = error_of(folder, with_obj(obj));
+        EXPECT_EQ(error.rfind(expected, 0), 0u) << error;
+    };
+    fails({{"filename", "square.obj"}, {"scale", 0}}, "/obj/scale: scale must be a non-zero factor");
+    fails({{"filename", "square.obj"}, {"scale", {1, -1e-300, 1}}}, "/obj/scale: scale must be a non-zero factor");
+    fails({{"filename", "square.obj"}, {"scale", {1, 2}}}, "/obj/scale: ");
+    fails({{"filename", "square.obj"}, {"position", {0, 1e300, 0}}}, "/obj/position/1: ");
+    fails({{"filename", ""}}, "/obj/filename: filename must not be empty");
+    fails({{"type", "sphere"}, {"filename", "square.obj"}}, "/obj/type: type must be \"obj\"");
+    fails({{"position", {0, 0, 0}}}, "/obj: ");
+    fails({{"filename", "square.obj"}, {"IsMirror", 2}}, "/obj/IsMirror: ");
+    // Within the range on its own, but out of it once scaled.
+    fails({{"filename", "square.obj"}, {"scale", 1e16}}, "/obj/filename: mesh 'square.obj': vertex 2 lies at 1e16");
+}
+
+TEST(MeshLoader, AFolderOrAFifoIsNoMesh) {
+    TempFolder folder;
+    folder.write("sub/x", "");
+    EXPECT_NE(error_of(folder, with_obj({{"filename", "sub"}})).find("cannot read OBJ"), std::string::npos);
+}
+
+TEST(MeshLoader, MeshesChangeTheScenesDigest) {
+    TempFolder folder;
+    folder.write("square.obj", kSquareObj);
+    const Json scene = with_obj({{"filename", "square.obj"}});
+    const std::string before = load_in(folder, scene).digest;
+    folder.write("square.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");  // the normals gone
+    const std::string after = load_in(folder, scene).digest;
+    EXPECT_FALSE(before.empty());
+    EXPECT_NE(before, after);
+}
+
+TEST(MeshLoader, ObjIsNoLongerAnIgnoredKey) {
+    TempFolder folder;
+    folder.write("square.obj", kSquareObj);
+    const Scene scene = load_in(folder, with_obj({{"filename", "square.obj"}}));
+    EXPECT_EQ(testing::scene_json::all_warnings(scene), "");
+}
+
+}  // namespace
+}  // namespace clr
