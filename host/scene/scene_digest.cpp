@@ -20,14 +20,17 @@ std::string scene_digest(const std::string& scene_text, const std::vector<SceneO
             hash.add_field(bytes.data(), bytes.size());
         }
         // Meshes as placed, not their files: the triangles, corner normals, colours and
-        // mirror flags are exactly what the pixels depend on, .mtl colours included.
-        hash.add_number(scene.meshes.size());
-        for (const Mesh& mesh : scene.meshes) {
-            const double values[] = {mesh.ambient.x, mesh.ambient.y, mesh.ambient.z, mesh.is_mirror ? 1.0 : 0.0};
-            hash.add_field(values, sizeof values);
+        // mirror flags are exactly what the pixels depend on, .mtl colours included. A scene
+        // without meshes keeps the digest it had before meshes were drawn.
+        if (!scene.meshes.empty()) {
+            hash.add_number(scene.meshes.size());
+            for (const Mesh& mesh : scene.meshes) {
+                const double values[] = {mesh.ambient.x, mesh.ambient.y, mesh.ambient.z, mesh.is_mirror ? 1.0 : 0.0};
+                hash.add_field(values, sizeof values);
+            }
+            hash.add_field(scene.triangles.data(), scene.triangles.size() * sizeof(Triangle));
+            hash.add_field(scene.corner_normals.data(), scene.corner_normals.size() * sizeof(scene.corner_normals[0]));
         }
-        hash.add_field(scene.triangles.data(), scene.triangles.size() * sizeof(Triangle));
-        hash.add_field(scene.corner_normals.data(), scene.corner_normals.size() * sizeof(scene.corner_normals[0]));
         return to_hex(hash.finish()).substr(0, 16);
     } catch (const std::exception&) {  // libcrypto refused, or the file went away since it was read
         return "";

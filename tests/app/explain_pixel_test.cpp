@@ -377,3 +377,63 @@ TEST(ExplainPixel, HelpAndTheOptionsReferenceDescribeIt) {
 
 }  // namespace
 }  // namespace clr
+
+namespace clr {
+namespace {
+
+// A mesh of two triangles: one before the camera, one off to the side that the pixel's ray
+// passes by. Corners listed clockwise as seen from the eye: a mesh has no back, so its normal
+// is turned to face the ray, and the sun on the eye's side lights it.
+const char* kTriangleScene = R"({
+  "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+  "width": 40, "height": 30, "DefaultColor": [0.1, 0.1, 0.1], "SunLocation": [1, 2, 9],
+  "obj": {"filename": "two.obj", "position": [0, 0, -1], "ambient": [0.5, 1, 0.25]}
+})";
+const char* kTwoTriangles = "v -2 -1.5 0\nv 0.5 2 -0.5\nv 2.5 -1 0.5\nv 10 10 0\nv 11 10 0\nv 10 11 0\nf 1 2 3\nf 4 5 6\n";
+
+TEST(ExplainPixel, TriangleHitPrintsThePlaneTestAndBarycentricCoordinates) {
+    TempFolder folder;
+    folder.write("tri.json", kTriangleScene);
+    folder.write("two.obj", kTwoTriangles);
+    const auto result = run_clrender("tri.json --explain-pixel 21,14", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const std::string& text = result.output;
+
+    const Vec3 eye{0, 0, 6};
+    const Vec3 c0{-2, -1.5, -1}, c1{0.5, 2, -1.5}, c2{2.5, -1, -0.5};
+    const Vec3 d = lecture_ray_direction(eye, {0, 0, 0}, {0, 1, 0}, 60, 40, 30, 21, 14);
+    // The plane n = (c1 - c0) x (c2 - c0), t = ((c0 - o).n) / (d.n), and the point's
+    // barycentric coordinates as ratios of the areas of the triangles it makes with the edges.
+    const Vec3 n = cross(c1 - c0, c2 - c0);
+    const double t = dot(c0 - eye, n) / dot(d, n);
+    const Vec3 p = eye + d * t;
+    const double area = length(n);
+    const double b0 = length(cross(c1 - p, c2 - p)) / area;
+    const double b1 = length(cross(c2 - p, c0 - p)) / area;
+    const double b2 = length(cross(c0 - p, c1 - p)) / area;
+    ASSERT_NEAR(b0 + b1 + b2, 1, 1e-12) << "the test's ray must hit inside";
+    const std::string name = "triangle 0 of mesh 0 ('two.obj')";
+    EXPECT_NE(text.find(name + " (c0 = (-2, -1.5, -1), c1 = (0.5, 2, -1.5), c2 = (2.5, -1, -0.5))"), std::string::npos)
+        << text;
+    EXPECT_NEAR(number_after(text, "t_hit = ((c0 - o).n) / (d.n) = "), t, kClose);
+    expect_close(vector_after(text, "barycentric (b0, b1, b2) = "), {b0, b1, b2}, "barycentric");
+    EXPECT_NEAR(number_after(text, "nearest: " + name + " at t = "), t, kClose);
+    EXPECT_NE(text.find("1 triangle: the ray passes outside"), std::string::npos) << text;
+
+    // Lit: the normal faces the eye, n.l with the sun, nothing in the way.
+    Vec3 facing = normalize(n);
+    if (dot(facing, d) > 0) facing = -facing;
+    expect_close(vector_after(text, "normal n = "), facing, "normal facing the ray");
+    const Vec3 l = normalize(Vec3{1, 2, 9} - p);
+    const double cosine = dot(facing, l);
+    ASSERT_GT(cosine, 0);
+    EXPECT_NEAR(number_after(text, "n.l = "), cosine, kClose);
+    const auto byte = [](double c) { return std::to_string(static_cast<int>(std::floor(std::min(1.0, c) * 255 + 0.5))); };
+    EXPECT_EQ(bytes_after(text, "bytes the reference writes"),
+              byte(0.5 * cosine) + " " + byte(cosine) + " " + byte(0.25 * cosine))
+        << text;
+    EXPECT_NE(text.find("bytes the OpenCL kernels write"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace clr
