@@ -8,6 +8,7 @@
 #include "kinds/triangle_kind.h"
 #include "reference/geometry.h"
 #include "reference/trace_observer.h"
+#include "reference/triangle_tree.h"
 
 namespace clr {
 
@@ -55,17 +56,27 @@ double edge_margin(const reference::detail::TriangleTest& test) {
 
 HitKind TriangleKind::reference_kind() { return HitKind::Triangle; }
 
+// Every triangle, or those whose boxes the ray reaches in the reference's own index
+// (reference/triangle_tree.h): the same nearest hit either way, ties in t going to the lowest
+// index as they do when the triangles are tested in order.
 void TriangleKind::reference_nearest(const Scene& scene, const reference::Ray& ray, const reference::SurfaceId& leaving,
                                      double& nearest_t, reference::Hit& nearest, reference::TraceObserver* observer) {
-    for (int i = 0; i < static_cast<int>(scene.triangles.size()); ++i) {
-        if (is_leaving(leaving, HitKind::Triangle, i)) continue;
-        const reference::detail::TriangleTest test = test_triangle(scene.triangles[i], ray);
-        const bool accepted = test.meets_plane && test.ahead && test.inside && test.t < nearest_t;
-        if (observer) observer->triangle_tested(i, test, nearest_t, accepted);
-        if (!accepted) continue;
-        nearest_t = test.t;
-        nearest = {HitKind::Triangle, i, test.t, test.weights[1], test.weights[2]};
+    const auto test = [&](int i) {
+        if (is_leaving(leaving, HitKind::Triangle, i)) return;
+        const reference::detail::TriangleTest tested = test_triangle(scene.triangles[i], ray);
+        const bool nearer = tested.t < nearest_t ||
+                            (tested.t == nearest_t && nearest.kind == HitKind::Triangle && i < nearest.index);
+        const bool accepted = tested.meets_plane && tested.ahead && tested.inside && nearer;
+        if (observer) observer->triangle_tested(i, tested, nearest_t, accepted);
+        if (!accepted) return;
+        nearest_t = tested.t;
+        nearest = {HitKind::Triangle, i, tested.t, tested.weights[1], tested.weights[2]};
+    };
+    if (scene.triangle_tree) {
+        scene.triangle_tree->visit(ray, nearest_t, test);
+        return;
     }
+    for (int i = 0; i < static_cast<int>(scene.triangles.size()); ++i) test(i);
 }
 
 double TriangleKind::reference_margin(const Scene& scene, const reference::Ray& ray, double t_max,

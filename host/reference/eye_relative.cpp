@@ -1,5 +1,9 @@
 #include "reference/eye_relative.h"
 
+#include <memory>
+
+#include "reference/triangle_tree.h"
+
 namespace clr::reference {
 
 EyeRelative relative_to_eye(const Scene& scene, const CameraFrame& camera) {
@@ -14,6 +18,8 @@ EyeRelative relative_to_eye(const Scene& scene, const CameraFrame& camera) {
     }
     for (Triangle& triangle : moved.triangles)
         for (Vec3& corner : triangle.corners) corner = corner - eye;
+    moved.triangle_tree.reset();
+    if (!moved.triangles.empty()) moved.triangle_tree = std::make_shared<const TriangleTree>(moved.triangles);
     for (Impostor& impostor : moved.impostors) impostor.center = impostor.center - eye;
     moved.sun_location = moved.sun_location - eye;
     for (CameraKey& key : moved.camera_path) {

@@ -13,6 +13,10 @@
 
 namespace clr {
 
+namespace reference {
+class TriangleTree;  // reference/triangle_tree.h
+}
+
 using Color = Vec3;  // display-referred RGB in [0,1] (values outside are clamped on output)
 
 struct Sphere {
@@ -139,6 +143,9 @@ struct Scene {
     // Unit normals at a triangle's three corners, where its face names one for every corner
     // (transformed by the mesh's scale as normals are: divided by it, then normalised).
     std::vector<std::array<Vec3, 3>> corner_normals;
+    // The double-precision reference's own index over `triangles` (reference/triangle_tree.h),
+    // made for the eye-relative copy it traces; null: the reference tests every triangle.
+    std::shared_ptr<const reference::TriangleTree> triangle_tree;
 
     // What decides the pixels, as a label for image descriptions (scene/scene_digest.h); ""
     // when the images were not decoded (--check).
