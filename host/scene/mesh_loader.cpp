@@ -140,6 +140,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         ObjMesh model;
         try {
             model = read_obj(path);
+            // Any text reads as an OBJ of unknown statements: a file without one face is
+            // not the mesh the scene asks for (a wrong file, or points and lines only).
+            if (model.triangles.empty())
+                throw ObjError("it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
