@@ -70,6 +70,11 @@ std::string scene_with(const std::string& extra) {
     return "{" + kCamera + ", " + kSize + (extra.empty() ? "" : ", " + extra) + "}";
 }
 
+// A scene showing the OBJ mesh `filename`, with `settings` added to its object.
+std::string mesh_scene(const std::string& filename, const std::string& settings = "") {
+    return scene_with(R"("obj": {"filename": ")" + filename + "\"" + settings + "}");
+}
+
 // A scene without the top-level key `missing`, the others as in scene_with("").
 std::string scene_without(const std::string& missing) {
     const std::vector<std::pair<std::string, std::string>> members = {
@@ -337,6 +342,19 @@ std::vector<BadInput> catalogue() {
         {"ImagePathIsAFolder", {{"bad.json", image_scene("textures")}}, {"textures"}, "bad.json", 2,
          {"bad.json: /billboards/0/filename:", "textures': not a file"}},
         bad_scene("EmptyImageFileName", image_scene(""), {"bad.json: /billboards/0/filename: filename must not be empty"}),
+
+        // --- OBJ meshes: the same errors as images, with the file's line
+        bad_scene("MissingObj", mesh_scene("nowhere.obj"),
+                  {"bad.json: /obj/filename: cannot read OBJ", "nowhere.obj': no such file"}),
+        {"ObjIndexOutOfRange", {{"bad.json", mesh_scene("m.obj")}, {"m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}}, {},
+         "bad.json", 2, {"bad.json: /obj/filename: cannot read OBJ", "line 4: corner 3: position index 4 is out of range"}},
+        {"ObjNotANumber", {{"bad.json", mesh_scene("m.obj")}, {"m.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"}}, {},
+         "bad.json", 2, {"bad.json: /obj/filename: cannot read OBJ", "line 2:", "not a finite number"}},
+        {"ObjWithoutFaces", {{"bad.json", mesh_scene("m.obj")}, {"m.obj", binary_garbage(300)}}, {}, "bad.json", 2,
+         {"bad.json: /obj/filename: cannot read OBJ", "it has no faces"}},
+        {"ObjPathIsAFolder", {{"bad.json", mesh_scene("models")}}, {"models"}, "bad.json", 2,
+         {"bad.json: /obj/filename: cannot read OBJ"}},
+        bad_scene("ObjScaleZero", mesh_scene("m.obj", R"(, "scale": 0)"), {"bad.json: /obj/scale: scale must be a non-zero factor"}),
         bad_image("PngDimensionsOverTheLimit", "huge.png", testing::png_header_only(100000, 100000, 8),
                   "PNG image of 100000 x 100000 pixels is larger than the limit of 67108864 pixels"),
         bad_image("LosslessJpegIsNamed", "lossless.jpg", lossless_jpeg_frame(),
@@ -781,7 +799,7 @@ const std::set<std::string> kBeyondTheSchema = {
     // a name that must be a key elsewhere in the scene (an impostor's view set)
     "ImpostorNamesAnUnknownViewSet",
     // files the scene names
-    "MissingImage", "ImpostorViewImageMissing",
+    "MissingImage", "ImpostorViewImageMissing", "MissingObj",
     // the size, which --size may give instead of the scene: the schema cannot see the command line
     "MissingWidth", "MissingHeight",
 };
