@@ -9,6 +9,29 @@
 namespace clr {
 namespace {
 
+// find_first_of() and find_first_not_of() with a set of characters call memchr() on the set
+// for every character of the text: on a 1M-triangle OBJ that was a third of the loading
+// time. These loops test the two characters directly.
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+std::size_t find_blank(std::string_view text, std::size_t from) {
+    for (std::size_t i = from; i < text.size(); ++i)
+        if (is_blank(text[i])) return i;
+    return std::string_view::npos;
+}
+
+std::size_t find_not_blank(std::string_view text, std::size_t from) {
+    for (std::size_t i = from; i < text.size(); ++i)
+        if (!is_blank(text[i])) return i;
+    return std::string_view::npos;
+}
+
+std::size_t find_line_end(std::string_view text, std::size_t from) {
+    for (std::size_t i = from; i < text.size(); ++i)
+        if (text[i] == '\r' || text[i] == '\n') return i;
+    return std::string_view::npos;
+}
+
 // Calls `visit(line_number, line)` for each line; a line ends at "\n", "\r\n" or a lone "\r",
 // as tinyobjloader ends them. Stops when `visit` returns false.
 template <typename Visit>
@@ -16,7 +39,7 @@ void for_each_line(std::string_view text, Visit&& visit) {
     std::uint64_t number = 0;
     std::size_t start = 0;
     while (start < text.size()) {
-        std::size_t end = text.find_first_of("\r\n", start);
+        std::size_t end = find_line_end(text, start);
         if (end == std::string_view::npos) end = text.size();
         if (!visit(++number, text.substr(start, end - start))) return;
         start = end;
@@ -29,9 +52,9 @@ std::vector<std::string_view> tokens_of(std::string_view line) {
     std::vector<std::string_view> tokens;
     std::size_t at = 0;
     while (at < line.size()) {
-        at = line.find_first_not_of(" \t", at);
+        at = find_not_blank(line, at);
         if (at == std::string_view::npos) break;
-        std::size_t end = line.find_first_of(" \t", at);
+        std::size_t end = find_blank(line, at);
         if (end == std::string_view::npos) end = line.size();
         tokens.push_back(line.substr(at, end - at));
         at = end;
@@ -122,9 +145,9 @@ void count_entry(std::string_view keyword, ObjTextCounts& counts) {
 
 // The first word of a line ("" for a blank one).
 std::string_view keyword_of(std::string_view line) {
-    const std::size_t at = line.find_first_not_of(" \t");
+    const std::size_t at = find_not_blank(line, 0);
     if (at == std::string_view::npos) return {};
-    const std::size_t end = line.find_first_of(" \t", at);
+    const std::size_t end = find_blank(line, at);
     return line.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
 }
 
