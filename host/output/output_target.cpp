@@ -52,17 +52,22 @@ std::string resolve_output_target(const std::string& path) {
 FileIdentity identify_file(const std::string& path) {
     FileIdentity identity;
     struct stat info {};
-    if (::stat(path.c_str(), &info) == 0) {
+    const auto by_inode = [&] {
+        identity.path.clear();
         identity.exists = true;
         identity.device = info.st_dev;
         identity.inode = info.st_ino;
         return identity;
-    }
+    };
+    if (::stat(path.c_str(), &info) == 0) return by_inode();
     std::error_code error;
     fs::path absolute = fs::absolute(path, error);
     if (error) absolute = path;  // no working folder (removed meanwhile): the name as given
     const fs::path normal = fs::weakly_canonical(absolute, error);
     identity.path = (error ? absolute.lexically_normal() : normal).string();
+    // "sub/../scene.obj" with no folder "sub": stat() fails, but an output there is made by
+    // creating "sub" and then lands on scene.obj itself, which is the file to compare with.
+    if (::stat(identity.path.c_str(), &info) == 0) return by_inode();
     return identity;
 }
 
