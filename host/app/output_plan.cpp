@@ -166,6 +166,10 @@ void add_scene_inputs(const Scene& scene, OutputRoles& roles) {
     for (const Impostor& impostor : scene.impostors)
         for (const ImpostorView& view : impostor.views)
             if (view.image) roles.add_input("impostor image", view.image->path);
+    for (const Mesh& mesh : scene.meshes) {
+        if (!mesh.path.empty()) roles.add_input("mesh", mesh.path);
+        for (const std::string& material : mesh.material_paths) roles.add_input("mesh material", material);
+    }
 }
 
 std::string OutputPlan::image_path(int frame) const {

@@ -151,6 +151,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             model = placeholder_cube();
             mesh.placeholder = true;
         }
+        if (!mesh.placeholder) {
+            mesh.path = path;
+            mesh.material_paths = model.material_files;
+        }
         if (!each.ambient_given) mesh.ambient = model.diffuse && !mesh.placeholder ? *model.diffuse : kDefaultMeshColor;
         add_mesh(scene, std::move(mesh), model, each.filename);
     }

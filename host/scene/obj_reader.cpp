@@ -66,6 +66,7 @@ public:
             if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + failure.what();
             return false;
         }
+        files_.push_back(path.lexically_normal().string());
         text = mtl_statements_used(text);
         for (const std::string& material : materials_with_diffuse(text)) with_diffuse_.insert(material);
         std::istringstream stream(text);
@@ -74,11 +75,13 @@ public:
     }
 
     const std::string& problem() const { return problem_; }
+    const std::vector<std::string>& files() const { return files_; }
     bool gives_diffuse(const std::string& material) const { return with_diffuse_.count(material) != 0; }
 
 private:
     std::filesystem::path folder_;
     std::string problem_;
+    std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::set<std::string> with_diffuse_;
 };
 
@@ -105,6 +108,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
     if (!read) throw ObjError(printable(shortened(first_line(error), 200)));
 
     ObjMesh mesh;
+    mesh.material_files = material_files.files();
     const std::size_t positions = attributes.vertices.size() / 3;
     const std::size_t normals = attributes.normals.size() / 3;
     if (positions != counts.positions || normals != counts.normals) {

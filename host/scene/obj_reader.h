@@ -41,6 +41,7 @@ struct ObjMesh {
     // The diffuse colour (`Kd`) of the material the first face uses, when its .mtl gives one.
     std::optional<Vec3> diffuse;
     std::uint64_t faces = 0;  // polygons in the file
+    std::vector<std::string> material_files;  // the .mtl files read, as paths
 };
 
 // Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a

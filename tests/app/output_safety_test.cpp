@@ -101,6 +101,32 @@ TEST(OutputSafety, OutputNamingATextureIsRefused) {
     EXPECT_TRUE(scene.inputs_unchanged());
 }
 
+// A mesh and its material are inputs too: --stats may name any file, and a PPM may be named
+// what a user calls their model.
+TEST(OutputSafety, OutputsNamingAMeshOrItsMaterialAreRefused) {
+    TempFolder folder;
+    const std::string obj = "mtllib look.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string mtl = "newmtl red\nKd 1 0 0\n";
+    folder.write("model.obj", obj);
+    folder.write("look.mtl", mtl);
+    folder.write("scene.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 8, "height": 6, "obj": {"filename": "model.obj"}})");
+    const auto run = [&](const std::string& arguments) {
+        return run_clrender(arguments + " --reference -q", folder.path(), "timeout 60");
+    };
+    expect_refused(run("scene.json -o out.png --stats model.obj"), "--stats report", "mesh");
+    expect_refused(run("scene.json -o out.png --stats ./look.mtl"), "--stats report", "mesh material");
+    // Through a folder that does not exist yet: it would be made, and the report would land
+    // on the mesh.
+    expect_refused(run("scene.json -o model.obj.ppm --stats sub/../model.obj"), "--stats report", "mesh");
+    expect_refused(run("scene.json -o new/../look.mtl.ppm --stats new/../look.mtl"), "--stats report", "mesh material");
+    EXPECT_FALSE(fs::exists(folder.file("sub")));
+    EXPECT_FALSE(fs::exists(folder.file("new")));
+    EXPECT_EQ(read_bytes(folder.file("model.obj")), obj);
+    EXPECT_EQ(read_bytes(folder.file("look.mtl")), mtl);
+    EXPECT_FALSE(fs::exists(folder.file("out.png")));
+}
+
 TEST(OutputSafety, DefaultOutputNameNamingATextureIsRefused) {
     TempFolder folder;  // the scene tex.json: its default output is tex.png in the current folder
     const std::string texture = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "scenes/demo/checker.png");
