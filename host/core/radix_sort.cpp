@@ -5,7 +5,7 @@
 
 namespace clr {
 
-void radix_sort(std::vector<std::uint64_t>& keys) {
+void radix_sort(std::vector<std::uint64_t>& keys, int ordered_bits) {
     constexpr int kDigitBits = 16;
     constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
     // Each pass clears and sums its 65,536 buckets: about 50 us a call for any count of keys,
@@ -17,7 +17,7 @@ void radix_sort(std::vector<std::uint64_t>& keys) {
     }
     std::vector<std::uint64_t> scratch(keys.size());
     std::vector<std::uint32_t> starts(kBuckets);
-    for (int shift = 0; shift < 64; shift += kDigitBits) {
+    for (int shift = ordered_bits; shift < 64; shift += kDigitBits) {
         auto digit = [shift](std::uint64_t key) { return static_cast<std::size_t>(key >> shift) & (kBuckets - 1); };
         std::fill(starts.begin(), starts.end(), 0);
         for (std::uint64_t key : keys) ++starts[digit(key)];
