@@ -24,11 +24,10 @@ ObjectBounds::ObjectBounds(const FrameCamera& camera)
       width_(camera.width), height_(camera.height) {}
 
 // Widens `bounds` by the point at camera coordinates x, y (scaled: the screen's edges at
-// x / depth = +-1) and depth: the inverse of the kernels' camera_ray, screen coordinates sx,
-// sy in [-1, 1] across the image, then pixel coordinates.
+// x / depth = +-1) and depth.
 void ObjectBounds::widen(PixelBounds& bounds, double x, double y, double depth) const {
-    const double col = (x / depth + 1) * width_ / 2 - 0.5;
-    const double row = (1 - y / depth) * height_ / 2 - 0.5;
+    const double col = column_of(x / depth);
+    const double row = row_of(y / depth);
     bounds.col_min = std::min(bounds.col_min, col);
     bounds.col_max = std::max(bounds.col_max, col);
     bounds.row_min = std::min(bounds.row_min, row);

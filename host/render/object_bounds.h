@@ -36,6 +36,13 @@ public:
 
     // Widens `bounds` by the point at camera coordinates x, y (scaled) and depth.
     void widen(PixelBounds& bounds, double x, double y, double depth) const;
+    // The pixel column of screen coordinate x / depth, and the pixel row of y / depth: the
+    // inverse of the kernels' camera_ray, sx and sy in [-1, 1] across the image. The column
+    // never falls as sx grows, nor the row as sy falls, rounding included (each step rounds
+    // monotonically): the extreme pixels of several points are those of their extreme
+    // screen coordinates.
+    double column_of(double sx) const { return (sx + 1) * width_ / 2 - 0.5; }
+    double row_of(double sy) const { return (1 - sy) * height_ / 2 - 0.5; }
     // Widens `bounds` by the projection of `point` seen from `eye` (in the point's coordinates).
     void add(const Vec3& point, const Vec3& eye, PixelBounds& bounds) const;
     // Widens `bounds` by the part of convex polygon `corners` that rays can reach, for objects
