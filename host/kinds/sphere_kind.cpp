@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
+#include <cmath>
 
 #include "render/device_structs.h"
 #include "render/object_bounds.h"
@@ -19,52 +19,46 @@ Box3 SphereKind::box(const Sphere& sphere, const Vec3& shift, Vec3& centroid) {
     return box;
 }
 
-// A sphere lies inside its axis-aligned box, whose projection bounds the sphere's.
+namespace {
+
+// The least and greatest slopes s of the planes x = s z through the eye (the origin) that touch
+// a sphere of radius r around (x, z) in a plane's coordinates, z > r: those at distance r
+// from the centre, (x - s z)^2 = r^2 (1 + s^2). The sphere lies between them. false where the
+// doubles overflow (coordinates beyond 1e150), for the caller's coarser bounds.
+bool touching_slopes(double x, double z, double r, double& least, double& most) {
+    const double z_r = (z - r) * (z + r);  // z^2 - r^2 without cancelling, > 0
+    const double along = x * z, across = r * std::sqrt(x * x + z_r);
+    least = (along - across) / z_r;
+    most = (along + across) / z_r;
+    return std::isfinite(least) && std::isfinite(most);
+}
+
+}  // namespace
+
+// A sphere wholly in front of the eye: the rectangle around its silhouette, whose edges are
+// where the planes through the eye along the screen's columns (and rows) touch the sphere;
+// exact up to rounding, which the screen tiles' margin covers. The projection of the sphere's
+// box had been used: it reaches up to (1 + |t|) / sqrt(1 + t^2) times as far from a small
+// sphere's centre at t = x / depth (1.37 times at the edge of a 60 degree view), so every row
+// within it tested the sphere for nothing, and it took sixteen divisions (docs/benchmarks.md,
+// Binning 100,000 spheres). Otherwise, the projection of the sphere's axis-aligned box.
 PixelBounds SphereKind::pixel_bounds(const ObjectBounds& view, const Sphere& sphere, const Vec3&) {
     PixelBounds bounds;
     const double r = sphere.radius;
     const Vec3& eye = view.eye();
     if (view.box_clearly_in_front(sphere.center, r)) {
-        // The box's corners in camera coordinates: the centre's, plus or minus the radius
-        // along each axis (a few additions instead of projecting every corner anew).
-        const Vec3& right = view.right_scaled();
-        const Vec3& up = view.up_scaled();
-        const Vec3& forward = view.forward();
         const Vec3 rel = sphere.center - eye;
-        const Vec3 center{dot(rel, right), dot(rel, up), dot(rel, forward)};
-        const std::array<Vec3, 3> axes = {Vec3{right.x, up.x, forward.x} * r, Vec3{right.y, up.y, forward.y} * r,
-                                          Vec3{right.z, up.z, forward.z} * r};
-        // Every corner lies in front of the eye, so the box's pixels reach as far as its
-        // corners' extreme screen coordinates do (ObjectBounds::column_of()): the same bounds
-        // as widening by each corner, with two conversions to pixels instead of eight. A
-        // quotient that is not a number widens nothing, as in widen().
-        // The x and y of a corner go through the same steps, two lanes of one vector (SSE2's
-        // divpd on x86-64): half the divisions, each lane rounded as a double on its own.
-        using XY = double __attribute__((vector_size(16)));
-        constexpr double kInfinity = std::numeric_limits<double>::infinity();
-        const XY center_xy = {center.x, center.y};
-        const std::array<XY, 3> axes_xy = {XY{axes[0].x, axes[0].y}, XY{axes[1].x, axes[1].y}, XY{axes[2].x, axes[2].y}};
-        XY least = {kInfinity, kInfinity}, most = -least;
-        for (int bits = 0; bits < 8; ++bits) {
-            const XY p = center_xy + (bits & 1 ? axes_xy[0] : -axes_xy[0]) + (bits & 2 ? axes_xy[1] : -axes_xy[1]) +
-                         (bits & 4 ? axes_xy[2] : -axes_xy[2]);
-            const double depth = center.z + (bits & 1 ? axes[0].z : -axes[0].z) + (bits & 2 ? axes[1].z : -axes[1].z) +
-                                 (bits & 4 ? axes[2].z : -axes[2].z);
-            const XY s = p / XY{depth, depth};
-            least = s < least ? s : least;  // std::min(), std::max() lane by lane
-            most = most < s ? s : most;
+        const double depth = dot(rel, view.forward());  // > r: its box is in front of the eye
+        double least_x, most_x, least_y, most_y;
+        if (touching_slopes(dot(rel, view.right_unit()), depth, r, least_x, most_x) &&
+            touching_slopes(dot(rel, view.up_unit()), depth, r, least_y, most_y)) {
+            bounds.col_min = view.column_of(least_x * view.screen_x_per_unit());
+            bounds.col_max = view.column_of(most_x * view.screen_x_per_unit());
+            bounds.row_min = view.row_of(most_y * view.screen_y_per_unit());
+            bounds.row_max = view.row_of(least_y * view.screen_y_per_unit());
+            bounds.in_front = true;
+            return bounds;
         }
-        const double least_x = least[0], most_x = most[0], least_y = least[1], most_y = most[1];
-        if (least_x <= most_x) {
-            bounds.col_min = view.column_of(least_x);
-            bounds.col_max = view.column_of(most_x);
-        }
-        if (least_y <= most_y) {
-            bounds.row_min = view.row_of(most_y);
-            bounds.row_max = view.row_of(least_y);
-        }
-        bounds.in_front = true;
-        return bounds;
     }
     auto corner = [&](int bits) {
         return sphere.center + Vec3{bits & 1 ? r : -r, bits & 2 ? r : -r, bits & 4 ? r : -r};

@@ -21,6 +21,8 @@ constexpr double kNearEyeFraction = 1e-5;
 ObjectBounds::ObjectBounds(const FrameCamera& camera)
     : eye_(camera.eye_in_scene()), forward_(camera.forward), right_(camera.right), up_(camera.up),
       right_scaled_(camera.right / dot(camera.right, camera.right)), up_scaled_(camera.up / dot(camera.up, camera.up)),
+      right_unit_(normalize(camera.right)), up_unit_(normalize(camera.up)),
+      screen_x_per_unit_(1 / length(camera.right)), screen_y_per_unit_(1 / length(camera.up)),
       width_(camera.width), height_(camera.height) {}
 
 // Widens `bounds` by the point at camera coordinates x, y (scaled: the screen's edges at

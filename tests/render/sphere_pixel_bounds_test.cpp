@@ -1,9 +1,10 @@
-// A sphere clearly in front of the eye is bounded by its box's corners' extreme screen
-// coordinates, converted to pixels once each: exactly the bounds that widening by each corner
-// gives (ObjectBounds::widen()), so that no tile list changes by a bit.
+// A sphere in front of the eye is bounded by the rectangle around its silhouette: every point
+// of the sphere projects inside it, its edges touch the silhouette, and it never reaches
+// beyond the projection of the sphere's box (which bounded spheres before).
 #include <gtest/gtest.h>
 
-#include <array>
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "kinds/sphere_kind.h"
@@ -14,50 +15,78 @@
 namespace clr {
 namespace {
 
-// The bounds of widening by each of the sphere's box corners in camera coordinates (the
-// centre's, plus or minus the radius along each scene axis), one corner at a time.
-PixelBounds corner_by_corner(const ObjectBounds& view, const Sphere& sphere) {
-    const Vec3& right = view.right_scaled();
-    const Vec3& up = view.up_scaled();
-    const Vec3& forward = view.forward();
-    const double r = sphere.radius;
-    const Vec3 rel = sphere.center - view.eye();
-    const Vec3 center{dot(rel, right), dot(rel, up), dot(rel, forward)};
-    const std::array<Vec3, 3> axes = {Vec3{right.x, up.x, forward.x} * r, Vec3{right.y, up.y, forward.y} * r,
-                                      Vec3{right.z, up.z, forward.z} * r};
+// The projection of the sphere's axis-aligned box: its eight corners, one at a time.
+PixelBounds box_bounds(const ObjectBounds& view, const Sphere& sphere) {
     PixelBounds bounds;
-    for (int bits = 0; bits < 8; ++bits) {
-        const Vec3 p = center + (bits & 1 ? axes[0] : -axes[0]) + (bits & 2 ? axes[1] : -axes[1]) +
-                       (bits & 4 ? axes[2] : -axes[2]);
-        view.widen(bounds, p.x, p.y, p.z);
-    }
-    bounds.in_front = true;
+    const double r = sphere.radius;
+    for (int bits = 0; bits < 8; ++bits)
+        view.add(sphere.center + Vec3{bits & 1 ? r : -r, bits & 2 ? r : -r, bits & 4 ? r : -r}, view.eye(), bounds);
     return bounds;
 }
 
-TEST(SpherePixelBounds, ExtremeCornersGiveTheBoundsOfEveryCorner) {
+// The projection of points spread over the sphere's surface.
+PixelBounds surface_bounds(const ObjectBounds& view, const Sphere& sphere, std::mt19937& random) {
+    std::normal_distribution<double> normal;
+    PixelBounds bounds;
+    for (int i = 0; i < 5000; ++i) {
+        const Vec3 direction = normalize(Vec3{normal(random), normal(random), normal(random)});
+        view.add(sphere.center + direction * sphere.radius, view.eye(), bounds);
+    }
+    return bounds;
+}
+
+TEST(SpherePixelBounds, RectangleAroundTheSilhouetteWithinTheBoxProjection) {
     std::mt19937 random(23);
-    std::uniform_real_distribution<double> spot(-30, 30), size(0.001, 3);
-    int checked = 0;
-    for (int view_index = 0; view_index < 20; ++view_index) {
+    std::uniform_real_distribution<double> spot(-30, 30), size(0.01, 2);
+    int checked = 0, tighter = 0;
+    for (int view_index = 0; view_index < 12; ++view_index) {
         const Vec3 eye{spot(random), spot(random), spot(random)};
         const Vec3 lookat{spot(random), spot(random), spot(random)};
-        const ObjectBounds view(make_frame_camera(eye, lookat, {0, 1, 0}, 20 + 7 * view_index, 1920, 1080, eye));
-        for (int i = 0; i < 2000; ++i) {
+        const ObjectBounds view(make_frame_camera(eye, lookat, {0, 1, 0}, 20 + 10 * view_index, 1920, 1080, eye));
+        for (int i = 0; i < 200; ++i) {
             const Sphere sphere = testing::make_sphere({spot(random), spot(random), spot(random)}, size(random), {1, 1, 1});
             if (!view.box_clearly_in_front(sphere.center, sphere.radius)) continue;
-            const PixelBounds expected = corner_by_corner(view, sphere);
-            const PixelBounds actual = SphereKind::pixel_bounds(view, sphere, {});
-            ASSERT_EQ(actual.col_min, expected.col_min) << "view " << view_index << " sphere " << i;
-            ASSERT_EQ(actual.col_max, expected.col_max) << "view " << view_index << " sphere " << i;
-            ASSERT_EQ(actual.row_min, expected.row_min) << "view " << view_index << " sphere " << i;
-            ASSERT_EQ(actual.row_max, expected.row_max) << "view " << view_index << " sphere " << i;
-            ASSERT_EQ(actual.in_front, expected.in_front);
-            ASSERT_EQ(actual.whole_screen, expected.whole_screen);
+            const PixelBounds bounds = SphereKind::pixel_bounds(view, sphere, {});
+            ASSERT_TRUE(bounds.in_front);
+            ASSERT_FALSE(bounds.whole_screen);
+            const PixelBounds box = box_bounds(view, sphere);
+            const PixelBounds surface = surface_bounds(view, sphere, random);
+            SCOPED_TRACE(::testing::Message() << "view " << view_index << " sphere " << i);
+            // Every sampled point inside (up to rounding, far below the tiles' quarter pixel).
+            EXPECT_LE(bounds.col_min, surface.col_min + 1e-6);
+            EXPECT_GE(bounds.col_max, surface.col_max - 1e-6);
+            EXPECT_LE(bounds.row_min, surface.row_min + 1e-6);
+            EXPECT_GE(bounds.row_max, surface.row_max - 1e-6);
+            // Touching: the samples come within a small fraction of the sphere's size on screen.
+            const double slack = 5e-3 * std::max(surface.col_max - surface.col_min, surface.row_max - surface.row_min) + 1e-6;
+            EXPECT_GE(bounds.col_min, surface.col_min - slack);
+            EXPECT_LE(bounds.col_max, surface.col_max + slack);
+            EXPECT_GE(bounds.row_min, surface.row_min - slack);
+            EXPECT_LE(bounds.row_max, surface.row_max + slack);
+            // Never beyond the box's projection.
+            EXPECT_GE(bounds.col_min, box.col_min - 1e-6);
+            EXPECT_LE(bounds.col_max, box.col_max + 1e-6);
+            EXPECT_GE(bounds.row_min, box.row_min - 1e-6);
+            EXPECT_LE(bounds.row_max, box.row_max + 1e-6);
+            tighter += (bounds.col_max - bounds.col_min) < 0.9 * (box.col_max - box.col_min);
             ++checked;
         }
     }
-    EXPECT_GT(checked, 10000);
+    EXPECT_GT(checked, 500);
+    EXPECT_GT(tighter, checked / 10) << "the silhouette's rectangle is often much narrower than the box's projection";
+}
+
+TEST(SpherePixelBounds, SphereAtTheCentreOfTheViewIsAsWideAsItsAngle) {
+    // A sphere of radius 1 at depth 10 straight ahead, 90 degrees across 320 pixels: its
+    // silhouette spans tan(asin(1 / 10)) = 1 / sqrt(99) either side of the centre, in screen
+    // coordinates, or 160 / sqrt(99) pixels either side of column 159.5.
+    const ObjectBounds view(make_frame_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 320, 320));
+    const PixelBounds bounds = SphereKind::pixel_bounds(view, testing::make_sphere({0, 0, -10}, 1, {1, 1, 1}), {});
+    const double half = 160 / std::sqrt(99.0);
+    EXPECT_NEAR(bounds.col_min, 159.5 - half, 1e-4);
+    EXPECT_NEAR(bounds.col_max, 159.5 + half, 1e-4);
+    EXPECT_NEAR(bounds.row_min, 159.5 - half, 1e-4);
+    EXPECT_NEAR(bounds.row_max, 159.5 + half, 1e-4);
 }
 
 }  // namespace
