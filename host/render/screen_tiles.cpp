@@ -85,39 +85,35 @@ void place_range(const FrameGeometry& frame, std::size_t begin, std::size_t end,
     });
 }
 
-// The frame's objects that some tile lists, in the frame's order: chunks of objects placed
-// on `threads` threads, each into a list of its own, joined in order.
-std::vector<TileSpan> place_objects(const FrameGeometry& frame, const ScreenTiles& tiles, const FrameCamera& camera,
-                                    std::size_t threads) {
-    const ObjectBounds bounds(camera);
-    const std::size_t objects = frame.object_count();
-    std::vector<std::vector<TileSpan>> chunks((objects + kPlaceChunk - 1) / kPlaceChunk);
-    if (chunks.size() == 1) {  // a small frame: no copy
-        place_range(frame, 0, objects, bounds, tiles, camera, chunks[0]);
-        return std::move(chunks[0]);
-    }
-    parallel_for(chunks.size(), threads, [&](std::size_t chunk) {
-        chunks[chunk].reserve(kPlaceChunk);
-        place_range(frame, chunk * kPlaceChunk, std::min(objects, (chunk + 1) * kPlaceChunk), bounds, tiles, camera,
-                    chunks[chunk]);
-    });
-    std::size_t total = 0;
-    for (const std::vector<TileSpan>& chunk : chunks) total += chunk.size();
-    std::vector<TileSpan> placed;
-    placed.reserve(total);
-    for (const std::vector<TileSpan>& chunk : chunks) placed.insert(placed.end(), chunk.begin(), chunk.end());
-    return placed;
-}
-
 }  // namespace
 
 ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& camera) {
     ScreenTiles tiles;
+    ScreenTileBinner().bin(frame, camera, tiles);
+    return tiles;
+}
+
+void ScreenTileBinner::bin(const FrameGeometry& frame, const FrameCamera& camera, ScreenTiles& tiles) {
     tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
     tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
-    const std::size_t threads = frame.object_count() >= kParallelFrom ? static_cast<std::size_t>(usable_cpu_count()) : 1;
-    list_in_tiles(place_objects(frame, tiles, camera, threads), threads, tiles);
-    return tiles;
+    const std::size_t objects = frame.object_count();
+    const std::size_t threads = objects >= kParallelFrom ? static_cast<std::size_t>(usable_cpu_count()) : 1;
+    // The objects that some tile lists, in the frame's order: chunks of objects placed on
+    // `threads` threads, each into a list of its own, joined in order.
+    const ObjectBounds bounds(camera);
+    placed_.clear();
+    if (objects <= kPlaceChunk) {  // a small frame: no copy
+        place_range(frame, 0, objects, bounds, tiles, camera, placed_);
+    } else {
+        chunks_.resize((objects + kPlaceChunk - 1) / kPlaceChunk);
+        parallel_for(chunks_.size(), threads, [&](std::size_t chunk) {
+            chunks_[chunk].clear();
+            place_range(frame, chunk * kPlaceChunk, std::min(objects, (chunk + 1) * kPlaceChunk), bounds, tiles,
+                        camera, chunks_[chunk]);
+        });
+        for (const std::vector<TileSpan>& chunk : chunks_) placed_.insert(placed_.end(), chunk.begin(), chunk.end());
+    }
+    lister_.list(placed_, threads, tiles);
 }
 
 }  // namespace clr

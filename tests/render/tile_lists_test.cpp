@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/worker_threads.h"
+#include "render/screen_tiles.h"
 
 namespace clr {
 namespace {
@@ -94,6 +95,22 @@ TEST(TileLists, FewOrNoSpansAndGridsOfOneTile) {
             const std::vector<TileSpan> spans = random_spans(count, tiles_x, tiles_y, static_cast<unsigned>(count + tiles_x));
             expect_same_lists(plain_lists(spans, tiles_x, tiles_y), listed(spans, tiles_x, tiles_y, 2));
         }
+    }
+}
+
+// A renderer lists every frame with one lister, into the last frame's lists: whatever the
+// frame before held (more spans or fewer, another grid), the lists are a fresh call's.
+TEST(TileLists, AListerKeptFromFrameToFrameListsEachFrameAsAFreshOne) {
+    WorkerThreads::shared().start(2);
+    const std::vector<TileSpan> large = random_spans(30000, 40, 23, 7), small = random_spans(5000, 17, 9, 8);
+    TileLister lister;
+    ScreenTiles tiles;
+    for (const auto* frame : {&large, &small, &small, &large}) {
+        const int tiles_x = frame == &large ? 40 : 17, tiles_y = frame == &large ? 23 : 9;
+        tiles.tiles_x = tiles_x;
+        tiles.tiles_y = tiles_y;
+        lister.list(*frame, 2, tiles);
+        expect_same_lists(plain_lists(*frame, tiles_x, tiles_y), tiles);
     }
 }
 
