@@ -89,5 +89,22 @@ TEST(SpherePixelBounds, SphereAtTheCentreOfTheViewIsAsWideAsItsAngle) {
     EXPECT_NEAR(bounds.row_max, 159.5 + half, 1e-4);
 }
 
+// Beyond the scene format's coordinates (1e15), where the squares overflow, a sphere is
+// bounded by its box's projection, not by infinities or NaNs.
+TEST(SpherePixelBounds, BeyondTheSquaresRangeTheBoxProjectionBoundsIt) {
+    const ObjectBounds view(make_frame_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 320, 320));
+    const Sphere far = testing::make_sphere({1e199, 0, -1e200}, 1e198, {1, 1, 1});
+    ASSERT_TRUE(view.box_clearly_in_front(far.center, far.radius));
+    const PixelBounds bounds = SphereKind::pixel_bounds(view, far, {});
+    const PixelBounds box = box_bounds(view, far);
+    EXPECT_TRUE(std::isfinite(bounds.col_min) && std::isfinite(bounds.col_max));
+    EXPECT_TRUE(std::isfinite(bounds.row_min) && std::isfinite(bounds.row_max));
+    EXPECT_EQ(bounds.col_min, box.col_min);
+    EXPECT_EQ(bounds.col_max, box.col_max);
+    EXPECT_EQ(bounds.row_min, box.row_min);
+    EXPECT_EQ(bounds.row_max, box.row_max);
+    EXPECT_TRUE(bounds.in_front);
+}
+
 }  // namespace
 }  // namespace clr
