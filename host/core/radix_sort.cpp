@@ -5,7 +5,12 @@
 
 namespace clr {
 
-void radix_sort(std::vector<std::uint64_t>& keys) {
+void radix_sort(std::vector<std::uint64_t>& keys, int ordered_bits) {
+    RadixSortScratch scratch;
+    radix_sort(keys, ordered_bits, scratch);
+}
+
+void radix_sort(std::vector<std::uint64_t>& keys, int ordered_bits, RadixSortScratch& scratch) {
     constexpr int kDigitBits = 16;
     constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
     // Each pass clears and sums its 65,536 buckets: about 50 us a call for any count of keys,
@@ -15,17 +20,18 @@ void radix_sort(std::vector<std::uint64_t>& keys) {
         std::sort(keys.begin(), keys.end());
         return;
     }
-    std::vector<std::uint64_t> scratch(keys.size());
-    std::vector<std::uint32_t> starts(kBuckets);
-    for (int shift = 0; shift < 64; shift += kDigitBits) {
+    scratch.keys.resize(keys.size());  // every key written before read
+    std::vector<std::uint32_t>& starts = scratch.starts;
+    starts.resize(kBuckets);
+    for (int shift = ordered_bits; shift < 64; shift += kDigitBits) {
         auto digit = [shift](std::uint64_t key) { return static_cast<std::size_t>(key >> shift) & (kBuckets - 1); };
         std::fill(starts.begin(), starts.end(), 0);
         for (std::uint64_t key : keys) ++starts[digit(key)];
         if (starts[digit(keys.front())] == keys.size()) continue;  // one digit for all: already in order
         std::uint32_t total = 0;
         for (std::uint32_t& start : starts) total += std::exchange(start, total);
-        for (std::uint64_t key : keys) scratch[starts[digit(key)]++] = key;
-        keys.swap(scratch);
+        for (std::uint64_t key : keys) scratch.keys[starts[digit(key)]++] = key;
+        keys.swap(scratch.keys);
     }
 }
 

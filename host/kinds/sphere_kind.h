@@ -44,7 +44,8 @@ struct SphereKind {
     // point the BVH sorts it by (its centre).
     static Box3 box(const Sphere& sphere, const Vec3& shift, Vec3& centroid);
 
-    // The screen tiles' bounds (render/object_bounds.h): the projection of the sphere's box,
+    // The screen tiles' bounds (render/object_bounds.h): the rectangle around the sphere's
+    // silhouette where the sphere lies in front of the eye, else the projection of its box,
     // clipped to the view when it reaches behind the eye; and no hit is nearer than the
     // sphere's surface.
     static PixelBounds pixel_bounds(const ObjectBounds& view, const Sphere& sphere, const Vec3& object_origin);

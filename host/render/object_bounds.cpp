@@ -21,14 +21,15 @@ constexpr double kNearEyeFraction = 1e-5;
 ObjectBounds::ObjectBounds(const FrameCamera& camera)
     : eye_(camera.eye_in_scene()), forward_(camera.forward), right_(camera.right), up_(camera.up),
       right_scaled_(camera.right / dot(camera.right, camera.right)), up_scaled_(camera.up / dot(camera.up, camera.up)),
+      right_unit_(normalize(camera.right)), up_unit_(normalize(camera.up)),
+      screen_x_per_unit_(1 / length(camera.right)), screen_y_per_unit_(1 / length(camera.up)),
       width_(camera.width), height_(camera.height) {}
 
 // Widens `bounds` by the point at camera coordinates x, y (scaled: the screen's edges at
-// x / depth = +-1) and depth: the inverse of the kernels' camera_ray, screen coordinates sx,
-// sy in [-1, 1] across the image, then pixel coordinates.
+// x / depth = +-1) and depth.
 void ObjectBounds::widen(PixelBounds& bounds, double x, double y, double depth) const {
-    const double col = (x / depth + 1) * width_ / 2 - 0.5;
-    const double row = (1 - y / depth) * height_ / 2 - 0.5;
+    const double col = column_of(x / depth);
+    const double row = row_of(y / depth);
     bounds.col_min = std::min(bounds.col_min, col);
     bounds.col_max = std::max(bounds.col_max, col);
     bounds.row_min = std::min(bounds.row_min, row);

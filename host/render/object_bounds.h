@@ -33,9 +33,22 @@ public:
     const Vec3& forward() const { return forward_; }
     const Vec3& right_scaled() const { return right_scaled_; }
     const Vec3& up_scaled() const { return up_scaled_; }
+    // The same axes of unit length, and the screen coordinates (sx, sy) that one unit of
+    // x / depth and y / depth along them spans: 1 / |right| and 1 / |up|.
+    const Vec3& right_unit() const { return right_unit_; }
+    const Vec3& up_unit() const { return up_unit_; }
+    double screen_x_per_unit() const { return screen_x_per_unit_; }
+    double screen_y_per_unit() const { return screen_y_per_unit_; }
 
     // Widens `bounds` by the point at camera coordinates x, y (scaled) and depth.
     void widen(PixelBounds& bounds, double x, double y, double depth) const;
+    // The pixel column of screen coordinate x / depth, and the pixel row of y / depth: the
+    // inverse of the kernels' camera_ray, sx and sy in [-1, 1] across the image. The column
+    // never falls as sx grows, nor the row as sy falls, rounding included (each step rounds
+    // monotonically): the extreme pixels of several points are those of their extreme
+    // screen coordinates.
+    double column_of(double sx) const { return (sx + 1) * width_ / 2 - 0.5; }
+    double row_of(double sy) const { return (1 - sy) * height_ / 2 - 0.5; }
     // Widens `bounds` by the projection of `point` seen from `eye` (in the point's coordinates).
     void add(const Vec3& point, const Vec3& eye, PixelBounds& bounds) const;
     // Widens `bounds` by the part of convex polygon `corners` that rays can reach, for objects
@@ -51,6 +64,8 @@ public:
 private:
     Vec3 eye_, forward_, right_, up_;
     Vec3 right_scaled_, up_scaled_;  // right / |right|^2, up / |up|^2: x / depth gives sx
+    Vec3 right_unit_, up_unit_;
+    double screen_x_per_unit_, screen_y_per_unit_;
     int width_, height_;
 };
 

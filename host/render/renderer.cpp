@@ -122,7 +122,7 @@ void Renderer::upload_geometry() {
 // Only positions change from frame to frame; impostors also turn, and then their billboards
 // and the BVH over them are made anew.
 void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera* binned_for) {
-    binned_tiles_.reset();
+    tiles_binned_ = false;
     bool turns = !scene_.impostors.empty();
     if (uploaded_ && origin == origin_ && !turns) return;
     uploaded_ = false;
@@ -133,10 +133,10 @@ void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera*
     // about 0.9 and 0.6 ms (docs/benchmarks.md, Impostor frames). The future's destructor
     // waits for it, also when an upload throws. A process that cannot start the thread bins
     // in render_camera() instead, as a still frame does (run.cpp lists devices the same way).
-    std::future<ScreenTiles> tiles;
+    std::future<void> tiles;
     if (binned_for && screen_tiles_) {
         try {
-            tiles = std::async(std::launch::async, [this, binned_for] { return bin_screen_tiles(frame_, *binned_for); });
+            tiles = std::async(std::launch::async, [this, binned_for] { binner_.bin(frame_, *binned_for, tiles_); });
         } catch (const std::system_error&) {
         }
     }
@@ -148,7 +148,10 @@ void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera*
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
     uploaded_ = true;
-    if (tiles.valid()) binned_tiles_ = tiles.get();
+    if (tiles.valid()) {
+        tiles.get();
+        tiles_binned_ = true;
+    }
 }
 
 Image Renderer::render(const CameraKey& key, int frame, FrameTiming* timing) {
@@ -250,9 +253,10 @@ double Renderer::render_band(const ClrCamera& camera, const PixelRect& region, i
     return static_cast<double>(ns) * 1e-6;
 }
 
-ScreenTiles Renderer::upload_screen_tiles(const FrameCamera& camera) {
-    ScreenTiles tiles = binned_tiles_ ? std::move(*binned_tiles_) : bin_screen_tiles(frame_, camera);
-    binned_tiles_.reset();
+const ScreenTiles& Renderer::upload_screen_tiles(const FrameCamera& camera) {
+    if (!tiles_binned_) binner_.bin(frame_, camera, tiles_);
+    tiles_binned_ = false;
+    const ScreenTiles& tiles = tiles_;
     tile_args_.offsets = upload(device_.context(), tiles.offsets);
     tile_args_.items = upload(device_.context(), tiles.items);
     tile_args_.nearest = upload(device_.context(), tiles.nearest);

@@ -92,7 +92,7 @@ public:
 private:
     // Moves the device geometry to `origin` (the frame camera's) and places the impostors for
     // `key`, uploading what changed. Given `binned_for` (the frame's camera, with screen tiles),
-    // also bins the frame's screen tiles for it into binned_tiles_, meanwhile on another thread.
+    // also bins the frame's screen tiles for it into tiles_, meanwhile on another thread.
     void show(const CameraKey& key, const Vec3& origin, const FrameCamera* binned_for = nullptr);
     // Renders the frame seen by `camera`, or its `crop`, the geometry already shown for it.
     Image render_camera(const FrameCamera& camera, FrameTiming* timing, const std::optional<PixelRect>& crop);
@@ -107,7 +107,8 @@ private:
     // Bytes the kernel writes per pixel, and where it writes them in `image`.
     std::size_t pixel_bytes() const { return features_.float_output ? 4 * sizeof(float) : 4; }
     std::uint8_t* kernel_pixels(Image& image) const;
-    ScreenTiles upload_screen_tiles(const FrameCamera& camera);
+    // Bins the frame for `camera` into tiles_, unless show() did, and uploads the lists.
+    const ScreenTiles& upload_screen_tiles(const FrameCamera& camera);
     void upload_geometry();
 
     DeviceContext& device_;
@@ -122,7 +123,10 @@ private:
     TypedKernel<RenderPacketsSignature> render_packets_;  // with screen tiles
     TypedKernel<RenderSignature> render_;                 // without
     TileArgs tile_args_;  // the last frame's screen tiles
-    std::optional<ScreenTiles> binned_tiles_;  // binned by show() for the next render_camera()
+    // The last frame's screen tiles, binned frame after frame into the same arrays.
+    ScreenTileBinner binner_;
+    ScreenTiles tiles_;
+    bool tiles_binned_ = false;  // tiles_ binned by show() for the next render_camera()
     // The texel buffer's host memory (CL_MEM_USE_HOST_PTR): alive and unwritten as long as
     // scene_args_.texels, which is declared after it and so released before it.
     PageAlignedVector<std::uint8_t> texel_storage_;

@@ -47,5 +47,21 @@ TEST(RadixSort, OrdersKeysThatShareDigitsAndRepeat) {
     expect_sorted_as_std_sort({std::uint64_t{1} << 48, 1});
 }
 
+// Keys whose low 32 bits already ascend (a float's bits above, each key's place below, as the
+// screen tiles make them): sorting only the bits above gives std::sort's order, on both
+// sides of the radix threshold.
+TEST(RadixSort, KeysOrderedBelowABitSortAsStdSortWithoutPassingOverThem) {
+    std::mt19937 random(13);
+    for (std::uint32_t count : {3u, 4095u, 4096u, 70000u}) {
+        std::vector<std::uint64_t> keys;
+        for (std::uint32_t i = 0; i < count; ++i)
+            keys.push_back(std::uint64_t{0x40000000u + random() % (count / 3 + 1) * 977u} << 32 | i * 3u);
+        std::vector<std::uint64_t> expected = keys;
+        std::sort(expected.begin(), expected.end());
+        radix_sort(keys, 32);
+        EXPECT_EQ(keys, expected) << count << " keys";
+    }
+}
+
 }  // namespace
 }  // namespace clr

@@ -157,7 +157,7 @@ std::size_t frame_index(const FrameGeometry& frame, std::uint32_t item) {
     return scene_item_kind(item) == CLR_HIT_BILLBOARD ? frame.spheres().size() + index : index;
 }
 
-// A frame of 20,000 objects bins on every usable core (bands of tile rows, chunks of objects):
+// A frame of 20,000 objects bins on every usable core (chunks of objects, then tile rows):
 // its lists are those one CPU makes, byte for byte, and each runs nearest first, ties in the
 // frame's order, so that no thread's timing can change a tile's list.
 TEST(ScreenTiles, ManyObjectsBinOnAllCoresAsOnOne) {
