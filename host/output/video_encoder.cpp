@@ -30,7 +30,6 @@
 
 #include "core/errors.h"
 #include "core/interruption.h"
-#include "core/usable_cpus.h"
 #include "output/file_extension.h"
 #include "output/program_lookup.h"
 #include "output/temp_files.h"
@@ -62,11 +61,6 @@ std::string decimal(double value) {
 // a file as large and a little lower quality at the same CRF.
 constexpr const char* kX264Preset = "veryfast";
 
-// x264 gets half of the CPUs clrender may use, at least one, instead of its automatic 1.5
-// threads a CPU of the whole machine: the renderer keeps the others. Its output depends on the
-// count (docs/animation.md, MP4 encoding).
-int x264_threads() { return std::max(1, usable_cpu_count() / 2); }
-
 // MP4 frames go to ffmpeg as yuv420p, converted by clrender (output/yuv420_frame.h): ffmpeg's
 // own conversion from RGB ran on its one main thread, in series with handing the frames to
 // x264, and the pipe carries 1.5 bytes a pixel instead of 4. A GIF's palette is built from
@@ -87,7 +81,7 @@ std::vector<std::string> mp4_arguments(const VideoSettings& settings) {
         // players do not guess and shift the colours.
         "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709", "-color_range", "tv",
         "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", std::to_string(settings.quality), "-preset", kX264Preset,
-        "-threads", std::to_string(x264_threads()),
+        "-threads", std::to_string(kX264Threads),
         "-movflags", "+faststart",  // index first, so that a browser can start playing at once
         "-f", "mp4"};
 }

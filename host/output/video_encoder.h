@@ -32,6 +32,12 @@ VideoFormat video_format_for(const std::string& path);
 constexpr double kMinMp4Fps = 0.001, kMaxMp4Fps = 1000;
 constexpr double kMinGifFps = 100.0 / 65535, kMaxGifFps = 50;
 
+// The threads x264 encodes an MP4 with, on every machine (docs/animation.md, MP4 encoding).
+// x264's output depends on its thread count, so a count taken from the machine would give
+// other bytes for the same frames on another machine (a farm's 1-CPU node against a desktop);
+// a constant keeps them the same everywhere. Frame threads are deterministic for a given count.
+constexpr int kX264Threads = 4;
+
 // "" when a video of `format` can hold `fps` frames per second, else why not, with the range
 // it takes ("a GIF takes from 0.0015259 to 50 frames per second (...)").
 std::string video_fps_problem(double fps, VideoFormat format);
