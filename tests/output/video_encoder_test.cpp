@@ -571,7 +571,8 @@ TEST(VideoEncoder, StallTimeoutComesFromTheEnvironment) {
     }
 }
 
-// 64x64 frames (16 KiB as RGBA): four fill a pipe's 64 KiB, so the fifth waits on the encoder.
+// 64x64 frames (6 KiB as the yuv420p an MP4's encoder is sent): eleven fill a pipe's 64 KiB,
+// so a later one of the twenty waits on the encoder.
 TEST(VideoEncoder, EncoderThatStopsReadingTimesOut) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "exec sleep 1000");
