@@ -48,7 +48,7 @@ TEST(Mp4EncoderSettings, PresetVeryfastWithFourThreads) {
     if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
     TempFolder folder;
     folder.write("anim.json", kAnimatedScene);
-    // Large enough that x264 would run more threads by itself (it runs fewer on small frames).
+    // Not the scene's 64x48: x264's settings are read back from a frame of a usual shape.
     const auto result = run_clrender("anim.json -q --quality 20 --size 320x240", folder.path());
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const std::string settings = x264_settings(folder.file("anim.mp4"));
@@ -67,7 +67,7 @@ TEST(Mp4EncoderSettings, OneUsableCpuGivesTheSameThreadsAndBytes) {
         GTEST_SKIP() << "ffmpeg or taskset is not installed";
     TempFolder folder;
     folder.write("anim.json", kAnimatedScene);
-    // Large enough that x264 keeps its threads (it runs fewer on small frames).
+    // Large enough for x264's threads to encode different frames at once.
     auto result = run_clrender("anim.json -q --size 320x240 --video every_cpu.mp4", folder.path());
     ASSERT_EQ(result.exit_code, 0) << result.output;
     result = run_clrender("anim.json -q --size 320x240 --video one_cpu.mp4", folder.path(),
