@@ -31,7 +31,8 @@ measure() {
   local name="$1" load
   shift
   load="$(cut -d' ' -f1 /proc/loadavg)"
-  /usr/bin/time -o "$work/time" -f '%e %U %S' "$@" > /dev/null 2>&1
+  local TIMEFORMAT='%R %U %S'  # bash's own timing: wall, then user and system of the command's processes
+  { time "$@" > /dev/null 2>&1; } 2> "$work/time"
   awk -v name="$name" -v load="$load" '{ printf "%-14s load %5s  wall %6.2f s  CPU %6.2f s\n", name, load, $1, $2 + $3 }' \
     "$work/time"
 }
