@@ -1,9 +1,10 @@
 // ffmpeg runs as a child process (output/child_process.h: never through a shell, in its own
 // process group). Its stdin is a non-blocking pipe carrying raw frames (yuv420p for an MP4,
 // RGBA read as rgb0 for a GIF), its stdout goes to /dev/null and its stderr to a log file
-// whose last lines explain a failure. It writes into a temporary file beside the final one; after ffmpeg has exited successfully, ffprobe must
-// read back exactly the frames sent (output/video_probe.h) before the file is renamed into
-// place (rename is atomic within one file system). Until then an earlier video under the
+// whose last lines explain a failure. It writes into a temporary file beside the final one;
+// after ffmpeg has exited successfully, ffprobe must read back exactly the frames sent
+// (output/video_probe.h) before the file is renamed into place (rename is atomic within one
+// file system). Until then an earlier video under the
 // final name stays as it was.
 #include "output/video_encoder.h"
 
