@@ -4,8 +4,7 @@
 // whose last lines explain a failure. It writes into a temporary file beside the final one;
 // after ffmpeg has exited successfully, ffprobe must read back exactly the frames sent
 // (output/video_probe.h) before the file is renamed into place (rename is atomic within one
-// file system). Until then an earlier video under the
-// final name stays as it was.
+// file system). Until then an earlier video under the final name stays as it was.
 #include "output/video_encoder.h"
 
 #include <fcntl.h>
