@@ -260,6 +260,7 @@ std::vector<BenchSceneSpec> make_specs() {
         {"100k spheres", 100000, 0},
         {"10k impostors", 0, 0, 10000},
         {"70k triangles", 1, 0, 0, 70000},
+        {"70k triangles flat", 1, 0, 0, 70000, true},
         {"1M triangles", 1, 0, 0, 1000000},
     };
 }
@@ -284,10 +285,10 @@ Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
     Scene scene = empty_scene(spec, width, height);
     if (spec.name == "course") {
         add_course_objects(scene);
-    } else if (spec.lit()) {
+    } else if (spec.terrain()) {
         scene.camera_path.front() = CameraKey{kTerrainEye, kTerrainLookat};
         scene.has_sun = true;
-        scene.only_ambient = false;
+        scene.only_ambient = spec.unlit;
         scene.sun_location = kTerrainSun;
         add_terrain_objects(scene, spec);
     } else {

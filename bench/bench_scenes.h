@@ -24,13 +24,15 @@ struct BenchSceneSpec {
     // A displaced terrain of about this many triangles (one mesh), seen from above, lit by the
     // sun, with the spheres above it casting shadows: the "triangles" scenes.
     int terrain_triangles = 0;
+    bool unlit = false;  // a terrain scene in flat shading: its primary rays alone
 
     int objects() const { return spheres + billboards + impostors; }
-    bool lit() const { return terrain_triangles > 0; }
+    bool terrain() const { return terrain_triangles > 0; }
+    bool lit() const { return terrain() && !unlit; }
 };
 
 // course, 16+16, 256+256, 4096+4096, 100k spheres, 10k impostors, 70k triangles,
-// 1M triangles, in that order.
+// 70k triangles flat, 1M triangles, in that order.
 const std::vector<BenchSceneSpec>& bench_scene_specs();
 
 // The spec named `name`; throws std::invalid_argument listing the names when none matches.
@@ -38,7 +40,8 @@ const BenchSceneSpec& find_bench_scene(const std::string& name);
 
 // The scene of `spec` seen at width x height: black background, no mirrors, one still camera.
 // Flat shading, with the camera at the origin looking down -z, except for the terrain scenes
-// (spec.lit()), whose camera looks down on the terrain and whose sun lights it. The object
+// (spec.terrain()), whose camera looks down on the terrain and whose sun lights it (unless
+// spec.unlit). The object
 // layout depends on the aspect ratio only through the field of view, and not at all on
 // anything but the arguments.
 Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height);

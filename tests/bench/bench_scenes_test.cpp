@@ -47,7 +47,7 @@ TEST(BenchScenes, AdvertisedCounts) {
     const std::vector<std::pair<std::string, std::array<int, 3>>> advertised = {
         {"course", {3, 2, 0}},         {"16+16", {16, 16, 0}},         {"256+256", {256, 256, 0}},
         {"4096+4096", {4096, 4096, 0}}, {"100k spheres", {100000, 0, 0}}, {"10k impostors", {0, 0, 10000}},
-        {"70k triangles", {1, 0, 0}},   {"1M triangles", {1, 0, 0}},
+        {"70k triangles", {1, 0, 0}},   {"70k triangles flat", {1, 0, 0}}, {"1M triangles", {1, 0, 0}},
     };
     ASSERT_EQ(bench_scene_specs().size(), advertised.size());
     for (std::size_t i = 0; i < advertised.size(); ++i) {
@@ -62,8 +62,10 @@ TEST(BenchScenes, AdvertisedCounts) {
             for (const ImpostorView& view : impostor.views) EXPECT_TRUE(view.image && view.image->has_transparency());
         }
         bool terrain = spec.name.find("triangles") != std::string::npos;
-        EXPECT_EQ(scene.lit(), terrain) << spec.name << ": flat shading but for the terrain scenes";
-        EXPECT_EQ(spec.lit(), terrain) << spec.name;
+        bool lit = terrain && spec.name.find("flat") == std::string::npos;
+        EXPECT_EQ(scene.lit(), lit) << spec.name << ": flat shading but for the lit terrain scenes";
+        EXPECT_EQ(spec.lit(), lit) << spec.name;
+        EXPECT_EQ(spec.terrain(), terrain) << spec.name;
         EXPECT_EQ(scene.meshes.size(), terrain ? 1u : 0u) << spec.name;
         for (const Billboard& billboard : scene.billboards) {
             EXPECT_FALSE(billboard.is_mirror);
@@ -105,7 +107,8 @@ TEST(BenchScenes, DeterministicFromFixedSeeds) {
 // The terrain scenes: about the advertised number of triangles, one mesh with smooth normals
 // inside the documented box, and the sphere floating above the hills, between them and the sun.
 TEST(BenchScenes, TerrainScenesAsDescribed) {
-    for (const auto& [name, advertised] : {std::pair<std::string, double>{"70k triangles", 70e3}, {"1M triangles", 1e6}}) {
+    for (const auto& [name, advertised] : {std::pair<std::string, double>{"70k triangles", 70e3},
+                                           {"70k triangles flat", 70e3}, {"1M triangles", 1e6}}) {
         Scene scene = make_bench_scene(find_bench_scene(name), 192, 108);
         ASSERT_EQ(scene.meshes.size(), 1u) << name;
         EXPECT_EQ(scene.meshes[0].triangle_count, scene.triangles.size()) << name;
