@@ -131,7 +131,7 @@ void print_table(std::ostream& out, const std::vector<SceneRow>& rows, const Run
     out << "\n"
         << settings.width << "x" << settings.height << ", one primary ray per pixel; median of " << settings.repeat
         << " frames after a warm-up frame, the two sides alternating frame by frame.\n"
-        << "Triangle rows but \"flat\" are lit: each hit that faces the sun also traces a shadow ray; their pixels differ\n"
+        << "Mesh rows but \"flat\" are lit: each hit that faces the sun also traces a shadow ray; their pixels differ\n"
         << "when a colour channel differs by more than " << kLitTolerance << "/255.\n";
     if (any_single)
         out << "* a side took over " << kSlowFrameMs / 1000 << " s for its warm-up frame, which is then its only timed frame.\n";

@@ -137,6 +137,21 @@ void add_course_objects(Scene& scene) {
     };
 }
 
+// "course + mesh": a sun to the upper right, and a smooth tessellated ball (corner normals)
+// low on the left, partly in the shadow of the nearer sphere; the sprite's shadow, through its
+// holes, falls on the sphere behind it.
+const Vec3 kCourseSun{8, 12, 4};
+
+void add_course_ball(Scene& scene, const BenchSceneSpec& spec) {
+    // slices x stacks quads of two triangles, slices = 2 stacks.
+    int stacks = std::max(2, static_cast<int>(std::lround(std::sqrt(spec.ball_triangles / 4.0))));
+    testing::TestMesh ball = testing::sphere_mesh({-3.2, -3.0, -13}, 1.6, 2 * stacks, stacks, true);
+    testing::add_mesh(scene, ball, id_color(mesh_id(spec.spheres, spec.billboards, 0)));
+    scene.has_sun = true;
+    scene.only_ambient = false;
+    scene.sun_location = kCourseSun;
+}
+
 // The half extents of the image plane at distance 1 from the eye: the field of view spans the
 // larger image dimension (docs/scene-format.md, Conventions: Camera).
 struct PlaneExtent {
@@ -260,8 +275,9 @@ std::vector<BenchSceneSpec> make_specs() {
         {"100k spheres", 100000, 0},
         {"10k impostors", 0, 0, 10000},
         {"70k triangles", 1, 0, 0, 70000},
-        {"70k triangles flat", 1, 0, 0, 70000, true},
+        {"70k triangles flat", 1, 0, 0, 70000, 0, true},
         {"1M triangles", 1, 0, 0, 1000000},
+        {"course + mesh", 3, 2, 0, 0, 25600},
     };
 }
 
@@ -285,6 +301,9 @@ Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
     Scene scene = empty_scene(spec, width, height);
     if (spec.name == "course") {
         add_course_objects(scene);
+    } else if (spec.ball_triangles > 0) {
+        add_course_objects(scene);
+        add_course_ball(scene, spec);
     } else if (spec.terrain()) {
         scene.camera_path.front() = CameraKey{kTerrainEye, kTerrainLookat};
         scene.has_sun = true;

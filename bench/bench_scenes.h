@@ -24,15 +24,18 @@ struct BenchSceneSpec {
     // A displaced terrain of about this many triangles (one mesh), seen from above, lit by the
     // sun, with the spheres above it casting shadows: the "triangles" scenes.
     int terrain_triangles = 0;
+    // The course's objects with a smooth ball of about this many triangles among them (a UV
+    // sphere, less its poles' collapsed triangles), lit by the sun: "course + mesh".
+    int ball_triangles = 0;
     bool unlit = false;  // a terrain scene in flat shading: its primary rays alone
 
     int objects() const { return spheres + billboards + impostors; }
     bool terrain() const { return terrain_triangles > 0; }
-    bool lit() const { return terrain() && !unlit; }
+    bool lit() const { return (terrain() || ball_triangles > 0) && !unlit; }
 };
 
 // course, 16+16, 256+256, 4096+4096, 100k spheres, 10k impostors, 70k triangles,
-// 70k triangles flat, 1M triangles, in that order.
+// 70k triangles flat, 1M triangles, course + mesh, in that order.
 const std::vector<BenchSceneSpec>& bench_scene_specs();
 
 // The spec named `name`; throws std::invalid_argument listing the names when none matches.
@@ -41,7 +44,7 @@ const BenchSceneSpec& find_bench_scene(const std::string& name);
 // The scene of `spec` seen at width x height: black background, no mirrors, one still camera.
 // Flat shading, with the camera at the origin looking down -z, except for the terrain scenes
 // (spec.terrain()), whose camera looks down on the terrain and whose sun lights it (unless
-// spec.unlit). The object
+// spec.unlit), and for "course + mesh", lit by the sun. The object
 // layout depends on the aspect ratio only through the field of view, and not at all on
 // anything but the arguments.
 Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height);

@@ -48,6 +48,7 @@ TEST(BenchScenes, AdvertisedCounts) {
         {"course", {3, 2, 0}},         {"16+16", {16, 16, 0}},         {"256+256", {256, 256, 0}},
         {"4096+4096", {4096, 4096, 0}}, {"100k spheres", {100000, 0, 0}}, {"10k impostors", {0, 0, 10000}},
         {"70k triangles", {1, 0, 0}},   {"70k triangles flat", {1, 0, 0}}, {"1M triangles", {1, 0, 0}},
+        {"course + mesh", {3, 2, 0}},
     };
     ASSERT_EQ(bench_scene_specs().size(), advertised.size());
     for (std::size_t i = 0; i < advertised.size(); ++i) {
@@ -62,11 +63,12 @@ TEST(BenchScenes, AdvertisedCounts) {
             for (const ImpostorView& view : impostor.views) EXPECT_TRUE(view.image && view.image->has_transparency());
         }
         bool terrain = spec.name.find("triangles") != std::string::npos;
-        bool lit = terrain && spec.name.find("flat") == std::string::npos;
-        EXPECT_EQ(scene.lit(), lit) << spec.name << ": flat shading but for the lit terrain scenes";
+        bool with_mesh = terrain || spec.name == "course + mesh";
+        bool lit = with_mesh && spec.name.find("flat") == std::string::npos;
+        EXPECT_EQ(scene.lit(), lit) << spec.name << ": flat shading but for the lit mesh scenes";
         EXPECT_EQ(spec.lit(), lit) << spec.name;
         EXPECT_EQ(spec.terrain(), terrain) << spec.name;
-        EXPECT_EQ(scene.meshes.size(), terrain ? 1u : 0u) << spec.name;
+        EXPECT_EQ(scene.meshes.size(), with_mesh ? 1u : 0u) << spec.name;
         for (const Billboard& billboard : scene.billboards) {
             EXPECT_FALSE(billboard.is_mirror);
             ASSERT_TRUE(billboard.image) << spec.name << ": billboards are textured";
@@ -144,6 +146,41 @@ TEST(BenchScenes, TerrainScenesAsDescribed) {
         EXPECT_GT(sphere.center.y - sphere.radius, highest) << name << ": above every hill";
         EXPECT_GT(scene.sun_location.y, sphere.center.y + sphere.radius) << name << ": the sun above the sphere";
     }
+}
+
+// "course + mesh": the course's objects as in "course", and a closed smooth ball of about
+// 25,000 triangles whose corner normals point out of its centre, lit by the sun.
+TEST(BenchScenes, CourseWithMeshAsDescribed) {
+    Scene course = make_bench_scene(find_bench_scene("course"), 192, 108);
+    Scene scene = make_bench_scene(find_bench_scene("course + mesh"), 192, 108);
+    ASSERT_EQ(scene.spheres.size(), course.spheres.size());
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) EXPECT_EQ(scene.spheres[i].center, course.spheres[i].center);
+    ASSERT_EQ(scene.billboards.size(), course.billboards.size());
+    for (std::size_t j = 0; j < scene.billboards.size(); ++j)
+        EXPECT_TRUE(same_billboard(scene.billboards[j], course.billboards[j]));
+    EXPECT_TRUE(scene.lit());
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.meshes[0].ambient, id_color(mesh_id(3, 2, 0)));
+    // 160 x 80 quads of two triangles, less the poles' collapsed ones: one per quad of the two
+    // rows that touch a pole.
+    EXPECT_EQ(scene.triangles.size(), 25600u - 2 * 160);
+    ASSERT_EQ(scene.corner_normals.size(), scene.triangles.size());
+    Vec3 lower{1e9, 1e9, 1e9}, upper{-1e9, -1e9, -1e9};
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = scene.triangles[i].corners[k];
+            lower = {std::min(lower.x, p.x), std::min(lower.y, p.y), std::min(lower.z, p.z)};
+            upper = {std::max(upper.x, p.x), std::max(upper.y, p.y), std::max(upper.z, p.z)};
+            ASSERT_NEAR(length(scene.corner_normals[i][k]), 1.0, 1e-12);
+        }
+    const Vec3 centre = (lower + upper) / 2;
+    EXPECT_NEAR(upper.x - lower.x, 3.2, 1e-9) << "a ball of radius 1.6";
+    EXPECT_NEAR(upper.y - lower.y, 3.2, 1e-9);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            Vec3 outwards = (scene.triangles[i].corners[k] - centre) / 1.6;
+            ASSERT_NEAR(dot(outwards, scene.corner_normals[i][k]), 1.0, 1e-9) << "triangle " << i;
+        }
 }
 
 TEST(BenchScenes, IdsRoundTripThroughDisplayBytes) {

@@ -2,6 +2,7 @@
 // fair when both draw the same image, and its "differing pixels" check relies on the peer.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 
 #include "bench/bench_scenes.h"
@@ -71,6 +72,31 @@ TEST(EmbreePeer, LitTrianglesMatchClrendersImage) {
     // The comparison means something: shading varies, and the sphere's shadow is in view.
     EXPECT_GT(dark_mesh, peer.ids().size() / 100) << "some of the terrain lies in shadow";
     EXPECT_GT(lit_mesh, peer.ids().size() / 2) << "most of the terrain is lit";
+}
+
+// The course's objects with a lit mesh: the peer's colours are clrender's, sunlit spheres and
+// ball, their shadows (through the sprite's holes too) and unlit billboards alike (measured:
+// none differ; billboards that cast no shadow in the peer make 742 pixels differ).
+TEST(EmbreePeer, LitCourseWithMeshMatchesClrendersImage) {
+    Scene scene = make_bench_scene(find_bench_scene("course + mesh"), kWidth, kHeight);
+    Image clr = testing::render_with_kernels(scene);
+    EmbreePeer peer(scene, device_camera(scene));
+    peer.trace_frame();
+    const std::vector<std::uint8_t>& rgb = peer.rgb();
+    std::size_t differing = 0, on_mesh = 0, shaded_mesh = 0;
+    for (std::size_t i = 0; i < peer.ids().size(); ++i) {
+        bool differs = false;
+        for (int c = 0; c < 3; ++c) differs |= std::abs(int{clr.rgba[4 * i + c]} - int{rgb[3 * i + c]}) > kLitTolerance;
+        differing += differs;
+        if (peer.ids()[i] == mesh_id(3, 2, 0)) {
+            ++on_mesh;
+            Color full = id_color(mesh_id(3, 2, 0));
+            shaded_mesh += std::abs(rgb[3 * i] - static_cast<int>(std::lround(full.x * 255))) > 8;
+        }
+    }
+    EXPECT_LE(differing, peer.ids().size() / 1000);
+    EXPECT_GT(on_mesh, peer.ids().size() / 200) << "the ball is in view";
+    EXPECT_GT(shaded_mesh, on_mesh / 2) << "and lit, not flat";
 }
 
 #else
