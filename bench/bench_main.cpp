@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -19,6 +20,7 @@
 #include "bench/bench_scenes.h"
 #include "bench/bench_stats.h"
 #include "bench/clrender_side.h"
+#include "bench/triangle_memory.h"
 #include "core/errors.h"
 #include "core/stopwatch.h"
 #include "device/device_selection.h"
@@ -104,6 +106,25 @@ void compare_ids(const std::vector<std::uint32_t>& clr, const std::vector<std::u
     row.differing = static_cast<double>(differing) / clr.size();
 }
 
+// For a lit scene, whose colours no longer encode ids: the fraction of pixels that show an
+// object (by the peer's ids when there is one, else by clrender's colour against the black
+// background) and of pixels whose colours differ by more than kLitTolerance in a channel.
+void compare_lit(const Image& clr, const std::vector<std::uint32_t>* ids, const std::vector<std::uint8_t>* rgb,
+                 SceneRow& row) {
+    std::size_t pixels = static_cast<std::size_t>(clr.width) * clr.height, covered = 0, differing = 0;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const std::uint8_t* c = &clr.rgba[4 * i];
+        covered += ids ? (*ids)[i] != kBackgroundId : (c[0] | c[1] | c[2]) != 0;
+        if (!rgb) continue;
+        bool differs = false;
+        for (int channel = 0; channel < 3; ++channel)
+            differs |= std::abs(int{c[channel]} - int{(*rgb)[3 * i + channel]}) > kLitTolerance;
+        differing += differs;
+    }
+    row.covered = static_cast<double>(covered) / pixels;
+    row.differing = static_cast<double>(differing) / pixels;
+}
+
 // A side's warm-up frame is kept as its only timed frame when slower than kSlowFrameMs.
 bool keep_if_slow(double ms, std::vector<double>& samples) {
     if (ms <= kSlowFrameMs) return false;
@@ -133,6 +154,11 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     ClrCamera camera = make_frame_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, settings.width, settings.height).device();
     SceneRow row;
     row.spec = spec;
+    if (!scene.triangles.empty()) {
+        TriangleMemory memory = triangle_memory(scene);
+        row.triangles = memory.triangles;
+        row.bytes_per_triangle = memory.per_triangle();
+    }
 
     std::cerr << "bench: " << spec.name << ": setting up" << std::endl;
     ClrenderSide clr(device, scene);
@@ -169,9 +195,15 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     if (!options.images_dir.empty())
         write_image(options.images_dir + "/" + file_name_of(spec.name) + ".png", clr.image());
 #if CLRENDER_BENCH_HAVE_EMBREE
-    compare_ids(object_ids(clr.image()), &embree.ids(), row);
+    if (spec.lit())
+        compare_lit(clr.image(), &embree.ids(), &embree.rgb(), row);
+    else
+        compare_ids(object_ids(clr.image()), &embree.ids(), row);
 #else
-    compare_ids(object_ids(clr.image()), nullptr, row);
+    if (spec.lit())
+        compare_lit(clr.image(), nullptr, nullptr, row);
+    else
+        compare_ids(object_ids(clr.image()), nullptr, row);
 #endif
     return row;
 }

@@ -78,6 +78,9 @@ nlohmann::json row_json(const SceneRow& row, const RunSettings& settings) {
         {"spheres", row.spec.spheres},
         {"billboards", row.spec.billboards},
         {"impostors", row.spec.impostors},
+        {"triangles", row.triangles},
+        {"bytes_per_triangle", row.triangles ? nlohmann::json(row.bytes_per_triangle) : nlohmann::json(nullptr)},
+        {"lit", row.spec.lit()},
         {"covered_pixels", row.covered},
         {"clrender",
          {{"setup_ms", row.clr_setup_ms},
@@ -112,21 +115,24 @@ void print_machine(std::ostream& out, const DeviceEntry& device) {
 
 void print_table(std::ostream& out, const std::vector<SceneRow>& rows, const RunSettings& settings) {
     out << "| scene | objects | clrender Mrays/s (kernel) | clrender Mrays/s (wall) | Embree Mrays/s "
-           "| clrender/Embree (wall) | differing pixels % | covered pixels % |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+           "| clrender/Embree (wall) | differing pixels % | covered pixels % | bytes/triangle |\n"
+        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     bool any_single = false;
     for (const SceneRow& row : rows) {
         Figures f = figures_of(row, settings);
         any_single |= f.single_frame;
         auto peer = [&](const std::string& text) { return settings.with_embree ? text : std::string("n/a"); };
-        out << "| " << row.spec.name << (f.single_frame ? " *" : "") << " | " << row.spec.objects()
+        out << "| " << row.spec.name << (f.single_frame ? " *" : "") << " | " << row.spec.objects() + row.triangles
             << " | " << rate(f.clr_kernel_mrays) << " | " << rate(f.clr_wall_mrays) << " | " << peer(rate(f.embree_mrays))
             << " | " << peer(fixed(f.clr_wall_mrays / f.embree_mrays, 2)) << " | " << peer(fixed(100 * row.differing, 4))
-            << " | " << fixed(100 * row.covered, 1) << " |\n";
+            << " | " << fixed(100 * row.covered, 1) << " | "
+            << (row.triangles ? fixed(row.bytes_per_triangle, 1) : std::string("-")) << " |\n";
     }
     out << "\n"
         << settings.width << "x" << settings.height << ", one primary ray per pixel; median of " << settings.repeat
-        << " frames after a warm-up frame, the two sides alternating frame by frame.\n";
+        << " frames after a warm-up frame, the two sides alternating frame by frame.\n"
+        << "Mesh rows but \"flat\" are lit: each hit that faces the sun also traces a shadow ray; their pixels differ\n"
+        << "when a colour channel differs by more than " << kLitTolerance << "/255.\n";
     if (any_single)
         out << "* a side took over " << kSlowFrameMs / 1000 << " s for its warm-up frame, which is then its only timed frame.\n";
     if (!settings.with_embree) out << "Embree: not built (install libembree-dev and reconfigure).\n";

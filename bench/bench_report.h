@@ -25,8 +25,13 @@ struct SceneRow {
     double embree_build_ms = 0;                      // device, geometry and BVH build
     std::vector<double> embree_wall_ms;              // per timed frame
     double covered = 0;    // fraction of pixels where clrender sees an object
-    double differing = 0;  // fraction of pixels where the two sides see different objects
+    // Fraction of pixels where the two sides see different objects; in a lit scene, where
+    // their colours differ by more than kLitTolerance display steps in a channel.
+    double differing = 0;
+    std::size_t triangles = 0;      // mesh triangles in the scene
+    double bytes_per_triangle = 0;  // device memory (bench/triangle_memory.h); 0 without triangles
 };
+
 
 // CPU, OpenCL device and peer, as a few lines.
 void print_machine(std::ostream& out, const DeviceEntry& device);

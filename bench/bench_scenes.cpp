@@ -137,6 +137,21 @@ void add_course_objects(Scene& scene) {
     };
 }
 
+// "course + mesh": a sun to the upper right, and a smooth tessellated ball (corner normals)
+// low on the left, partly in the shadow of the nearer sphere; the sprite's shadow, through its
+// holes, falls on the sphere behind it.
+const Vec3 kCourseSun{8, 12, 4};
+
+void add_course_ball(Scene& scene, const BenchSceneSpec& spec) {
+    // slices x stacks quads of two triangles, slices = 2 stacks.
+    int stacks = std::max(2, static_cast<int>(std::lround(std::sqrt(spec.ball_triangles / 4.0))));
+    testing::TestMesh ball = testing::sphere_mesh({-3.2, -3.0, -13}, 1.6, 2 * stacks, stacks, true);
+    testing::add_mesh(scene, ball, id_color(mesh_id(spec.spheres, spec.billboards, 0)));
+    scene.has_sun = true;
+    scene.only_ambient = false;
+    scene.sun_location = kCourseSun;
+}
+
 // The half extents of the image plane at distance 1 from the eye: the field of view spans the
 // larger image dimension (docs/scene-format.md, Conventions: Camera).
 struct PlaneExtent {
@@ -194,6 +209,63 @@ void add_field_objects(Scene& scene, const BenchSceneSpec& spec, std::uint64_t s
     }
 }
 
+// The terrain scenes: the height field below, sampled on a square grid over [-30, 30] x
+// [-63, -3] (two triangles a cell, split along the cell's diagonal), with its exact normals at
+// the corners, so that the shading is smooth and the peers' normal interpolation is compared.
+constexpr double kTerrainHalfWidth = 30;
+constexpr double kTerrainNear = -3, kTerrainFar = -63;
+const Vec3 kTerrainEye{0, 4, 2};
+const Vec3 kTerrainLookat{0, -2, -22};
+const Vec3 kTerrainSun{-30, 40, 0};
+
+// Gentle hills with ripples on them, about 2.4 high around y = -3.
+double terrain_height(double x, double z) {
+    return -3 + std::sin(0.35 * x + 0.2 * z) * std::cos(0.3 * z) + 0.4 * std::sin(1.3 * x) * std::sin(1.1 * z + 0.5 * x);
+}
+
+// The unit upward normal (-dh/dx, 1, -dh/dz) of the height field at (x, z).
+Vec3 terrain_normal(double x, double z) {
+    double dx = 0.35 * std::cos(0.35 * x + 0.2 * z) * std::cos(0.3 * z) +
+                0.4 * (1.3 * std::cos(1.3 * x) * std::sin(1.1 * z + 0.5 * x) +
+                       0.5 * std::sin(1.3 * x) * std::cos(1.1 * z + 0.5 * x));
+    double dz = 0.2 * std::cos(0.35 * x + 0.2 * z) * std::cos(0.3 * z) -
+                0.3 * std::sin(0.35 * x + 0.2 * z) * std::sin(0.3 * z) +
+                0.4 * 1.1 * std::sin(1.3 * x) * std::cos(1.1 * z + 0.5 * x);
+    Vec3 n{-dx, 1, -dz};
+    return n / std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+}
+
+// Cells per side of a grid of about `triangles` triangles (two a cell).
+int terrain_cells(int triangles) { return std::max(1, static_cast<int>(std::lround(std::sqrt(triangles / 2.0)))); }
+
+void add_terrain_objects(Scene& scene, const BenchSceneSpec& spec) {
+    const int cells = terrain_cells(spec.terrain_triangles);
+    auto corner = [&](int i, int j) {
+        double x = -kTerrainHalfWidth + 2 * kTerrainHalfWidth * i / cells;
+        double z = kTerrainNear + (kTerrainFar - kTerrainNear) * j / cells;
+        return Vec3{x, terrain_height(x, z), z};
+    };
+    auto normal = [](const Vec3& p) { return terrain_normal(p.x, p.z); };
+    testing::TestMesh terrain;
+    terrain.triangles.reserve(2 * static_cast<std::size_t>(cells) * cells);
+    terrain.normals.reserve(terrain.triangles.capacity());
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            Vec3 p00 = corner(i, j), p10 = corner(i + 1, j), p11 = corner(i + 1, j + 1), p01 = corner(i, j + 1);
+            terrain.triangles.push_back({p00, p10, p11});
+            terrain.normals.push_back({normal(p00), normal(p10), normal(p11)});
+            terrain.triangles.push_back({p00, p11, p01});
+            terrain.normals.push_back({normal(p00), normal(p11), normal(p01)});
+        }
+    int billboard_count = spec.billboards + spec.impostors;
+    testing::add_mesh(scene, terrain, id_color(mesh_id(spec.spheres, billboard_count, 0)));
+    // The spheres float in a row above the hills, between the sun and the terrain in view.
+    for (int i = 0; i < spec.spheres; ++i) {
+        double x = -4.0 + 8.0 * (i + 0.5) / spec.spheres, z = -16.0 - 2.0 * i;
+        scene.spheres.push_back(make_sphere({x, terrain_height(x, z) + 4.0, z}, 2.0, sphere_id(i)));
+    }
+}
+
 std::vector<BenchSceneSpec> make_specs() {
     return {
         {"course", 3, 2},
@@ -202,6 +274,10 @@ std::vector<BenchSceneSpec> make_specs() {
         {"4096+4096", 4096, 4096},
         {"100k spheres", 100000, 0},
         {"10k impostors", 0, 0, 10000},
+        {"70k triangles", 1, 0, 0, 70000},
+        {"70k triangles flat", 1, 0, 0, 70000, 0, true},
+        {"1M triangles", 1, 0, 0, 1000000},
+        {"course + mesh", 3, 2, 0, 0, 25600},
     };
 }
 
@@ -225,6 +301,15 @@ Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
     Scene scene = empty_scene(spec, width, height);
     if (spec.name == "course") {
         add_course_objects(scene);
+    } else if (spec.ball_triangles > 0) {
+        add_course_objects(scene);
+        add_course_ball(scene, spec);
+    } else if (spec.terrain()) {
+        scene.camera_path.front() = CameraKey{kTerrainEye, kTerrainLookat};
+        scene.has_sun = true;
+        scene.only_ambient = spec.unlit;
+        scene.sun_location = kTerrainSun;
+        add_terrain_objects(scene, spec);
     } else {
         // One fixed seed per object count, so that a scene never changes when others are added.
         std::uint64_t seed = 0x5EEDB0A4D000ull + 1000003ull * spec.spheres + spec.billboards + 7919ull * spec.impostors;

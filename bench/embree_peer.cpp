@@ -8,7 +8,11 @@
 // - intersectors without branches, which the compiler vectorises over a packet's 16 lanes;
 // - RTC_BUILD_QUALITY_HIGH, coherent 16-wide packets of 4x4 pixels (rtcIntersect16), every
 //   hardware thread taking bands of rows from a shared counter;
-// - the output is one id per pixel, which costs less than clrender's flat shading.
+// - mesh triangles as Embree's own triangle geometry (its fastest path), from the same float
+//   corners as clrender's;
+// - the output is one id per pixel, which costs less than clrender's flat shading; in a lit
+//   scene also the lit colour, as clrender's kernels compute it: max(0, n.l) and a shadow ray
+//   towards the sun, the 16 shadow rays of a packet traced together with rtcOccluded16.
 #include "bench/embree_peer.h"
 
 #include <embree3/rtcore.h>
@@ -33,6 +37,7 @@ namespace {
 
 constexpr unsigned kSphereGeometry = 0;
 constexpr unsigned kBillboardGeometry = 1;
+constexpr unsigned kTriangleGeometry = 2;
 constexpr int kPacketSide = 4;  // 4x4 pixels: one rtcIntersect16 packet
 
 // What the callbacks read: the scene exactly as clrender's kernels see it, each texel's
@@ -43,6 +48,7 @@ struct PeerScene {
     CompiledScene compiled;
     std::vector<std::uint32_t> texel_alpha;
     std::vector<RTCBounds> billboard_boxes;
+    std::vector<std::uint32_t> triangle_mesh;  // each triangle's mesh (Scene::Triangle::mesh)
 };
 
 struct Lane {
@@ -154,6 +160,21 @@ void dispatch_lanes(const RTCIntersectFunctionNArguments* args, Distance distanc
     }
 }
 
+// The shadow rays' test (rtcOccluded16): a lane whose ray meets the object within (tnear,
+// tfar) is marked occluded by setting its tfar to -inf, as Embree's own geometries do.
+template <typename Distance>
+void occlude_lanes(const RTCOccludedFunctionNArguments* args, Distance distance) {
+    RTCRayN* rays = args->ray;
+    const unsigned n = args->N;
+    for (unsigned l = 0; l < n; ++l) {
+        if (args->valid[l] != -1) continue;
+        float& tfar = RTCRayN_tfar(rays, n, l);
+        float t = distance(Lane{RTCRayN_org_x(rays, n, l), RTCRayN_org_y(rays, n, l), RTCRayN_org_z(rays, n, l),
+                                RTCRayN_dir_x(rays, n, l), RTCRayN_dir_y(rays, n, l), RTCRayN_dir_z(rays, n, l)});
+        if (t > RTCRayN_tnear(rays, n, l) && t < tfar) tfar = -kInfinity;
+    }
+}
+
 void intersect_sphere(const RTCIntersectFunctionNArguments* args) {
     const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
     const ClrSphere& sphere = peer->compiled.spheres[args->primID];
@@ -169,6 +190,22 @@ void intersect_billboard(const RTCIntersectFunctionNArguments* args) {
         dispatch_lanes(args, [&](const Lane& ray) { return billboard_distance<true>(billboard, texel_alpha, ray); });
     else
         dispatch_lanes(args, [&](const Lane& ray) { return billboard_distance<false>(billboard, texel_alpha, ray); });
+}
+
+void occlude_sphere(const RTCOccludedFunctionNArguments* args) {
+    const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
+    const ClrSphere& sphere = peer->compiled.spheres[args->primID];
+    occlude_lanes(args, [&](const Lane& ray) { return sphere_distance(sphere, ray); });
+}
+
+void occlude_billboard(const RTCOccludedFunctionNArguments* args) {
+    const auto* peer = static_cast<const PeerScene*>(args->geometryUserPtr);
+    const ClrBillboard& billboard = peer->compiled.billboards[args->primID];
+    const std::uint32_t* texel_alpha = peer->texel_alpha.data();
+    if (billboard.flags & CLR_SURFACE_TEXTURED)
+        occlude_lanes(args, [&](const Lane& ray) { return billboard_distance<true>(billboard, texel_alpha, ray); });
+    else
+        occlude_lanes(args, [&](const Lane& ray) { return billboard_distance<false>(billboard, texel_alpha, ray); });
 }
 
 // Boxes are padded by a relative 1e-5 so that float rounding in the box test never culls a
@@ -227,29 +264,84 @@ void throw_on_error(RTCDevice device, const char* what) {
 }
 
 void attach_user_geometry(RTCDevice device, RTCScene scene, unsigned id, unsigned count, void* user,
-                          RTCBoundsFunction bounds, RTCIntersectFunctionN intersect) {
+                          RTCBoundsFunction bounds, RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, count);
     rtcSetGeometryUserData(geometry, user);
     rtcSetGeometryBoundsFunction(geometry, bounds, user);
     rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcSetGeometryOccludedFunction(geometry, occluded);
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene, geometry, id);
     rtcReleaseGeometry(geometry);  // the scene holds it now
 }
 
-// One frame: the object id seen through every pixel, written to ids (width * height).
+// The compiled triangles as Embree's triangle geometry: three vertices of their own each (the
+// same float corners the kernels read) and the index buffer 0 1 2, 3 4 5, ...
+void attach_triangles(RTCDevice device, RTCScene scene, const std::vector<ClrTriangle>& triangles) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                  3 * sizeof(float), 3 * triangles.size()));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                    3 * sizeof(unsigned), triangles.size()));
+    if (!vertices || !indices) {
+        rtcReleaseGeometry(geometry);
+        throw_on_error(device, "allocating the triangle buffers");
+        throw std::runtime_error("Embree: allocating the triangle buffers failed");
+    }
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        const cl_float4* corners[3] = {&triangles[i].corner0, &triangles[i].corner1, &triangles[i].corner2};
+        for (int c = 0; c < 3; ++c) {
+            for (int axis = 0; axis < 3; ++axis) vertices[(3 * i + c) * 3 + axis] = corners[c]->s[axis];
+            indices[3 * i + c] = static_cast<unsigned>(3 * i + c);
+        }
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, kTriangleGeometry);
+    rtcReleaseGeometry(geometry);
+}
+
+struct Float3 {
+    float x, y, z;
+};
+inline Float3 operator+(Float3 a, Float3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Float3 operator-(Float3 a, Float3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Float3 operator*(float s, Float3 a) { return {s * a.x, s * a.y, s * a.z}; }
+inline float dot3(Float3 a, Float3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Float3 xyz(const cl_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
+// kernels/common/math.cl unit3() and kernels/kinds/triangle.cl edge_cross(), in the same order.
+inline Float3 unit3(Float3 v) {
+    float length = std::sqrt(dot3(v, v));
+    return {v.x / length, v.y / length, v.z / length};
+}
+inline Float3 edge_cross(Float3 p, Float3 q) {
+    return {p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x};
+}
+
+// kernels/common/math.cl color_to_byte().
+inline std::uint8_t color_to_byte(float c) {
+    return static_cast<std::uint8_t>(std::floor(std::fmin(std::fmax(c, 0.0f), 1.0f) * 255.0f + 0.5f));
+}
+
+// A shadow ray leaving a surface ignores hits nearer than this share of its origin's distance
+// from (0, 0, 0): float rounding puts the point a little off the surface it lies on
+// (kernels/kinds/triangle.cl, CLR_TRIANGLE_SELF_GAP, uses the same share).
+constexpr float kShadowGap = 1.5e-5f;
+
+// One frame: the object id seen through every pixel, written to ids (width * height), and
+// its colour as RGB bytes (3 * width * height): flat, or in a lit scene shaded by the sun.
 class FrameTracer {
 public:
-    FrameTracer(RTCScene scene, const ClrCamera& camera, int sphere_count)
-        : scene_(scene), camera_(camera), sphere_count_(sphere_count) {}
+    FrameTracer(RTCScene scene, const ClrCamera& camera, const PeerScene& peer, int sphere_count, int billboard_count)
+        : scene_(scene), camera_(camera), peer_(peer), sphere_count_(sphere_count), billboard_count_(billboard_count) {}
 
-    void trace(std::vector<std::uint32_t>& ids) const {
+    void trace(std::vector<std::uint32_t>& ids, std::vector<std::uint8_t>& rgb) const {
         ids.resize(static_cast<std::size_t>(camera_.width) * camera_.height);
+        rgb.resize(3 * ids.size());
         std::atomic<int> next_band{0};
         auto worker = [&] {
             for (int band = next_band++; band * kPacketSide < camera_.height; band = next_band++)
-                trace_band(band * kPacketSide, ids.data());
+                trace_band(band * kPacketSide, ids.data(), rgb.data());
         };
         unsigned count = std::max(1u, std::thread::hardware_concurrency());
         std::vector<std::thread> threads;
@@ -260,7 +352,7 @@ public:
 
 private:
     // One row of 4x4 packets, starting at image row `top`.
-    void trace_band(int top, std::uint32_t* ids) const {
+    void trace_band(int top, std::uint32_t* ids, std::uint8_t* rgb) const {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // neighbouring primary rays
@@ -270,6 +362,7 @@ private:
             fill_packet(left, top, packet, valid);
             rtcIntersect16(valid, scene_, &context, &packet);
             store_ids(left, top, packet, valid, ids);
+            shade_packet(left, top, packet, valid, ids, rgb);
         }
     }
 
@@ -308,14 +401,90 @@ private:
             unsigned geom = packet.hit.geomID[lane], prim = packet.hit.primID[lane];
             std::uint32_t id = geom == kSphereGeometry      ? sphere_id(static_cast<int>(prim))
                                : geom == kBillboardGeometry ? billboard_id(sphere_count_, static_cast<int>(prim))
-                                                            : kBackgroundId;
+                               : geom == kTriangleGeometry
+                                   ? mesh_id(sphere_count_, billboard_count_,
+                                             static_cast<int>(peer_.triangle_mesh[prim]))
+                                   : kBackgroundId;
             ids[static_cast<std::size_t>(row) * camera_.width + col] = id;
         }
     }
 
+    // kernels/shade.cl surface_color() for the packet's lanes: the id's colour (what clrender
+    // shows flat), scaled in a lit scene on spheres and triangles by max(0, n.l), and black
+    // where the shadow ray towards the sun meets anything.
+    void shade_packet(int left, int top, const RTCRayHit16& packet, const int* valid, const std::uint32_t* ids,
+                      std::uint8_t* rgb) const {
+        const bool lit = peer_.compiled.info.lit != 0;
+        float cosine[16];
+        RTCRay16 shadow;
+        alignas(64) int shadow_valid[16];
+        bool any_shadow = false;
+        for (int lane = 0; lane < 16; ++lane) {
+            cosine[lane] = 1.0f;
+            shadow_valid[lane] = 0;
+            unsigned geom = packet.hit.geomID[lane];
+            if (!valid[lane] || !lit || (geom != kSphereGeometry && geom != kTriangleGeometry)) continue;
+            Float3 origin{packet.ray.org_x[lane], packet.ray.org_y[lane], packet.ray.org_z[lane]};
+            Float3 direction{packet.ray.dir_x[lane], packet.ray.dir_y[lane], packet.ray.dir_z[lane]};
+            Float3 point = origin + packet.ray.tfar[lane] * direction;
+            Float3 normal = geom == kSphereGeometry
+                                ? unit3(point - xyz(peer_.compiled.spheres[packet.hit.primID[lane]].center_radius))
+                                : triangle_normal(packet.hit.primID[lane], packet.hit.u[lane], packet.hit.v[lane], direction);
+            Float3 to_sun = xyz(peer_.compiled.info.sun) - point;
+            float sun_distance = std::sqrt(dot3(to_sun, to_sun));
+            Float3 light{to_sun.x / sun_distance, to_sun.y / sun_distance, to_sun.z / sun_distance};
+            cosine[lane] = dot3(normal, light);
+            if (cosine[lane] <= 0.0f) continue;  // facing away: black, no shadow ray
+            shadow_valid[lane] = -1;
+            any_shadow = true;
+            shadow.org_x[lane] = point.x, shadow.org_y[lane] = point.y, shadow.org_z[lane] = point.z;
+            shadow.dir_x[lane] = light.x, shadow.dir_y[lane] = light.y, shadow.dir_z[lane] = light.z;
+            shadow.tnear[lane] = kShadowGap * (std::fabs(point.x) + std::fabs(point.y) + std::fabs(point.z));
+            shadow.tfar[lane] = sun_distance;
+            shadow.time[lane] = 0.0f;
+            shadow.mask[lane] = ~0u;
+            shadow.id[lane] = 0;
+            shadow.flags[lane] = 0;
+        }
+        if (any_shadow) {
+            RTCIntersectContext context;
+            rtcInitIntersectContext(&context);
+            rtcOccluded16(shadow_valid, scene_, &context, &shadow);
+        }
+        for (int lane = 0; lane < 16; ++lane) {
+            if (!valid[lane]) continue;
+            int col = left + lane % kPacketSide, row = top + lane / kPacketSide;
+            std::size_t pixel = static_cast<std::size_t>(row) * camera_.width + col;
+            bool shadowed = shadow_valid[lane] && shadow.tfar[lane] < 0.0f;  // rtcOccluded16 sets -inf
+            float scale = cosine[lane] <= 0.0f || shadowed ? 0.0f : cosine[lane];
+            Color color = id_color(ids[pixel]);
+            rgb[3 * pixel + 0] = color_to_byte(static_cast<float>(color.x) * scale);
+            rgb[3 * pixel + 1] = color_to_byte(static_cast<float>(color.y) * scale);
+            rgb[3 * pixel + 2] = color_to_byte(static_cast<float>(color.z) * scale);
+        }
+    }
+
+    // kernels/kinds/triangle.cl triangle_normal(), with Embree's barycentric u, v (the weights
+    // of corners 1 and 2) for the corner normals' blend.
+    Float3 triangle_normal(unsigned index, float u, float v, Float3 direction) const {
+        const ClrTriangle& triangle = peer_.compiled.triangles[index];
+        Float3 c0 = xyz(triangle.corner0);
+        Float3 geometric = edge_cross(xyz(triangle.corner1) - c0, xyz(triangle.corner2) - c0);
+        Float3 normal = geometric;
+        if (triangle.normals >= 0) {
+            const cl_float4* n = &peer_.compiled.triangle_normals[triangle.normals];
+            Float3 blended = (1.0f - u - v) * xyz(n[0]) + u * xyz(n[1]) + v * xyz(n[2]);
+            if (dot3(blended, blended) > 0.0f) normal = blended;
+        }
+        normal = unit3(normal);
+        return dot3(normal, direction) > 0.0f ? -1.0f * normal : normal;
+    }
+
     RTCScene scene_;
     ClrCamera camera_;
+    const PeerScene& peer_;
     int sphere_count_;
+    int billboard_count_;
 };
 
 }  // namespace
@@ -337,6 +506,7 @@ EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std
     peer.compiled = compile_scene(frame);
     peer.billboard_boxes = compute_billboard_boxes(frame);
     for (std::size_t i = 3; i < peer.compiled.texels.size(); i += 4) peer.texel_alpha.push_back(peer.compiled.texels[i]);
+    for (const Triangle& triangle : scene.triangles) peer.triangle_mesh.push_back(triangle.mesh);
 
     state_->device.reset(rtcNewDevice(nullptr));
     if (!state_->device) throw std::runtime_error("Embree: rtcNewDevice failed");
@@ -346,22 +516,24 @@ EmbreePeer::EmbreePeer(const Scene& scene, const ClrCamera& camera) : state_(std
     rtcSetSceneBuildQuality(rtc_scene, RTC_BUILD_QUALITY_HIGH);
     if (!peer.compiled.spheres.empty())
         attach_user_geometry(device, rtc_scene, kSphereGeometry, static_cast<unsigned>(peer.compiled.spheres.size()),
-                             &peer, sphere_bounds, intersect_sphere);
+                             &peer, sphere_bounds, intersect_sphere, occlude_sphere);
     if (!peer.compiled.billboards.empty())
         attach_user_geometry(device, rtc_scene, kBillboardGeometry,
                              static_cast<unsigned>(peer.compiled.billboards.size()), &peer, billboard_bounds,
-                             intersect_billboard);
+                             intersect_billboard, occlude_billboard);
+    if (!peer.compiled.triangles.empty()) attach_triangles(device, rtc_scene, peer.compiled.triangles);
     rtcCommitScene(rtc_scene);
     throw_on_error(device, "building the scene");
     build_ms_ = stopwatch.elapsed_ms();
-    state_->tracer.emplace(rtc_scene, camera, static_cast<int>(scene.spheres.size()));
+    state_->tracer.emplace(rtc_scene, camera, peer, static_cast<int>(scene.spheres.size()),
+                           static_cast<int>(peer.compiled.billboards.size()));
 }
 
 EmbreePeer::~EmbreePeer() = default;
 
 double EmbreePeer::trace_frame() {
     const Stopwatch stopwatch;
-    state_->tracer->trace(ids_);
+    state_->tracer->trace(ids_, rgb_);
     double ms = stopwatch.elapsed_ms();
     throw_on_error(state_->device.get(), "tracing");
     return ms;

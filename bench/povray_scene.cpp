@@ -105,6 +105,43 @@ std::string billboard_text(const Scene& scene, const Billboard& billboard) {
            row(billboard.lower_left) + ">\n}\n";
 }
 
+// A mesh as POV-Ray's mesh2: three vertices of its own per triangle (the scene's placed
+// corners), and where any triangle has corner normals, a normal per corner (the geometric
+// normal at each corner of a triangle without them), which POV-Ray blends by the hit's
+// barycentric coordinates as clrender does. POV-Ray's triangles have no back either, and it
+// turns a smooth triangle's normal to face the ray, as clrender turns a mesh's.
+std::string mesh_text(const Scene& scene, const Mesh& mesh) {
+    const std::size_t first = mesh.first_triangle, count = mesh.triangle_count;
+    bool smooth = false;
+    for (std::size_t i = first; i < first + count; ++i) smooth |= scene.triangles[i].normals >= 0;
+    std::ostringstream text;
+    text << "mesh2 {\n    vertex_vectors { " << 3 * count;
+    for (std::size_t i = first; i < first + count; ++i)
+        for (const Vec3& corner : scene.triangles[i].corners) text << ",\n        " << vector(corner);
+    text << " }\n";
+    if (smooth) {
+        text << "    normal_vectors { " << 3 * count;
+        for (std::size_t i = first; i < first + count; ++i) {
+            const Triangle& triangle = scene.triangles[i];
+            const auto& c = triangle.corners;
+            const Vec3 geometric = cross(c[1] - c[0], c[2] - c[0]);
+            for (int k = 0; k < 3; ++k)
+                text << ",\n        "
+                     << vector(triangle.normals >= 0 ? scene.corner_normals[triangle.normals][k] : geometric);
+        }
+        text << " }\n";
+    }
+    text << "    face_indices { " << count;
+    for (std::size_t t = 0; t < count; ++t) text << ", <" << 3 * t << ", " << 3 * t + 1 << ", " << 3 * t + 2 << ">";
+    text << " }\n";
+    // Without normal_indices, POV-Ray takes face_indices for the normals too.
+    const std::string texture = mesh.is_mirror ? kMirrorTexture
+                                               : "texture { pigment { " + rgb(mesh.ambient) + " } " +
+                                                     (scene.lit() ? kSunlitFinish : kUnlitFinish) + " }";
+    text << "    " << texture << "\n}\n";
+    return text.str();
+}
+
 // `v` less its part along the unit vector `along`.
 Vec3 without_part_along(const Vec3& v, const Vec3& along) { return v - along * (dot(v, along) / dot(along, along)); }
 
@@ -158,6 +195,8 @@ std::string povray_scene_text(const Scene& scene, int frame) {
     if (scene.lit()) text << "light_source { " << vector(scene.sun_location) << " color rgb 1 }\n";
     for (const Sphere& sphere : scene.spheres) text << sphere_text(scene, sphere);
     for (const Billboard& billboard : scene.billboards) text << billboard_text(scene, billboard);
+    for (const Mesh& mesh : scene.meshes)
+        if (mesh.triangle_count > 0) text << mesh_text(scene, mesh);
     std::vector<Billboard> placed;
     place_impostors(scene, PlacementCamera(key, scene.up), placed);
     for (const Billboard& billboard : placed) text << billboard_text(scene, billboard);

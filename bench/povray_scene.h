@@ -1,7 +1,7 @@
 // One frame of a clrender scene written in POV-Ray 3.7's scene description language, so that
 // POV-Ray renders the same picture with the same work (docs/benchmarks.md, Against POV-Ray):
 // the frame's camera rays exactly, the spheres, the billboards as textured parallelograms with
-// their image files, the background, the sun and the mirrors, each shaded as clrender shades
+// their image files, the meshes as mesh2, the background, the sun and the mirrors, each shaded as clrender shades
 // it as far as POV-Ray's own model allows.
 #pragma once
 

@@ -47,6 +47,8 @@ TEST(BenchScenes, AdvertisedCounts) {
     const std::vector<std::pair<std::string, std::array<int, 3>>> advertised = {
         {"course", {3, 2, 0}},         {"16+16", {16, 16, 0}},         {"256+256", {256, 256, 0}},
         {"4096+4096", {4096, 4096, 0}}, {"100k spheres", {100000, 0, 0}}, {"10k impostors", {0, 0, 10000}},
+        {"70k triangles", {1, 0, 0}},   {"70k triangles flat", {1, 0, 0}}, {"1M triangles", {1, 0, 0}},
+        {"course + mesh", {3, 2, 0}},
     };
     ASSERT_EQ(bench_scene_specs().size(), advertised.size());
     for (std::size_t i = 0; i < advertised.size(); ++i) {
@@ -60,7 +62,13 @@ TEST(BenchScenes, AdvertisedCounts) {
             ASSERT_EQ(impostor.views.size(), 3u) << spec.name;
             for (const ImpostorView& view : impostor.views) EXPECT_TRUE(view.image && view.image->has_transparency());
         }
-        EXPECT_FALSE(scene.lit()) << spec.name << ": the benchmark measures flat shading";
+        bool terrain = spec.name.find("triangles") != std::string::npos;
+        bool with_mesh = terrain || spec.name == "course + mesh";
+        bool lit = with_mesh && spec.name.find("flat") == std::string::npos;
+        EXPECT_EQ(scene.lit(), lit) << spec.name << ": flat shading but for the lit mesh scenes";
+        EXPECT_EQ(spec.lit(), lit) << spec.name;
+        EXPECT_EQ(spec.terrain(), terrain) << spec.name;
+        EXPECT_EQ(scene.meshes.size(), with_mesh ? 1u : 0u) << spec.name;
         for (const Billboard& billboard : scene.billboards) {
             EXPECT_FALSE(billboard.is_mirror);
             ASSERT_TRUE(billboard.image) << spec.name << ": billboards are textured";
@@ -96,6 +104,83 @@ TEST(BenchScenes, DeterministicFromFixedSeeds) {
     EXPECT_NEAR(field.spheres[0].center.y, -2.9919200278935265, 1e-9);
     EXPECT_NEAR(field.spheres[0].center.z, -23.123776266171689, 1e-9);
     EXPECT_NEAR(field.spheres[0].radius, 4.31201634237389, 1e-9);
+}
+
+// The terrain scenes: about the advertised number of triangles, one mesh with smooth normals
+// inside the documented box, and the sphere floating above the hills, between them and the sun.
+TEST(BenchScenes, TerrainScenesAsDescribed) {
+    for (const auto& [name, advertised] : {std::pair<std::string, double>{"70k triangles", 70e3},
+                                           {"70k triangles flat", 70e3}, {"1M triangles", 1e6}}) {
+        Scene scene = make_bench_scene(find_bench_scene(name), 192, 108);
+        ASSERT_EQ(scene.meshes.size(), 1u) << name;
+        EXPECT_EQ(scene.meshes[0].triangle_count, scene.triangles.size()) << name;
+        EXPECT_NEAR(static_cast<double>(scene.triangles.size()), advertised, 0.01 * advertised) << name;
+        EXPECT_EQ(scene.meshes[0].ambient, id_color(mesh_id(1, 0, 0))) << name;
+        ASSERT_EQ(scene.corner_normals.size(), scene.triangles.size()) << name << ": every corner has its normal";
+        double lowest = 1e9, highest = -1e9, area = 0;
+        for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+            const Triangle& triangle = scene.triangles[i];
+            ASSERT_EQ(triangle.mesh, 0u);
+            ASSERT_EQ(triangle.normals, static_cast<std::int32_t>(i));
+            const auto& c = triangle.corners;
+            Vec3 geometric = cross(c[1] - c[0], c[2] - c[0]);
+            area += length(geometric) / 2;
+            for (int k = 0; k < 3; ++k) {
+                ASSERT_GE(c[k].x, -30.0) << name;
+                ASSERT_LE(c[k].x, 30.0) << name;
+                ASSERT_GE(c[k].z, -63.0) << name;
+                ASSERT_LE(c[k].z, -3.0) << name;
+                lowest = std::min(lowest, c[k].y), highest = std::max(highest, c[k].y);
+                const Vec3& n = scene.corner_normals[i][k];
+                ASSERT_NEAR(length(n), 1.0, 1e-12) << name;
+                // A smooth surface: the corner normals lean the way the faces do.
+                ASSERT_GT(dot(n, geometric), 0.9 * length(geometric)) << name << " triangle " << i;
+            }
+        }
+        EXPECT_GE(lowest, -4.4) << name;
+        EXPECT_LE(highest, -1.6) << name;
+        EXPECT_GT(highest - lowest, 2.0) << name << ": hills, not a plane";
+        EXPECT_GT(area, 60.0 * 60.0) << name << ": the whole 60 x 60 ground, hills being longer than flat";
+        ASSERT_EQ(scene.spheres.size(), 1u);
+        const Sphere& sphere = scene.spheres[0];
+        EXPECT_GT(sphere.center.y - sphere.radius, highest) << name << ": above every hill";
+        EXPECT_GT(scene.sun_location.y, sphere.center.y + sphere.radius) << name << ": the sun above the sphere";
+    }
+}
+
+// "course + mesh": the course's objects as in "course", and a closed smooth ball of about
+// 25,000 triangles whose corner normals point out of its centre, lit by the sun.
+TEST(BenchScenes, CourseWithMeshAsDescribed) {
+    Scene course = make_bench_scene(find_bench_scene("course"), 192, 108);
+    Scene scene = make_bench_scene(find_bench_scene("course + mesh"), 192, 108);
+    ASSERT_EQ(scene.spheres.size(), course.spheres.size());
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) EXPECT_EQ(scene.spheres[i].center, course.spheres[i].center);
+    ASSERT_EQ(scene.billboards.size(), course.billboards.size());
+    for (std::size_t j = 0; j < scene.billboards.size(); ++j)
+        EXPECT_TRUE(same_billboard(scene.billboards[j], course.billboards[j]));
+    EXPECT_TRUE(scene.lit());
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.meshes[0].ambient, id_color(mesh_id(3, 2, 0)));
+    // 160 x 80 quads of two triangles, less the poles' collapsed ones: one per quad of the two
+    // rows that touch a pole.
+    EXPECT_EQ(scene.triangles.size(), 25600u - 2 * 160);
+    ASSERT_EQ(scene.corner_normals.size(), scene.triangles.size());
+    Vec3 lower{1e9, 1e9, 1e9}, upper{-1e9, -1e9, -1e9};
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = scene.triangles[i].corners[k];
+            lower = {std::min(lower.x, p.x), std::min(lower.y, p.y), std::min(lower.z, p.z)};
+            upper = {std::max(upper.x, p.x), std::max(upper.y, p.y), std::max(upper.z, p.z)};
+            ASSERT_NEAR(length(scene.corner_normals[i][k]), 1.0, 1e-12);
+        }
+    const Vec3 centre = (lower + upper) / 2;
+    EXPECT_NEAR(upper.x - lower.x, 3.2, 1e-9) << "a ball of radius 1.6";
+    EXPECT_NEAR(upper.y - lower.y, 3.2, 1e-9);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            Vec3 outwards = (scene.triangles[i].corners[k] - centre) / 1.6;
+            ASSERT_NEAR(dot(outwards, scene.corner_normals[i][k]), 1.0, 1e-9) << "triangle " << i;
+        }
 }
 
 TEST(BenchScenes, IdsRoundTripThroughDisplayBytes) {
