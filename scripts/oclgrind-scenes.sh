@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Writes small scenes into folder $1 that between them switch on every kernel feature
 # (host/render/feature_set.h): spheres only, flat and textured billboards, transparent
-# texels, sun and shadows, mirrors (sphere and billboard), a BVH, impostors, an empty scene,
-# a camera inside a sphere. Images come from scenes/demo (cutout.png has transparent texels).
+# texels, sun and shadows, mirrors (sphere and billboard), a BVH, impostors, meshes (lit,
+# mirrored and flat), an empty scene, a camera inside a sphere. Images come from scenes/demo (cutout.png has transparent texels).
 # scripts/oclgrind.sh and scripts/second-opencl.sh render them.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -44,6 +44,36 @@ for i in $(seq 0 23); do
     many+="{\"center\": [$x, $y, -$(( i % 3 ))], \"radius\": 0.9, \"ambient\": [0.$(( i % 9 + 1 )), 0.5, 0.4]},"
 done
 scene bvh "$sun, \"spheres\": [$many $mirror_ball], \"billboards\": [$backdrop, $cutout]"
+
+# Meshes: a faceted cube (no normals) and a smooth octahedron (a normal at every corner), lit
+# with shadows, one cube a mirror; and flat.
+printf 'v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n%s\n' \
+    'f 1 2 3 4
+f 5 8 7 6
+f 1 5 6 2
+f 4 3 7 8
+f 1 4 8 5
+f 2 6 7 3' > "$out/cube.obj"
+printf 'v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n%s\n%s\n' \
+    'vn 1 0 0
+vn -1 0 0
+vn 0 1 0
+vn 0 -1 0
+vn 0 0 1
+vn 0 0 -1' \
+    'f 1//1 3//3 5//5
+f 3//3 2//2 5//5
+f 2//2 4//4 5//5
+f 4//4 1//1 5//5
+f 3//3 1//1 6//6
+f 2//2 3//3 6//6
+f 4//4 2//2 6//6
+f 1//1 4//4 6//6' > "$out/octahedron.obj"
+cube='{"filename": "cube.obj", "position": [-2.5, -1, 0], "scale": [1.5, 1, 1]}'
+octahedron='{"filename": "octahedron.obj", "position": [2, 0.5, 1], "scale": 2, "ambient": [0.9, 0.8, 0.2]}'
+mirror_cube='{"filename": "cube.obj", "position": [0, -3, -3], "scale": [6, 0.5, 2], "IsMirror": 1}'
+scene meshes "$sun, \"MaxDepth\": 2, \"spheres\": [$ball2], \"billboards\": [$backdrop], \"obj\": [$cube, $octahedron, $mirror_cube]"
+scene flat_meshes "\"obj\": [$cube, $octahedron]"
 
 # Impostors: upright views, a free-facing single picture, a flat colour; two frames.
 cat > "$out/impostors.json" <<EOF

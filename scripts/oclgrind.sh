@@ -67,7 +67,7 @@ done
 for name in everything bvh impostors sun_and_shadows; do
     render "${name}_spp3" "$scenes/$name.json" --spp 3
 done
-for name in everything bvh impostors transparent_texels; do
+for name in everything bvh impostors transparent_texels meshes; do
     render "${name}_double" "$scenes/$name.json" --precision double
 done
 # Partial screen tiles (fewer than 16 lanes in a row) and a single pixel.
