@@ -22,7 +22,7 @@ nlohmann::json array_of(const Vec3& v) { return nlohmann::json::array({v.x, v.y,
 // Every image name (billboards' and impostors' "filename", and the names the loader takes for
 // it: "image", "file", "texture") is relative to the scene's folder. The exported scene is
 // shown in the page, offered as a download and saved wherever the user likes, so relative
-// names become absolute ones: the scene then finds its images from any folder.
+// names become absolute ones: the scene then finds its images and meshes from any folder.
 void make_image_paths_absolute(nlohmann::json& value, const fs::path& scene_folder) {
     if (value.is_array()) {
         for (nlohmann::json& element : value) make_image_paths_absolute(element, scene_folder);
@@ -76,6 +76,10 @@ void PathExporter::check_output(const std::string& role, const std::string& path
     roles.add_input("scene file", scene_.path);
     for (const ImageFileInfo& image : scene_.image_files)
         if (image.format != "placeholder") roles.add_input("image '" + image.path + "'", image.path);
+    for (const Mesh& mesh : scene_.meshes) {
+        if (!mesh.path.empty()) roles.add_input("mesh '" + mesh.path + "'", mesh.path);
+        for (const std::string& material : mesh.material_paths) roles.add_input("mesh material '" + material + "'", material);
+    }
     roles.add_output(role, path);
 }
 

@@ -112,6 +112,34 @@ TEST(ViewExport, RefusesBadKeysNamesAndOutputsOverInputs) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// A mesh whose OBJ (or .mtl) is named like an export is an input like the images: the export
+// is refused, and the exported scene names the mesh by its absolute path.
+TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
+    TempFolder folder;
+    const std::string obj = "mtllib tour.json\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string mtl = "newmtl red\nKd 1 0 0\n";
+    folder.write("model.json", obj);  // an OBJ may have any name
+    folder.write("tour.json", mtl);
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 16, "height": 12, "obj": {"filename": "model.json"}})");
+    ViewerProcess viewer("scene.json", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    for (const char* name : {"model", "tour"}) {
+        const httplib::Result result =
+            post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 0, 0]}], "name": ")" + std::string(name) + "\"}");
+        ASSERT_TRUE(result);
+        EXPECT_EQ(result->status, 409) << name << ": " << result->body;
+    }
+    EXPECT_EQ(read_bytes(folder.file("model.json")), obj);
+    EXPECT_EQ(read_bytes(folder.file("tour.json")), mtl);
+    const httplib::Result saved = post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 0, 0]}], "name": "saved"})");
+    ASSERT_TRUE(saved);
+    ASSERT_EQ(saved->status, 200) << saved->body;
+    const json scene = json::parse(read_bytes(folder.file("saved.json")));
+    EXPECT_EQ(scene["obj"]["filename"], fs::path(folder.file("model.json")).lexically_normal().string());
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
     TempFolder folder;
     ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path());
