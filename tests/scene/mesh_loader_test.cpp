@@ -168,7 +168,8 @@ TEST(MeshLoader, AFileWithoutFacesIsNoMesh) {
     TempFolder folder;
     folder.write("passwd.obj", "root:x:0:0:root:/root:/bin/bash\n");
     folder.write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-    folder.write("binary.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe", 14));
+    const char binary[] = "\x7f" "ELF\x02\x01\x01\0\0\0\xff\xfe";
+    folder.write("binary.obj", std::string(binary, sizeof binary - 1));
     for (const char* name : {"passwd.obj", "points.obj", "binary.obj"}) {
         const std::string error = error_of(folder, with_obj({{"filename", name}}));
         EXPECT_NE(error.find("/obj/filename: cannot read OBJ"), std::string::npos) << name << ": " << error;
