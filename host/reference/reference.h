@@ -67,7 +67,8 @@ struct SurfaceId {
     int index = -1;
 };
 
-// intersect(), decision_margin() and trace() see spheres and billboards only: impostors face
+// intersect(), decision_margin() and trace() see spheres, billboards and mesh triangles, not
+// impostors: impostors face
 // a camera, so a scene with impostors must be placed for that camera first
 // (with_impostors_placed() in reference/impostors.h). render() does that itself.
 
@@ -94,8 +95,8 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer);
 std::uint8_t to_byte(double channel);
 
 // The unclamped colour of pixel (col, row) of frame `frame`: the mean of its samples, exactly
-// as render() computes it, telling `observer` (when not null) each step. Like trace(), it sees
-// spheres and billboards only: place impostors first; and it traces `scene` where it lies:
+// as render() computes it, telling `observer` (when not null) each step. Like trace(), it does
+// not see impostors: place them first; and it traces `scene` where it lies:
 // render() traces relative_to_eye()'s scene and camera (reference/eye_relative.h), so pass
 // those for render()'s numbers.
 Color pixel_colour(const Scene& scene, const CameraFrame& camera, int frame, int col, int row,
