@@ -68,9 +68,8 @@ struct SurfaceId {
 };
 
 // intersect(), decision_margin() and trace() see spheres, billboards and mesh triangles, not
-// impostors: impostors face
-// a camera, so a scene with impostors must be placed for that camera first
-// (with_impostors_placed() in reference/impostors.h). render() does that itself.
+// impostors: impostors face a camera, so a scene with impostors must be placed for that camera
+// first (with_impostors_placed() in reference/impostors.h). render() does that itself.
 
 // Nearest surface with 0 < t < t_max, skipping `leaving`. Billboard texels whose alpha is
 // below 255 let the ray through.
