@@ -92,12 +92,7 @@ float3 sphere_surface_color(int index, real3 origin, real3 direction, real t, CL
 /* sphere_surface_color() of 16 lanes that hit the sphere. */
 CLR_PACKET_INLINE Colors16 sphere_flat_colors16(int index, uint16 texel, CLR_SCENE_PARAMS)
 {
-    float3 color = spheres[index].color.xyz;
-    Colors16 out;
-    out.r = (float16)(color.x);
-    out.g = (float16)(color.y);
-    out.b = (float16)(color.z);
-    return out;
+    return uniform_colors16(spheres[index].color.xyz);
 }
 
 /* Spheres are lit by the sun (docs/scene-format.md, Conventions: Lighting and shadows): in a

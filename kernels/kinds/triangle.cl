@@ -144,12 +144,7 @@ float3 triangle_surface_color(int index, real3 origin, real3 direction, real t, 
 
 CLR_PACKET_INLINE Colors16 triangle_flat_colors16(int index, uint16 texel, CLR_SCENE_PARAMS)
 {
-    float3 color = triangles[index].color.xyz;
-    Colors16 out;
-    out.r = (float16)(color.x);
-    out.g = (float16)(color.y);
-    out.b = (float16)(color.z);
-    return out;
+    return uniform_colors16(triangles[index].color.xyz);
 }
 
 /* Meshes are lit by the sun as spheres are (docs/scene-format.md, Meshes). */

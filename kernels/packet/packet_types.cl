@@ -35,6 +35,16 @@ CLR_PACKET_INLINE real16 dot16(real3 a, Directions16 d)
     return a.x * d.x + a.y * d.y + a.z * d.z;
 }
 
+/* One colour in all 16 lanes: a kind whose surface has a single colour. */
+CLR_PACKET_INLINE Colors16 uniform_colors16(float3 color)
+{
+    Colors16 out;
+    out.r = (float16)(color.x);
+    out.g = (float16)(color.y);
+    out.b = (float16)(color.z);
+    return out;
+}
+
 typedef struct {
     __global const uint* items;
     __global const float* nearest;
