@@ -324,6 +324,7 @@ int main(int argc, char** argv) {
                   "usemtl grey\nf 1//1 3//1 4//1\nf 1/1 2/2 3/3\ns off\nf -4 -3 -2 -1\n");
         write(out / "obj", "pentagon_crlf.obj", "v 0 0 0\r\nv 2 0 0\r\nv 2 2 0\r\nv 1 3 0\r\nv 0 2 0\r\nf 1 2 3 4 5\r\n");
         write(out / "obj", "cr_only.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+        write(out / "obj", "exponents.obj", "v 0e5 1.5E-3 -2e+2\nv 1e-300 .5 -0.\nv 7 +1 0\nvn 0 0 1e0\nf 1//1 2//1 3//1\n");
         write(out / "obj", "cube.obj",
               "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
               "vn 0 0 -1\nvn 0 0 1\nvn -1 0 0\nvn 1 0 0\nvn 0 -1 0\nvn 0 1 0\n"

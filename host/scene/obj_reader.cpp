@@ -1,5 +1,6 @@
 #include "scene/obj_reader.h"
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -8,6 +9,7 @@
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/obj_text_checks.h"
+#include "scene/value_ranges.h"
 
 // tinyobjloader is one header; its implementation is compiled here, in double so that the
 // double reference sees the file's coordinates as written.
@@ -67,6 +69,14 @@ public:
             return false;
         }
         files_.push_back(path.lexically_normal().string());
+        const ObjTextProblem colour = check_mtl_text(text);
+        if (colour.line != 0) {
+            if (problem_.empty()) {
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": line " + std::to_string(colour.line) + ": " +
+                           colour.detail;
+            }
+            return false;
+        }
         text = mtl_statements_used(text);
         for (const std::string& material : materials_with_diffuse(text)) with_diffuse_.insert(material);
         std::istringstream stream(text);
@@ -87,6 +97,25 @@ private:
 
 Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
     return {values[3 * index], values[3 * index + 1], values[3 * index + 2]};
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The text checks keep tinyobjloader's arithmetic finite; this keeps a number it still reads
+// differently from reaching the scene as NaN or a coordinate beyond the range.
+void check_values_read(const ObjMesh& mesh) {
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const Vec3& p = mesh.positions[i];
+        if (!finite(p) || std::fabs(p.x) > kMaxCoordinate || std::fabs(p.y) > kMaxCoordinate ||
+            std::fabs(p.z) > kMaxCoordinate) {
+            throw ObjError("tinyobjloader read position " + std::to_string(i + 1) + " as " + number_text(p.x) + " " +
+                           number_text(p.y) + " " + number_text(p.z) + ": " + position_range_text());
+        }
+    }
+    for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
+        if (!finite(mesh.normals[i])) throw ObjError("tinyobjloader read normal " + std::to_string(i + 1) + " as not finite");
+    }
+    if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
 }
 
 }  // namespace
@@ -158,6 +187,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
         throw ObjError("tinyobjloader read " + std::to_string(mesh.faces) + " faces where the file has " +
                        std::to_string(counts.faces));
     }
+    check_values_read(mesh);
     return mesh;
 }
 

@@ -68,6 +68,30 @@ bool parse_number(std::string_view token, double& value) {
     return result.ec == std::errc() && result.ptr == end && std::isfinite(value);
 }
 
+// tinyobjloader computes a number as mantissa * 5^e * 2^e from its digits, which gives NaN or
+// infinity for finite numbers such as "0e500" (0 * infinity) or a 400-digit "1000...0e-400".
+// Within kMaxNumberCharacters and an exponent of at most kMaxNumberExponent in magnitude,
+// neither product can overflow for a number that from_chars reads as finite.
+constexpr std::size_t kMaxNumberCharacters = 64;
+constexpr long kMaxNumberExponent = 300;
+
+bool within_reader_limits(std::string_view token) {
+    if (token.size() > kMaxNumberCharacters) return false;
+    const std::size_t e = token.find_first_of("eE");
+    if (e == std::string_view::npos) return true;
+    long exponent = 0;
+    std::string_view digits = token.substr(e + 1);
+    if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);  // from_chars reads "-" only
+    const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), exponent);
+    return result.ec == std::errc() && std::labs(exponent) <= kMaxNumberExponent;
+}
+
+std::string number_limits_text() {
+    return "clrender reads numbers of at most " + std::to_string(kMaxNumberCharacters) +
+           " characters with an exponent from -" + std::to_string(kMaxNumberExponent) + " to " +
+           std::to_string(kMaxNumberExponent);
+}
+
 std::string quoted(std::string_view token) {
     constexpr std::size_t kShown = 40;
     std::string text;
@@ -87,6 +111,10 @@ std::string check_numbers(const std::vector<std::string_view>& tokens, std::size
         double value = 0;
         if (!parse_number(tokens[i], value)) {
             return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is not a finite number";
+        }
+        if (!within_reader_limits(tokens[i])) {
+            return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is too long or its exponent too large (" +
+                   number_limits_text() + ")";
         }
         if (position && i <= 3 && std::fabs(value) > kMaxCoordinate) {
             return "'v': " + quoted(tokens[i]) + " is out of range: " + position_range_text();
@@ -174,6 +202,32 @@ std::string obj_statements_used(std::string_view text) {
 
 std::string mtl_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) { return keyword == "newmtl" || keyword == "Kd"; });
+}
+
+ObjTextProblem check_mtl_text(std::string_view text) {
+    ObjTextProblem problem;
+    for_each_line(text, [&](std::uint64_t number, std::string_view line) {
+        const std::vector<std::string_view> tokens = tokens_of(line);
+        if (tokens.empty() || tokens[0] != "Kd") return true;
+        std::string detail;
+        if (tokens.size() != 4) {
+            detail = "'Kd' needs 3 numbers (r g b), the line has " + std::to_string(tokens.size() - 1);
+        } else {
+            detail = check_numbers(tokens, 3, false);
+        }
+        for (std::size_t i = 1; detail.empty() && i < tokens.size(); ++i) {
+            double value = 0;
+            parse_number(tokens[i], value);
+            if (std::fabs(value) > kMaxMaterialColor) {
+                detail = "'Kd': " + quoted(tokens[i]) + " is out of range: a colour lies from " +
+                         number_text(-kMaxMaterialColor) + " to " + number_text(kMaxMaterialColor);
+            }
+        }
+        if (detail.empty()) return true;
+        problem = {number, detail};
+        return false;
+    });
+    return problem;
 }
 
 ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem) {

@@ -28,7 +28,8 @@ struct ObjTextProblem {
 };
 
 // Checks every `v`, `vn`, `vt` and `f` line of `text`: coordinates are finite numbers within
-// clrender's coordinate range; a face has three corners or more, each naming a position
+// clrender's coordinate range, of at most 64 characters and a decimal exponent of at most 300
+// in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has three corners or more, each naming a position
 // (and optionally a texture coordinate and a normal) by a non-zero index, counted from the
 // start (1 is the first) or, negative, back from the latest one before the face, that
 // names an entry of the file. Stops at the first problem. Also stops when the faces fan
@@ -36,6 +37,16 @@ struct ObjTextProblem {
 // `usemtl`, `mtllib`, comments, unknown commands) are the library's.
 // Returns the counts; sets `problem` (line 0: none) to the first problem found.
 ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem);
+
+// The largest magnitude of a material's colour component: colours outside [0, 1] are kept as a
+// scene's are (docs/scene-format.md), but must stay far from float's overflow.
+constexpr double kMaxMaterialColor = 1e6;
+
+// Checks every `Kd` line of a .mtl text: exactly three numbers (the forms "Kd spectral" and
+// "Kd xyz", and a lone r that the format repeats for g and b, are refused rather than read as
+// tinyobjloader reads them), finite, within the limits of check_obj_text's numbers and within
+// kMaxMaterialColor. Returns the first problem (line 0: none).
+ObjTextProblem check_mtl_text(std::string_view text);
 
 // `text` with only the statements clrender uses kept for tinyobjloader (`v`, `vn`, `vt`, `f`,
 // `o`, `g`, `s`, `usemtl`, `mtllib`); every other line (comments, lines, points, skin weights,

@@ -142,6 +142,45 @@ TEST(ObjReader, NumbersMustBeFiniteAndInRange) {
     EXPECT_EQ(message.rfind("line 1: 'v': '2e15' is out of range: ", 0), 0u) << message;
 }
 
+// tinyobjloader multiplies the digits by 5^e: "0e500" (zero) came out as NaN, and 400 digits
+// before "e-400" (one) as infinity. Such numbers are refused at their line.
+TEST(ObjReader, NumbersTheLibraryCannotReadAreRefused) {
+    const std::string limits = "(clrender reads numbers of at most 64 characters with an exponent from -300 to 300)";
+    EXPECT_EQ(error_for("v -1 1 0e500\n"), "line 1: 'v': '0e500' is too long or its exponent too large " + limits);
+    EXPECT_EQ(error_for("v 0 0 0\nvn 0 0 0E+301\n"), "line 2: 'vn': '0E+301' is too long or its exponent too large " + limits);
+    const std::string one = "1" + std::string(400, '0') + "e-400";
+    EXPECT_EQ(error_for("v 0 " + one + " 0\n"),
+              "line 1: 'v': '" + one.substr(0, 40) + "...' is too long or its exponent too large " + limits);
+    // The limits themselves are read (64 characters: "1", 59 zeros, "e-59").
+    TempFolder folder;
+    const std::string longest = "1" + std::string(59, '0') + "e-59";
+    const ObjMesh mesh = read_obj(folder.write("mesh.obj", "v 1e-300 0E+300 " + longest + "\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    EXPECT_EQ(mesh.positions[0].x, 1e-300);
+    EXPECT_EQ(mesh.positions[0].y, 0.0);
+    EXPECT_NEAR(mesh.positions[0].z, 1.0, 1e-12);
+}
+
+// The material's Kd is the mesh colour: three numbers, finite and within the colour range.
+TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
+    const auto error_with = [](const std::string& material) {
+        TempFolder folder;
+        folder.write("m.mtl", "# colours\nnewmtl red\n" + material + "\n");
+        try {
+            read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+        } catch (const ObjError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(error_with("Kd 0e500 0 0"), "mtllib m.mtl: line 3: 'Kd': '0e500' is too long or its exponent too large "
+                                          "(clrender reads numbers of at most 64 characters with an exponent from -300 to 300)");
+    EXPECT_EQ(error_with("Kd nan 0 0"), "mtllib m.mtl: line 3: 'Kd': 'nan' is not a finite number");
+    EXPECT_EQ(error_with("Kd 0.5"), "mtllib m.mtl: line 3: 'Kd' needs 3 numbers (r g b), the line has 1");
+    EXPECT_EQ(error_with("Kd spectral red.rfl 1"), "mtllib m.mtl: line 3: 'Kd': 'spectral' is not a finite number");
+    EXPECT_EQ(error_with("Kd 0 2e6 0"), "mtllib m.mtl: line 3: 'Kd': '2e6' is out of range: a colour lies from -1e6 to 1e6");
+    EXPECT_EQ(error_with("Kd 0 1.5 -0.25"), "");  // outside [0, 1] is a colour, as in a scene
+}
+
 TEST(ObjReader, TheTriangleLimitIsCountedAsTheFacesFan) {
     ObjTextProblem problem;
     const std::string text = kSquare + "f 1 2 3\nf 1 2 3 4\n";  // 1 + 2 triangles
