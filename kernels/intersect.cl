@@ -10,6 +10,24 @@
 #include "kinds/kinds.cl"
 #include "shared/clr_types.h"
 
+/* Planes lie in no BVH and no screen tile (kinds/plane.cl): a ray that searched the culled
+ * objects tests every plane too, but (skip_kind, skip_index), keeping `hit` where it wins. */
+void nearest_plane(real3 origin, real3 direction, int skip_kind, int skip_index, Hit* hit, CLR_SCENE_PARAMS)
+{
+#if CLR_FEATURE_PLANES
+    for (int i = 0; i < info.plane_count; ++i) {
+        if (skip_kind == CLR_HIT_PLANE && skip_index == i)
+            continue;
+        real t = plane_hit_distance(i, origin, direction, INFINITY, CLR_SCENE_ARGS);
+        if (hit_beats(t, CLR_HIT_PLANE, i, *hit)) {
+            hit->t = t;
+            hit->kind = CLR_HIT_PLANE;
+            hit->index = i;
+        }
+    }
+#endif
+}
+
 #if CLR_FEATURE_BVH
 /* Whether the ray can meet the box before t_max (slab test). A zero direction component is
  * replaced by a tiny one, so that no 0 * inf makes a NaN; the exit distance gets a small
@@ -66,6 +84,7 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
             }
         }
     }
+    nearest_plane(origin, direction, skip_kind, skip_index, &hit, CLR_SCENE_ARGS);
     if (hit.kind == CLR_HIT_NONE)
         hit.t = INFINITY;
     return hit;

@@ -11,13 +11,46 @@
 #include "shared/clr_types.h"
 
 typedef struct {
-    float3 color;     /* the path's colour, when it ends here */
+    float3 color;     /* the path's colour, when it ends here; with lights, the share the surface adds */
     int bounces;      /* 1: continue along (next_origin, next_direction) instead */
+#if CLR_FEATURE_LIGHTS
+    float3 weight;    /* with `bounces`: the share of the reflected ray's colour added (k_m) */
+#endif
     real3 next_origin;
     real3 next_direction;
     int leaving_kind; /* the mirror the reflected ray leaves */
     int leaving_index;
 } ShadeResult;
+
+#if CLR_FEATURE_LIGHTS
+/* The Blinn-Phong model with point lights (docs/scene-format.md, Lights and materials): the
+ * ambient colour, plus for each light on the side of the surface the ray sees (n.l > 0) and
+ * hidden by no opaque surface, its colour times k_d n.l + k_s max(0, n.h)^p, where l and
+ * h = unit(l + v) are unit vectors towards the light and halfway between it and the eye. */
+float3 phong_color(Hit hit, float3 ambient, real3 origin, real3 direction, CLR_SCENE_PARAMS)
+{
+    ClrMaterial material = materials[kind_material(hit.kind, hit.index, CLR_SCENE_ARGS)];
+    real3 point = origin + hit.t * direction;
+    real3 normal = kind_normal(hit.kind, hit.index, point, direction, CLR_SCENE_ARGS);
+    float3 color = ambient;
+    for (int i = 0; i < info.light_count; ++i) {
+        real3 to_light = convert_real3(lights[i].position.xyz) - point;
+        real distance = sqrt(dot3(to_light, to_light));
+        real3 light = to_light / distance;
+        real cosine = dot3(normal, light);
+        if (cosine <= 0.0f)
+            continue; /* behind the surface: no shadow ray needed */
+        Hit blocker = intersect_scene(point, light, distance, hit.kind, hit.index, CLR_SCENE_ARGS);
+        if (blocker.kind != CLR_HIT_NONE)
+            continue;
+        real3 half_vector = unit3(light - direction);
+        real highlight = pow(fmax(dot3(normal, half_vector), (real)0.0f), (real)material.diffuse.w);
+        color += lights[i].color.xyz *
+                 (material.diffuse.xyz * (float)cosine + material.specular.xyz * (float)highlight);
+    }
+    return color;
+}
+#endif
 
 /* The colour a surface shows at distance t along the ray: its colour before lighting
  * (kinds/kinds.cl), and for a kind that the sun lights, in sun mode, that colour scaled by
@@ -28,6 +61,10 @@ typedef struct {
 float3 surface_color(Hit hit, real3 origin, real3 direction, CLR_SCENE_PARAMS)
 {
     float3 color = kind_surface_color(hit.kind, hit.index, origin, direction, hit.t, CLR_SCENE_ARGS);
+#if CLR_FEATURE_LIGHTS
+    if (info.light_count > 0 && kind_is_lit(hit.kind))
+        return phong_color(hit, color, origin, direction, CLR_SCENE_ARGS);
+#endif
 #if CLR_FEATURE_SUN
     if (!info.lit || !kind_is_lit(hit.kind))
         return color;
@@ -65,6 +102,10 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
         if (reflections >= info.max_depth)
             return result; /* one reflection too many: background */
         result.bounces = 1;
+#if CLR_FEATURE_LIGHTS
+        result.weight = (float3)(1.0f); /* an ideal mirror: the reflection is all it shows */
+        result.color = (float3)(0.0f);
+#endif
         result.next_origin = point;
         result.next_direction = unit3(reflect_direction(direction, normal));
         result.leaving_kind = hit.kind;
@@ -73,6 +114,26 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     }
 #endif
     result.color = surface_color(hit, origin, direction, CLR_SCENE_ARGS);
+#if CLR_FEATURE_LIGHTS
+    /* A material with a mirror share k_m adds that share of the reflected ray's colour. */
+    if (info.light_count > 0 && kind_is_lit(hit.kind)) {
+        float3 mirror = materials[kind_material(hit.kind, hit.index, CLR_SCENE_ARGS)].mirror.xyz;
+        if (mirror.x != 0.0f || mirror.y != 0.0f || mirror.z != 0.0f) {
+            if (reflections >= info.max_depth) {
+                result.color += mirror * info.background.xyz; /* one reflection too many */
+                return result;
+            }
+            real3 point = origin + hit.t * direction;
+            real3 normal = kind_normal(hit.kind, hit.index, point, direction, CLR_SCENE_ARGS);
+            result.bounces = 1;
+            result.weight = mirror;
+            result.next_origin = point;
+            result.next_direction = unit3(reflect_direction(direction, normal));
+            result.leaving_kind = hit.kind;
+            result.leaving_index = hit.index;
+        }
+    }
+#endif
     return result;
 }
 

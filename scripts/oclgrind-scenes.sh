@@ -2,7 +2,7 @@
 # Writes small scenes into folder $1 that between them switch on every kernel feature
 # (host/render/feature_set.h): spheres only, flat and textured billboards, transparent
 # texels, sun and shadows, mirrors (sphere and billboard), a BVH, impostors, meshes (lit,
-# mirrored and flat), an empty scene, a camera inside a sphere. Images come from scenes/demo (cutout.png has transparent texels).
+# mirrored and flat), planes and point lights (the fall 2019 format), an empty scene, a camera inside a sphere. Images come from scenes/demo (cutout.png has transparent texels).
 # scripts/oclgrind.sh and scripts/second-opencl.sh render them.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -74,6 +74,17 @@ octahedron='{"filename": "octahedron.obj", "position": [2, 0.5, 1], "scale": 2, 
 mirror_cube='{"filename": "cube.obj", "position": [0, -3, -3], "scale": [6, 0.5, 2], "IsMirror": 1}'
 scene meshes "$sun, \"MaxDepth\": 2, \"spheres\": [$ball2], \"billboards\": [$backdrop], \"obj\": [$cube, $octahedron, $mirror_cube]"
 scene flat_meshes "\"obj\": [$cube, $octahedron]"
+
+# The fall 2019 format: spheres and planes with Blinn-Phong materials, two point lights, a
+# mirror share; with a billboard (unlit) and a mesh (the default material) beside them.
+surfaces='"surfaces": [
+  {"type": "sphere", "center": [-2, 0, 0], "radius": 1.5, "ambient": [0.2, 0.1, 0.1], "diffuse": [0.7, 0.3, 0.2],
+   "specular": [0.8, 0.8, 0.8], "phong_exponent": 30, "mirror": [0.3, 0.3, 0.3]},
+  {"type": "plane", "point": [0, -1.5, 0], "normal": [0, 1, 0], "ambient": [0.1, 0.1, 0.1], "diffuse": [0.5, 0.5, 0.5]},
+  {"type": "plane", "point": [0, 0, -8], "normal": [0.1, 0, 1], "ambient": [0.05, 0.05, 0.1],
+   "diffuse": [0.3, 0.3, 0.6], "specular": [0.2, 0.2, 0.2], "phong_exponent": 0}],
+  "lights": [{"position": [6, 8, 6], "color": [0.7, 0.7, 0.7]}, {"position": [-8, 4, 2], "color": [0.4, 0.1, 0.1]}]'
+scene lights_and_planes "\"MaxDepth\": 2, $surfaces, \"billboards\": [$flat], \"obj\": [$octahedron]"
 
 # Impostors: upright views, a free-facing single picture, a flat colour; two frames.
 cat > "$out/impostors.json" <<EOF

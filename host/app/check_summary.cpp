@@ -83,7 +83,7 @@ std::string features_line(const Scene& scene, bool double_precision) {
     const FeatureSet features = FeatureSet::of(scene);
     const std::vector<std::pair<const char*, bool>> named = {
         {"spheres", features.spheres}, {"billboards", features.billboards}, {"triangles", features.triangles},
-        {"textures", features.textures},
+        {"planes", features.planes},   {"textures", features.textures},    {"lights", features.lights},
         {"alpha", features.alpha},     {"sun", features.sun},               {"mirrors", features.mirrors},
         {"bvh", features.bvh},         {"double", double_precision},
     };
@@ -107,6 +107,10 @@ std::string check_summary(const Scene& scene, bool double_precision) {
     out << "billboards: " << objects_line(scene.billboards) << "\n";
     out << "impostors:  " << scene.impostors.size() << "\n";
     out << "meshes:     " << meshes_line(scene) << "\n";
+    // The fall 2019 format's planes and point lights, listed where a scene has them.
+    if (!scene.planes.empty()) out << "planes:     " << scene.planes.size() << "\n";
+    if (!scene.lights.empty())
+        out << "lights:     " << scene.lights.size() << (scene.lit_by_lights() ? "" : " (off: OnlyAmbient)") << "\n";
     out << "images:     " << printable(images_line(scene)) << "\n";
     out << "features:   " << features_line(scene, double_precision) << "\n";
     out << "warnings:   " << scene.warnings.size()

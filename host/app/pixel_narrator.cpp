@@ -40,6 +40,7 @@ std::string colour_text(const Color& colour) { return explain_vector(colour); }
 
 std::string PixelNarrator::surface_name(HitKind kind, int index) const {
     if (kind == HitKind::Sphere) return "sphere " + std::to_string(index);
+    if (kind == HitKind::Plane) return "plane " + std::to_string(index);
     if (kind == HitKind::Triangle) {
         const Triangle& triangle = scene_.triangles[index];
         const Mesh& mesh = scene_.meshes[triangle.mesh];
@@ -52,7 +53,7 @@ std::string PixelNarrator::surface_name(HitKind kind, int index) const {
 
 std::string PixelNarrator::bound_name() const {
     if (found_in_search_) return "the nearest hit so far";
-    if (role_ == RayRole::Shadow) return "the sun's distance";
+    if (role_ == RayRole::Shadow) return scene_.lit_by_lights() ? "the light's distance" : "the sun's distance";
     return "the search's limit";
 }
 
@@ -83,7 +84,9 @@ void PixelNarrator::ray_cast(RayRole role, int depth, const reference::Ray& ray,
     if (role == RayRole::Reflected)
         out_ << " " << depth << " of at most MaxDepth = " << scene_.max_depth << " (r = d - 2(d.n)n)";
     out_ << ": o = " << position(ray.origin) << ", d = " << explain_vector(ray.direction);
-    if (role == RayRole::Shadow) out_ << ", 0 < t < " << explain_number(t_max) << " (the sun's distance)";
+    if (role == RayRole::Shadow)
+        out_ << ", 0 < t < " << explain_number(t_max)
+             << (scene_.lit_by_lights() ? " (the light's distance)" : " (the sun's distance)");
     out_ << "\n";
 }
 
@@ -189,6 +192,30 @@ void PixelNarrator::triangle_tested(int index, const reference::detail::Triangle
     if (accepted) found_in_search_ = true;
 }
 
+void PixelNarrator::plane_tested(int index, double t) {
+    const Plane& plane = scene_.planes[index];
+    out_ << surface_name(HitKind::Plane, index) << " (P0 = " << position(plane.point) << ", n = " << explain_vector(plane.normal)
+         << "): t = ((P0 - o).n) / (d.n)";
+    if (t < reference::kInfinity) {
+        out_ << " = " << explain_number(t) << ": hit, the nearest so far\n";
+        found_in_search_ = true;
+    } else {
+        out_ << ": rejected (d.n = 0, t <= 0, or not nearer than " << bound_name() << ")\n";
+    }
+}
+
+void PixelNarrator::light_seen(int index, double cosine, bool hidden, double highlight) {
+    const PointLight& light = scene_.lights[index];
+    out_ << "light " << index << " at " << position(light.position) << ", colour " << colour_text(light.color)
+         << ": n.l = " << explain_number(cosine);
+    if (cosine <= 0)
+        out_ << ": behind the surface, not counted\n";
+    else if (hidden)
+        out_ << ": hidden, not counted\n";
+    else
+        out_ << ", max(0, n.h)^p = " << explain_number(highlight) << ": adds I (k_d n.l + k_s max(0, n.h)^p)\n";
+}
+
 void PixelNarrator::nearest_found(const reference::Hit& hit) {
     if (triangles_missed_ > 0) {
         out_ << triangles_missed_ << (triangles_missed_ == 1 ? " triangle" : " triangles")
@@ -200,6 +227,8 @@ void PixelNarrator::nearest_found(const reference::Hit& hit) {
         if (shadowed_)
             out_ << "blocked by " << surface_name(hit.kind, hit.index) << " at t = " << explain_number(hit.t)
                  << ": the point is in shadow, s = 0\n";
+        else if (scene_.lit_by_lights())
+            out_ << "nothing blocks the light\n";
         else
             out_ << "nothing blocks the sun: s = 1\n";
         return;
@@ -249,6 +278,18 @@ void PixelNarrator::colour_found(ColourSource source, const Color& colour) {
             out_ << "colour = ambient * max(0, n.l) * s = " << colour_text(ambient) << " * "
                  << explain_number(cosine_ > 0 ? cosine_ : 0) << " * " << (cosine_ > 0 && !shadowed_ ? 1 : 0) << " = "
                  << colour_text(colour) << "\n";
+            break;
+        }
+        case ColourSource::PlaneAmbient:
+            out_ << "colour: the plane's ambient colour " << colour_text(colour) << " (unlit)\n";
+            break;
+        case ColourSource::PhongLit: {
+            const Material& material = reference::detail::material_of(scene_, surface_hit_);
+            out_ << "colour = ambient + sum over the lights counted of I (k_d n.l + k_s max(0, n.h)^p), k_d = "
+                 << colour_text(material.diffuse) << ", k_s = " << colour_text(material.specular)
+                 << ", p = " << explain_number(material.phong_exponent) << ": " << colour_text(colour) << "\n";
+            if (!(material.mirror == Color{0, 0, 0}))
+                out_ << "then k_m = " << colour_text(material.mirror) << " times the reflected ray's colour is added\n";
             break;
         }
         case ColourSource::MeshAmbient:

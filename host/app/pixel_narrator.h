@@ -34,7 +34,9 @@ public:
     void sphere_tested(int index, const reference::detail::SphereRoots& roots, double t_max, double t) override;
     void billboard_tested(int index, const reference::detail::PlaneHit& plane, double t_max, bool accepted) override;
     void triangle_tested(int index, const reference::detail::TriangleTest& test, double t_max, bool accepted) override;
+    void plane_tested(int index, double t) override;
     void nearest_found(const reference::Hit& hit) override;
+    void light_seen(int index, double cosine, bool hidden, double highlight) override;
     void surface_reached(const reference::Hit& hit, const reference::detail::SurfacePoint& surface) override;
     void sun_seen(const reference::detail::SunDirection& sun, double cosine) override;
     void colour_found(reference::ColourSource source, const Color& colour) override;

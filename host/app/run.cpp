@@ -79,6 +79,8 @@ nlohmann::json scene_objects(const Scene& scene) {
             {"impostors", scene.impostors.size()},
             {"meshes", scene.meshes.size()},
             {"triangles", scene.triangles.size()},
+            {"planes", scene.planes.size()},
+            {"lights", scene.lights.size()},
             {"triangle_device_bytes", scene.triangles.size() * sizeof(ClrTriangle) +
                                           scene.corner_normals.size() * 3 * sizeof(cl_float4)}};
 }

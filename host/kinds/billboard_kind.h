@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/box3.h"
@@ -33,6 +34,7 @@ struct BillboardKind {
     // The shading rule: billboards are pictures, never lit (docs/scene-format.md,
     // Conventions: Lighting and shadows).
     static constexpr bool kLit = false;
+    static constexpr bool kBounded = true;  // in the BVH and the screen tiles
 
     // The scene's billboards (impostors are billboards in every frame), and the frame's in the
     // kernels' order; a placed impostor's corners are relative to the eye it was placed for.
@@ -73,6 +75,8 @@ struct BillboardKind {
     static bool reference_is_mirror(const Scene& scene, int index);
     static reference::ColourSource reference_own_color(const Scene& scene, const reference::Hit& hit, Color& colour);
     static const Color& reference_ambient(const Scene& scene, int index);
+    // Its Blinn-Phong material (Scene::materials).
+    static std::uint32_t reference_material(const Scene&, int) { return 0; }
 };
 
 }  // namespace clr

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "kinds/billboard_kind.h"
+#include "kinds/plane_kind.h"
 #include "kinds/sphere_kind.h"
 #include "kinds/triangle_kind.h"
 
@@ -18,6 +19,16 @@ void for_each_kind(Visit&& visit) {
     visit(SphereKind{});
     visit(BillboardKind{});
     visit(TriangleKind{});
+    visit(PlaneKind{});
+}
+
+// Calls visit(Kind{}) for each kind with bounds (kBounded), the kinds that the BVH and the
+// screen tiles hold, in the same order.
+template <typename Visit>
+void for_each_bounded_kind(Visit&& visit) {
+    for_each_kind([&](auto kind) {
+        if constexpr (decltype(kind)::kBounded) visit(kind);
+    });
 }
 
 // Whether the sun lights surfaces of hit kind `hit` (CLR_HIT_*); CLR_HIT_NONE is not lit.

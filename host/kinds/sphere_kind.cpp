@@ -87,6 +87,7 @@ ClrSphere SphereKind::device(const Sphere& sphere, const Vec3& origin) {
     move(out, sphere, origin);
     out.color = to_float4(sphere.ambient);
     out.flags = sphere.is_mirror ? CLR_SURFACE_MIRROR : 0u;
+    out.material = sphere.material;
     return out;
 }
 

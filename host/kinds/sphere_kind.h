@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/box3.h"
@@ -32,6 +33,7 @@ struct SphereKind {
     // max(0, n.l) and the sun's visibility; docs/scene-format.md, Conventions: Lighting and
     // shadows).
     static constexpr bool kLit = true;
+    static constexpr bool kBounded = true;  // in the BVH and the screen tiles
 
     // The scene's spheres, and the frame's in the kernels' order; a sphere's position is in
     // scene coordinates (origin (0, 0, 0)).
@@ -73,6 +75,8 @@ struct SphereKind {
     static bool reference_is_mirror(const Scene& scene, int index);
     static reference::ColourSource reference_own_color(const Scene& scene, const reference::Hit& hit, Color& colour);
     static const Color& reference_ambient(const Scene& scene, int index);
+    // Its Blinn-Phong material (Scene::materials).
+    static std::uint32_t reference_material(const Scene& scene, int index) { return scene.spheres[index].material; }
 };
 
 }  // namespace clr

@@ -42,6 +42,7 @@ ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, c
     out.color = to_float4(mesh.ambient);
     out.flags = mesh.is_mirror ? CLR_SURFACE_MIRROR : 0u;
     out.normals = triangle.normals < 0 ? -1 : triangle.normals * 3;
+    out.material = mesh.material;
     return out;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/box3.h"
@@ -32,6 +33,7 @@ struct TriangleKind {
     // ambient colour times max(0, n.l) and the sun's visibility, n facing the ray;
     // docs/scene-format.md, Meshes).
     static constexpr bool kLit = true;
+    static constexpr bool kBounded = true;  // in the BVH and the screen tiles
 
     static std::size_t count(const Scene& scene) { return scene.triangles.size(); }
     static std::size_t count(const FrameGeometry& frame) { return frame.triangles().size(); }
@@ -63,6 +65,8 @@ struct TriangleKind {
     static bool reference_is_mirror(const Scene& scene, int index);
     static reference::ColourSource reference_own_color(const Scene& scene, const reference::Hit& hit, Color& colour);
     static const Color& reference_ambient(const Scene& scene, int index);
+    // Its Blinn-Phong material (Scene::materials).
+    static std::uint32_t reference_material(const Scene& scene, int index) { return scene.meshes[scene.triangles[index].mesh].material; }
 };
 
 }  // namespace clr

@@ -22,6 +22,8 @@ EyeRelative relative_to_eye(const Scene& scene, const CameraFrame& camera) {
     if (!moved.triangles.empty()) moved.triangle_tree = std::make_shared<const TriangleTree>(moved.triangles);
     for (Impostor& impostor : moved.impostors) impostor.center = impostor.center - eye;
     moved.sun_location = moved.sun_location - eye;
+    for (Plane& plane : moved.planes) plane.point = plane.point - eye;
+    for (PointLight& light : moved.lights) light.position = light.position - eye;
     for (CameraKey& key : moved.camera_path) {
         key.eye = key.eye - eye;
         key.lookat = key.lookat - eye;

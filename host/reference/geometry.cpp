@@ -110,6 +110,14 @@ SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     return surface;
 }
 
+const Material& material_of(const Scene& scene, const Hit& hit) {
+    std::uint32_t index = 0;
+    for_each_kind([&](auto kind) {
+        if (hit.kind == decltype(kind)::reference_kind()) index = decltype(kind)::reference_material(scene, hit.index);
+    });
+    return scene.materials[index];
+}
+
 bool is_lit(HitKind kind) {
     bool lit = false;
     for_each_kind([&](auto each) { lit |= kind == decltype(each)::reference_kind() && decltype(each)::kLit; });

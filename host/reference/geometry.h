@@ -76,6 +76,9 @@ struct SurfacePoint {
     SurfaceId id;
 };
 SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit);
+// The Blinn-Phong material of the surface `hit` landed on (Scene::materials[0] for a kind
+// that has none).
+const Material& material_of(const Scene& scene, const Hit& hit);
 
 // Whether the sun lights surfaces of `kind`: each kind's shading rule (host/kinds/).
 bool is_lit(HitKind kind);

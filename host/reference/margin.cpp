@@ -56,6 +56,23 @@ double decision_margin(const Scene& scene, const Ray& ray) {
             leaving = surface.id;
             continue;
         }
+        if (detail::is_lit(hit.kind) && scene.lit_by_lights()) {
+            // Each light's shadow ray; where a highlight is cut off at n.l = 0, that too.
+            const Material& material = detail::material_of(scene, hit);
+            for (const PointLight& light : scene.lights) {
+                const Vec3 to_light = light.position - surface.point;
+                const double distance = length(to_light);
+                const Vec3 l = to_light / distance;
+                const double cosine = dot(surface.normal, l);
+                if (!(material.specular == Color{0, 0, 0})) margin = std::min(margin, std::abs(cosine));
+                if (cosine > 0)
+                    margin = std::min(margin, detail::ray_margin(scene, {surface.point, l}, distance, surface.id, false));
+            }
+            if (material.mirror == Color{0, 0, 0} || reflections >= scene.max_depth) return margin;
+            current = detail::reflect(current, surface);
+            leaving = surface.id;
+            continue;
+        }
         if (detail::is_lit(hit.kind) && scene.lit()) {
             const auto sun = detail::sun_direction(scene, surface.point);
             if (sun.exists && dot(surface.normal, sun.l) > 0) {

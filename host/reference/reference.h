@@ -50,7 +50,7 @@ Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, 
 
 class TraceObserver;  // reference/trace_observer.h
 
-enum class HitKind { None, Sphere, Billboard, Triangle };
+enum class HitKind { None, Sphere, Billboard, Triangle, Plane };
 
 struct Hit {
     HitKind kind = HitKind::None;

@@ -1,5 +1,8 @@
 // Reference shading: what colour a ray sees (docs/scene-format.md, Conventions: Lighting and
 // shadows; docs/scene-format.md, Conventions: Mirrors).
+#include <algorithm>
+#include <cmath>
+
 #include "kinds/kinds.h"
 #include "reference/geometry.h"
 #include "reference/trace_observer.h"
@@ -39,11 +42,53 @@ Color lit_color(const Scene& scene, const Color& ambient, const SurfacePoint& su
     return found(observer, ColourSource::SunLit, ambient * (cosine * sun_visibility(scene, surface, sun, depth, observer)));
 }
 
+Color times(const Color& a, const Color& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+
+
+// The Blinn-Phong model with the scene's point lights (docs/scene-format.md, Lights and
+// materials): the ambient colour plus, for each light with n.l > 0 that nothing opaque hides,
+// its colour times k_d n.l + k_s max(0, n.h)^p, h = unit(l - d) halfway between the light and
+// the eye. The shadow ray skips the surface it starts on.
+Color phong_color(const Scene& scene, const Color& ambient, const Material& material, const Ray& ray,
+                  const SurfacePoint& surface, int depth, TraceObserver* observer) {
+    Color colour = ambient;
+    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+        const PointLight& light = scene.lights[i];
+        const Vec3 to_light = light.position - surface.point;
+        const double distance = length(to_light);
+        const Vec3 l = to_light / distance;
+        const double cosine = dot(surface.normal, l);
+        if (cosine <= 0) {
+            if (observer) observer->light_seen(i, cosine, false, 0);
+            continue;
+        }
+        const Ray shadow_ray{surface.point, l};
+        if (observer) observer->ray_cast(RayRole::Shadow, depth, shadow_ray, distance);
+        const bool hidden = intersect(scene, shadow_ray, distance, surface.id, observer).kind != HitKind::None;
+        if (hidden) {
+            if (observer) observer->light_seen(i, cosine, true, 0);
+            continue;
+        }
+        const Vec3 half = normalize(l - ray.direction);
+        const double highlight = std::pow(std::max(0.0, dot(surface.normal, half)), material.phong_exponent);
+        if (observer) observer->light_seen(i, cosine, false, highlight);
+        colour = colour + times(light.color, material.diffuse * cosine + material.specular * highlight);
+    }
+    return found(observer, ColourSource::PhongLit, colour);
+}
+
 // The colour of a surface that is not a mirror: lit by the sun when the scene is lit and its
 // kind is (detail::is_lit: spheres; billboards are pictures), else its own colour (each
 // kind's reference_own_color(): an ambient colour or a texel).
-Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surface, int depth,
+Color surface_color(const Scene& scene, const Hit& hit, const Ray& ray, const SurfacePoint& surface, int depth,
                     TraceObserver* observer) {
+    if (scene.lit_by_lights() && detail::is_lit(hit.kind)) {
+        Color ambient;
+        for_each_kind([&](auto kind) {
+            if (hit.kind == decltype(kind)::reference_kind()) ambient = decltype(kind)::reference_ambient(scene, hit.index);
+        });
+        return phong_color(scene, ambient, detail::material_of(scene, hit), ray, surface, depth, observer);
+    }
     const bool lit = scene.lit() && detail::is_lit(hit.kind);
     Color colour;
     ColourSource source = ColourSource::Background;
@@ -60,22 +105,33 @@ Color surface_color(const Scene& scene, const Hit& hit, const SurfacePoint& surf
 
 }  // namespace
 
-// Mirrors make the path a chain of rays, so a loop over reflections replaces recursion.
+// Mirrors make the path a chain of rays, so a loop over reflections replaces recursion. An
+// ideal mirror shows only what it reflects; a material with a mirror share k_m (lit by the
+// scene's lights) adds its own colour, then k_m times what it reflects (`weight` carries the
+// product of the shares so far).
 Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
     Ray current = ray;
     SurfaceId leaving;
+    Color sum{0, 0, 0}, weight{1, 1, 1};
     for (int reflections = 0;; ++reflections) {
         if (observer)
             observer->ray_cast(reflections == 0 ? RayRole::Primary : RayRole::Reflected, reflections, current, kInfinity);
         const Hit hit = intersect(scene, current, kInfinity, leaving, observer);
-        if (hit.kind == HitKind::None) return found(observer, ColourSource::Background, scene.background);
+        if (hit.kind == HitKind::None)
+            return sum + times(weight, found(observer, ColourSource::Background, scene.background));
         const SurfacePoint surface = detail::surface_at(scene, current, hit);
         if (observer) observer->surface_reached(hit, surface);
-        if (!surface.is_mirror) return surface_color(scene, hit, surface, reflections, observer);
-        if (!detail::sees_front(current, surface))  // the back of a mirror
-            return found(observer, ColourSource::BackOfMirror, kBlack);
+        if (!surface.is_mirror) {
+            sum = sum + times(weight, surface_color(scene, hit, current, surface, reflections, observer));
+            const Color& share = detail::material_of(scene, hit).mirror;
+            if (!scene.lit_by_lights() || !detail::is_lit(hit.kind) || share == Color{0, 0, 0}) return sum;
+            weight = times(weight, share);
+        } else if (!detail::sees_front(current, surface)) {  // the back of a mirror
+            return sum + times(weight, found(observer, ColourSource::BackOfMirror, kBlack));
+        }
         // MaxDepth reflections are allowed; a ray that needs one more sees the background.
-        if (reflections >= scene.max_depth) return found(observer, ColourSource::DepthExhausted, scene.background);
+        if (reflections >= scene.max_depth)
+            return sum + times(weight, found(observer, ColourSource::DepthExhausted, scene.background));
         current = detail::reflect(current, surface);
         leaving = surface.id;
     }

@@ -27,6 +27,8 @@ enum class ColourSource {
     BillboardAmbient,  // a flat billboard's colour
     BillboardTexel,    // the texel under (alpha, beta)
     MeshAmbient,       // an unlit mesh's colour
+    PlaneAmbient,      // an unlit plane's colour
+    PhongLit,          // a surface lit by the scene's lights (Blinn-Phong), mirror share not yet added
 };
 
 class TraceObserver {
@@ -53,6 +55,8 @@ public:
     // became the nearest hit.
     virtual void triangle_tested(int /*index*/, const detail::TriangleTest& /*test*/, double /*t_max*/,
                                  bool /*accepted*/) {}
+    // Plane `index` tested: the t intersect() took (kInfinity: parallel, behind or too far).
+    virtual void plane_tested(int /*index*/, double /*t*/) {}
     // What the search found (kind None: nothing).
     virtual void nearest_found(const Hit& /*hit*/) {}
 
@@ -60,6 +64,9 @@ public:
     virtual void surface_reached(const Hit& /*hit*/, const detail::SurfacePoint& /*surface*/) {}
     // The direction to the sun from a lit point and the cosine n.l.
     virtual void sun_seen(const detail::SunDirection& /*sun*/, double /*cosine*/) {}
+    // Light `index` of the Blinn-Phong model seen from a point: the cosine n.l, whether an
+    // opaque surface hides it, and the highlight max(0, n.h)^p (0 when it is not counted).
+    virtual void light_seen(int /*index*/, double /*cosine*/, bool /*hidden*/, double /*highlight*/) {}
     // The colour the ray returns, and why.
     virtual void colour_found(ColourSource /*source*/, const Color& /*colour*/) {}
 };

@@ -26,7 +26,7 @@ struct Primitive {
 // The frame's objects' boxes relative to `origin`, kind by kind (kinds/kinds.h).
 std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& origin) {
     std::vector<Primitive> primitives;
-    for_each_kind([&](auto kind) {
+    for_each_bounded_kind([&](auto kind) {
         using Kind = decltype(kind);
         for (std::size_t i = 0; i < Kind::count(frame); ++i) {
             // Zero for placed impostors, whose corners are relative to `origin` already: exact.

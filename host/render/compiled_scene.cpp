@@ -71,6 +71,16 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     compiled.triangle_normals.reserve(scene.corner_normals.size() * 3);
     for (const auto& normals : scene.corner_normals)
         for (const Vec3& normal : normals) compiled.triangle_normals.push_back(to_float4(normal));
+    for (const Plane& plane : scene.planes) compiled.planes.push_back(PlaneKind::device(plane, origin));
+    compiled.lights.resize(scene.lights.size());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) compiled.lights[i].color = to_float4(scene.lights[i].color);
+    for (const Material& material : scene.materials) {
+        ClrMaterial device{};
+        device.diffuse = to_float4(material.diffuse, static_cast<float>(material.phong_exponent));
+        device.specular = to_float4(material.specular);
+        device.mirror = to_float4(material.mirror);
+        compiled.materials.push_back(device);
+    }
     reserve_texels(scene, compiled);
     for (const Billboard& billboard : scene.billboards) {
         if (!billboard.is_mirror) pack_texture(billboard.image.get(), compiled);
@@ -85,6 +95,8 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     compiled.info.lit = scene.lit() ? 1 : 0;
     compiled.info.sphere_count = static_cast<int>(scene.spheres.size());
     compiled.info.triangle_count = static_cast<int>(scene.triangles.size());
+    compiled.info.plane_count = static_cast<int>(scene.planes.size());
+    compiled.info.light_count = scene.lit_by_lights() ? static_cast<int>(scene.lights.size()) : 0;
     compile_frame(compiled, frame, origin);
     return compiled;
 }
@@ -97,6 +109,9 @@ void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Ve
         BillboardKind::move(compiled.billboards[i], scene.billboards[i], origin);
     for (std::size_t i = 0; i < scene.triangles.size(); ++i)
         TriangleKind::move(compiled.triangles[i], scene.triangles[i], origin);
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) PlaneKind::move(compiled.planes[i], scene.planes[i], origin);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        compiled.lights[i].position = to_float4(scene.lights[i].position - origin);
     compiled.billboards.resize(frame.billboard_count());
     const std::size_t first = frame.first_impostor();
     compiled.impostor_textures.resize(frame.billboard_count() - first, {nullptr, nullptr});

@@ -21,6 +21,9 @@ struct CompiledScene {
     std::vector<ClrBillboard> billboards;  // the frame's billboards, in FrameGeometry's order
     std::vector<ClrTriangle> triangles;    // the scene's mesh triangles
     std::vector<cl_float4> triangle_normals;  // Scene::corner_normals, three a triangle
+    std::vector<ClrPlane> planes;
+    std::vector<ClrLight> lights;        // the scene's point lights (positions move with the origin)
+    std::vector<ClrMaterial> materials;  // Scene::materials
     // RGBA bytes of every image a billboard or view may show; page-aligned, so that a device can
     // read them where they are (Renderer keeps them as the texel buffer's host memory).
     PageAlignedVector<std::uint8_t> texels;

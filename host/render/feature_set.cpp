@@ -9,7 +9,8 @@ namespace clr {
 
 FeatureSet FeatureSet::all() {
     FeatureSet features;
-    features.spheres = features.billboards = features.triangles = features.textures = true;
+    features.spheres = features.billboards = features.triangles = features.planes = features.textures = true;
+    features.lights = true;
     features.alpha = features.sun = features.mirrors = true;
     features.bvh = true;
     return features;
@@ -20,6 +21,8 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     features.spheres = !scene.spheres.empty();
     features.billboards = !scene.billboards.empty();
     features.triangles = !scene.triangles.empty();
+    features.planes = !scene.planes.empty();
+    features.lights = scene.lit_by_lights() && has_lit_objects(scene);
     features.sun = scene.lit() && has_lit_objects(scene);  // the kinds the sun lights (kinds/kinds.h)
     for (const Sphere& sphere : scene.spheres) features.mirrors |= sphere.is_mirror;
     for (const Mesh& mesh : scene.meshes) features.mirrors |= mesh.is_mirror && mesh.triangle_count > 0;
@@ -38,7 +41,7 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     // Primary rays are culled by screen tiles; shadow and mirror rays test every object
     // unless a BVH is compiled in, which pays from a few dozen objects on.
     std::size_t objects = scene.spheres.size() + scene.billboards.size() + scene.impostors.size() + scene.triangles.size();
-    features.bvh = (features.sun || features.mirrors) && objects > kBvhMinObjects;
+    features.bvh = (features.sun || features.lights || features.mirrors) && objects > kBvhMinObjects;
     return features;
 }
 
@@ -48,7 +51,8 @@ std::string FeatureSet::build_options() const {
         {"CLR_FEATURE_ALPHA", alpha},         {"CLR_FEATURE_BILLBOARDS", billboards},
         {"CLR_FEATURE_BVH", bvh},             {"CLR_FEATURE_DOUBLE", double_precision},
         {"CLR_FEATURE_FLOAT_OUTPUT", float_output},
-        {"CLR_FEATURE_MIRRORS", mirrors},     {"CLR_FEATURE_SPHERES", spheres},
+        {"CLR_FEATURE_LIGHTS", lights},       {"CLR_FEATURE_MIRRORS", mirrors},
+        {"CLR_FEATURE_PLANES", planes},       {"CLR_FEATURE_SPHERES", spheres},
         {"CLR_FEATURE_SUN", sun},             {"CLR_FEATURE_TEXTURES", textures},
         {"CLR_FEATURE_TRIANGLES", triangles},
     };

@@ -16,6 +16,8 @@ struct FeatureSet {
     bool spheres = false;      // at least one sphere
     bool billboards = false;   // at least one billboard
     bool triangles = false;    // at least one mesh triangle
+    bool planes = false;       // at least one plane (unbounded: outside the BVH and the tiles)
+    bool lights = false;       // Blinn-Phong point lights (the fall 2019 format), with shadow rays
     bool textures = false;     // a billboard shows an image
     bool alpha = false;        // a shown image has a texel with alpha below 255
     bool sun = false;          // sun lighting with shadow rays

@@ -22,6 +22,9 @@ struct SceneArgs {
     cl::Buffer billboards;  // ClrBillboard[info.billboard_count]
     cl::Buffer triangles;   // ClrTriangle[info.triangle_count]
     cl::Buffer triangle_normals;  // float4: three corner normals per triangle that has them
+    cl::Buffer planes;      // ClrPlane[info.plane_count]
+    cl::Buffer lights;      // ClrLight[info.light_count]
+    cl::Buffer materials;   // ClrMaterial: [0] the default, then each distinct material
     cl::Buffer texels;      // uchar4, every billboard image one after another
     cl::Buffer coverage;    // uint: bit k % 32 of word k / 32 is set where texel k stops rays
     ClrSceneInfo info{};
@@ -34,6 +37,9 @@ struct SceneArgs {
         visit("billboards", billboards);
         visit("triangles", triangles);
         visit("triangle_normals", triangle_normals);
+        visit("planes", planes);
+        visit("lights", lights);
+        visit("materials", materials);
         visit("texels", texels);
         visit("coverage", coverage);
         visit("info", info);

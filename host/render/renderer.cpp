@@ -102,6 +102,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         // Corner normals do not move with the eye: uploaded once, not with each frame's geometry.
         scene_args_.triangle_normals = upload(device_.context(), compiled_.triangle_normals);
         compiled_.triangle_normals = {};  // the buffer's now, as the texels are
+        scene_args_.materials = upload(device_.context(), compiled_.materials);
         upload_geometry();
         uploaded_ = true;
         max_buffer_bytes_ = device_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
@@ -116,6 +117,8 @@ void Renderer::upload_geometry() {
     scene_args_.spheres = upload(device_.context(), compiled_.spheres);
     scene_args_.billboards = upload(device_.context(), compiled_.billboards);
     scene_args_.triangles = upload(device_.context(), compiled_.triangles);
+    scene_args_.planes = upload(device_.context(), compiled_.planes);
+    scene_args_.lights = upload(device_.context(), compiled_.lights);
     scene_args_.bvh_nodes = upload(device_.context(), compile_bvh(bvh_, origin_));
     scene_args_.bvh_items = upload(device_.context(), bvh_.items);
     scene_args_.info = compiled_.info;

@@ -75,7 +75,7 @@ bool place(const FrameGeometry& frame, std::size_t index, const ObjectBounds& bo
 void place_range(const FrameGeometry& frame, std::size_t begin, std::size_t end, const ObjectBounds& bounds,
                  const ScreenTiles& tiles, const FrameCamera& camera, std::vector<TileSpan>& placed) {
     std::size_t kind_begin = 0;
-    for_each_kind([&](auto kind) {
+    for_each_bounded_kind([&](auto kind) {
         using Kind = decltype(kind);
         const std::size_t kind_end = kind_begin + Kind::count(frame);
         TileSpan span;

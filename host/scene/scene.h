@@ -24,6 +24,35 @@ struct Sphere {
     double radius = 1;
     Color ambient;  // base colour
     bool is_mirror = false;
+    std::uint32_t material = 0;  // Scene::materials; 0: the default
+};
+
+// The Blinn-Phong coefficients of a surface of the fall 2019 format (docs/scene-format.md,
+// Lights and materials); its ambient coefficient is the object's `ambient`. The default
+// (Scene::materials[0]) adds nothing to the ambient colour.
+struct Material {
+    Color diffuse;   // k_d
+    Color specular;  // k_s
+    double phong_exponent = 0;  // p
+    Color mirror;    // k_m: the share of the reflected ray's colour added
+    bool operator==(const Material& other) const {
+        return diffuse == other.diffuse && specular == other.specular && phong_exponent == other.phong_exponent &&
+               mirror == other.mirror;
+    }
+};
+
+// A point light of the Blinn-Phong model.
+struct PointLight {
+    Vec3 position;
+    Color color;
+};
+
+// An infinite plane through `point` with unit normal `normal`, seen from both sides.
+struct Plane {
+    Vec3 point;
+    Vec3 normal;  // unit length
+    Color ambient;
+    std::uint32_t material = 0;  // Scene::materials
 };
 
 struct Billboard {
@@ -47,6 +76,7 @@ struct Mesh {
     Color ambient;  // the scene's, else the OBJ material's Kd, else 0.8 grey
     bool is_mirror = false;
     bool placeholder = false;  // --placeholders stood in a cube for a missing file
+    std::uint32_t material = 0;  // Scene::materials, for every triangle of the mesh
     std::size_t first_triangle = 0;
     std::size_t triangle_count = 0;
 };
@@ -138,6 +168,10 @@ struct Scene {
     int max_depth = 5;
 
     std::vector<Sphere> spheres;
+    std::vector<Plane> planes;         // "surfaces" of type "plane"
+    std::vector<PointLight> lights;    // "lights": the Blinn-Phong model instead of the sun
+    // Every distinct material the objects name; [0] is the default, which adds nothing.
+    std::vector<Material> materials{Material{}};
     std::vector<Billboard> billboards;
     std::vector<Impostor> impostors;  // "clrender"/"impostors"; shown after the billboards
     std::vector<Mesh> meshes;          // "obj"
@@ -159,6 +193,8 @@ struct Scene {
     // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (docs/scene-format.md,
     // Conventions: Lighting and shadows).
     bool lit() const { return has_sun && !only_ambient; }
+    // The lights apply unless OnlyAmbient is 1 (docs/scene-format.md, Lights and materials).
+    bool lit_by_lights() const { return !lights.empty() && !only_ambient; }
     bool is_animated() const { return camera_path.size() >= 2; }
 };
 

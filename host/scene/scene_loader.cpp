@@ -19,6 +19,7 @@
 #include "scene/key_hints.h"
 #include "scene/mesh_loader.h"
 #include "scene/scene_digest.h"
+#include "scene/surfaces_loader.h"
 #include "scene/scene_overrides.h"
 #include "core/printable_text.h"
 #include "scene/value_ranges.h"
@@ -479,11 +480,6 @@ void load_scene_images(Scene& scene, const PendingBillboardImages& billboards, I
 void note_unsupported_keys(ObjectReader& file) {
     file.note_ignored("near", "near clipping plane is not supported (ignored)");
     file.note_ignored("far", "far clipping plane is not supported (ignored)");
-    const std::string older_format =
-        "unknown key (ignored); this looks like the older (fall 2019) scene format, which clrender does not read: "
-        "use 'spheres', 'billboards' and 'SunLocation'";
-    file.note_ignored("surfaces", older_format);
-    file.note_ignored("lights", older_format);
 }
 
 Interpolation read_interpolation(const Node& node) {
@@ -591,6 +587,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     read_lighting(file, scene);
     PendingBillboardImages billboard_images;
     read_objects(file, scene, billboard_images);
+    read_surfaces_and_lights(file, scene);
     const std::vector<PendingMesh> meshes = read_mesh_objects(file);
     ImpostorViews impostor_views;
     read_extensions(file, scene, impostor_views);

@@ -132,6 +132,12 @@ uint billboard_flags(int index, CLR_SCENE_PARAMS)
     return billboards[index].flags;
 }
 
+/* Its Blinn-Phong material (ClrMaterial) in `materials`. */
+uint billboard_material(int index, CLR_SCENE_PARAMS)
+{
+    return 0u; /* billboards are not lit: no material */
+}
+
 /* The colour a billboard shows at distance t: its texel (opaque, or the ray would have
  * passed through) or its flat colour. */
 float3 billboard_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)

@@ -14,6 +14,7 @@
  *   real3 <name>_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
  *     the unit front (outer) normal; a kind seen from both sides turns it to face `direction`
  *   uint <name>_flags(int index, CLR_SCENE_PARAMS)                  CLR_SURFACE_*
+ *   uint <name>_material(int index, CLR_SCENE_PARAMS)     its material in `materials`
  *   float3 <name>_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
  *     its colour before lighting
  *   Colors16 <name>_flat_colors16(int index, uint16 texel, CLR_SCENE_PARAMS)  the same, 16 lanes
@@ -28,6 +29,7 @@
 #include "common/scene_items.cl"
 #include "common/scene_params.cl"
 #include "kinds/billboard.cl"
+#include "kinds/plane.cl"
 #include "kinds/sphere.cl"
 #include "kinds/triangle.cl"
 #include "packet/packet_types.cl"
@@ -37,7 +39,8 @@
 #define CLR_KINDS(X)                                      \
     X(CLR_HIT_SPHERE, sphere, CLR_FEATURE_SPHERES)        \
     X(CLR_HIT_BILLBOARD, billboard, CLR_FEATURE_BILLBOARDS)  \
-    X(CLR_HIT_TRIANGLE, triangle, CLR_FEATURE_TRIANGLES)
+    X(CLR_HIT_TRIANGLE, triangle, CLR_FEATURE_TRIANGLES)     \
+    X(CLR_HIT_PLANE, plane, CLR_FEATURE_PLANES)
 
 /* Object `index` of `kind` as a ray meets it (<name>_hit_distance). */
 #define CLR_KIND_HIT_DISTANCE(KIND, name, FEATURE) \
@@ -104,6 +107,16 @@ real3 kind_normal(int kind, int index, real3 point, real3 direction, CLR_SCENE_P
 uint kind_flags(int kind, int index, CLR_SCENE_PARAMS)
 {
     CLR_KINDS(CLR_KIND_FLAGS)
+    return 0u;
+}
+
+/* The Blinn-Phong material of object `index` of `kind` (<name>_material). */
+#define CLR_KIND_MATERIAL(KIND, name, FEATURE) \
+    if (FEATURE && kind == KIND)               \
+        return name##_material(index, CLR_SCENE_ARGS);
+uint kind_material(int kind, int index, CLR_SCENE_PARAMS)
+{
+    CLR_KINDS(CLR_KIND_MATERIAL)
     return 0u;
 }
 

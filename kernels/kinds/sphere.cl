@@ -83,6 +83,12 @@ uint sphere_flags(int index, CLR_SCENE_PARAMS)
     return spheres[index].flags;
 }
 
+/* Its Blinn-Phong material (ClrMaterial) in `materials`. */
+uint sphere_material(int index, CLR_SCENE_PARAMS)
+{
+    return spheres[index].material;
+}
+
 /* The colour before lighting: the ambient colour. */
 float3 sphere_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
 {

@@ -136,6 +136,12 @@ uint triangle_flags(int index, CLR_SCENE_PARAMS)
     return triangles[index].flags;
 }
 
+/* Its Blinn-Phong material (ClrMaterial) in `materials`. */
+uint triangle_material(int index, CLR_SCENE_PARAMS)
+{
+    return triangles[index].material;
+}
+
 /* The colour before lighting: the mesh's ambient colour. */
 float3 triangle_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
 {

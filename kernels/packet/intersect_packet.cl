@@ -94,6 +94,27 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
         best_texel = select(best_texel, texel, beats_int);
 #endif
     }
+#if CLR_FEATURE_PLANES
+    /* Planes are in no tile (kinds/plane.cl): every packet tests each. */
+    for (int i = 0; i < info.plane_count; ++i) {
+        uint16 no_texel = (uint16)(0u);
+        real16 t = plane_hit_distance16(i, origin, d, CLR_LOOP_COLORS, &no_texel, CLR_SCENE_ARGS);
+        mask16 beats = hits_beat16(t, CLR_HIT_PLANE, i, best->t, best->kind, best->index);
+        int16 beats_int = convert_int16(beats);
+        best->t = select(best->t, t, beats);
+        best->kind = select(best->kind, (int16)(CLR_HIT_PLANE), beats_int);
+        best->index = select(best->index, (int16)(i), beats_int);
+#if CLR_LOOP_COLORS
+        Colors16 flat = plane_flat_colors16(i, no_texel, CLR_SCENE_ARGS);
+        colors->r = select(colors->r, flat.r, beats_int);
+        colors->g = select(colors->g, flat.g, beats_int);
+        colors->b = select(colors->b, flat.b, beats_int);
+#endif
+#if CLR_LOOP_COLORS && CLR_FEATURE_ALPHA
+        best_texel = select(best_texel, (uint16)(CLR_NO_TEXEL), beats_int);
+#endif
+    }
+#endif
 #if CLR_LOOP_COLORS && CLR_FEATURE_ALPHA
     take_texel_colors16(best_texel, texels, colors);
 #endif

@@ -32,7 +32,12 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
     items.first = tile_offsets[tile];
     items.end = tile_offsets[tile + 1];
     __global CLR_PIXEL* out = (__global CLR_PIXEL*)pixels + (row_begin - first_row) * camera.width + col0;
-    if (items.first == items.end) {
+#if CLR_FEATURE_PLANES
+    bool no_plane = info.plane_count == 0; /* planes are in no tile, and may cross any */
+#else
+    bool no_plane = true;
+#endif
+    if (items.first == items.end && no_plane) {
         /* Every sample sees the background: the mean as render computes it, once. */
         float3 sum = (float3)(0.0f);
         for (int sample = 0; sample < camera.samples; ++sample)

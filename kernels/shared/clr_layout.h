@@ -25,7 +25,7 @@
     CLR_LAYOUT_FIELD(ClrSphere, center_radius)      \
     CLR_LAYOUT_FIELD(ClrSphere, color)              \
     CLR_LAYOUT_FIELD(ClrSphere, flags)              \
-    CLR_LAYOUT_FIELD(ClrSphere, pad0)               \
+    CLR_LAYOUT_FIELD(ClrSphere, material)           \
     CLR_LAYOUT_FIELD(ClrSphere, pad1)               \
     CLR_LAYOUT_FIELD(ClrSphere, pad2)               \
     CLR_LAYOUT_STRUCT(ClrBillboard)                 \
@@ -45,8 +45,23 @@
     CLR_LAYOUT_FIELD(ClrTriangle, color)            \
     CLR_LAYOUT_FIELD(ClrTriangle, flags)            \
     CLR_LAYOUT_FIELD(ClrTriangle, normals)          \
-    CLR_LAYOUT_FIELD(ClrTriangle, pad0)             \
+    CLR_LAYOUT_FIELD(ClrTriangle, material)         \
     CLR_LAYOUT_FIELD(ClrTriangle, pad1)             \
+    CLR_LAYOUT_STRUCT(ClrPlane)                     \
+    CLR_LAYOUT_FIELD(ClrPlane, point)               \
+    CLR_LAYOUT_FIELD(ClrPlane, normal)              \
+    CLR_LAYOUT_FIELD(ClrPlane, color)               \
+    CLR_LAYOUT_FIELD(ClrPlane, flags)               \
+    CLR_LAYOUT_FIELD(ClrPlane, material)            \
+    CLR_LAYOUT_FIELD(ClrPlane, pad0)                \
+    CLR_LAYOUT_FIELD(ClrPlane, pad1)                \
+    CLR_LAYOUT_STRUCT(ClrLight)                     \
+    CLR_LAYOUT_FIELD(ClrLight, position)            \
+    CLR_LAYOUT_FIELD(ClrLight, color)               \
+    CLR_LAYOUT_STRUCT(ClrMaterial)                  \
+    CLR_LAYOUT_FIELD(ClrMaterial, diffuse)          \
+    CLR_LAYOUT_FIELD(ClrMaterial, specular)         \
+    CLR_LAYOUT_FIELD(ClrMaterial, mirror)           \
     CLR_LAYOUT_STRUCT(ClrRay)                       \
     CLR_LAYOUT_FIELD(ClrRay, origin)                \
     CLR_LAYOUT_FIELD(ClrRay, direction)             \
@@ -70,8 +85,8 @@
     CLR_LAYOUT_FIELD(ClrSceneInfo, max_depth)       \
     CLR_LAYOUT_FIELD(ClrSceneInfo, lit)             \
     CLR_LAYOUT_FIELD(ClrSceneInfo, triangle_count)  \
-    CLR_LAYOUT_FIELD(ClrSceneInfo, pad0)            \
-    CLR_LAYOUT_FIELD(ClrSceneInfo, pad1)            \
+    CLR_LAYOUT_FIELD(ClrSceneInfo, plane_count)     \
+    CLR_LAYOUT_FIELD(ClrSceneInfo, light_count)     \
     CLR_LAYOUT_FIELD(ClrSceneInfo, pad2)
 
 #endif /* CLR_LAYOUT_H */

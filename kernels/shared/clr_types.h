@@ -21,7 +21,7 @@ typedef cl_int clr_int;
 typedef cl_uint clr_uint;
 #endif
 
-/* Surface flags (ClrSphere.flags, ClrBillboard.flags, ClrTriangle.flags). */
+/* Surface flags (ClrSphere.flags, ClrBillboard.flags, ClrTriangle.flags, ClrPlane.flags). */
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
 #define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below CLR_OPAQUE_ALPHA */
@@ -49,6 +49,7 @@ constexpr int kClrTileSize = CLR_TILE_SIZE;
 #define CLR_HIT_SPHERE 1
 #define CLR_HIT_BILLBOARD 2
 #define CLR_HIT_TRIANGLE 3
+#define CLR_HIT_PLANE 4
 
 /* A scene item, as screen-tile lists and BVH leaves store an object: its kind (CLR_HIT_*) in
  * the top CLR_ITEM_KIND_BITS bits, its index among the objects of that kind in the others
@@ -77,7 +78,8 @@ typedef struct {
     clr_float4 center_radius; /* xyz = centre, w = radius (> 0) */
     clr_float4 color;         /* xyz = ambient colour; w unused */
     clr_uint flags;           /* CLR_SURFACE_* */
-    clr_uint pad0, pad1, pad2;
+    clr_uint material;        /* its Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */
+    clr_uint pad1, pad2;
 } ClrSphere;
 
 /* A parallelogram UL + a*(UR-UL) + b*(LL-UL), 0 <= a, b <= 1. */
@@ -103,8 +105,34 @@ typedef struct {
     clr_float4 color;   /* xyz = its mesh's ambient colour; w unused */
     clr_uint flags;     /* CLR_SURFACE_* */
     clr_int normals;    /* first of its three corner normals in triangle_normals, or -1 */
-    clr_uint pad0, pad1;
+    clr_uint material;  /* its mesh's Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */
+    clr_uint pad1;
 } ClrTriangle;
+
+/* An infinite plane through `point` with unit normal `normal`, seen from both sides. Planes
+ * are in no BVH and no screen tile: every ray tests every plane. */
+typedef struct {
+    clr_float4 point;  /* xyz = a point of the plane; w unused */
+    clr_float4 normal; /* xyz = unit normal as the scene gives it; w unused */
+    clr_float4 color;  /* xyz = ambient colour; w unused */
+    clr_uint flags;    /* CLR_SURFACE_* */
+    clr_uint material; /* its Blinn-Phong material in `materials` */
+    clr_uint pad0, pad1;
+} ClrPlane;
+
+/* A point light of the Blinn-Phong model (docs/scene-format.md, Lights and materials). */
+typedef struct {
+    clr_float4 position; /* xyz = position; w unused */
+    clr_float4 color;    /* xyz = its colour (intensity per channel); w unused */
+} ClrLight;
+
+/* A Blinn-Phong material: the coefficients that multiply each light's colour, and the share
+ * of the mirror ray's colour added. The ambient coefficient is the object's own colour. */
+typedef struct {
+    clr_float4 diffuse;  /* xyz = k_d; w = the Phong exponent p */
+    clr_float4 specular; /* xyz = k_s; w unused */
+    clr_float4 mirror;   /* xyz = k_m; w unused */
+} ClrMaterial;
 
 typedef struct {
     clr_float4 origin;    /* xyz = origin; w unused */
@@ -138,7 +166,9 @@ typedef struct {
     clr_int max_depth; /* mirror reflections allowed along one path */
     clr_int lit;       /* 1: sun lighting (a kernel compiled without CLR_FEATURE_SUN ignores it) */
     clr_int triangle_count;
-    clr_int pad0, pad1, pad2;
+    clr_int plane_count;
+    clr_int light_count; /* point lights of the Blinn-Phong model (CLR_FEATURE_LIGHTS) */
+    clr_int pad2;
 } ClrSceneInfo;
 
 #ifndef __OPENCL_VERSION__
@@ -149,6 +179,9 @@ static_assert(sizeof(ClrRay) == 32, "ClrRay layout");
 static_assert(sizeof(ClrHit) == 16, "ClrHit layout");
 static_assert(sizeof(ClrTriangle) == 80, "ClrTriangle layout");
 static_assert(sizeof(ClrSceneInfo) == 64, "ClrSceneInfo layout");
+static_assert(sizeof(ClrPlane) == 64, "ClrPlane layout");
+static_assert(sizeof(ClrLight) == 32, "ClrLight layout");
+static_assert(sizeof(ClrMaterial) == 48, "ClrMaterial layout");
 static_assert(sizeof(ClrBvhNode) == 48, "ClrBvhNode layout");
 #endif
 

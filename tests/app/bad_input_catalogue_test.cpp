@@ -71,6 +71,16 @@ std::string scene_with(const std::string& extra) {
 }
 
 // A scene showing the OBJ mesh `filename`, with `settings` added to its object.
+// A scene of the fall 2019 format whose one surface is `surface`.
+std::string surfaces_scene(const std::string& surface) { return scene_with(R"("surfaces": [)" + surface + "]"); }
+
+// `count` point lights, as the members of a `lights` array.
+std::string many_lights(int count) {
+    std::string lights;
+    for (int i = 0; i < count; ++i) lights += std::string(i ? ", " : "") + R"({"position": [0, 9, 0], "color": [1, 1, 1]})";
+    return lights;
+}
+
 std::string mesh_scene(const std::string& filename, const std::string& settings = "") {
     return scene_with(R"("obj": {"filename": ")" + filename + "\"" + settings + "}");
 }
@@ -355,6 +365,27 @@ std::vector<BadInput> catalogue() {
         {"ObjPathIsAFolder", {{"bad.json", mesh_scene("models")}}, {"models"}, "bad.json", 2,
          {"bad.json: /obj/filename: cannot read OBJ"}},
         bad_scene("ObjScaleZero", mesh_scene("m.obj", R"(, "scale": 0)"), {"bad.json: /obj/scale: scale must be a non-zero factor"}),
+
+        // --- the fall 2019 format: surfaces and lights
+        bad_scene("SurfaceOfAnUnknownType", surfaces_scene(R"({"type": "cone", "ambient": [1, 0, 0]})"),
+                  {"bad.json: /surfaces/0/type: surface type must be \"sphere\" or \"plane\""}),
+        bad_scene("SurfaceWithoutAmbient", surfaces_scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})"),
+                  {"bad.json: /surfaces/0: surface is missing required key 'ambient'"}),
+        bad_scene("PlaneWithAZeroNormal",
+                  surfaces_scene(R"({"type": "plane", "point": [0, 0, 0], "normal": [0, 0, 0], "ambient": [1, 1, 1]})"),
+                  {"bad.json: /surfaces/0/normal: normal must be a non-zero direction"}),
+        bad_scene("NegativePhongExponent",
+                  surfaces_scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "ambient": [1, 0, 0], "phong_exponent": -2})"),
+                  {"bad.json: /surfaces/0/phong_exponent: phong_exponent must be from 0 to 1e6, got -2"}),
+        bad_scene("SpecularColourNearFloatOverflow",
+                  surfaces_scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "ambient": [1, 0, 0], "specular": [1e30, 0, 0]})"),
+                  {"bad.json: /surfaces/0/specular: each channel must be from -1e6 to 1e6, got 1e30"}),
+        bad_scene("LightsAndASun", scene_with(R"("SunLocation": [0, 9, 0], "lights": [{"position": [0, 9, 0], "color": [1, 1, 1]}])"),
+                  {"bad.json: /lights: 'lights' (point lights with Blinn-Phong materials) and 'SunLocation' are two lighting models"}),
+        bad_scene("LightWithoutColour", scene_with(R"("lights": [{"position": [0, 9, 0]}])"),
+                  {"bad.json: /lights/0: light is missing required key 'color'"}),
+        bad_scene("TooManyLights", scene_with(R"("lights": [)" + many_lights(257) + "]"),
+                  {"bad.json: /lights: a scene may have at most 256 lights, this one has 257"}),
         bad_image("PngDimensionsOverTheLimit", "huge.png", testing::png_header_only(100000, 100000, 8),
                   "PNG image of 100000 x 100000 pixels is larger than the limit of 67108864 pixels"),
         bad_image("LosslessJpegIsNamed", "lossless.jpg", lossless_jpeg_frame(),
@@ -900,6 +931,10 @@ TEST(SceneSchema, AcceptsScenesClrenderRenders) {
     folder.write("sphere.json", sphere_scene(R"("radius": 1e-15)"));
     folder.write("far.json", scene_with(R"("SunLocation": [1e15, -1e15, 0])"));
     folder.write("animation.json", animation_scene());
+    folder.write("fall2019.json", scene_with(R"("surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+        "ambient": [0.5, 0, 0], "diffuse": [0.5, 0, 0], "specular": [1, 1, 1], "phong_exponent": 20, "mirror": [0.1, 0.1, 0.1]},
+        {"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "ambient": [0.1, 0.1, 0.1]}],
+        "lights": [{"position": [5, 5, 5], "color": [0.8, 0.8, 0.8]}])"));
     for (const auto& [name, verdict] : schema_verdicts(folder.path()))
         EXPECT_EQ(verdict, "accepted") << name << " " << sources[name];
 }

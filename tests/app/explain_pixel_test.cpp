@@ -435,5 +435,40 @@ TEST(ExplainPixel, TriangleHitPrintsThePlaneTestAndBarycentricCoordinates) {
     EXPECT_NE(text.find("bytes the OpenCL kernels write"), std::string::npos);
 }
 
+// The fall 2019 format: a plane lit by a point light, in the model's terms.
+TEST(ExplainPixel, PlaneLitByAPointLightPrintsTheBlinnPhongTerms) {
+    TempFolder folder;
+    folder.write("plane.json", R"({
+      "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60, "width": 40, "height": 30,
+      "surfaces": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 3], "ambient": [0.1, 0.2, 0.05],
+                    "diffuse": [0.5, 0.25, 0.75], "specular": [0.3, 0.3, 0.3], "phong_exponent": 5}],
+      "lights": [{"position": [1, 2, 9], "color": [0.8, 0.6, 0.4]}]})");
+    const auto result = run_clrender("plane.json --explain-pixel 21,14", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const std::string& text = result.output;
+
+    const Vec3 eye{0, 0, 6};
+    const Vec3 d = lecture_ray_direction(eye, {0, 0, 0}, {0, 1, 0}, 60, 40, 30, 21, 14);
+    const Vec3 n{0, 0, 1};  // the plane's unit normal, facing the eye
+    const double t = dot(Vec3{0, 0, -1} - eye, n) / dot(d, n);
+    const Vec3 p = eye + d * t;
+    EXPECT_NE(text.find("plane 0 (P0 = (0, 0, -1), n = (0, 0, 1))"), std::string::npos) << text;
+    EXPECT_NEAR(number_after(text, "t = ((P0 - o).n) / (d.n) = "), t, kClose);
+    const Vec3 l = normalize(Vec3{1, 2, 9} - p);
+    const Vec3 h = normalize(l - d);
+    const double cosine = dot(n, l), highlight = std::pow(dot(n, h), 5);
+    EXPECT_NEAR(number_after(text, "light 0 at (1, 2, 9), colour (0.8, 0.6, 0.4): n.l = "), cosine, kClose);
+    EXPECT_NEAR(number_after(text, "max(0, n.h)^p = "), highlight, kClose);
+    // L = k_a + I (k_d n.l + k_s max(0, n.h)^p), channel by channel.
+    const Vec3 colour{0.1 + 0.8 * (0.5 * cosine + 0.3 * highlight), 0.2 + 0.6 * (0.25 * cosine + 0.3 * highlight),
+                      0.05 + 0.4 * (0.75 * cosine + 0.3 * highlight)};
+    const auto byte = [](double c) { return std::to_string(static_cast<int>(std::floor(std::min(1.0, c) * 255 + 0.5))); };
+    EXPECT_EQ(bytes_after(text, "bytes the reference writes"), byte(colour.x) + " " + byte(colour.y) + " " + byte(colour.z))
+        << text;
+    EXPECT_NE(text.find("colour = ambient + sum over the lights counted of I (k_d n.l + k_s max(0, n.h)^p)"),
+              std::string::npos)
+        << text;
+}
+
 }  // namespace
 }  // namespace clr

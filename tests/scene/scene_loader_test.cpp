@@ -747,17 +747,6 @@ TEST(SceneLoader, UnsupportedCourseKeysAreWarnedNotErrors) {
     EXPECT_TRUE(has_warning(scene, "/far: far clipping plane is not supported")) << all_warnings(scene);
 }
 
-TEST(SceneLoader, OlderFormatKeysAreRecognised) {
-    Json json = minimal_scene();
-    json["surfaces"] = Json::array({sphere()});
-    json["lights"] = Json::array();
-    const Scene scene = parse(json);
-    EXPECT_TRUE(has_warning(scene, "/surfaces: unknown key (ignored); this looks like the older (fall 2019)"))
-        << all_warnings(scene);
-    EXPECT_TRUE(has_warning(scene, "/lights: unknown key (ignored); this looks like the older")) << all_warnings(scene);
-    EXPECT_TRUE(scene.spheres.empty());
-}
-
 TEST(SceneLoader, ExtensionsDefaultToTheCoursesAnimation) {
     const Scene scene = parse(minimal_scene());
     EXPECT_EQ(scene.animation.frames_per_segment, 10);
@@ -1011,17 +1000,6 @@ TEST(SceneLoader, LoadsTheSpring2025WebglScene) {
     EXPECT_EQ(scene.triangles.size(), 12u);
     EXPECT_EQ(scene.triangles[0].corners[0], Vec3(1.5, -0.5, 7.5)) << "the cube's corner, placed at [2, 0, 8]";
     EXPECT_EQ(scene.warnings.size(), 3u) << all_warnings(scene);
-}
-
-TEST(SceneLoader, WarnsThatFall2019ScenesAreTheOlderFormat) {
-    if (!fs::is_directory(kCourseScenes)) GTEST_SKIP() << "no course scenes at " << kCourseScenes;
-    for (const auto& entry : fs::directory_iterator(kCourseScenes / "fall2019-a04")) {
-        SCOPED_TRACE(entry.path().string());
-        const Scene scene = load_scene(entry.path().string());
-        EXPECT_TRUE(scene.spheres.empty());
-        EXPECT_TRUE(has_warning(scene, "/surfaces: unknown key (ignored); this looks like the older"))
-            << all_warnings(scene);
-    }
 }
 
 }  // namespace

@@ -1,0 +1,19 @@
+// The fall 2019 format (docs/scene-format.md, The fall 2019 format): `surfaces` (spheres and
+// planes with Blinn-Phong materials) and `lights` (point lights). Read into the same scene
+// model as the course's later formats: spheres join Scene::spheres, planes Scene::planes.
+#pragma once
+
+#include "scene/json_reader.h"
+#include "scene/scene.h"
+
+namespace clr {
+
+// Most point lights a scene may have: each costs a shadow ray per lit pixel, and a
+// thousand-light scene is a mistake that would render for hours rather than an intent.
+constexpr std::size_t kMaxLights = 256;
+
+// Reads `surfaces` and `lights` when the file has them. `lights` and `SunLocation` are two
+// lighting models: a scene with both is refused (at /lights).
+void read_surfaces_and_lights(ObjectReader& file, Scene& scene);
+
+}  // namespace clr
