@@ -20,6 +20,18 @@ Ray camera_ray_through(ClrCamera camera, int col, int row, float ox, float oy)
     return ray;
 }
 
+#if CLR_FEATURE_CLIP
+/* The part of the primary ray along `direction` that the clip depths keep (docs/scene-format.md,
+ * Near and far clipping): depths along the view direction from camera.eye.w to
+ * camera.forward.w, as distances t_start < t < t_end along the unit direction. */
+void clip_segment(ClrCamera camera, real3 direction, real* t_start, real* t_end)
+{
+    real depth_per_t = dot3(direction, convert_real3(camera.forward.xyz));
+    *t_start = (real)camera.eye.w / depth_per_t;
+    *t_end = (real)camera.forward.w / depth_per_t;
+}
+#endif
+
 /* The float form of a ray, for buffers. */
 ClrRay device_ray(Ray ray)
 {

@@ -7,6 +7,7 @@
 #include "common/math.cl"
 #include "common/scene_params.cl"
 #include "intersect.cl"
+#include "raygen.cl"
 #include "shade.cl"
 #include "shared/clr_types.h"
 
@@ -34,6 +35,21 @@ float3 trace_path(real3 origin, real3 direction, Hit hit, CLR_SCENE_PARAMS)
         hit = intersect_scene(origin, direction, INFINITY, result.leaving_kind, result.leaving_index, CLR_SCENE_ARGS);
     }
 }
+
+#if CLR_FEATURE_CLIP
+/* The nearest hit of a primary ray among the depths the camera keeps: the search starts on the
+ * near plane, at eye + t_start d, and ends at the far one; the hit's t is the eye's again. */
+Hit nearest_in_view(ClrCamera camera, Ray ray, CLR_SCENE_PARAMS)
+{
+    real t_start, t_end;
+    clip_segment(camera, ray.direction, &t_start, &t_end);
+    Hit hit = intersect_scene(ray.origin + t_start * ray.direction, ray.direction, t_end - t_start, CLR_HIT_NONE, -1,
+                              CLR_SCENE_ARGS);
+    if (hit.kind != CLR_HIT_NONE)
+        hit.t += t_start;
+    return hit;
+}
+#endif
 
 uchar4 display_pixel(float3 color)
 {

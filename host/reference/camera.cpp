@@ -37,7 +37,10 @@ CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, dou
 }
 
 CameraFrame camera_of(const Scene& scene, const CameraKey& key) {
-    return make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
+    CameraFrame camera = make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
+    camera.clip_near = scene.clip_near;
+    camera.clip_far = scene.clip_far;
+    return camera;
 }
 
 Ray primary_ray(const CameraFrame& camera, int col, int row) { return primary_ray_through(camera, col, row, 0.5, 0.5); }
@@ -50,7 +53,14 @@ Vec3 witness_direction(const CameraFrame& camera, int col, int row, double ox, d
 }
 
 Ray primary_ray_through(const CameraFrame& camera, int col, int row, double ox, double oy) {
-    return {camera.eye, normalize(witness_direction(camera, col, row, ox, oy))};
+    Ray ray{camera.eye, normalize(witness_direction(camera, col, row, ox, oy))};
+    // A point at distance t along the ray lies at depth t (d . -w) along the view direction.
+    if (camera.clip_near > 0 || camera.clip_far < kInfinity) {
+        const double depth_per_t = -dot(ray.direction, camera.w);
+        ray.t_start = camera.clip_near / depth_per_t;
+        ray.t_end = camera.clip_far / depth_per_t;
+    }
+    return ray;
 }
 
 }  // namespace clr::reference

@@ -22,6 +22,34 @@ double depth_margin(std::vector<double> hit_ts) {
 }  // namespace
 
 namespace detail {
+double ray_margin(const Scene& scene, const Ray& ray, double t_max, SurfaceId leaving, bool depth_order_matters);
+}  // namespace detail
+
+namespace {
+
+// The primary ray's margin over the part of it that the clip depths keep.
+double primary_margin(const Scene& scene, const Ray& ray) {
+    if (ray.t_start == 0) return detail::ray_margin(scene, ray, ray.t_end, {}, true);
+    const Ray kept{ray.origin + ray.direction * ray.t_start, ray.direction};
+    return detail::ray_margin(scene, kept, ray.t_end - ray.t_start, {}, true);
+}
+
+// A hit of the whole ray close to the near or the far clip depth is kept or cut by rounding:
+// the relative distance of every hit from the two ends of the kept part.
+double clip_margin(const Scene& scene, const Ray& ray) {
+    std::vector<double> hit_ts;
+    for_each_kind([&](auto kind) { decltype(kind)::reference_margin(scene, ray, kInfinity, {}, hit_ts); });
+    double margin = kInfinity;
+    for (double t : hit_ts) {
+        margin = std::min(margin, std::abs(t - ray.t_start) / t);
+        if (ray.t_end < kInfinity) margin = std::min(margin, std::abs(t - ray.t_end) / t);
+    }
+    return margin;
+}
+
+}  // namespace
+
+namespace detail {
 
 double ray_margin(const Scene& scene, const Ray& ray, double t_max, SurfaceId leaving, bool depth_order_matters) {
     double margin = kInfinity;
@@ -43,9 +71,11 @@ double decision_margin(const Scene& scene, const Ray& ray) {
     double margin = kInfinity;
     Ray current = ray;
     SurfaceId leaving;
+    if (ray.t_start > 0 || ray.t_end < kInfinity) margin = clip_margin(scene, ray);
     for (int reflections = 0;; ++reflections) {
-        margin = std::min(margin, detail::ray_margin(scene, current, kInfinity, leaving, true));
-        const Hit hit = intersect(scene, current, kInfinity, leaving);
+        margin = std::min(margin, reflections == 0 ? primary_margin(scene, current)
+                                                   : detail::ray_margin(scene, current, kInfinity, leaving, true));
+        const Hit hit = reflections == 0 ? intersect_in_view(scene, current) : intersect(scene, current, kInfinity, leaving);
         if (hit.kind == HitKind::None) return margin;
         const detail::SurfacePoint surface = detail::surface_at(scene, current, hit);
 

@@ -35,7 +35,7 @@ Color pixel_color(const Scene& scene, const CameraFrame& camera, unsigned frame_
         double ox = clr_sample_offset_x(frame_seed, col, row, sample, samples);
         double oy = clr_sample_offset_y(frame_seed, col, row, sample, samples);
         const Ray ray = primary_ray_through(camera, col, row, ox, oy);
-        if (coverage && intersect(scene, ray).kind != HitKind::None) ++hits;
+        if (coverage && intersect_in_view(scene, ray).kind != HitKind::None) ++hits;
         if (!observer) {
             sum = sum + trace(scene, ray);
             continue;

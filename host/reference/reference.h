@@ -20,6 +20,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 struct Ray {
     Vec3 origin;
     Vec3 direction;  // unit length
+    // The part of a primary ray that the camera's clip depths keep (docs/scene-format.md, Near
+    // and far clipping): trace() looks for its first hit with t_start < t < t_end only.
+    double t_start = 0;
+    double t_end = kInfinity;
 };
 
 // The camera of one frame (docs/scene-format.md, Conventions: Camera).
@@ -29,6 +33,8 @@ struct CameraFrame {
     double half_width;   // half the image plane's extent along u, at distance 1
     double half_height;  // half the extent along v
     int width = 0, height = 0;
+    double clip_near = 0;          // primary rays see depths along -w from clip_near ...
+    double clip_far = kInfinity;   // ... to clip_far (Scene::clip_near, clip_far)
 };
 
 CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, double fov_degrees, int width,
@@ -76,6 +82,9 @@ struct SurfaceId {
 Hit intersect(const Scene& scene, const Ray& ray, double t_max = kInfinity, SurfaceId leaving = {});
 // The same search, telling `observer` (when not null) each surface tested (trace_observer.h).
 Hit intersect(const Scene& scene, const Ray& ray, double t_max, SurfaceId leaving, TraceObserver* observer);
+// The nearest hit of a primary ray within its kept part (t_start, t_end): the search starts at
+// origin + t_start direction; the hit's t is from the origin again.
+Hit intersect_in_view(const Scene& scene, const Ray& ray, TraceObserver* observer = nullptr);
 
 // How close `ray` passes to a place where intersect()'s answer changes: a sphere's
 // silhouette, a billboard's edge, the edge of a texel, or two surfaces at nearly the same

@@ -116,7 +116,9 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
     for (int reflections = 0;; ++reflections) {
         if (observer)
             observer->ray_cast(reflections == 0 ? RayRole::Primary : RayRole::Reflected, reflections, current, kInfinity);
-        const Hit hit = intersect(scene, current, kInfinity, leaving, observer);
+        // The primary ray sees only the depths the camera's clip distances keep.
+        const Hit hit = reflections == 0 ? intersect_in_view(scene, current, observer)
+                                         : intersect(scene, current, kInfinity, leaving, observer);
         if (hit.kind == HitKind::None)
             return sum + times(weight, found(observer, ColourSource::Background, scene.background));
         const SurfacePoint surface = detail::surface_at(scene, current, hit);

@@ -10,7 +10,7 @@ namespace clr {
 FeatureSet FeatureSet::all() {
     FeatureSet features;
     features.spheres = features.billboards = features.triangles = features.planes = features.textures = true;
-    features.lights = true;
+    features.lights = features.clip = true;
     features.alpha = features.sun = features.mirrors = true;
     features.bvh = true;
     return features;
@@ -23,6 +23,7 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     features.triangles = !scene.triangles.empty();
     features.planes = !scene.planes.empty();
     features.lights = scene.lit_by_lights() && has_lit_objects(scene);
+    features.clip = scene.clips();
     features.sun = scene.lit() && has_lit_objects(scene);  // the kinds the sun lights (kinds/kinds.h)
     for (const Sphere& sphere : scene.spheres) features.mirrors |= sphere.is_mirror;
     for (const Mesh& mesh : scene.meshes) features.mirrors |= mesh.is_mirror && mesh.triangle_count > 0;
@@ -49,7 +50,7 @@ std::string FeatureSet::build_options() const {
     // std::map keeps the macros sorted by name.
     const std::map<std::string, bool> macros = {
         {"CLR_FEATURE_ALPHA", alpha},         {"CLR_FEATURE_BILLBOARDS", billboards},
-        {"CLR_FEATURE_BVH", bvh},             {"CLR_FEATURE_DOUBLE", double_precision},
+        {"CLR_FEATURE_BVH", bvh},             {"CLR_FEATURE_CLIP", clip},             {"CLR_FEATURE_DOUBLE", double_precision},
         {"CLR_FEATURE_FLOAT_OUTPUT", float_output},
         {"CLR_FEATURE_LIGHTS", lights},       {"CLR_FEATURE_MIRRORS", mirrors},
         {"CLR_FEATURE_PLANES", planes},       {"CLR_FEATURE_SPHERES", spheres},

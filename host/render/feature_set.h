@@ -18,6 +18,7 @@ struct FeatureSet {
     bool triangles = false;    // at least one mesh triangle
     bool planes = false;       // at least one plane (unbounded: outside the BVH and the tiles)
     bool lights = false;       // Blinn-Phong point lights (the fall 2019 format), with shadow rays
+    bool clip = false;         // near/far clip depths for primary rays (the 2025 WebGL scenes)
     bool textures = false;     // a billboard shows an image
     bool alpha = false;        // a shown image has a texel with alpha below 255
     bool sun = false;          // sun lighting with shadow rays

@@ -16,8 +16,9 @@ Vec3 rounded_to_float(const Vec3& v) { return {rounded_to_float(v.x), rounded_to
 
 ClrCamera FrameCamera::device() const {
     ClrCamera camera{};
-    camera.eye = to_float4(eye);
-    camera.forward = to_float4(forward);
+    // The w components, unused by the positions, carry the clip depths (ClrCamera).
+    camera.eye = to_float4(eye, static_cast<float>(clip_near));
+    camera.forward = to_float4(forward, static_cast<float>(clip_far));
     camera.right = to_float4(right);
     camera.up = to_float4(up);
     camera.width = width;
@@ -59,6 +60,8 @@ FrameCamera frame_camera(const Scene& scene, const CameraKey& key, int frame) {
         make_frame_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height, key.eye);
     camera.samples = scene.sampling.samples_per_pixel;
     camera.frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
+    camera.clip_near = scene.clip_near;
+    camera.clip_far = scene.clip_far;
     return camera;
 }
 

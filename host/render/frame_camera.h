@@ -3,6 +3,8 @@
 // exactly the float rays the kernels trace (docs/scene-format.md, Conventions: Camera).
 #pragma once
 
+#include <limits>
+
 #include "core/vec3.h"
 #include "scene/scene.h"
 #include "shared/clr_types.h"
@@ -23,6 +25,9 @@ struct FrameCamera {
     int height = 0;
     int samples = 1;          // 1: the pixel centre
     unsigned frame_seed = 0;  // with `samples` > 1, fixes the sample pattern (clr_samples.h)
+    // The depths along `forward` that primary rays see (Scene::clip_near, clip_far).
+    double clip_near = 0;
+    double clip_far = std::numeric_limits<double>::infinity();
 
     Vec3 eye_in_scene() const { return eye + origin; }
     ClrCamera device() const;  // the kernels' form: the same values as floats, exactly

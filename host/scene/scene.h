@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -166,6 +167,11 @@ struct Scene {
     bool has_sun = false;
     Vec3 sun_location;
     int max_depth = 5;
+    // Primary rays see depths along the view direction from clip_near to clip_far (`near`,
+    // `far`): 0 and infinity see everything.
+    double clip_near = 0;
+    double clip_far = std::numeric_limits<double>::infinity();
+    bool clips() const { return clip_near > 0 || clip_far < std::numeric_limits<double>::infinity(); }
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;         // "surfaces" of type "plane"

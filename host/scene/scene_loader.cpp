@@ -475,11 +475,22 @@ void load_scene_images(Scene& scene, const PendingBillboardImages& billboards, I
 
 // --------------------------------------------------------------------------------------
 
-// Keys of related formats that clrender recognises but does not render: each gets a
-// warning that says so, rather than the generic unknown-key one.
-void note_unsupported_keys(ObjectReader& file) {
-    file.note_ignored("near", "near clipping plane is not supported (ignored)");
-    file.note_ignored("far", "far clipping plane is not supported (ignored)");
+// The 2025 WebGL scenes' clip distances: primary rays see only depths from `near` to `far`
+// along the view direction (docs/scene-format.md, Near and far clipping).
+void read_clip_distances(ObjectReader& file, Scene& scene) {
+    const auto near = file.optional("near");
+    const auto far = file.optional("far");
+    if (near) {
+        scene.clip_near = near->number();
+        if (scene.clip_near < 0 || scene.clip_near > kMaxLength)
+            near->fail("near must be from 0 to " + number_text(kMaxLength) + ", got " + number_text(scene.clip_near));
+    }
+    if (far) {
+        scene.clip_far = far->number();
+        if (!(scene.clip_far > scene.clip_near) || scene.clip_far > kMaxLength)
+            far->fail("far must be greater than near (" + number_text(scene.clip_near) + ") and at most " +
+                      number_text(kMaxLength) + ", got " + number_text(scene.clip_far));
+    }
 }
 
 Interpolation read_interpolation(const Node& node) {
@@ -599,7 +610,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
         scene.sampling.samples_per_pixel = *options.samples_override;
     }
     if (options.seed_override) scene.sampling.seed = *options.seed_override;
-    note_unsupported_keys(file);
+    read_clip_distances(file, scene);
     file.warn_about_unknown_keys();
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
     if (!options.count_frames_only) {

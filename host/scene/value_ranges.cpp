@@ -21,7 +21,14 @@ std::string number_text(double value) {
     std::string exponent = shown.substr(e + 1);
     const bool negative = exponent[0] == '-';
     exponent.erase(0, exponent.find_first_not_of("+-0"));
-    return shown.substr(0, e + 1) + (negative ? "-" : "") + (exponent.empty() ? "0" : exponent);
+    shown = shown.substr(0, e + 1) + (negative ? "-" : "") + (exponent.empty() ? "0" : exponent);
+    // A whole number that is no longer written out ("30", "100") reads better than "3e1".
+    if (std::fabs(value) < 1e15 && value == std::floor(value)) {
+        char whole[32];
+        std::snprintf(whole, sizeof whole, "%.0f", value);
+        if (std::string(whole).size() <= shown.size()) return whole;
+    }
+    return shown;
 }
 
 std::string position_range_text() {

@@ -11,11 +11,13 @@
 #include "common/math.cl"
 #include "common/scene_items.cl"
 #include "common/scene_params.cl"
+#include "intersect.cl"
 #include "kinds/kinds.cl"
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
 #include "packet/texels16.cl"
+#include "raygen.cl"
 #include "shared/clr_types.h"
 
 /* The 16 lanes' column offsets within the packet. */
@@ -119,5 +121,50 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
     take_texel_colors16(best_texel, texels, colors);
 #endif
 }
+
+#if CLR_FEATURE_CLIP
+/* intersect_tile16() for rays that see only the depths the camera keeps (clip_segment()):
+ * each lane searches the tile's objects and the planes from its own point on the near plane,
+ * up to the far one, as nearest_in_view() does with every object; hits' t are the eye's. */
+CLR_PACKET_INLINE void clipped_hits16(ClrCamera camera, real3 eye, Directions16 d, int row, TileItems tile,
+                                      Hits16* best, CLR_SCENE_PARAMS)
+{
+    real xs[16], ys[16], zs[16], ts[16];
+    int kinds[16], indices[16];
+    vstore16(d.x, 0, xs);
+    vstore16(d.y, 0, ys);
+    vstore16(d.z, 0, zs);
+    for (int lane = 0; lane < 16; ++lane) {
+        real3 direction = (real3)(xs[lane], ys[lane], zs[lane]);
+        real t_start, t_end;
+        clip_segment(camera, direction, &t_start, &t_end);
+        real3 origin = eye + t_start * direction;
+        Hit hit;
+        hit.t = t_end - t_start;
+        hit.kind = CLR_HIT_NONE;
+        hit.index = -1;
+        for (uint k = tile.first; k < tile.end; ++k) {
+            uint rows = tile.rows[k];
+            if ((uint)row < (rows >> 16) || (uint)row > (rows & 0xffffu))
+                continue;
+            int kind = item_kind(tile.items[k]);
+            int index = item_index(tile.items[k]);
+            real t = kind_hit_distance(kind, index, origin, direction, INFINITY, CLR_SCENE_ARGS);
+            if (hit_beats(t, kind, index, hit)) {
+                hit.t = t;
+                hit.kind = kind;
+                hit.index = index;
+            }
+        }
+        nearest_plane(origin, direction, CLR_HIT_NONE, -1, &hit, CLR_SCENE_ARGS);
+        ts[lane] = hit.kind == CLR_HIT_NONE ? INFINITY : hit.t + t_start;
+        kinds[lane] = hit.kind;
+        indices[lane] = hit.index;
+    }
+    best->t = vload16(0, ts);
+    best->kind = vload16(0, kinds);
+    best->index = vload16(0, indices);
+}
+#endif
 
 #endif /* CLR_PACKET_INTERSECT_PACKET_CL */

@@ -158,9 +158,15 @@ CLR_PACKET_INLINE Colors16 sample_sums16(ClrCamera camera, real3 eye, int col0, 
         sample_offsets16(camera, col0, row, sample, &ox, &oy);
         Directions16 d = camera_rays16(camera, col0, row, ox, oy);
         Hits16 hits;
+#if CLR_FEATURE_CLIP
+        /* Clipped rays start on the near plane, each at its own point: lane by lane. */
+        clipped_hits16(camera, eye, d, row, tile, &hits, CLR_SCENE_ARGS);
+        Colors16 colors = traced_colors16(eye, d, hits, 0, CLR_SCENE_ARGS);
+#else
         Colors16 flat;
         intersect_tile16(eye, d, row, tile, CLR_SCENE_ARGS, &hits, &flat);
         Colors16 colors = shaded_colors16(eye, d, hits, flat, CLR_SCENE_ARGS);
+#endif
         sums.r += colors.r;
         sums.g += colors.g;
         sums.b += colors.b;

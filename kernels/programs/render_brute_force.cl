@@ -35,7 +35,11 @@ __kernel __attribute__((vec_type_hint(float4))) void render(ClrCamera camera, in
         float ox = clr_sample_offset_x(camera.frame_seed, col, row, sample, camera.samples);
         float oy = clr_sample_offset_y(camera.frame_seed, col, row, sample, camera.samples);
         Ray ray = camera_ray_through(camera, col, row, ox, oy);
+#if CLR_FEATURE_CLIP
+        Hit hit = nearest_in_view(camera, ray, CLR_SCENE_ARGS);
+#else
         Hit hit = intersect_scene(ray.origin, ray.direction, INFINITY, CLR_HIT_NONE, -1, CLR_SCENE_ARGS);
+#endif
         sum += trace_path(ray.origin, ray.direction, hit, CLR_SCENE_ARGS);
 #if CLR_FEATURE_FLOAT_OUTPUT
         hit_count += hit.kind != CLR_HIT_NONE ? 1.0f : 0.0f;

@@ -64,8 +64,9 @@ constexpr int kClrTileSize = CLR_TILE_SIZE;
  * the point (col + ox, row + oy) of pixel (col, row) (the centre: ox = oy = 0.5) is
  *   forward + (2(col+ox)/width - 1) * right + (1 - 2(row+oy)/height) * up. */
 typedef struct {
-    clr_float4 eye;     /* xyz = eye position; w unused */
-    clr_float4 forward; /* xyz = -w, the unit view direction (image plane at distance 1) */
+    clr_float4 eye;     /* xyz = eye position; w = the near clip depth (0: none, CLR_FEATURE_CLIP) */
+    clr_float4 forward; /* xyz = -w, the unit view direction (image plane at distance 1); w = the
+                           far clip depth (+inf: none) */
     clr_float4 right;   /* xyz = halfW * u: from the plane's centre to its right edge */
     clr_float4 up;      /* xyz = halfH * v: from the plane's centre to its top edge */
     clr_int width;       /* image width in pixels */

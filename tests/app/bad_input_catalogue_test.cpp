@@ -384,6 +384,9 @@ std::vector<BadInput> catalogue() {
                   {"bad.json: /lights: 'lights' (point lights with Blinn-Phong materials) and 'SunLocation' are two lighting models"}),
         bad_scene("LightWithoutColour", scene_with(R"("lights": [{"position": [0, 9, 0]}])"),
                   {"bad.json: /lights/0: light is missing required key 'color'"}),
+        bad_scene("NegativeNear", scene_with(R"("near": -1, "far": 20)"), {"bad.json: /near: near must be from 0 to 1e16, got -1"}),
+        bad_scene("FarNotBeyondNear", scene_with(R"("near": 30, "far": 20)"),
+                  {"bad.json: /far: far must be greater than near (30) and at most 1e16, got 20"}),
         bad_scene("TooManyLights", scene_with(R"("lights": [)" + many_lights(257) + "]"),
                   {"bad.json: /lights: a scene may have at most 256 lights, this one has 257"}),
         bad_image("PngDimensionsOverTheLimit", "huge.png", testing::png_header_only(100000, 100000, 8),
@@ -831,6 +834,8 @@ const std::set<std::string> kBeyondTheSchema = {
     "ImpostorNamesAnUnknownViewSet",
     // files the scene names
     "MissingImage", "ImpostorViewImageMissing", "MissingObj",
+    // one key's value against another's
+    "FarNotBeyondNear",
     // the size, which --size may give instead of the scene: the schema cannot see the command line
     "MissingWidth", "MissingHeight",
 };

@@ -106,15 +106,15 @@ TEST(SceneOverridesCli, SeedChangesTheSamplePatternAsClrenderSeedDoes) {
 
 TEST(SceneOverridesCli, StrictTurnsWarningsIntoOneErrorAndWritesNothing) {
     TempFolder folder;
-    // Clip distances of the 2025 WebGL scenes, which clrender does not apply: two warnings.
+    // Two keys that clrender does not know: two warnings.
     folder.write("old.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
-                                 "width": 8, "height": 6, "near": 0.1, "far": 100})");
+                                 "width": 8, "height": 6, "shadows": 1, "antialias": 4})");
     const auto lenient = run_clrender("old.json -q --reference -o lenient.png", folder.path());
     EXPECT_EQ(lenient.exit_code, 0) << lenient.output;
     const auto strict = run_clrender("old.json -q --reference --strict -o strict.png", folder.path());
     EXPECT_EQ(strict.exit_code, 2) << strict.output;
-    EXPECT_EQ(count_of(strict.output, "clrender: warning: old.json: /near: near clipping plane"), 1) << strict.output;
-    EXPECT_EQ(count_of(strict.output, "clrender: warning: old.json: /far: far clipping plane"), 1) << strict.output;
+    EXPECT_EQ(count_of(strict.output, "clrender: warning: old.json: /shadows: unknown key"), 1) << strict.output;
+    EXPECT_EQ(count_of(strict.output, "clrender: warning: old.json: /antialias: unknown key"), 1) << strict.output;
     EXPECT_EQ(count_of(strict.output, "clrender: error: "), 1) << strict.output;
     EXPECT_NE(strict.output.find("clrender: error: old.json: 2 warnings (above), and --strict makes warnings errors"),
               std::string::npos)

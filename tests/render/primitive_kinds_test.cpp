@@ -20,12 +20,17 @@ bool inside(const Box3& box, const Vec3& p) {
 TEST(PrimitiveKinds, ListedInHitOrderEachOnce) {
     std::vector<int> hits;
     for_each_kind([&](auto kind) { hits.push_back(decltype(kind)::kHit); });
-    EXPECT_EQ(hits, (std::vector<int>{CLR_HIT_SPHERE, CLR_HIT_BILLBOARD, CLR_HIT_TRIANGLE}));
+    EXPECT_EQ(hits, (std::vector<int>{CLR_HIT_SPHERE, CLR_HIT_BILLBOARD, CLR_HIT_TRIANGLE, CLR_HIT_PLANE}));
+    // The BVH and the screen tiles hold the bounded kinds only: planes are tested apart.
+    std::vector<int> bounded;
+    for_each_bounded_kind([&](auto kind) { bounded.push_back(decltype(kind)::kHit); });
+    EXPECT_EQ(bounded, (std::vector<int>{CLR_HIT_SPHERE, CLR_HIT_BILLBOARD, CLR_HIT_TRIANGLE}));
 }
 
 TEST(PrimitiveKinds, SpheresAndMeshesAreLitBillboardsAreNot) {
     EXPECT_TRUE(kind_is_lit(CLR_HIT_SPHERE));
     EXPECT_TRUE(kind_is_lit(CLR_HIT_TRIANGLE));
+    EXPECT_TRUE(kind_is_lit(CLR_HIT_PLANE));
     EXPECT_FALSE(kind_is_lit(CLR_HIT_BILLBOARD));
     EXPECT_FALSE(kind_is_lit(CLR_HIT_NONE));
 

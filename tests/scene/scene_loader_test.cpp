@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -737,14 +738,27 @@ TEST(SceneLoader, UnknownKeyWarningSuggestsTheKeyMeant) {
     EXPECT_FALSE(scene.has_sun);
 }
 
-TEST(SceneLoader, UnsupportedCourseKeysAreWarnedNotErrors) {
+TEST(SceneLoader, NearAndFarAreClipDepths) {
     Json json = minimal_scene();
+    EXPECT_FALSE(parse(json).clips()) << "by default everything is seen";
     json["near"] = 3;
     json["far"] = 20;
-    const Scene scene = parse(json);
-    EXPECT_EQ(scene.warnings.size(), 2u) << all_warnings(scene);
-    EXPECT_TRUE(has_warning(scene, "/near: near clipping plane is not supported")) << all_warnings(scene);
-    EXPECT_TRUE(has_warning(scene, "/far: far clipping plane is not supported")) << all_warnings(scene);
+    Scene scene = parse(json);
+    EXPECT_TRUE(scene.warnings.empty()) << all_warnings(scene);
+    EXPECT_EQ(scene.clip_near, 3);
+    EXPECT_EQ(scene.clip_far, 20);
+    json.erase("far");
+    scene = parse(json);
+    EXPECT_EQ(scene.clip_far, std::numeric_limits<double>::infinity()) << "near alone";
+    json["near"] = -1;
+    EXPECT_TRUE(FailsAt(json, "/near", "near must be from 0 to 1e16, got -1"));
+    json["near"] = 5;
+    json["far"] = 5;
+    EXPECT_TRUE(FailsAt(json, "/far", "far must be greater than near (5) and at most 1e16, got 5"));
+    json["far"] = 1e300;
+    EXPECT_TRUE(FailsAt(json, "/far", "got 1e300"));
+    json["far"] = "20";
+    EXPECT_TRUE(FailsAt(json, "/far", "must be a number"));
 }
 
 TEST(SceneLoader, ExtensionsDefaultToTheCoursesAnimation) {
@@ -991,15 +1005,15 @@ TEST(SceneLoader, LoadsTheSpring2025WebglScene) {
     EXPECT_FALSE(scene.billboards[0].is_mirror);
     ASSERT_NE(scene.billboards[0].image, nullptr);  // f-texture.png is there
     EXPECT_TRUE(scene.billboards[1].is_mirror);
-    EXPECT_TRUE(has_warning(scene, "/near:")) << all_warnings(scene);
-    EXPECT_TRUE(has_warning(scene, "/far:")) << all_warnings(scene);
+    EXPECT_EQ(scene.clip_near, 3);
+    EXPECT_EQ(scene.clip_far, 20);
     // obj1.obj was never published: a placeholder cube stands in, as for a missing image.
     EXPECT_TRUE(has_warning(scene, "/obj/filename: cannot read OBJ")) << all_warnings(scene);
     ASSERT_EQ(scene.meshes.size(), 1u);
     EXPECT_TRUE(scene.meshes[0].placeholder);
     EXPECT_EQ(scene.triangles.size(), 12u);
     EXPECT_EQ(scene.triangles[0].corners[0], Vec3(1.5, -0.5, 7.5)) << "the cube's corner, placed at [2, 0, 8]";
-    EXPECT_EQ(scene.warnings.size(), 3u) << all_warnings(scene);
+    EXPECT_EQ(scene.warnings.size(), 1u) << all_warnings(scene);
 }
 
 }  // namespace
