@@ -29,10 +29,9 @@ Vec3 read_scale(const Node& node) {
     return scale;
 }
 
-PendingMesh read_mesh_object(const Node& node) {
-    ObjectReader fields(node, "obj");
-    if (const auto type = fields.optional("type"); type && type->string() != "obj")
-        type->fail("type must be \"obj\" here, got " + type->shown());
+}  // namespace
+
+PendingMesh read_mesh_placement(ObjectReader& fields, const Node& node) {
     const Node filename = fields.required("filename");
     if (filename.string().empty()) filename.fail("filename must not be empty");
     if (filename.string().find('\0') != std::string::npos)
@@ -42,6 +41,17 @@ PendingMesh read_mesh_object(const Node& node) {
     mesh.filename = filename.string();
     if (const auto position = fields.optional("position")) mesh.position = read_position(*position);
     if (const auto scale = fields.optional("scale")) mesh.scale = read_scale(*scale);
+    return pending;
+}
+
+namespace {
+
+PendingMesh read_mesh_object(const Node& node) {
+    ObjectReader fields(node, "obj");
+    if (const auto type = fields.optional("type"); type && type->string() != "obj")
+        type->fail("type must be \"obj\" here, got " + type->shown());
+    PendingMesh pending = read_mesh_placement(fields, node);
+    Mesh& mesh = pending.mesh;
     if (const auto ambient = fields.optional("ambient")) {
         mesh.ambient = ambient->color();
         pending.ambient_given = true;
@@ -118,6 +128,17 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
 }
 
 }  // namespace
+
+void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, const Node& node) {
+    const Vec3 area = cross(corners[1] - corners[0], corners[2] - corners[0]);
+    if (!(dot(area, area) > 0)) node.fail("triangle has no area: its vertices are collinear or repeated");
+    ObjMesh model;
+    model.positions.assign(corners.begin(), corners.end());
+    model.triangles.push_back({0, 1, 2});
+    model.triangle_normals.push_back({-1, -1, -1});
+    model.faces = 1;
+    add_mesh(scene, std::move(mesh), model, node);
+}
 
 std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
     std::vector<PendingMesh> meshes;

@@ -4,6 +4,7 @@
 // is valid (load_meshes), each into Scene::triangles in scene coordinates.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "scene/json_reader.h"
@@ -22,6 +23,14 @@ struct PendingMesh {
     Node node;  // the `obj` object, for messages about the whole mesh
     bool ambient_given = false;
 };
+
+// The keys that place a mesh's file, as an `obj` object and a fall 2019 `mesh` surface give
+// them: "filename" (required), "position", "scale". The caller reads the others.
+PendingMesh read_mesh_placement(ObjectReader& fields, const Node& node);
+
+// Adds one triangle with `corners` as a mesh of its own (a fall 2019 `triangle` surface);
+// refused at `node` when it has no area.
+void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, const Node& node);
 
 // Checks the scene's "obj" value (one object or a list of them) and its keys.
 std::vector<PendingMesh> read_mesh_objects(ObjectReader& file);

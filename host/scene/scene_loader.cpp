@@ -598,8 +598,9 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     read_lighting(file, scene);
     PendingBillboardImages billboard_images;
     read_objects(file, scene, billboard_images);
-    read_surfaces_and_lights(file, scene);
-    const std::vector<PendingMesh> meshes = read_mesh_objects(file);
+    std::vector<PendingMesh> meshes = read_surfaces_and_lights(file, scene);
+    const std::vector<PendingMesh> obj_meshes = read_mesh_objects(file);
+    meshes.insert(meshes.end(), obj_meshes.begin(), obj_meshes.end());
     ImpostorViews impostor_views;
     read_extensions(file, scene, impostor_views);
     check_animation_length(file, scene);

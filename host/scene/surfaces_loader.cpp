@@ -1,8 +1,10 @@
 #include "scene/surfaces_loader.h"
 
+#include <array>
 #include <cmath>
 #include <string>
 
+#include "scene/mesh_loader.h"
 #include "scene/obj_text_checks.h"
 #include "scene/value_ranges.h"
 
@@ -69,17 +71,44 @@ void read_plane_surface(ObjectReader& fields, Scene& scene) {
     scene.planes.push_back(plane);
 }
 
-void read_surface(const Node& node, Scene& scene) {
+// A triangle: "vertices", three positions, as a mesh of one triangle.
+void read_triangle_surface(ObjectReader& fields, Scene& scene) {
+    const Node vertices = fields.required("vertices");
+    const std::vector<Node> elements = vertices.elements();
+    if (elements.size() != 3)
+        vertices.fail("vertices must be 3 positions [[x, y, z], [x, y, z], [x, y, z]], got " +
+                      std::to_string(elements.size()));
+    std::array<Vec3, 3> corners;
+    for (int k = 0; k < 3; ++k) corners[k] = read_position(elements[k]);
+    Mesh mesh;
+    mesh.filename = "triangle";
+    mesh.material = read_material(fields, scene, mesh.ambient);
+    add_triangle(scene, mesh, corners, vertices);
+}
+
+// A mesh: an OBJ file placed as an `obj` object is ("filename", "position", "scale"), read
+// once the whole scene is valid.
+PendingMesh read_mesh_surface(ObjectReader& fields, const Node& node, Scene& scene) {
+    PendingMesh pending = read_mesh_placement(fields, node);
+    pending.mesh.material = read_material(fields, scene, pending.mesh.ambient);
+    pending.ambient_given = true;
+    return pending;
+}
+
+void read_surface(const Node& node, Scene& scene, std::vector<PendingMesh>& meshes) {
     ObjectReader fields(node, "surface");
-    const Node type = fields.required("type", "\"sphere\" or \"plane\"");
+    const Node type = fields.required("type", "\"sphere\", \"plane\", \"triangle\" or \"mesh\"");
     const std::string kind = type.string();
     if (kind == "sphere") {
         read_sphere_surface(fields, scene);
     } else if (kind == "plane") {
         read_plane_surface(fields, scene);
+    } else if (kind == "triangle") {
+        read_triangle_surface(fields, scene);
+    } else if (kind == "mesh") {
+        meshes.push_back(read_mesh_surface(fields, node, scene));
     } else {
-        type.fail("surface type must be \"sphere\" or \"plane\" (got " + type.shown() +
-                  "); a triangle mesh is an 'obj' object (docs/scene-format.md, Meshes)");
+        type.fail("surface type must be \"sphere\", \"plane\", \"triangle\" or \"mesh\" (got " + type.shown() + ")");
     }
     fields.warn_about_unknown_keys();
 }
@@ -95,9 +124,10 @@ void read_light(const Node& node, Scene& scene) {
 
 }  // namespace
 
-void read_surfaces_and_lights(ObjectReader& file, Scene& scene) {
+std::vector<PendingMesh> read_surfaces_and_lights(ObjectReader& file, Scene& scene) {
+    std::vector<PendingMesh> meshes;
     if (const auto surfaces = file.optional("surfaces")) {
-        for (const Node& surface : surfaces->elements()) read_surface(surface, scene);
+        for (const Node& surface : surfaces->elements()) read_surface(surface, scene, meshes);
     }
     if (const auto lights = file.optional("lights")) {
         const std::vector<Node> elements = lights->elements();
@@ -109,6 +139,7 @@ void read_surfaces_and_lights(ObjectReader& file, Scene& scene) {
                          "models; a scene uses one of them");
         for (const Node& light : elements) read_light(light, scene);
     }
+    return meshes;
 }
 
 }  // namespace clr

@@ -81,6 +81,19 @@ TEST(Lights, SpheresAndPlanesLitByPointLightsMatchTheReference) {
     EXPECT_NE(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(one_light).rgba);
 }
 
+// A mesh lit by the lights with its own material: a smooth ball and a floor of triangles.
+TEST(Lights, MeshesWithAMaterialAreLitAsSpheresAre) {
+    Scene scene = lit_room();
+    testing::add_mesh(scene, testing::sphere_mesh({1, 4, 4}, 1.5, 20, 10, true), {0.1, 0.05, 0.2});
+    testing::add_mesh(scene, testing::grid_mesh({-6, 0.01, 6}, {12, 0, 0}, {0, 0, -12}, 4, 4), {0.05, 0.1, 0.05});
+    scene.meshes[0].material = add_material(scene, {0.4, 0.2, 0.7}, {0.9, 0.9, 0.9}, 60);
+    scene.meshes[1].material = add_material(scene, {0.3, 0.6, 0.3}, {0, 0, 0}, 0, {0.2, 0.2, 0.2});
+    expect_matches_reference(scene, "lit meshes");
+    RendererOptions double_precision;
+    double_precision.double_precision = true;
+    expect_matches_reference(scene, "lit meshes in double", double_precision);
+}
+
 // Without lights, or with OnlyAmbient, every surface shows its ambient colour, as flat shading.
 TEST(Lights, WithoutLightsSurfacesShowTheirAmbientColour) {
     Scene scene = lit_room();

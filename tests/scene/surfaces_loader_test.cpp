@@ -11,6 +11,7 @@
 #include "scene/scene_loader.h"
 #include "scene/surfaces_loader.h"
 #include "support/scene_json.h"
+#include "support/temp_folder.h"
 
 namespace clr {
 namespace {
@@ -18,6 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using namespace testing::scene_json;
+using testing::TempFolder;
 
 const fs::path kCourseScenes = fs::path(CLRENDER_SOURCE_DIR) / ".." / "shared" / "course-scenes";
 
@@ -86,7 +88,8 @@ TEST(Fall2019Format, BadSurfacesAreRefusedAtTheirLocation) {
     EXPECT_TRUE(FailsAt(json, "/surfaces/1", "surface is missing required key 'type'"));
     json = fall2019_scene();
     json["surfaces"][1]["type"] = "cone";
-    EXPECT_TRUE(FailsAt(json, "/surfaces/1/type", "surface type must be \"sphere\" or \"plane\" (got \"cone\")"));
+    EXPECT_TRUE(FailsAt(json, "/surfaces/1/type",
+                        "surface type must be \"sphere\", \"plane\", \"triangle\" or \"mesh\" (got \"cone\")"));
     json = fall2019_scene();
     json["surfaces"][1]["normal"] = {0, 0, 0};
     EXPECT_TRUE(FailsAt(json, "/surfaces/1/normal", "normal must be a non-zero direction"));
@@ -108,6 +111,37 @@ TEST(Fall2019Format, BadSurfacesAreRefusedAtTheirLocation) {
     json = fall2019_scene();
     json["surfaces"][0].erase("ambient");
     EXPECT_TRUE(FailsAt(json, "/surfaces/0", "surface is missing required key 'ambient'"));
+}
+
+TEST(Fall2019Format, TrianglesAndMeshesAreMeshesWithTheirMaterial) {
+    TempFolder folder;
+    folder.write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    Json json = fall2019_scene();
+    json["surfaces"].push_back(Json::parse(R"({"type": "triangle", "vertices": [[0, 0, 0], [2, 0, 0], [0, 2, 0]],
+                                               "ambient": [0.1, 0.2, 0.3], "diffuse": [0.5, 0.5, 0.5]})"));
+    json["surfaces"].push_back(Json::parse(R"({"type": "mesh", "filename": "quad.obj", "position": [5, 0, 0], "scale": 2,
+                                               "ambient": [0.3, 0.2, 0.1], "specular": [1, 1, 1], "phong_exponent": 9})"));
+    const std::string path = folder.write("scene.json", json.dump());
+    const Scene scene = load_scene(path);
+    EXPECT_TRUE(scene.warnings.empty()) << all_warnings(scene);
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    ASSERT_EQ(scene.triangles.size(), 3u);
+    EXPECT_EQ(scene.meshes[0].ambient, Vec3(0.1, 0.2, 0.3));
+    EXPECT_EQ(scene.materials[scene.meshes[0].material].diffuse, Vec3(0.5, 0.5, 0.5));
+    EXPECT_EQ(scene.triangles[0].corners[1], Vec3(2, 0, 0));
+    EXPECT_EQ(scene.meshes[1].ambient, Vec3(0.3, 0.2, 0.1)) << "the surface's ambient, not the .mtl's";
+    EXPECT_EQ(scene.materials[scene.meshes[1].material].phong_exponent, 9);
+    EXPECT_EQ(scene.triangles[1].corners[1], Vec3(7, 0, 0)) << "scaled, then placed";
+
+    json = fall2019_scene();
+    json["surfaces"][0] = Json::parse(R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "ambient": [1, 1, 1]})");
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices", "triangle has no area"));
+    json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1, 0, 0]]");
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices", "vertices must be 3 positions"));
+    json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1, 0, 0], [0, 1e16, 0]]");
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices/2/1", "outside the range"));
+    json["surfaces"][0] = Json::parse(R"({"type": "mesh", "filename": "nowhere.obj", "ambient": [1, 1, 1]})");
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/filename", "cannot read OBJ"));
 }
 
 TEST(Fall2019Format, BadLightsAreRefusedAtTheirLocation) {
