@@ -85,7 +85,7 @@ std::string features_line(const Scene& scene, bool double_precision) {
         {"spheres", features.spheres}, {"billboards", features.billboards}, {"triangles", features.triangles},
         {"planes", features.planes},   {"textures", features.textures},    {"lights", features.lights},
         {"alpha", features.alpha},     {"sun", features.sun},               {"mirrors", features.mirrors},
-        {"bvh", features.bvh},         {"double", double_precision},
+        {"clip", features.clip},       {"bvh", features.bvh},               {"double", double_precision},
     };
     std::string line;
     for (const auto& [name, on] : named) {

@@ -240,6 +240,25 @@ TEST(SceneOverridesCli, CheckListsTheAlphaTestOnlyForAnImageWithTransparentTexel
     }
 }
 
+// The fall 2019 format's planes and lights, and the clip depths, in --check's summary.
+TEST(SceneOverridesCli, CheckListsPlanesLightsAndClipDepths) {
+    TempFolder folder;
+    const std::string scene = R"({"eye": [0, 2, 9], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+      "width": 8, "height": 6, "near": 1, "far": 50, "surfaces": [
+        {"type": "sphere", "center": [0, 1, 0], "radius": 1, "ambient": [0.5, 0, 0], "diffuse": [0.5, 0, 0]},
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "ambient": [0.1, 0.1, 0.1]}],
+      "lights": [{"position": [5, 5, 5], "color": [1, 1, 1]}]})";
+    folder.write("lit.json", scene);
+    const auto lit = run_clrender("lit.json --check", folder.path());
+    EXPECT_EQ(lit.exit_code, 0) << lit.output;
+    EXPECT_NE(lit.output.find("planes:     1\nlights:     1\n"), std::string::npos) << lit.output;
+    EXPECT_NE(lit.output.find("features:   spheres planes lights clip\n"), std::string::npos) << lit.output;
+    folder.write("flat.json", scene.substr(0, scene.size() - 1) + R"(, "OnlyAmbient": 1})");
+    const auto flat = run_clrender("flat.json --check", folder.path());
+    EXPECT_NE(flat.output.find("lights:     1 (off: OnlyAmbient)\n"), std::string::npos) << flat.output;
+    EXPECT_NE(flat.output.find("features:   spheres planes clip\n"), std::string::npos) << flat.output;
+}
+
 TEST(SceneOverridesCli, AMistypedOptionGetsASuggestion) {
     TempFolder folder;
     folder.write("s.json", kScene);
