@@ -107,6 +107,60 @@ Hit intersect_scene(real3 origin, real3 direction, real t_max, int skip_kind, in
 #endif
 }
 
+/* Whether a surface other than (skip_kind, skip_index) lies on the ray with 0 < t < t_max:
+ * a shadow ray's question. The answer is intersect_scene()'s (a hit or none), found at the
+ * first surface within t_max instead of the nearest, so that a shadow ray through a mesh
+ * stops at the first triangle it meets. */
+#define CLR_KIND_OCCLUDES(KIND, name, FEATURE)                                              \
+    if (FEATURE) {                                                                          \
+        for (int i = 0; i < info.name##_count; ++i) {                                       \
+            if (skip_kind == KIND && skip_index == i)                                       \
+                continue;                                                                   \
+            if (name##_hit_distance(i, origin, direction, t_max, CLR_SCENE_ARGS) < t_max)   \
+                return true;                                                                \
+        }                                                                                   \
+    }
+bool occluded(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
+{
+#if CLR_FEATURE_BVH
+    real3 inverse = safe_inverse(direction);
+    uint stack[CLR_BVH_STACK];
+    int top = 0;
+    if (info.sphere_count + info.billboard_count + info.triangle_count > 0)
+        stack[top++] = 0;
+    while (top > 0) {
+        __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
+        if (!box_reachable(node, origin, inverse, t_max))
+            continue;
+        if (node->count == 0) {
+            stack[top++] = node->first + 1;
+            stack[top++] = node->first;
+            continue;
+        }
+        for (uint k = node->first; k < node->first + node->count; ++k) {
+            int kind = item_kind(bvh_items[k]);
+            int index = item_index(bvh_items[k]);
+            if (kind == skip_kind && index == skip_index)
+                continue;
+            if (kind_hit_distance(kind, index, origin, direction, t_max, CLR_SCENE_ARGS) < t_max)
+                return true;
+        }
+    }
+#if CLR_FEATURE_PLANES
+    for (int i = 0; i < info.plane_count; ++i) {
+        if (skip_kind == CLR_HIT_PLANE && skip_index == i)
+            continue;
+        if (plane_hit_distance(i, origin, direction, t_max, CLR_SCENE_ARGS) < t_max)
+            return true;
+    }
+#endif
+    return false;
+#else
+    CLR_KINDS(CLR_KIND_OCCLUDES)
+    return false;
+#endif
+}
+
 /* The float form of a hit, for buffers. */
 ClrHit device_hit(Hit hit)
 {

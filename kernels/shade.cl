@@ -40,8 +40,7 @@ float3 phong_color(Hit hit, float3 ambient, real3 origin, real3 direction, CLR_S
         real cosine = dot3(normal, light);
         if (cosine <= 0.0f)
             continue; /* behind the surface: no shadow ray needed */
-        Hit blocker = intersect_scene(point, light, distance, hit.kind, hit.index, CLR_SCENE_ARGS);
-        if (blocker.kind != CLR_HIT_NONE)
+        if (occluded(point, light, distance, hit.kind, hit.index, CLR_SCENE_ARGS))
             continue;
         real3 half_vector = unit3(light - direction);
         real highlight = pow(fmax(dot3(normal, half_vector), (real)0.0f), (real)material.diffuse.w);
@@ -76,8 +75,8 @@ float3 surface_color(Hit hit, real3 origin, real3 direction, CLR_SCENE_PARAMS)
     real cosine = dot3(normal, light);
     if (cosine <= 0.0f)
         return (float3)(0.0f); /* facing away: no shadow ray needed */
-    Hit blocker = intersect_scene(point, light, sun_distance, hit.kind, hit.index, CLR_SCENE_ARGS);
-    return blocker.kind == CLR_HIT_NONE ? color * (float)cosine : (float3)(0.0f);
+    return occluded(point, light, sun_distance, hit.kind, hit.index, CLR_SCENE_ARGS) ? (float3)(0.0f)
+                                                                                      : color * (float)cosine;
 #else
     return color;
 #endif
