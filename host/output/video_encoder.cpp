@@ -61,6 +61,10 @@ std::string decimal(double value) {
 // a file as large and a little lower quality at the same CRF.
 constexpr const char* kX264Preset = "veryfast";
 
+// x264's options beyond ffmpeg's own (docs/animation.md, MP4 encoding): the lookahead runs on
+// the thread that hands x264 its frames, never on a thread of its own.
+constexpr const char* kX264DeterministicLookahead = "sync-lookahead=0";
+
 // MP4 frames go to ffmpeg as yuv420p, converted by clrender (output/yuv420_frame.h): ffmpeg's
 // own conversion from RGB ran on its one main thread, in series with handing the frames to
 // x264, and the pipe carries 1.5 bytes a pixel instead of 4. A GIF's palette is built from
@@ -82,6 +86,11 @@ std::vector<std::string> mp4_arguments(const VideoSettings& settings) {
         "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709", "-color_range", "tv",
         "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", std::to_string(settings.quality), "-preset", kX264Preset,
         "-threads", std::to_string(kX264Threads),
+        // No lookahead thread (x264 starts one when it has more than one thread): with it the
+        // pictures depended on how the threads happened to be scheduled (the demo flight's 96
+        // frames encoded 20 times under load gave 5 different videos, the frames differing
+        // from some frame on); without it 80 encodes gave one (docs/animation.md).
+        "-x264-params", kX264DeterministicLookahead,
         "-movflags", "+faststart",  // index first, so that a browser can start playing at once
         "-f", "mp4"};
 }
