@@ -24,7 +24,7 @@ trap 'rm -rf "$work"' EXIT
 encode_ppm=(ffmpeg -hide_banner -nostats -loglevel error -framerate 24 -i "$work/ppm/f_%04d.ppm"
   -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv,format=yuv420p'
   -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv -c:v libx264 -pix_fmt yuv420p
-  -crf 18 -preset veryfast -threads 4 -movflags +faststart -fflags +bitexact -flags:v +bitexact -f mp4 -y "$work/f.mp4")
+  -crf 18 -preset veryfast -threads 4 -x264-params sync-lookahead=0 -movflags +faststart -fflags +bitexact -flags:v +bitexact -f mp4 -y "$work/f.mp4")
 
 # measure NAME COMMAND...: one line of figures.
 measure() {

@@ -35,7 +35,8 @@ constexpr double kMinGifFps = 100.0 / 65535, kMaxGifFps = 50;
 // The threads x264 encodes an MP4 with, on every machine (docs/animation.md, MP4 encoding).
 // x264's output depends on its thread count, so a count taken from the machine would give
 // other bytes for the same frames on another machine (a farm's 1-CPU node against a desktop);
-// a constant keeps them the same everywhere. Frame threads are deterministic for a given count.
+// a constant keeps them the same everywhere. Frame threads are deterministic for a given count;
+// x264's lookahead thread is not, and is turned off (video_encoder.cpp, mp4_arguments).
 constexpr int kX264Threads = 4;
 
 // "" when a video of `format` can hold `fps` frames per second, else why not, with the range
