@@ -1,7 +1,7 @@
 // The same frames give the same MP4 bytes however the encoder's threads happen to be
 // scheduled: on one CPU (a farm's 1-CPU final job, `taskset`) and on every CPU, encode after
 // encode (docs/animation.md, MP4 encoding). x264's own lookahead thread made the bytes depend on
-// scheduling.
+// scheduling. The command itself must not depend on the machine either.
 #include <gtest/gtest.h>
 #include <sched.h>
 #include <sys/stat.h>
@@ -55,18 +55,23 @@ std::vector<std::string> lines_of(const std::string& text) {
     return lines;
 }
 
+// An encoder in `folder` that records its arguments, one a line, into `arguments_file` and
+// the frames it is sent into frames.yuv, then runs ffmpeg on them. Returns the environment
+// assignment that makes clrender use it.
+std::string recording_encoder(const TempFolder& folder, const std::string& arguments_file) {
+    folder.write("recording-ffmpeg", "#!/bin/sh\nprintf '%s\\n' \"$@\" > '" + folder.file(arguments_file) +
+                                         "'\ntee '" + folder.file("frames.yuv") + "' | exec ffmpeg \"$@\"\n");
+    ::chmod(folder.file("recording-ffmpeg").c_str(), 0755);
+    return "CLRENDER_FFMPEG=" + shell_quoted(folder.file("recording-ffmpeg"));
+}
+
 TEST(Mp4Repeatability, SameFramesGiveOneVideoOnOneCpuAndOnEvery) {
     if (!have_program("ffmpeg") || !have_program("ffprobe") || !have_program("taskset"))
         GTEST_SKIP() << "ffmpeg or taskset is not installed";
     TempFolder folder;
-    // An encoder that records its arguments, one a line, and the frames it is sent, then runs
-    // ffmpeg on them.
-    folder.write("recording-ffmpeg", "#!/bin/sh\nprintf '%s\\n' \"$@\" > '" + folder.file("arguments") +
-                                         "'\ntee '" + folder.file("frames.yuv") + "' | exec ffmpeg \"$@\"\n");
-    ::chmod(folder.file("recording-ffmpeg").c_str(), 0755);
     const std::string scene = std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/showcase.json";
     const auto result = run_clrender("'" + scene + "' -q " + kRender + " --video one.mp4", folder.path(),
-                                     "CLRENDER_FFMPEG=" + shell_quoted(folder.file("recording-ffmpeg")));
+                                     recording_encoder(folder, "arguments"));
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const std::string video = read_bytes(folder.file("one.mp4"));
     ASSERT_FALSE(video.empty());
@@ -88,6 +93,33 @@ TEST(Mp4Repeatability, SameFramesGiveOneVideoOnOneCpuAndOnEvery) {
             << "encode " << round << (one_cpu ? " on one CPU" : " on every CPU")
             << " gave other bytes than clrender's video";
     }
+}
+
+// The encoder's command line is the same whatever CPUs clrender may use: nothing in it (x264's
+// thread count, its options) is taken from the machine, which would give a farm's 1-CPU node
+// other bytes than a desktop.
+TEST(Mp4Repeatability, TheEncodersCommandIsTheSameOnOneCpu) {
+    if (!have_program("ffmpeg") || !have_program("ffprobe") || !have_program("taskset"))
+        GTEST_SKIP() << "ffmpeg or taskset is not installed";
+    TempFolder folder;
+    folder.write("anim.json", R"({
+      "eyeLocations": [[-3, 1, 8], [3, 2, 7]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 55,
+      "width": 64, "height": 48, "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0.3, 0.2]}]
+    })");
+    auto result = run_clrender("anim.json -q --video every.mp4", folder.path(), recording_encoder(folder, "every"));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    result = run_clrender("anim.json -q --video one.mp4", folder.path(),
+                          recording_encoder(folder, "one") + " taskset -c " + std::to_string(first_usable_cpu()));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    std::vector<std::string> every = lines_of(read_bytes(folder.file("every")));
+    std::vector<std::string> one = lines_of(read_bytes(folder.file("one")));
+    ASSERT_FALSE(every.empty());
+    ASSERT_FALSE(one.empty());
+    // The last is the temporary file the video is written to, another name in each run.
+    every.pop_back();
+    one.pop_back();
+    EXPECT_EQ(one, every);
+    EXPECT_NE(std::find(every.begin(), every.end(), "-threads"), every.end());
 }
 
 }  // namespace
