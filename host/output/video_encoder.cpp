@@ -86,10 +86,10 @@ std::vector<std::string> mp4_arguments(const VideoSettings& settings) {
         "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709", "-color_range", "tv",
         "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", std::to_string(settings.quality), "-preset", kX264Preset,
         "-threads", std::to_string(kX264Threads),
-        // No lookahead thread (x264 starts one when it has more than one thread): with it the
-        // pictures depended on how the threads happened to be scheduled (the demo flight's 96
-        // frames encoded 20 times under load gave 5 different videos, the frames differing
-        // from some frame on); without it 80 encodes gave one (docs/animation.md).
+        // No lookahead thread (x264 starts one when it has more than one frame thread): with it
+        // the pictures depended on how the threads happened to be scheduled (the demo flight's
+        // 96 frames encoded 20 times, on one CPU and on two, gave up to 10 different videos,
+        // differing from some frame on); without it 140 encodes gave one (docs/animation.md).
         "-x264-params", kX264DeterministicLookahead,
         "-movflags", "+faststart",  // index first, so that a browser can start playing at once
         "-f", "mp4"};
