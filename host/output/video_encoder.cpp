@@ -1,11 +1,10 @@
 // ffmpeg runs as a child process (output/child_process.h: never through a shell, in its own
-// process group). Its stdin is a non-blocking pipe carrying raw RGBA frames (read as rgb0),
-// its stdout goes to /dev/null and its stderr to a log file whose last lines explain a
-// failure. It writes into
-// a temporary file beside the final one; after ffmpeg has exited successfully, ffprobe must
-// read back exactly the frames sent (output/video_probe.h) before the file is renamed into
-// place (rename is atomic within one file system). Until then an earlier video under the
-// final name stays as it was.
+// process group). Its stdin is a non-blocking pipe carrying raw frames (yuv420p for an MP4,
+// RGBA read as rgb0 for a GIF), its stdout goes to /dev/null and its stderr to a log file
+// whose last lines explain a failure. It writes into a temporary file beside the final one;
+// after ffmpeg has exited successfully, ffprobe must read back exactly the frames sent
+// (output/video_probe.h) before the file is renamed into place (rename is atomic within one
+// file system). Until then an earlier video under the final name stays as it was.
 #include "output/video_encoder.h"
 
 #include <fcntl.h>
@@ -31,11 +30,11 @@
 
 #include "core/errors.h"
 #include "core/interruption.h"
-#include "core/usable_cpus.h"
 #include "output/file_extension.h"
 #include "output/program_lookup.h"
 #include "output/temp_files.h"
 #include "output/video_probe.h"
+#include "output/yuv420_frame.h"
 
 namespace clr {
 namespace {
@@ -57,24 +56,23 @@ std::string decimal(double value) {
     return text.str();
 }
 
-// x264's preset and threads (docs/animation.md, MP4 encoding). Preset veryfast took a third of
-// preset medium's CPU time for the forest flight, where medium's had exceeded the renderer's
-// own, for a file as large and a little lower quality at the same CRF. x264 gets half of the
-// CPUs clrender may use, at least one, instead of its automatic 1.5 threads a CPU of the whole
-// machine: the renderer keeps the others. A thread for every CPU was measured too
-// (docs/benchmarks.md, Videos at the speed of the machine) and not kept: it gave no measurable
-// gain on a busy 2-CPU machine, and a video is the same bytes only on machines where x264 has
-// as many threads (its output depends on the count), which half the CPUs keeps true between
-// the 1- and 2-CPU machines of a farm and a desktop.
+// x264's preset (docs/animation.md, MP4 encoding). Preset veryfast took a third of preset
+// medium's CPU time for the forest flight, where medium's had exceeded the renderer's own, for
+// a file as large and a little lower quality at the same CRF.
 constexpr const char* kX264Preset = "veryfast";
 
-int x264_threads() { return std::max(1, usable_cpu_count() / 2); }
+// x264's options beyond ffmpeg's own (docs/animation.md, MP4 encoding): the lookahead runs on
+// the thread that hands x264 its frames, never on a thread of its own.
+constexpr const char* kX264DeterministicLookahead = "sync-lookahead=0";
 
-// The frames go to ffmpeg as they are in memory, RGBA, read as "rgb0" (red, green, blue and a
-// byte ffmpeg ignores): no copy that drops alpha first. Its conversion to Y'CbCr (and a GIF's
-// palette) gives the same bytes as from rgb24 input, whatever the alpha bytes hold.
-constexpr const char* kFramePixelFormat = "rgb0";
-constexpr std::size_t kBytesPerPixel = 4;
+// MP4 frames go to ffmpeg as yuv420p, converted by clrender (output/yuv420_frame.h): ffmpeg's
+// own conversion from RGB ran on its one main thread, in series with handing the frames to
+// x264, and the pipe carries 1.5 bytes a pixel instead of 4. A GIF's palette is built from
+// the frames as they are in memory, RGBA read as "rgb0" (red, green, blue and a byte ffmpeg
+// ignores): it gives the same palette as rgb24 input, whatever the alpha bytes hold.
+constexpr const char* kMp4PixelFormat = "yuv420p";
+constexpr const char* kGifPixelFormat = "rgb0";
+constexpr std::size_t kGifBytesPerPixel = 4;
 
 // The pipe to ffmpeg holds up to one frame (at most 1 MiB, Linux's default limit for an
 // unprivileged process) instead of the default 64 KiB: fewer wake-ups of clrender and ffmpeg
@@ -83,13 +81,16 @@ constexpr int kLargestPipeBytes = 1 << 20;
 
 std::vector<std::string> mp4_arguments(const VideoSettings& settings) {
     return {
-        // H.264 in 4:2:0 needs even dimensions: pad odd ones by a black column or row rather
-        // than scale (which would blur every pixel). Then convert with the BT.709 matrix and
-        // say so in the stream, so that players do not guess and shift the colours.
-        "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv,format=yuv420p",
-        "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
+        // The frames are BT.709, limited range (rgba_to_yuv420): the stream says so, so that
+        // players do not guess and shift the colours.
+        "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709", "-color_range", "tv",
         "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", std::to_string(settings.quality), "-preset", kX264Preset,
-        "-threads", std::to_string(x264_threads()),
+        "-threads", std::to_string(kX264Threads),
+        // No lookahead thread (x264 starts one when it has more than one frame thread): with it
+        // the pictures depended on how the threads happened to be scheduled (the demo flight's
+        // 96 frames encoded 20 times, on one CPU and on two, gave up to 10 different videos,
+        // differing from some frame on); without it 140 encodes gave one (docs/animation.md).
+        "-x264-params", kX264DeterministicLookahead,
         "-movflags", "+faststart",  // index first, so that a browser can start playing at once
         "-f", "mp4"};
 }
@@ -109,13 +110,16 @@ std::vector<std::string> gif_arguments() {
 
 std::vector<std::string> encoder_arguments(const std::string& program, const VideoSettings& settings, VideoFormat format,
                                            const std::string& output_path) {
+    const bool mp4 = format == VideoFormat::Mp4;
+    const int width = mp4 ? even_size(settings.width) : settings.width;
+    const int height = mp4 ? even_size(settings.height) : settings.height;
     std::vector<std::string> arguments = {
         program, "-hide_banner", "-nostats", "-loglevel", "error",
-        "-f", "rawvideo", "-pix_fmt", kFramePixelFormat,
-        "-s", std::to_string(settings.width) + "x" + std::to_string(settings.height),
+        "-f", "rawvideo", "-pix_fmt", mp4 ? kMp4PixelFormat : kGifPixelFormat,
+        "-s", std::to_string(width) + "x" + std::to_string(height),
         "-r", decimal(settings.fps), "-i", "-"};
     const std::vector<std::string> output =
-        format == VideoFormat::Mp4 ? mp4_arguments(settings) : gif_arguments();
+        mp4 ? mp4_arguments(settings) : gif_arguments();
     arguments.insert(arguments.end(), output.begin(), output.end());
     // No version strings or creation times in the file: the same frames give the same bytes.
     for (const char* argument : {"-fflags", "+bitexact", "-flags:v", "+bitexact", "-y"}) arguments.push_back(argument);
@@ -197,8 +201,9 @@ Seconds probe_limit(const VideoSettings& settings, long frames, Seconds stall_ti
 }
 
 // The bytes of one frame as sent to ffmpeg.
-std::size_t frame_bytes(const VideoSettings& settings) {
-    return static_cast<std::size_t>(settings.width) * static_cast<std::size_t>(settings.height) * kBytesPerPixel;
+std::size_t frame_bytes(const VideoSettings& settings, VideoFormat format) {
+    if (format == VideoFormat::Mp4) return yuv420_bytes(settings.width, settings.height);
+    return static_cast<std::size_t>(settings.width) * static_cast<std::size_t>(settings.height) * kGifBytesPerPixel;
 }
 
 // Grows the pipe behind `fd` towards one frame (kLargestPipeBytes at most). Only an
@@ -282,7 +287,7 @@ void VideoEncoder::start() {
     // that would block returns at once, and the wait happens in poll(), where interruption
     // and the stall timeout are checked.
     ::fcntl(stdin_fd_, F_SETFL, O_NONBLOCK);
-    widen_pipe(stdin_fd_, frame_bytes(settings_));
+    widen_pipe(stdin_fd_, frame_bytes(settings_, format_));
     try {
         encoder_ = std::make_unique<ChildProcess>(encoder_arguments(program_, settings_, format_, temp_path_),
                                                   pipe_fds[0], -1, log_fd);
@@ -297,13 +302,19 @@ void VideoEncoder::start() {
 
 void VideoEncoder::add_frame(const Image& rgba) {
     if (done_) throw std::logic_error("VideoEncoder::add_frame after finish() or a failure");
-    if (rgba.width != settings_.width || rgba.height != settings_.height || rgba.rgba.size() != frame_bytes(settings_)) {
+    const std::size_t pixels = static_cast<std::size_t>(settings_.width) * static_cast<std::size_t>(settings_.height);
+    if (rgba.width != settings_.width || rgba.height != settings_.height || rgba.rgba.size() != pixels * 4) {
         throw std::invalid_argument("VideoEncoder::add_frame: a " + std::to_string(rgba.width) + "x" +
                                     std::to_string(rgba.height) + " frame for a " + std::to_string(settings_.width) +
                                     "x" + std::to_string(settings_.height) + " video");
     }
     check_stop();  // also when the encoder reads every frame at once and never makes send() wait
-    send(rgba.rgba.data(), rgba.rgba.size());
+    if (format_ == VideoFormat::Mp4) {
+        rgba_to_yuv420(rgba, converted_);  // into the buffer of the frame before: no allocation
+        send(converted_.data(), converted_.size());
+    } else {
+        send(rgba.rgba.data(), rgba.rgba.size());
+    }
     ++frames_added_;
 }
 

@@ -1,5 +1,5 @@
 // Writes an animation as a video (MP4 with H.264 in yuv420p, or an animated GIF) by running
-// the ffmpeg program and piping it the raw RGBA frames (docs/command-line.md, Outputs). The
+// the ffmpeg program and piping it the raw frames (docs/command-line.md, Outputs). The
 // video appears under its final name complete or not at all, as every output does
 // (docs/command-line.md, Failures).
 #pragma once
@@ -31,6 +31,13 @@ VideoFormat video_format_for(const std::string& path);
 // at 1e-4 while 2e-4 held: 0.001 keeps a margin of 5.
 constexpr double kMinMp4Fps = 0.001, kMaxMp4Fps = 1000;
 constexpr double kMinGifFps = 100.0 / 65535, kMaxGifFps = 50;
+
+// The threads x264 encodes an MP4 with, on every machine (docs/animation.md, MP4 encoding).
+// x264's output depends on its thread count, so a count taken from the machine would give
+// other bytes for the same frames on another machine (a farm's 1-CPU node against a desktop);
+// a constant keeps them the same everywhere. Frame threads are deterministic for a given count;
+// x264's lookahead thread is not, and is turned off (video_encoder.cpp, mp4_arguments).
+constexpr int kX264Threads = 4;
 
 // "" when a video of `format` can hold `fps` frames per second, else why not, with the range
 // it takes ("a GIF takes from 0.0015259 to 50 frames per second (...)").
@@ -71,8 +78,9 @@ public:
     VideoEncoder(const VideoEncoder&) = delete;
     VideoEncoder& operator=(const VideoEncoder&) = delete;
 
-    // Sends one frame as it is (ffmpeg ignores the alpha bytes); `rgba` can be reused once
-    // this returns. Throws std::invalid_argument unless it is exactly
+    // Sends one frame: an MP4's converted to yuv420p (output/yuv420_frame.h), a GIF's as it is
+    // (ffmpeg ignores the alpha bytes); `rgba` can be reused once this returns. Throws
+    // std::invalid_argument unless it is exactly
     // width x height, and OutputError if the encoder has stopped reading (it is then stopped
     // and its files removed; the encoder can take no more frames).
     void add_frame(const Image& rgba);
@@ -114,6 +122,7 @@ private:
     FolderEntry temp_entry_, log_entry_;
     std::unique_ptr<ChildProcess> encoder_;  // ffmpeg while it runs
     int stdin_fd_ = -1;      // write end of ffmpeg's stdin, non-blocking
+    std::vector<std::uint8_t> converted_;  // an MP4's frame as yuv420p, reused from frame to frame
     int frames_added_ = 0;
     bool done_ = false;      // finished, or failed and cleaned up
     std::atomic<bool> cancelled_{false};

@@ -28,11 +28,11 @@ namespace fs = std::filesystem;
 using testing::read_bytes;
 using testing::TempFolder;
 
-// 11 frames of 64x48 (12 KiB each as raw RGBA): together more than a pipe's 64 KiB buffer, so an
-// encoder that reads nothing blocks clrender's writes.
+// 11 frames of 128x96 (18 KiB each as the yuv420p an MP4's encoder is sent): together more than
+// a pipe's 64 KiB buffer, so an encoder that reads nothing blocks clrender's writes.
 const char* kAnimation = R"({
   "eyeLocations": [[-3, 1, 8], [3, 2, 7]], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 55,
-  "width": 64, "height": 48, "DefaultColor": [0.1, 0.1, 0.2], "SunLocation": [10, 20, 10],
+  "width": 128, "height": 96, "DefaultColor": [0.1, 0.1, 0.2], "SunLocation": [10, 20, 10],
   "spheres": [{"center": [0, 0, 0], "radius": 1.5, "ambient": [1, 0.3, 0.2]}],
   "billboards": [{"UpperLeft": [-5, 4, -4], "LowerLeft": [-5, -3, -4], "UpperRight": [5, 4, -4], "ambient": [0.2, 0.6, 0.3]}]
 })";
@@ -276,7 +276,7 @@ TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
     if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
     if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
     std::string scene = kAnimation;
-    const std::string small_size = R"("width": 64, "height": 48)";
+    const std::string small_size = R"("width": 128, "height": 96)";
     scene.replace(scene.find(small_size), small_size.size(), R"("width": 320, "height": 240)");
 
     // The video's size where space is plenty (the same frames give the same bytes).
@@ -307,10 +307,10 @@ TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
 
 // The render loop does not wait on the encoder: an encoder that reads nothing until clrender
 // reports frame 2 done (--progress json prints a line as each frame is handed over: frames 0 to
-// 2 are then rendered and handed over) sees that report, and the video then comes out whole. 640x480 frames (1.2 MB as
-// RGBA) are more than the pipe to the encoder holds, so a render loop that handed each frame to
-// the encoder itself would still be sending frame 0. (frames_done counts files in place, which
-// a video's frames are not until the video is.)
+// 2 are then rendered and handed over) sees that report, and the video then comes out whole.
+// 1280x960 frames (1.8 MB as yuv420p) are more than the pipe to the encoder holds (1 MiB), so
+// a render loop that handed each frame to the encoder itself would still be sending frame 0.
+// (frames_done counts files in place, which a video's frames are not until the video is.)
 TEST_F(EncoderFaults, RenderLoopRunsAheadOfAnEncoderThatReadsNothing) {
     if (!testing::have_program("ffmpeg") || !testing::have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
     const std::string seen = scripts.file("seen");
@@ -319,7 +319,7 @@ TEST_F(EncoderFaults, RenderLoopRunsAheadOfAnEncoderThatReadsNothing) {
         "while ! grep -q '\"frame\":2,' '" + work.file("stderr.txt") + "' && [ $i -lt 2000 ]; do sleep 0.01; i=$((i+1)); done\n"
         "grep -o '\"frame\":[0-9]*,' '" + work.file("stderr.txt") + "' | tail -1 | tr -dc 0-9 > '" + seen + "'\n"
         "exec ffmpeg \"$@\"");
-    const Outcome outcome = run(encoder_env(fake), "anim.json --progress json --size 640x480 --video anim.mp4");
+    const Outcome outcome = run(encoder_env(fake), "anim.json --progress json --size 1280x960 --video anim.mp4");
     const std::string started = read_bytes(seen);  // the last frame handed over
     EXPECT_TRUE(!started.empty() && std::stoi(started) >= 2)
         << "the last frame handed over before the encoder read its first byte: '" << started << "'";

@@ -7,7 +7,9 @@
 #include <stdlib.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <cmath>
 #include <chrono>
 #include <thread>
@@ -22,6 +24,7 @@
 #include "core/errors.h"
 #include "output/encoder_timeout.h"
 #include "output/video_probe.h"
+#include "output/yuv420_frame.h"
 #include "support/scoped_env.h"
 #include "support/temp_folder.h"
 
@@ -330,23 +333,113 @@ TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
 }
 
 // A fake encoder that copies its input to the output file (its last argument) receives every
-// byte of every frame, in order, as the frames hold them (RGBA, told so by "-pix_fmt rgb0").
+// byte of every frame, in order: a GIF's as the frames hold them (RGBA, told so by "-pix_fmt
+// rgb0"), an MP4's converted to yuv420p at the padded size (told so by "-pix_fmt yuv420p").
 TEST(VideoEncoder, SendsTheFramesAsTheyAreInMemory) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg",
                                           "echo \"$*\" > \"$0.args\"; for last; do :; done; cat >\"$last\"");
     const std::string prober = write_script(scripts, "fake-ffprobe", "echo 2");  // raw bytes are no video
     ScopedEnv checker("CLRENDER_FFPROBE", prober.c_str());
-    const std::string video = folder.file("raw.mp4");
-    encode({video, 5, 3}, fake, 2);
+    const std::string gif = folder.file("raw.gif");
+    encode({gif, 5, 3}, fake, 2);
     std::string expected;
     for (int index = 0; index < 2; ++index) {
         const Image frame = test_frame(5, 3, index);
         expected.append(reinterpret_cast<const char*>(frame.rgba.data()), frame.rgba.size());
     }
-    EXPECT_EQ(read_bytes(video), expected);
+    EXPECT_EQ(read_bytes(gif), expected);
     EXPECT_NE(read_bytes(fake + ".args").find("-f rawvideo -pix_fmt rgb0 -s 5x3 "), std::string::npos)
         << read_bytes(fake + ".args");
+
+    const std::string mp4 = folder.file("raw.mp4");
+    encode({mp4, 5, 3}, fake, 2);
+    expected.clear();
+    for (int index = 0; index < 2; ++index) {
+        std::vector<std::uint8_t> yuv;
+        rgba_to_yuv420(test_frame(5, 3, index), yuv);
+        expected.append(reinterpret_cast<const char*>(yuv.data()), yuv.size());
+    }
+    EXPECT_EQ(read_bytes(mp4).size(), 2u * (6 * 4 * 3 / 2));
+    EXPECT_EQ(read_bytes(mp4), expected);
+    EXPECT_NE(read_bytes(fake + ".args").find("-f rawvideo -pix_fmt yuv420p -s 6x4 "), std::string::npos)
+        << read_bytes(fake + ".args");
+}
+
+// What x264 encodes is exactly the frames clrender converted: at CRF 0 (lossless), the
+// decoded video's planes are rgba_to_yuv420's bytes, at an odd size too; and the stream says
+// BT.709, limited range, so that a player converts them back to the colours rendered. Decoded
+// back to RGB by ffmpeg's exact conversion, a frame whose colour is the same within each 2x2
+// block (so 4:2:0's shared chroma loses nothing) is within 2 levels of what was rendered: the
+// rounding to 8 bits there and back (limited range spreads a step of Y' over 255/219 levels of
+// R'G'B'). Another matrix or range would be tens of levels off.
+TEST(VideoEncoder, Mp4DecodesToTheConvertedFrames) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    const int width = 33, height = 17, frames = 3;
+    const std::string video = folder.file("lossless.mp4");
+    VideoSettings settings{video, width, height};
+    settings.quality = 0;
+    // Colours that change by a few levels from block to block, differently in each channel.
+    std::vector<Image> rendered;
+    for (int index = 0; index < frames; ++index) {
+        Image frame = test_frame(width, height, index);
+        for (int row = 0; row < height; ++row)
+            for (int col = 0; col < width; ++col) {
+                std::uint8_t* texel = &frame.rgba[(static_cast<std::size_t>(row) * width + col) * 4];
+                const int block_col = col / 2, block_row = row / 2;
+                texel[0] = static_cast<std::uint8_t>(40 + block_col * 3 + index * 20);
+                texel[1] = static_cast<std::uint8_t>(200 - block_row * 3 - block_col);
+                texel[2] = static_cast<std::uint8_t>(90 + block_row * 4 - index * 30);
+            }
+        rendered.push_back(frame);
+    }
+    {
+        VideoEncoder encoding(settings, *encoder);
+        for (const Image& frame : rendered) encoding.add_frame(frame);
+        encoding.finish();
+    }
+
+    std::string converted;
+    for (const Image& frame : rendered) {
+        std::vector<std::uint8_t> yuv;
+        rgba_to_yuv420(frame, yuv);
+        converted.append(reinterpret_cast<const char*>(yuv.data()), yuv.size());
+    }
+    const std::string planes = folder.file("planes.yuv");
+    command_output("ffmpeg -v error -i '" + video + "' -f rawvideo -pix_fmt yuv420p -y '" + planes + "'");
+    EXPECT_EQ(read_bytes(planes).size(), converted.size());
+    EXPECT_TRUE(read_bytes(planes) == converted) << "the decoded planes differ from the converted frames";
+
+    const std::string tags = command_output(
+        "ffprobe -v error -select_streams v:0 -show_entries stream=color_range,color_space,color_primaries,color_transfer "
+        "-of default=nw=1 '" + video + "'");
+    for (const char* tag : {"color_range=tv", "color_space=bt709", "color_primaries=bt709", "color_transfer=bt709"})
+        EXPECT_NE(tags.find(tag), std::string::npos) << tag << " not in:\n" << tags;
+
+    const std::string rgb = folder.file("frames.rgb");
+    // Converted back as the tags say, each block's chroma for its four pixels (not interpolated
+    // across blocks) with exact rounding, then cut to the rendered size.
+    command_output("ffmpeg -v error -i '" + video +
+                   "' -vf scale=in_color_matrix=bt709:in_range=tv:flags=neighbor+accurate_rnd+full_chroma_int,"
+                   "format=rgb24,crop=" +
+                   std::to_string(width) + ":" + std::to_string(height) + ":0:0 -f rawvideo -pix_fmt rgb24 -y '" + rgb +
+                   "'");
+    const std::string decoded = read_bytes(rgb);
+    ASSERT_EQ(decoded.size(), static_cast<std::size_t>(width * height * 3 * frames));
+    int worst = 0;
+    for (int index = 0; index < frames; ++index) {
+        const Image& frame = rendered[index];
+        // The last column and row share their chroma with the black padding: left out.
+        for (int row = 0; row < height - 1; ++row)
+            for (int col = 0; col < width - 1; ++col)
+                for (int c = 0; c < 3; ++c) {
+                    const std::size_t at = ((static_cast<std::size_t>(index) * height + row) * width + col) * 3 + c;
+                    worst = std::max(worst, std::abs(static_cast<std::uint8_t>(decoded[at]) - frame.at(col, row, c)));
+                }
+    }
+    EXPECT_LE(worst, 2) << "the decoded video is further from the frames than the conversion's rounding explains";
 }
 
 // ffmpeg reads the frames' fourth byte as padding: frames that differ only in their alpha
@@ -413,9 +506,11 @@ TEST(VideoEncoder, VideoWithMissingFramesOrGarbageIsRejected) {
     const std::optional<std::string> encoder = real_encoder();
     if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
     TempFolder scripts, folder;
-    // Encodes only the first 2 frames it is given (2 x 16 x 16 x 4 bytes), then reads the rest.
-    const std::string short_video =
-        write_script(scripts, "two-frames", "head -c 2048 | '" + *encoder + "' \"$@\" && cat > /dev/null");
+    // Encodes only the first 2 frames it is given (2 x 16 x 16 x 1.5 bytes of yuv420p), then
+    // reads the rest.
+    const std::string short_video = write_script(
+        scripts, "two-frames",
+        "head -c " + std::to_string(2 * yuv420_bytes(16, 16)) + " | '" + *encoder + "' \"$@\" && cat > /dev/null");
     const std::string video = folder.file("out.mp4");
     folder.write("out.mp4", "earlier");
     std::string message = output_error_of([&] { encode({video, 16, 16}, short_video, 5); });
@@ -476,7 +571,8 @@ TEST(VideoEncoder, StallTimeoutComesFromTheEnvironment) {
     }
 }
 
-// 64x64 frames (16 KiB as RGBA): four fill a pipe's 64 KiB, so the fifth waits on the encoder.
+// 64x64 frames (6 KiB as the yuv420p an MP4's encoder is sent): eleven fill a pipe's 64 KiB,
+// so a later one of the twenty waits on the encoder.
 TEST(VideoEncoder, EncoderThatStopsReadingTimesOut) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "exec sleep 1000");
