@@ -34,6 +34,11 @@ void FolderEntry::release() {
     folder_ = -1;
 }
 
+int FolderEntry::open(int flags, unsigned mode) const {
+    if (folder_ >= 0) return ::openat(folder_, name_.c_str(), flags, static_cast<mode_t>(mode));
+    return ::open(path_.c_str(), flags, static_cast<mode_t>(mode));
+}
+
 bool FolderEntry::remove() const {
     if (path_.empty()) return false;
     if (folder_ >= 0) return ::unlinkat(folder_, name_.c_str(), 0) == 0;

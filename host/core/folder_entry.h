@@ -21,6 +21,10 @@ public:
 
     // Removes the file (unlinkat in the folder held open); false when it was not there.
     bool remove() const;
+    // Opens the file with open(2)'s `flags` and `mode` in the folder held open (openat), so
+    // that the file is made in the folder remove() will look in, even when the folder is
+    // renamed in between; by its path when the folder could not be held.
+    int open(int flags, unsigned mode) const;
 
 private:
     void release();

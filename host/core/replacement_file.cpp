@@ -10,9 +10,13 @@
 namespace clr {
 
 ReplacementFile::ReplacementFile(std::string temporary_path, mode_t mode) {
-    descriptor_ = ::open(temporary_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
+    // The folder is held open first and the file made in it: opening the folder by its path
+    // after making the file could find it renamed in between, and the file would then be
+    // left behind wherever the folder went.
+    FolderEntry entry(temporary_path);
+    descriptor_ = entry.open(O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
     if (descriptor_ >= 0) {
-        entry_ = FolderEntry(temporary_path);
+        entry_ = std::move(entry);
         temporary_path_ = std::move(temporary_path);
     }
 }

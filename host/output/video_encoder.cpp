@@ -148,8 +148,10 @@ std::string temp_path_beside(const std::string& final_path) { return temp_path_i
 
 // Creates `path`, failing if it exists (O_EXCL: never reuse a file someone else made), and
 // returns the open descriptor.
-int create_exclusive(const std::string& path, const std::string& final_path) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+// Makes the file of `entry` in the folder it holds open (FolderEntry::open), so that the entry
+// removes that very file even if the folder is renamed right after.
+int create_exclusive(const FolderEntry& entry, const std::string& final_path) {
+    const int fd = entry.open(O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) throw OutputError(final_path + ": cannot create a file in its folder: " + std::strerror(errno));
     return fd;
 }
@@ -267,11 +269,13 @@ VideoEncoder::~VideoEncoder() { abandon(); }
 
 void VideoEncoder::start() {
     temp_path_ = temp_path_beside(settings_.path);
-    ::close(create_exclusive(temp_path_, settings_.path));  // reserves the name; ffmpeg overwrites it
-    temp_entry_ = FolderEntry(temp_path_);
+    FolderEntry temp_entry(temp_path_);
+    ::close(create_exclusive(temp_entry, settings_.path));  // reserves the name; ffmpeg overwrites it
+    temp_entry_ = std::move(temp_entry);  // only a file this run made is ever removed
     log_path_ = temp_path_ + ".log";
-    const int log_fd = create_exclusive(log_path_, settings_.path);
-    log_entry_ = FolderEntry(log_path_);
+    FolderEntry log_entry(log_path_);
+    const int log_fd = create_exclusive(log_entry, settings_.path);
+    log_entry_ = std::move(log_entry);
 
     // Close-on-exec on both ends: the child gets the read end as its stdin through dup2, and
     // no other child (another encoder) inherits the write end, which would keep this pipe

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <filesystem>
 
 #include "support/temp_folder.h"
@@ -25,6 +28,22 @@ TEST(FolderEntry, RemovesTheFileAfterItsFolderWasRenamed) {
     EXPECT_FALSE(fs::exists(folder.file("moved/.clrender-x.tmp")));
     EXPECT_TRUE(fs::exists(folder.file("out/.clrender-x.tmp"))) << "the file now under the old path is not ours";
     EXPECT_FALSE(entry.remove()) << "already gone";
+}
+
+// The file is made in the folder held open, wherever that folder is by then: a temporary
+// file made after its folder was renamed is still the one remove() finds and removes.
+TEST(FolderEntry, MakesTheFileInTheFolderItHolds) {
+    TempFolder folder;
+    fs::create_directory(folder.file("out"));
+    const FolderEntry entry(folder.file("out/.clrender-y.tmp"));
+    fs::rename(folder.file("out"), folder.file("moved"));
+    const int fd = entry.open(O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    ASSERT_GE(fd, 0);
+    ::close(fd);
+    EXPECT_TRUE(fs::exists(folder.file("moved/.clrender-y.tmp")));
+    EXPECT_FALSE(fs::exists(folder.file("out"))) << "the old path is not made again";
+    EXPECT_TRUE(entry.remove());
+    EXPECT_FALSE(fs::exists(folder.file("moved/.clrender-y.tmp")));
 }
 
 TEST(FolderEntry, AnEmptyEntryRemovesNothing) {
