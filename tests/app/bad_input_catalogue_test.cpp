@@ -368,7 +368,7 @@ std::vector<BadInput> catalogue() {
 
         // --- the fall 2019 format: surfaces and lights
         bad_scene("SurfaceOfAnUnknownType", surfaces_scene(R"({"type": "cone", "ambient": [1, 0, 0]})"),
-                  {"bad.json: /surfaces/0/type: surface type must be \"sphere\" or \"plane\""}),
+                  {"bad.json: /surfaces/0/type: surface type must be \"sphere\", \"plane\", \"triangle\" or \"mesh\" (got \"cone\")"}),
         bad_scene("SurfaceWithoutAmbient", surfaces_scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})"),
                   {"bad.json: /surfaces/0: surface is missing required key 'ambient'"}),
         bad_scene("PlaneWithAZeroNormal",
