@@ -36,6 +36,8 @@ float3 phong_color(Hit hit, float3 ambient, real3 origin, real3 direction, CLR_S
     for (int i = 0; i < info.light_count; ++i) {
         real3 to_light = convert_real3(lights[i].position.xyz) - point;
         real distance = sqrt(dot3(to_light, to_light));
+        if (!(distance > 0.0f))
+            continue; /* a light at the point itself lights nothing there, as the sun */
         real3 light = to_light / distance;
         real cosine = dot3(normal, light);
         if (cosine <= 0.0f)

@@ -92,6 +92,7 @@ double decision_margin(const Scene& scene, const Ray& ray) {
             for (const PointLight& light : scene.lights) {
                 const Vec3 to_light = light.position - surface.point;
                 const double distance = length(to_light);
+                if (!(distance > 0)) continue;
                 const Vec3 l = to_light / distance;
                 const double cosine = dot(surface.normal, l);
                 if (!(material.specular == Color{0, 0, 0})) margin = std::min(margin, std::abs(cosine));

@@ -57,7 +57,7 @@ Color phong_color(const Scene& scene, const Color& ambient, const Material& mate
         const Vec3 to_light = light.position - surface.point;
         const double distance = length(to_light);
         const Vec3 l = to_light / distance;
-        const double cosine = dot(surface.normal, l);
+        const double cosine = distance > 0 ? dot(surface.normal, l) : 0;  // a light at P lights nothing there
         if (cosine <= 0) {
             if (observer) observer->light_seen(i, cosine, false, 0);
             continue;

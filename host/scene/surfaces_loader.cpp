@@ -59,6 +59,9 @@ void read_sphere_surface(ObjectReader& fields, Scene& scene) {
 }
 
 void read_plane_surface(ObjectReader& fields, Scene& scene) {
+    if (scene.planes.size() == kMaxPlanes)
+        fields.node().fail("a scene may have at most " + std::to_string(kMaxPlanes) +
+                           " planes: every ray tests every plane (a plane has no bounds)");
     Plane plane;
     plane.point = read_position(fields.required("point"));
     const Node normal = fields.required("normal");

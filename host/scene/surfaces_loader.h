@@ -15,6 +15,8 @@ namespace clr {
 // Most point lights a scene may have: each costs a shadow ray per lit pixel, and a
 // thousand-light scene is a mistake that would render for hours rather than an intent.
 constexpr std::size_t kMaxLights = 256;
+// Most planes a scene may have: a plane has no bounds, so every ray tests every plane.
+constexpr std::size_t kMaxPlanes = 256;
 
 // Reads `surfaces` and `lights` when the file has them; returns the `mesh` surfaces, whose
 // files load_meshes() reads once the whole scene is valid (a `triangle` is added at once).

@@ -81,6 +81,14 @@ std::string many_lights(int count) {
     return lights;
 }
 
+// `count` planes, as the members of a `surfaces` array.
+std::string many_planes(int count) {
+    std::string planes;
+    for (int i = 0; i < count; ++i)
+        planes += std::string(i ? ", " : "") + R"({"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "ambient": [1, 1, 1]})";
+    return planes;
+}
+
 std::string mesh_scene(const std::string& filename, const std::string& settings = "") {
     return scene_with(R"("obj": {"filename": ")" + filename + "\"" + settings + "}");
 }
@@ -387,6 +395,8 @@ std::vector<BadInput> catalogue() {
         bad_scene("NegativeNear", scene_with(R"("near": -1, "far": 20)"), {"bad.json: /near: near must be from 0 to 1e16, got -1"}),
         bad_scene("FarNotBeyondNear", scene_with(R"("near": 30, "far": 20)"),
                   {"bad.json: /far: far must be greater than near (30) and at most 1e16, got 20"}),
+        bad_scene("TooManyPlanes", scene_with(R"("surfaces": [)" + many_planes(257) + "]"),
+                  {"bad.json: /surfaces/256: a scene may have at most 256 planes"}),
         bad_scene("TooManyLights", scene_with(R"("lights": [)" + many_lights(257) + "]"),
                   {"bad.json: /lights: a scene may have at most 256 lights, this one has 257"}),
         bad_image("PngDimensionsOverTheLimit", "huge.png", testing::png_header_only(100000, 100000, 8),
@@ -834,8 +844,8 @@ const std::set<std::string> kBeyondTheSchema = {
     "ImpostorNamesAnUnknownViewSet",
     // files the scene names
     "MissingImage", "ImpostorViewImageMissing", "MissingObj",
-    // one key's value against another's
-    "FarNotBeyondNear",
+    // one key's value against another's; a count of array members of one type
+    "FarNotBeyondNear", "TooManyPlanes",
     // the size, which --size may give instead of the scene: the schema cannot see the command line
     "MissingWidth", "MissingHeight",
 };

@@ -148,6 +148,13 @@ TEST(Lights, TheCentrePixelIsTheModelWorkedOutByHand) {
     EXPECT_EQ(image.at(16, 16, 0), 89);   // floor(0.35 * 255 + 0.5)
     EXPECT_EQ(image.at(16, 16, 1), 70);   // floor(0.275 * 255 + 0.5)
     EXPECT_EQ(image.at(16, 16, 2), 130);  // floor(0.51 * 255 + 0.5)
+    // A light at the point itself lights nothing there (as the sun): the ambient colour alone.
+    Scene at_point = scene;
+    at_point.lights[0].position = {0, 0, 0};
+    const Image lit_at_point = testing::render_with_kernels(at_point);
+    EXPECT_EQ(lit_at_point.at(16, 16, 0), 26);  // floor(0.1 * 255 + 0.5)
+    EXPECT_EQ(lit_at_point.at(16, 16, 2), 79);  // floor(0.31 * 255 + 0.5)
+    EXPECT_EQ(testing::render_with_reference(at_point).at(16, 16, 0), 26);
     // With the light moved aside and a small sphere halfway between it and that point, the
     // light is hidden there: the ambient colour alone.
     scene.lights[0].position = {4, 0, 4};
