@@ -101,6 +101,12 @@ std::vector<NamedScene> scenes() {
   "billboard": {"UpperLeft": [-1, 1, 0], "LowerLeft": [-1, -1, 0], "UpperRight": [1, 1, 0], "filename": "checker.png"},
   "mirror": {"UpperLeft": [-3, 1, -1], "LowerLeft": [-3, -1, -1], "UpperRight": [3, 1, -1], "IsMirror": 1}})"},
         {"older_format.json", "{" + camera + R"(, "surfaces": [{"type": "sphere"}], "lights": [{"pos": [0, 1, 0]}]})"},
+        {"fall2019.json", "{" + camera + R"(, "near": 0.5, "far": 50, "surfaces": [
+  {"type": "sphere", "center": [0, 1, 0], "radius": 1, "ambient": [0.2, 0, 0], "diffuse": [0.7, 0.1, 0.1],
+   "specular": [1, 1, 1], "phong_exponent": 20, "mirror": [0.1, 0.1, 0.1]},
+  {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "ambient": [0.1, 0.1, 0.1], "diffuse": [0.5, 0.5, 0.5]},
+  {"type": "triangle", "vertices": [[0, 0, -2], [1, 0, -2], [0, 1, -2]], "ambient": [0, 0, 1]}],
+  "lights": [{"position": [5, 5, 5], "color": [0.8, 0.8, 0.8]}, {"position": [-5, 3, 1], "color": [0.2, 0.2, 0.6]}]})"},
         {"warnings.json", "{" + camera + R"(, "width": 9, "radious": 1, "spheres": [{"center": [0, 0, 0],
   "radius": 1, "ambient": [1, 0, 0], "colour": [0, 1, 0], "a/b~c": 1}], "clrender": {"fsp": 10}})"},
         {"comments_bom_crlf.json", "\xEF\xBB\xBF// a scene\r\n{\r\n  /* the camera */\r\n  " + camera +
