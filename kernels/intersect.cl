@@ -49,8 +49,10 @@ real3 safe_inverse(real3 d)
 }
 
 /* intersect_scene() through the BVH: the same answer, visiting only the boxes the ray meets
- * before its best hit so far. */
-Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
+ * before its best hit so far. With `first_hit`, the first surface found within t_max instead
+ * of the nearest (occluded()). */
+Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, int first_hit,
+                  CLR_SCENE_PARAMS)
 {
     Hit hit;
     hit.t = t_max;
@@ -81,6 +83,8 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
                 hit.t = t;
                 hit.kind = kind;
                 hit.index = index;
+                if (first_hit)
+                    return hit;
             }
         }
     }
@@ -98,9 +102,9 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
 Hit intersect_scene(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
 {
 #if CLR_FEATURE_BVH
-    return intersect_bvh(origin, direction, t_max, skip_kind, skip_index, CLR_SCENE_ARGS);
+    return intersect_bvh(origin, direction, t_max, skip_kind, skip_index, 0, CLR_SCENE_ARGS);
 #else
-    Hit hit = nearest_of_all_kinds(origin, direction, t_max, skip_kind, skip_index, CLR_SCENE_ARGS);
+    Hit hit = nearest_of_all_kinds(origin, direction, t_max, skip_kind, skip_index, 0, CLR_SCENE_ARGS);
     if (hit.kind == CLR_HIT_NONE)
         hit.t = INFINITY;
     return hit;
@@ -111,54 +115,14 @@ Hit intersect_scene(real3 origin, real3 direction, real t_max, int skip_kind, in
  * a shadow ray's question. The answer is intersect_scene()'s (a hit or none), found at the
  * first surface within t_max instead of the nearest, so that a shadow ray through a mesh
  * stops at the first triangle it meets. */
-#define CLR_KIND_OCCLUDES(KIND, name, FEATURE)                                              \
-    if (FEATURE) {                                                                          \
-        for (int i = 0; i < info.name##_count; ++i) {                                       \
-            if (skip_kind == KIND && skip_index == i)                                       \
-                continue;                                                                   \
-            if (name##_hit_distance(i, origin, direction, t_max, CLR_SCENE_ARGS) < t_max)   \
-                return true;                                                                \
-        }                                                                                   \
-    }
 bool occluded(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
 {
 #if CLR_FEATURE_BVH
-    real3 inverse = safe_inverse(direction);
-    uint stack[CLR_BVH_STACK];
-    int top = 0;
-    if (info.sphere_count + info.billboard_count + info.triangle_count > 0)
-        stack[top++] = 0;
-    while (top > 0) {
-        __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
-        if (!box_reachable(node, origin, inverse, t_max))
-            continue;
-        if (node->count == 0) {
-            stack[top++] = node->first + 1;
-            stack[top++] = node->first;
-            continue;
-        }
-        for (uint k = node->first; k < node->first + node->count; ++k) {
-            int kind = item_kind(bvh_items[k]);
-            int index = item_index(bvh_items[k]);
-            if (kind == skip_kind && index == skip_index)
-                continue;
-            if (kind_hit_distance(kind, index, origin, direction, t_max, CLR_SCENE_ARGS) < t_max)
-                return true;
-        }
-    }
-#if CLR_FEATURE_PLANES
-    for (int i = 0; i < info.plane_count; ++i) {
-        if (skip_kind == CLR_HIT_PLANE && skip_index == i)
-            continue;
-        if (plane_hit_distance(i, origin, direction, t_max, CLR_SCENE_ARGS) < t_max)
-            return true;
-    }
-#endif
-    return false;
+    Hit hit = intersect_bvh(origin, direction, t_max, skip_kind, skip_index, 1, CLR_SCENE_ARGS);
 #else
-    CLR_KINDS(CLR_KIND_OCCLUDES)
-    return false;
+    Hit hit = nearest_of_all_kinds(origin, direction, t_max, skip_kind, skip_index, 1, CLR_SCENE_ARGS);
 #endif
+    return hit.kind != CLR_HIT_NONE;
 }
 
 /* The float form of a hit, for buffers. */

@@ -65,7 +65,9 @@ CLR_PACKET_INLINE real16 kind_hit_distance16(int kind, int index, real3 origin, 
 
 /* The nearest hit with 0 < t < t_max among all objects but (skip_kind, skip_index), kind by
  * kind and by index within each: the order that common/hit_order.cl ranks ties by, so
- * keeping the first of equal distances (t < hit.t) already is that rule. */
+ * keeping the first of equal distances (t < hit.t) already is that rule. With `first_hit`,
+ * the first hit found within t_max instead (a shadow ray's question, intersect.cl's
+ * occluded()). */
 #define CLR_KIND_NEAREST(KIND, name, FEATURE)                                                 \
     if (FEATURE) {                                                                            \
         for (int i = 0; i < info.name##_count; ++i) {                                         \
@@ -76,10 +78,13 @@ CLR_PACKET_INLINE real16 kind_hit_distance16(int kind, int index, real3 origin, 
                 hit.t = t;                                                                    \
                 hit.kind = KIND;                                                              \
                 hit.index = i;                                                                \
+                if (first_hit)                                                                \
+                    return hit;                                                               \
             }                                                                                 \
         }                                                                                     \
     }
-Hit nearest_of_all_kinds(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, CLR_SCENE_PARAMS)
+Hit nearest_of_all_kinds(real3 origin, real3 direction, real t_max, int skip_kind, int skip_index, int first_hit,
+                         CLR_SCENE_PARAMS)
 {
     Hit hit;
     hit.t = t_max;
