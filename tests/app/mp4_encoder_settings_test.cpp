@@ -2,18 +2,19 @@
 // from the settings x264 writes into every stream it encodes: preset veryfast, and 4 threads on
 // every machine, so that the same frames give the same bytes wherever they are encoded.
 #include <gtest/gtest.h>
-#include <sched.h>
 
 #include <algorithm>
 #include <string>
 
 #include "support/command.h"
+#include "support/cpu_affinity.h"
 #include "support/small_disk.h"
 #include "support/temp_folder.h"
 
 namespace clr {
 namespace {
 
+using testing::first_usable_cpu;
 using testing::have_program;
 using testing::read_bytes;
 using testing::run_clrender;
@@ -33,15 +34,6 @@ std::string x264_settings(const std::string& video) {
     const std::size_t options = bytes.find("options: ", start);
     const std::size_t end = bytes.find('\0', options);
     return " " + bytes.substr(options + 9, end - options - 9) + " ";
-}
-
-// The first CPU this process may run on.
-int first_usable_cpu() {
-    cpu_set_t allowed;
-    if (::sched_getaffinity(0, sizeof(allowed), &allowed) != 0) return 0;
-    int cpu = 0;
-    while (cpu < CPU_SETSIZE && !CPU_ISSET(cpu, &allowed)) ++cpu;
-    return cpu;
 }
 
 TEST(Mp4EncoderSettings, PresetVeryfastWithFourThreads) {

@@ -3,7 +3,6 @@
 // encode (docs/animation.md, MP4 encoding). x264's own lookahead thread made the bytes depend on
 // scheduling. The command itself must not depend on the machine either.
 #include <gtest/gtest.h>
-#include <sched.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "support/command.h"
+#include "support/cpu_affinity.h"
 #include "support/shell.h"
 #include "support/small_disk.h"
 #include "support/temp_folder.h"
@@ -19,6 +19,7 @@
 namespace clr {
 namespace {
 
+using testing::first_usable_cpu;
 using testing::have_program;
 using testing::read_bytes;
 using testing::run_clrender;
@@ -37,15 +38,6 @@ const char* kRender = "--size 320x180 --spp 4";
 // run again on the frames it sent, read from a file. With the lookahead thread 2 to 7 of these
 // ten encodes differed, in each of five runs; ten alike by chance was about 1 in 400.
 constexpr int kEncodes = 10;
-
-// The first CPU this process may run on.
-int first_usable_cpu() {
-    cpu_set_t allowed;
-    if (::sched_getaffinity(0, sizeof(allowed), &allowed) != 0) return 0;
-    int cpu = 0;
-    while (cpu < CPU_SETSIZE && !CPU_ISSET(cpu, &allowed)) ++cpu;
-    return cpu;
-}
 
 // The lines of `text`.
 std::vector<std::string> lines_of(const std::string& text) {

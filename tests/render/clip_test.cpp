@@ -6,19 +6,11 @@
 #include <limits>
 #include <string>
 
-#include "support/image_compare.h"
 #include "support/render_helpers.h"
 #include "support/scene_builder.h"
 
 namespace clr {
 namespace {
-
-void expect_matches_reference(const Scene& scene, const std::string& what, const RendererOptions& options = {}) {
-    const testing::ImageComparison comparison =
-        testing::compare_images(testing::render_with_kernels(scene, options), testing::render_with_reference(scene));
-    EXPECT_LE(comparison.differing_fraction(), 0.002) << what << ": " << comparison.differing << " pixels differ";
-    EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
-}
 
 // A row of spheres going away from the eye, a floor billboard and a mirror sphere, lit by the
 // sun: the near depth cuts through the first sphere (its inside shows), the far depth through
@@ -39,13 +31,13 @@ Scene row_of_spheres(double near, double far) {
 
 TEST(Clipping, NearAndFarDepthsMatchTheReference) {
     const Scene scene = row_of_spheres(4.5, 17);
-    expect_matches_reference(scene, "screen tiles");
+    testing::expect_kernels_match_reference(scene, "screen tiles");
     RendererOptions brute_force;
     brute_force.screen_tiles = false;
-    expect_matches_reference(scene, "brute force", brute_force);
+    testing::expect_kernels_match_reference(scene, "brute force", brute_force);
     RendererOptions double_precision;
     double_precision.double_precision = true;
-    expect_matches_reference(scene, "double", double_precision);
+    testing::expect_kernels_match_reference(scene, "double", double_precision);
     EXPECT_NE(testing::render_with_kernels(scene).rgba,
               testing::render_with_kernels(row_of_spheres(0, std::numeric_limits<double>::infinity())).rgba);
 }

@@ -8,19 +8,11 @@
 #include <cmath>
 #include <string>
 
-#include "support/image_compare.h"
 #include "support/render_helpers.h"
 #include "support/scene_builder.h"
 
 namespace clr {
 namespace {
-
-void expect_matches_reference(const Scene& scene, const std::string& what, const RendererOptions& options = {}) {
-    const testing::ImageComparison comparison =
-        testing::compare_images(testing::render_with_kernels(scene, options), testing::render_with_reference(scene));
-    EXPECT_LE(comparison.differing_fraction(), 0.002) << what << ": " << comparison.differing << " pixels differ";
-    EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
-}
 
 std::uint32_t add_material(Scene& scene, const Color& diffuse, const Color& specular, double exponent,
                            const Color& mirror = {}) {
@@ -68,13 +60,13 @@ Scene lit_room() {
 
 TEST(Lights, SpheresAndPlanesLitByPointLightsMatchTheReference) {
     const Scene scene = lit_room();
-    expect_matches_reference(scene, "screen tiles");
+    testing::expect_kernels_match_reference(scene, "screen tiles");
     RendererOptions brute_force;
     brute_force.screen_tiles = false;
-    expect_matches_reference(scene, "brute force", brute_force);
+    testing::expect_kernels_match_reference(scene, "brute force", brute_force);
     RendererOptions double_precision;
     double_precision.double_precision = true;
-    expect_matches_reference(scene, "double", double_precision);
+    testing::expect_kernels_match_reference(scene, "double", double_precision);
     // Each light counts: without the second, the image changes.
     Scene one_light = scene;
     one_light.lights.pop_back();
@@ -88,17 +80,17 @@ TEST(Lights, MeshesWithAMaterialAreLitAsSpheresAre) {
     testing::add_mesh(scene, testing::grid_mesh({-6, 0.01, 6}, {12, 0, 0}, {0, 0, -12}, 4, 4), {0.05, 0.1, 0.05});
     scene.meshes[0].material = add_material(scene, {0.4, 0.2, 0.7}, {0.9, 0.9, 0.9}, 60);
     scene.meshes[1].material = add_material(scene, {0.3, 0.6, 0.3}, {0, 0, 0}, 0, {0.2, 0.2, 0.2});
-    expect_matches_reference(scene, "lit meshes");
+    testing::expect_kernels_match_reference(scene, "lit meshes");
     RendererOptions double_precision;
     double_precision.double_precision = true;
-    expect_matches_reference(scene, "lit meshes in double", double_precision);
+    testing::expect_kernels_match_reference(scene, "lit meshes in double", double_precision);
 }
 
 // Without lights, or with OnlyAmbient, every surface shows its ambient colour, as flat shading.
 TEST(Lights, WithoutLightsSurfacesShowTheirAmbientColour) {
     Scene scene = lit_room();
     scene.only_ambient = true;
-    expect_matches_reference(scene, "OnlyAmbient");
+    testing::expect_kernels_match_reference(scene, "OnlyAmbient");
     const Image image = testing::render_with_kernels(scene);
     // The floor at the bottom centre: its ambient 0.1 is byte floor(0.1 * 255 + 0.5) = 26.
     EXPECT_EQ(image.at(80, 118, 0), 26);
@@ -114,10 +106,10 @@ TEST(Lights, MirrorSharesReflectTheLitScene) {
     scene.materials[scene.spheres[0].material].mirror = {0.6, 0.6, 0.6};
     scene.materials[scene.planes[1].material].mirror = {0.3, 0.3, 0.5};
     scene.max_depth = 3;
-    expect_matches_reference(scene, "mirror shares");
+    testing::expect_kernels_match_reference(scene, "mirror shares");
     RendererOptions double_precision;
     double_precision.double_precision = true;
-    expect_matches_reference(scene, "mirror shares in double", double_precision);
+    testing::expect_kernels_match_reference(scene, "mirror shares in double", double_precision);
     EXPECT_NE(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(lit_room()).rgba);
 }
 
@@ -130,7 +122,7 @@ TEST(Planes, APlaneIsLitAlikeFromBothSidesOutToTheHorizon) {
     add_plane(scene, {0, 0, 0}, {0, 1, 0}, {0.1, 0.1, 0.1}, plain);    // floor, seen from above
     add_plane(scene, {0, 3, 0}, {0, 1, 0}, {0.2, 0.1, 0.1}, plain);    // ceiling, seen from below
     scene.lights.push_back({{0, 2, -6}, {0.9, 0.9, 0.9}});
-    expect_matches_reference(scene, "floor and ceiling");
+    testing::expect_kernels_match_reference(scene, "floor and ceiling");
     Scene flipped = scene;
     for (Plane& plane : flipped.planes) plane.normal = plane.normal * -1.0;
     EXPECT_EQ(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(flipped).rgba);

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <string>
 
-#include "support/image_compare.h"
 #include "support/render_helpers.h"
 #include "support/scene_builder.h"
 
@@ -17,13 +16,6 @@ namespace {
 using testing::add_mesh;
 using testing::grid_mesh;
 using testing::sphere_mesh;
-
-void expect_matches_reference(const Scene& scene, const std::string& what, const RendererOptions& options = {}) {
-    const testing::ImageComparison comparison =
-        testing::compare_images(testing::render_with_kernels(scene, options), testing::render_with_reference(scene));
-    EXPECT_LE(comparison.differing_fraction(), 0.002) << what << ": " << comparison.differing << " pixels differ";
-    EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
-}
 
 // A smooth ball, a faceted ball and a sphere above a tessellated floor, lit by the sun: the
 // balls' shading and their shadows on the floor and on each other.
@@ -41,19 +33,19 @@ Scene lit_meshes() {
 
 TEST(Meshes, LitMeshesAndTheirShadowsMatchTheReference) {
     const Scene scene = lit_meshes();
-    expect_matches_reference(scene, "screen tiles");
+    testing::expect_kernels_match_reference(scene, "screen tiles");
     RendererOptions brute_force;
     brute_force.screen_tiles = false;
-    expect_matches_reference(scene, "brute force", brute_force);
+    testing::expect_kernels_match_reference(scene, "brute force", brute_force);
     RendererOptions double_precision;
     double_precision.double_precision = true;
-    expect_matches_reference(scene, "double", double_precision);
+    testing::expect_kernels_match_reference(scene, "double", double_precision);
 }
 
 TEST(Meshes, FlatShadedMeshesMatchTheReference) {
     Scene scene = lit_meshes();
     scene.has_sun = false;
-    expect_matches_reference(scene, "flat");
+    testing::expect_kernels_match_reference(scene, "flat");
 }
 
 // A mirror made of a tessellated wall, and a faceted mirror ball, reflecting the lit scene.
@@ -62,7 +54,7 @@ TEST(Meshes, MirrorMeshesReflectLikeMirrorSpheres) {
     add_mesh(scene, grid_mesh({-5, -1.2, -3}, {10, 0, 0}, {0, 6, 0}, 3, 2), {0, 0, 0}, true);
     add_mesh(scene, sphere_mesh({2.8, 1.5, 1}, 0.7, 12, 6, true), {0, 0, 0}, true);
     scene.max_depth = 3;
-    expect_matches_reference(scene, "mirrors");
+    testing::expect_kernels_match_reference(scene, "mirrors");
     const Image image = testing::render_with_kernels(scene);
     Scene without = lit_meshes();
     EXPECT_NE(image.rgba, testing::render_with_kernels(without).rgba);
@@ -84,7 +76,7 @@ TEST(Meshes, BothSidesOfATriangleAreLitAlike) {
     const Image image = testing::render_with_kernels(front);
     EXPECT_EQ(image.rgba, testing::render_with_kernels(back).rgba);
     EXPECT_GT(image.at(24, 30, 0), 100) << "lit, not black";
-    expect_matches_reference(back, "reversed");
+    testing::expect_kernels_match_reference(back, "reversed");
 }
 
 // A floor of many triangles, the sun low over it and nothing above it: no pixel of the floor
@@ -126,7 +118,7 @@ TEST(Meshes, AConcaveMeshShadowsItself) {
     const Image image = testing::render_with_kernels(scene);
     // The floor just in front of the wall, at (0, 0, -0.5), lies in its shadow.
     EXPECT_EQ(image.at(48, 44, 0), 0);
-    expect_matches_reference(scene, "fold");
+    testing::expect_kernels_match_reference(scene, "fold");
 }
 
 // Every pixel-centre ray passes through an edge or vertex that several triangles share: a

@@ -32,10 +32,7 @@ Scene mirror_corridor(int max_depth) {
 }
 
 void expect_matches_reference(const Scene& scene, const std::string& what) {
-    testing::ImageComparison comparison =
-        testing::compare_images(testing::render_with_kernels(scene), testing::render_with_reference(scene));
-    EXPECT_LE(comparison.differing_fraction(), 0.001) << what << ": " << comparison.differing << " pixels differ";
-    EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
+    testing::expect_kernels_match_reference(scene, what, {}, 0.001);
 }
 
 TEST(Mirrors, EveryMaxDepthFromZeroToSixMatchesTheReference) {

@@ -1,6 +1,9 @@
 #include "support/render_helpers.h"
 
+#include <gtest/gtest.h>
+
 #include "reference/reference.h"
+#include "support/image_compare.h"
 #include "support/opencl_test_device.h"
 
 namespace clr::testing {
@@ -13,6 +16,13 @@ Image render_with_kernels(const Scene& scene, const RendererOptions& options) {
 Image render_with_reference(const Scene& scene) {
     const CameraKey& key = scene.camera_path.front();
     return reference::render(scene, reference::camera_of(scene, key));
+}
+
+void expect_kernels_match_reference(const Scene& scene, const std::string& what, const RendererOptions& options,
+                                    double differing_fraction) {
+    const ImageComparison comparison = compare_images(render_with_kernels(scene, options), render_with_reference(scene));
+    EXPECT_LE(comparison.differing_fraction(), differing_fraction) << what << ": " << comparison.differing << " pixels differ";
+    EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
 }
 
 }  // namespace clr::testing
