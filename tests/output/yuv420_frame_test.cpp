@@ -39,7 +39,13 @@ Image solid(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t 
     Image image;
     image.width = width;
     image.height = height;
-    for (int i = 0; i < width * height; ++i) image.rgba.insert(image.rgba.end(), {r, g, b, 255});
+    image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+        image.rgba[i] = r;
+        image.rgba[i + 1] = g;
+        image.rgba[i + 2] = b;
+        image.rgba[i + 3] = 255;
+    }
     return image;
 }
 
@@ -101,7 +107,9 @@ TEST(Yuv420Frame, OddSizesArePaddedWithBlack) {
         const int padded_width = width + width % 2, padded_height = height + height % 2;
         for (int row = 0; row < padded_height; ++row)
             for (int col = 0; col < padded_width; ++col)
-                if (col >= width || row >= height) EXPECT_EQ(yuv[row * padded_width + col], 16) << col << "," << row;
+                if (col >= width || row >= height) {
+                    EXPECT_EQ(yuv[row * padded_width + col], 16) << col << "," << row;
+                }
     }
 }
 
