@@ -1,7 +1,8 @@
 // Fills the program store that clrender finds beside its executable (device/program_store.h):
 //   clrender_build_program_store FOLDER [--all]
 // with the binaries of render_packets on the default device (a plain run's: the first CPU
-// device) for every scene feature set in float precision with byte output, what a command line
+// device) for every feature set of render/feature_combinations.h (each scene feature set of
+// spheres and billboards, and the general programs) in float precision with byte output, what a command line
 // without --precision double, --alpha or an EXR output asks for; --all adds those (four times
 // as many programs). Run at build time (cmake/build_program_store.cmake). Never fails for want
 // of a device or a compiler: the store is then empty (or short) and a message says so, and
@@ -26,10 +27,10 @@ int main(int argc, char** argv) {
     const std::string& folder = arguments[0];
     std::error_code error;
     std::filesystem::create_directories(folder, error);  // an empty store is still one to install
-    std::vector<clr::FeatureSet> sets = clr::scene_feature_sets(false, false);
+    std::vector<clr::FeatureSet> sets = clr::store_feature_sets(false, false);
     if (all) {
         for (auto [double_precision, float_output] : {std::pair{false, true}, {true, false}, {true, true}}) {
-            const std::vector<clr::FeatureSet> more = clr::scene_feature_sets(double_precision, float_output);
+            const std::vector<clr::FeatureSet> more = clr::store_feature_sets(double_precision, float_output);
             sets.insert(sets.end(), more.begin(), more.end());
         }
     }

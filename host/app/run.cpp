@@ -162,8 +162,9 @@ DeviceList list_devices_meanwhile() {
 
 // `part_done` gets the fraction of each frame rendered, band by band (or row by row);
 // `linear_frames`: frames also carry their linear colours (Image::linear).
+// `still`: the run renders one frame (RendererOptions::general_stand_in).
 std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene& scene, DeviceList& devices,
-                                             std::function<void(double)> part_done, bool linear_frames) {
+                                             std::function<void(double)> part_done, bool linear_frames, bool still) {
     // A long frame stops within a band (or a reference row) of a signal, not at its end.
     if (options.reference)
         return make_reference_frame_renderer(scene, throw_if_interrupted, options.crop, part_done, linear_frames);
@@ -174,6 +175,7 @@ std::unique_ptr<FrameRenderer> make_renderer(const Options& options, const Scene
     renderer_options.crop = options.crop;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
+    renderer_options.general_stand_in = still;
     // run() lists the devices while the scene loads whenever it renders with OpenCL.
     return make_opencl_frame_renderer(scene, devices.get(), options.device, renderer_options, options.threads);
 }
@@ -222,7 +224,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
         [&shown](double fraction) {
             if (shown) shown->frame_part_done(fraction);
         },
-        needs_linear_frames(options, plan));
+        needs_linear_frames(options, plan), plan.frames.size() == 1);
     report.device = renderer->device_name();
     report.compute_units = renderer->compute_units();
     report.build_ms = renderer->build_ms();
@@ -425,7 +427,7 @@ int run(const Options& options) {
         one_pixel.crop = PixelRect{options.explain_pixel->x, options.explain_pixel->x + 1, options.explain_pixel->y,
                                    options.explain_pixel->y + 1};
         if (!options.reference)
-            kernel_renderer = [&] { return make_renderer(one_pixel, scene, devices, {}, false); };
+            kernel_renderer = [&] { return make_renderer(one_pixel, scene, devices, {}, false, true); };
         explain_pixel(options, scene, kernel_renderer, std::cout);  // streamed, bounded, checked
         return kExitOk;
     }
@@ -482,7 +484,7 @@ Image render_one_frame(const Options& options, const Scene& scene, int frame) {
     check_crop(options, scene);
     DeviceList devices;
     if (!options.reference) devices = std::async(std::launch::deferred, list_devices);
-    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, {}, false);
+    std::unique_ptr<FrameRenderer> renderer = make_renderer(options, scene, devices, {}, false, true);
     Image image = renderer->render(camera_at_frame(scene, frame), frame, nullptr);
     renderer->store_built_programs();
     return image;

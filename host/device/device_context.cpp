@@ -60,25 +60,38 @@ std::optional<cl::Program> DeviceContext::build_from_cache(const ProgramCache& c
     }
 }
 
-cl::Program DeviceContext::build_program(const std::string& source, const std::string& options) const {
+std::optional<ProgramCache::Key> DeviceContext::key_of(const ProgramCache& cache, const std::string& source,
+                                                       const std::string& options) const {
+    if (!cache.enabled() && !store_.enabled()) return std::nullopt;
+    try {
+        return ProgramCache::key(entry_.device, source, options);
+    } catch (const std::exception&) {  // no key, no caching
+        return std::nullopt;
+    }
+}
+
+std::optional<cl::Program> DeviceContext::prebuilt_program(const ProgramCache& cache,
+                                                           const std::optional<ProgramCache::Key>& key,
+                                                           const std::string& options) const {
+    if (!key) return std::nullopt;
     // A binary from an earlier run first (device/program_cache.h). The cache hands out only
     // entries that pass every check; one the driver still refuses is removed and rebuilt.
+    if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return cached;
+    // Then the read-only store built ahead of need: nothing to store after a hit.
+    std::optional<cl::Program> stored = build_from_store(store_, context_, entry_.device, *key, options);
+    if (stored) ++store_hits_;
+    return stored;
+}
+
+std::optional<cl::Program> DeviceContext::prebuilt_program(const std::string& source, const std::string& options) const {
     const ProgramCache cache = ProgramCache::from_environment();
-    std::optional<ProgramCache::Key> key;
-    if (cache.enabled() || store_.enabled()) {
-        try {
-            key = ProgramCache::key(entry_.device, source, options);
-        } catch (const std::exception&) {  // no key, no caching
-        }
-    }
-    if (key) {
-        if (std::optional<cl::Program> cached = build_from_cache(cache, *key, options)) return *cached;
-        // Then the read-only store built ahead of need: nothing to store after a hit.
-        if (std::optional<cl::Program> stored = build_from_store(store_, context_, entry_.device, *key, options)) {
-            ++store_hits_;
-            return *stored;
-        }
-    }
+    return prebuilt_program(cache, key_of(cache, source, options), options);
+}
+
+cl::Program DeviceContext::build_program(const std::string& source, const std::string& options) const {
+    const ProgramCache cache = ProgramCache::from_environment();
+    const std::optional<ProgramCache::Key> key = key_of(cache, source, options);
+    if (std::optional<cl::Program> prebuilt = prebuilt_program(cache, key, options)) return *prebuilt;
     // Short of address space, PoCL's compiler hangs or crashes instead of failing.
     check_room_for_a_build();
     cl::Program program(context_, source);

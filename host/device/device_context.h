@@ -34,6 +34,9 @@ public:
     // Builds from the program cache's binary when it has one (device/program_cache.h); the
     // binary of a build from source goes there on store_built_programs().
     cl::Program build_program(const std::string& source, const std::string& options) const;
+    // The program from the program cache or the store, as build_program takes it, or nothing:
+    // never compiles.
+    std::optional<cl::Program> prebuilt_program(const std::string& source, const std::string& options) const;
     // Stores the binaries of the programs built from source in the program cache (best effort),
     // and puts back the entries this context built programs from (see ~DeviceContext).
     // Asking PoCL for a binary compiles every kernel of the program, which takes longer than a
@@ -45,6 +48,12 @@ public:
     int store_hits() const { return store_hits_; }  // builds served by the program store
 
 private:
+    // The cache key of a program; nothing when neither the cache nor the store is on, or no key
+    // can be made.
+    std::optional<ProgramCache::Key> key_of(const ProgramCache& cache, const std::string& source,
+                                            const std::string& options) const;
+    std::optional<cl::Program> prebuilt_program(const ProgramCache& cache, const std::optional<ProgramCache::Key>& key,
+                                                const std::string& options) const;
     // The program built from the cache's binary for `key`; nothing on a miss or when the driver
     // refuses the binary (the entry is then removed).
     std::optional<cl::Program> build_from_cache(const ProgramCache& cache, const ProgramCache::Key& key,

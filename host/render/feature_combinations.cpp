@@ -25,4 +25,16 @@ std::vector<FeatureSet> scene_feature_sets(bool double_precision, bool float_out
     return sets;
 }
 
+std::vector<FeatureSet> store_feature_sets(bool double_precision, bool float_output) {
+    std::vector<FeatureSet> sets = scene_feature_sets(double_precision, float_output);
+    FeatureSet specialised;
+    specialised.double_precision = double_precision;
+    specialised.float_output = float_output;
+    for (bool clip : {false, true}) {
+        specialised.clip = clip;
+        sets.push_back(FeatureSet::general(specialised));
+    }
+    return sets;
+}
+
 }  // namespace clr

@@ -16,6 +16,14 @@ FeatureSet FeatureSet::all() {
     return features;
 }
 
+FeatureSet FeatureSet::general(const FeatureSet& specialised) {
+    FeatureSet features = all();
+    features.clip = specialised.clip;
+    features.double_precision = specialised.double_precision;
+    features.float_output = specialised.float_output;
+    return features;
+}
+
 FeatureSet FeatureSet::of(const Scene& scene) {
     FeatureSet features;
     features.spheres = !scene.spheres.empty();

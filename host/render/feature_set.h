@@ -32,6 +32,12 @@ struct FeatureSet {
     // Every scene feature on: the general kernel that every specialised variant must match
     // (in the same precision).
     static FeatureSet all();
+    // The general program that can stand in for `specialised` (the same pixels: FeatureVariants
+    // tests): every scene feature on, except near/far clipping, which changes how the packet
+    // kernel searches (about 4x slower) and so is on only where `specialised` clips; the
+    // precision and output mode are `specialised`'s. A still takes it from the program store
+    // rather than compiling `specialised` (Renderer, RendererOptions::general_stand_in).
+    static FeatureSet general(const FeatureSet& specialised);
     static FeatureSet of(const Scene& scene);
 
     // The -D options, sorted and always listing every macro (0 or 1), so that equal

@@ -83,8 +83,17 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     // Only the kernel this renderer runs is built: compiling the others too would slow every
     // cold start (docs/benchmarks.md, Start-up).
     const KernelProgram& program = screen_tiles_ ? kRenderTilesProgram : kRenderBruteForceProgram;
-    program_ = device_.build_program(assemble_program_source(program.entry, options.kernel_dir),
-                                     features_.build_options());
+    const std::string source = assemble_program_source(program.entry, options.kernel_dir);
+    std::optional<cl::Program> ready;
+    if (options.general_stand_in && !options.features) {
+        ready = device_.prebuilt_program(source, features_.build_options());
+        const FeatureSet general = FeatureSet::general(features_);
+        if (!ready && !(general == features_)) {
+            ready = device_.prebuilt_program(source, general.build_options());
+            if (ready) features_ = general;  // its buffers too: the BVH, the coverage bits
+        }
+    }
+    program_ = ready ? *ready : device_.build_program(source, features_.build_options());
     build_ms_ = build_time.elapsed_ms();
     try {
         if (screen_tiles_)

@@ -42,6 +42,11 @@ TEST(Clipping, NearAndFarDepthsMatchTheReference) {
               testing::render_with_kernels(row_of_spheres(0, std::numeric_limits<double>::infinity())).rgba);
 }
 
+// The general program with clipping (FeatureSet::general) renders the same bytes.
+TEST(Clipping, TheGeneralProgramRendersTheSameBytes) {
+    testing::expect_general_program_renders_the_same(row_of_spheres(4.5, 17));
+}
+
 // An object wholly nearer than `near`, or wholly beyond `far`, is not seen: the image is the
 // one without it.
 TEST(Clipping, ObjectsOutsideTheDepthsVanishFromTheImage) {

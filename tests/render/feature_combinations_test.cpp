@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -52,6 +53,31 @@ TEST(FeatureCombinations, AreExactlyTheFeatureSetsScenesHave) {
     EXPECT_EQ(sets.size(), 38u);
     EXPECT_EQ(options_of(sets).size(), sets.size()) << "each once";
     EXPECT_EQ(options_of(sets), feature_sets_of_built_scenes());
+}
+
+// The store holds the scene sets and the two general programs (with and without clipping)
+// that stand in for every other set in a still.
+TEST(FeatureCombinations, TheStoreAddsTheGeneralProgramsWithAndWithoutClipping) {
+    for (bool double_precision : {false, true})
+        for (bool float_output : {false, true}) {
+            const std::vector<FeatureSet> scene_sets = scene_feature_sets(double_precision, float_output);
+            const std::vector<FeatureSet> store_sets = store_feature_sets(double_precision, float_output);
+            ASSERT_EQ(store_sets.size(), scene_sets.size() + 2);
+            EXPECT_EQ(options_of(store_sets).size(), store_sets.size()) << "each once";
+            EXPECT_TRUE(std::equal(scene_sets.begin(), scene_sets.end(), store_sets.begin()));
+            FeatureSet clipping;
+            clipping.clip = true;
+            for (const FeatureSet& general : {store_sets[scene_sets.size()], store_sets[scene_sets.size() + 1]}) {
+                EXPECT_TRUE(general.spheres && general.billboards && general.triangles && general.planes &&
+                            general.lights && general.textures && general.alpha && general.sun && general.mirrors &&
+                            general.bvh);
+                EXPECT_EQ(general.double_precision, double_precision);
+                EXPECT_EQ(general.float_output, float_output);
+            }
+            EXPECT_FALSE(store_sets[scene_sets.size()].clip);
+            EXPECT_TRUE(store_sets[scene_sets.size() + 1].clip);
+            EXPECT_EQ(FeatureSet::general(clipping).clip, true);
+        }
 }
 
 TEST(FeatureCombinations, CarryThePrecisionAndOutputModeAsked) {

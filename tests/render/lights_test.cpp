@@ -73,6 +73,10 @@ TEST(Lights, SpheresAndPlanesLitByPointLightsMatchTheReference) {
     EXPECT_NE(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(one_light).rgba);
 }
 
+// A still of lights and planes, whose own program the program store does not hold, may render
+// with the store's general program instead: the same bytes.
+TEST(Lights, TheGeneralProgramRendersTheSameBytes) { testing::expect_general_program_renders_the_same(lit_room()); }
+
 // A mesh lit by the lights with its own material: a smooth ball and a floor of triangles.
 TEST(Lights, MeshesWithAMaterialAreLitAsSpheresAre) {
     Scene scene = lit_room();

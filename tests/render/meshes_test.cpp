@@ -60,6 +60,17 @@ TEST(Meshes, MirrorMeshesReflectLikeMirrorSpheres) {
     EXPECT_NE(image.rgba, testing::render_with_kernels(without).rgba);
 }
 
+// A still of meshes, lit and mirrored and flat, whose own program the program store does not
+// hold, may render with the store's general program instead: the same bytes.
+TEST(Meshes, TheGeneralProgramRendersTheSameBytes) {
+    Scene scene = lit_meshes();
+    add_mesh(scene, grid_mesh({-5, -1.2, -3}, {10, 0, 0}, {0, 6, 0}, 3, 2), {0, 0, 0}, true);
+    scene.max_depth = 3;
+    testing::expect_general_program_renders_the_same(scene);
+    scene.has_sun = false;
+    testing::expect_general_program_renders_the_same(scene);
+}
+
 // A mesh has no back: a triangle whose corners are listed the other way round shows the
 // same, lit from the viewer's side.
 TEST(Meshes, BothSidesOfATriangleAreLitAlike) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "reference/reference.h"
+#include "render/feature_set.h"
 #include "support/image_compare.h"
 #include "support/opencl_test_device.h"
 
@@ -23,6 +24,19 @@ void expect_kernels_match_reference(const Scene& scene, const std::string& what,
     const ImageComparison comparison = compare_images(render_with_kernels(scene, options), render_with_reference(scene));
     EXPECT_LE(comparison.differing_fraction(), differing_fraction) << what << ": " << comparison.differing << " pixels differ";
     EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
+}
+
+void expect_general_program_renders_the_same(const Scene& scene) {
+    const FeatureSet own = FeatureSet::of(scene);
+    const FeatureSet general = FeatureSet::general(own);
+    ASSERT_FALSE(general == own) << "the scene's own program is the general one";
+    for (bool in_double : {false, true}) {
+        RendererOptions specialised, standing_in;
+        specialised.double_precision = standing_in.double_precision = in_double;
+        standing_in.features = general;
+        EXPECT_TRUE(render_with_kernels(scene, specialised).rgba == render_with_kernels(scene, standing_in).rgba)
+            << (in_double ? "double: " : "float: ") << own.build_options();
+    }
 }
 
 }  // namespace clr::testing

@@ -17,4 +17,9 @@ Image render_with_reference(const Scene& scene);
 void expect_kernels_match_reference(const Scene& scene, const std::string& what, const RendererOptions& options = {},
                                     double differing_fraction = 0.002);
 
+// Expects the general program that stands in for the scene's own in a still
+// (FeatureSet::general, RendererOptions::general_stand_in) to render the scene's image byte for
+// byte, in float and in double precision, with screen tiles.
+void expect_general_program_renders_the_same(const Scene& scene);
+
 }  // namespace clr::testing
