@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <limits>
 
 #include "core/box3.h"
+#include "core/usable_cpus.h"
 #include "kinds/kinds.h"
 #include "render/scene_item.h"
 
@@ -26,6 +28,9 @@ struct Primitive {
 // The frame's objects' boxes relative to `origin`, kind by kind (kinds/kinds.h).
 std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& origin) {
     std::vector<Primitive> primitives;
+    std::size_t count = 0;
+    for_each_bounded_kind([&](auto kind) { count += decltype(kind)::count(frame); });
+    primitives.reserve(count);
     for_each_bounded_kind([&](auto kind) {
         using Kind = decltype(kind);
         for (std::size_t i = 0; i < Kind::count(frame); ++i) {
@@ -40,6 +45,21 @@ std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& ori
     return primitives;
 }
 
+// Subtrees of at least this many primitives are built on a thread of their own, down to a depth
+// that gives every usable CPU work (below that, starting a thread costs more than it saves).
+constexpr std::uint32_t kParallelPrimitives = 1u << 15;
+
+int parallel_levels() {
+    int levels = 0;
+    for (int cpus = usable_cpu_count(); (1 << levels) < cpus; ++levels) {
+    }
+    return levels;
+}
+
+// Binned SAH, top down. The nodes are laid out depth first, each pair of children together
+// (the left child's subtree, then the right child's); a subtree built on another thread is
+// built into its own array and spliced in where it would have been, so the BVH is the same
+// bytes on any number of threads.
 class Builder {
 public:
     explicit Builder(std::vector<Primitive> primitives) : primitives_(std::move(primitives)) {}
@@ -47,54 +67,106 @@ public:
     Bvh build() {
         Bvh bvh;
         if (primitives_.empty()) return bvh;
+        Bounds all;
+        for (const Primitive& p : primitives_) all.grow(p);
         bvh.nodes.emplace_back();
-        build_node(bvh, 0, 0, static_cast<std::uint32_t>(primitives_.size()), 0);
+        build_node(bvh.nodes, 0, 0, static_cast<std::uint32_t>(primitives_.size()), all, 0, parallel_levels());
+        bvh.items.reserve(primitives_.size());
         for (const Primitive& p : primitives_) bvh.items.push_back(p.item);
         return bvh;
     }
 
 private:
-    // Fills node `index` with primitives [begin, end), splitting where the surface-area
-    // heuristic says traversal is cheapest; a leaf when no split pays.
-    void build_node(Bvh& bvh, std::size_t index, std::uint32_t begin, std::uint32_t end, int depth) {
-        Box bounds, centroids;
-        for (std::uint32_t i = begin; i < end; ++i) {
-            bounds.grow(primitives_[i].box);
-            centroids.grow(primitives_[i].centroid);
+    using Nodes = std::vector<Bvh::Node>;
+
+    // The box around some primitives, and the box around their centroids.
+    struct Bounds {
+        Box box, centroids;
+        void grow(const Primitive& p) {
+            box.grow(p.box);
+            centroids.grow(p.centroid);
         }
-        bvh.nodes[index].lower = bounds.lower;
-        bvh.nodes[index].upper = bounds.upper;
+        void grow(const Bounds& b) {
+            box.grow(b.box);
+            centroids.grow(b.centroids);
+        }
+    };
+
+    // Where split() divides a node's primitives, and the bounds of both sides (unions of the
+    // bins' bounds: min and max are exact, so they are what a pass over each side would give).
+    struct Split {
+        std::uint32_t middle;
+        Bounds left, right;
+    };
+
+    // Fills nodes[index] with primitives [begin, end) within `bounds`, splitting where the
+    // surface-area heuristic says traversal is cheapest; a leaf when no split pays.
+    void build_node(Nodes& nodes, std::size_t index, std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
+                    int depth, int parallel_levels) {
+        nodes[index].lower = bounds.box.lower;
+        nodes[index].upper = bounds.box.upper;
         // Depth is capped so that the kernels' fixed traversal stack always suffices.
         bool may_split = end - begin > kLeafSize && depth < kMaxBvhDepth;
-        std::uint32_t middle = may_split ? split(begin, end, bounds, centroids) : begin;
+        const Split cut = may_split ? split(begin, end, bounds) : Split{begin, {}, {}};
+        const std::uint32_t middle = cut.middle;
         if (middle == begin || middle == end) {
-            bvh.nodes[index].first = begin;
-            bvh.nodes[index].count = end - begin;
+            nodes[index].first = begin;
+            nodes[index].count = end - begin;
             return;
         }
-        auto left = static_cast<std::uint32_t>(bvh.nodes.size());
-        bvh.nodes[index].first = left;
-        bvh.nodes.emplace_back();
-        bvh.nodes.emplace_back();
-        build_node(bvh, left, begin, middle, depth + 1);
-        build_node(bvh, left + 1, middle, end, depth + 1);
+        auto left = static_cast<std::uint32_t>(nodes.size());
+        nodes[index].first = left;
+        nodes.emplace_back();
+        nodes.emplace_back();
+        if (parallel_levels <= 0 || end - middle < kParallelPrimitives) {
+            build_node(nodes, left, begin, middle, cut.left, depth + 1, 0);
+            build_node(nodes, left + 1, middle, end, cut.right, depth + 1, 0);
+            return;
+        }
+        // The right subtree on another thread, into its own array whose node 0 is its root.
+        Nodes right(1);
+        std::future<void> right_built = std::async(std::launch::async, [&] {
+            build_node(right, 0, middle, end, cut.right, depth + 1, parallel_levels - 1);
+        });
+        try {
+            build_node(nodes, left, begin, middle, cut.left, depth + 1, parallel_levels - 1);
+        } catch (...) {
+            right_built.wait();  // it reads primitives_ and writes `right`: done before they go
+            throw;
+        }
+        right_built.get();
+        splice(nodes, left + 1, right);
     }
 
-    // Binned SAH over the axis of largest centroid extent. Returns the partition point, or
-    // `begin` when keeping a leaf is cheaper (or all centroids coincide).
-    std::uint32_t split(std::uint32_t begin, std::uint32_t end, const Box& bounds, const Box& centroids) {
-        Vec3 extent = centroids.upper - centroids.lower;
-        int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-        double low = centroids.lower[axis], width = extent[axis];
-        if (!(width > 0)) return begin;
-        auto bin_of = [&](const Primitive& p) {
-            return std::min(kBins - 1, static_cast<int>((p.centroid[axis] - low) / width * kBins));
+    // Puts `subtree` (node 0 its root) at nodes[root], its other nodes after the last of
+    // `nodes`, with their child indices moved along.
+    static void splice(Nodes& nodes, std::size_t root, const Nodes& subtree) {
+        const auto shift = static_cast<std::uint32_t>(nodes.size() - 1);
+        auto placed = [shift](Bvh::Node node) {
+            if (node.count == 0) node.first += shift;  // an inner node's child; a leaf's items stay
+            return node;
         };
-        std::array<Box, kBins> boxes;
+        nodes[root] = placed(subtree[0]);
+        nodes.reserve(nodes.size() + subtree.size() - 1);
+        for (std::size_t i = 1; i < subtree.size(); ++i) nodes.push_back(placed(subtree[i]));
+    }
+
+    // Binned SAH over the axis of largest centroid extent. The partition point is `begin` when
+    // keeping a leaf is cheaper (or all centroids coincide).
+    Split split(std::uint32_t begin, std::uint32_t end, const Bounds& bounds) {
+        const Split leaf{begin, {}, {}};
+        Vec3 extent = bounds.centroids.upper - bounds.centroids.lower;
+        int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        double low = bounds.centroids.lower[axis], width = extent[axis];
+        if (!(width > 0)) return leaf;
+        // Each primitive's bin, found once for the counts and again for the partition.
+        std::vector<std::uint8_t> bins(end - begin);
+        std::array<Bounds, kBins> binned;
         std::array<std::uint32_t, kBins> counts{};
         for (std::uint32_t i = begin; i < end; ++i) {
-            int bin = bin_of(primitives_[i]);
-            boxes[bin].grow(primitives_[i].box);
+            const int bin = std::min(kBins - 1, static_cast<int>((primitives_[i].centroid[axis] - low) / width * kBins));
+            bins[i - begin] = static_cast<std::uint8_t>(bin);
+            binned[bin].grow(primitives_[i]);
             ++counts[bin];
         }
         // Cost of each split between bins b and b+1: areas times counts on both sides.
@@ -102,24 +174,43 @@ private:
         Box right;
         std::uint32_t right_count = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            right.grow(boxes[b]);
+            right.grow(binned[b].box);
             right_count += counts[b];
             right_cost[b - 1] = right.area() * right_count;
         }
         Box left;
         std::uint32_t left_count = 0;
-        double best_cost = bounds.area() * (end - begin);  // cost of a leaf
+        const double area = bounds.box.area();
+        double best_cost = area * (end - begin);  // cost of a leaf
         int best_split = -1;
         for (int b = 0; b < kBins - 1; ++b) {
-            left.grow(boxes[b]);
+            left.grow(binned[b].box);
             left_count += counts[b];
-            double cost = left.area() * left_count + right_cost[b] + bounds.area() * 0.5;  // plus a traversal step
+            double cost = left.area() * left_count + right_cost[b] + area * 0.5;  // plus a traversal step
             if (cost < best_cost && left_count > 0 && left_count < end - begin) best_cost = cost, best_split = b;
         }
-        if (best_split < 0) return begin;
-        auto middle = std::partition(primitives_.begin() + begin, primitives_.begin() + end,
-                                     [&](const Primitive& p) { return bin_of(p) <= best_split; });
-        return static_cast<std::uint32_t>(middle - primitives_.begin());
+        if (best_split < 0) return leaf;
+        Split cut{partition(begin, end, bins, best_split), {}, {}};
+        for (int b = 0; b < kBins; ++b) (b <= best_split ? cut.left : cut.right).grow(binned[b]);
+        return cut;
+    }
+
+    // Moves the primitives of bins up to `last_left` before the others, swapping as
+    // std::partition does for bidirectional iterators (libstdc++), so that the order, and so the
+    // BVH, is what it was when this called std::partition; `bins` moves along.
+    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, std::vector<std::uint8_t>& bins, int last_left) {
+        std::uint32_t first = begin, last = end;
+        auto is_left = [&](std::uint32_t i) { return bins[i - begin] <= last_left; };
+        while (true) {
+            while (first != last && is_left(first)) ++first;
+            if (first == last) return first;
+            --last;
+            while (first != last && !is_left(last)) --last;
+            if (first == last) return first;
+            std::swap(primitives_[first], primitives_[last]);
+            std::swap(bins[first - begin], bins[last - begin]);
+            ++first;
+        }
     }
 
     std::vector<Primitive> primitives_;

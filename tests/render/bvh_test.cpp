@@ -5,9 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sched.h>
+
 #include <set>
 
+#include "core/usable_cpus.h"
 #include "render/scene_item.h"
+#include "support/cpu_affinity.h"
 #include "support/random_scene.h"
 #include "support/scene_builder.h"
 
@@ -69,6 +73,31 @@ TEST(BvhBuild, AFarOutlierDoesNotStopTheSplitting) {
     check_structure(scene, bvh);
     EXPECT_GT(bvh.nodes.size(), 100u);
     EXPECT_EQ(bvh.nodes[0].count, 0u) << "the root must split";
+}
+
+// Subtrees of many objects are built on threads of their own and spliced in: the BVH must be
+// the one a single thread builds, node for node and item for item.
+TEST(BvhBuild, TheSameNodesOnOneCpuAsOnEvery) {
+    if (usable_cpu_count() < 2) GTEST_SKIP() << "one usable CPU: nothing runs in parallel";
+    Scene scene = testing::make_random_scene(254, 150000, 0);
+    const FrameGeometry frame(scene);
+    const Bvh parallel = build_bvh(frame);
+    cpu_set_t every, one;
+    ASSERT_EQ(::sched_getaffinity(0, sizeof(every), &every), 0);
+    CPU_ZERO(&one);
+    CPU_SET(testing::first_usable_cpu(), &one);
+    ASSERT_EQ(::sched_setaffinity(0, sizeof(one), &one), 0);
+    const Bvh serial = build_bvh(frame);
+    ASSERT_EQ(::sched_setaffinity(0, sizeof(every), &every), 0);
+    EXPECT_EQ(std::set<std::uint32_t>(parallel.items.begin(), parallel.items.end()).size(), scene.spheres.size());
+    ASSERT_GT(serial.nodes.size(), 1000u);
+    ASSERT_EQ(parallel.nodes.size(), serial.nodes.size());
+    for (std::size_t i = 0; i < serial.nodes.size(); ++i) {
+        const Bvh::Node& a = parallel.nodes[i];
+        const Bvh::Node& b = serial.nodes[i];
+        ASSERT_TRUE(a.first == b.first && a.count == b.count && a.lower == b.lower && a.upper == b.upper) << "node " << i;
+    }
+    EXPECT_EQ(parallel.items, serial.items);
 }
 
 TEST(BvhBuild, EmptySceneHasNoNodes) {
