@@ -191,6 +191,70 @@ TEST(ObjReader, TheTriangleLimitIsCountedAsTheFacesFan) {
     EXPECT_EQ(problem.detail, "the faces up to this line make 3 triangles, more than the limit of 2");
 }
 
+// A text of several MiB is checked in pieces, one per CPU (obj_text_checks.cpp): the counts,
+// the line numbers and the first problem must be those of the file as a whole, with relative
+// indices and the triangle limit reaching across the pieces.
+class LongObjText : public ::testing::Test {
+protected:
+    // kGroups groups of 4 lines (lines 4g+2 .. 4g+5, after a first face at line 1 that names
+    // the last position): three positions and a face of them named back from the latest.
+    static constexpr std::uint64_t kGroups = 150000;
+    static std::string text(const std::string& replaced_line = "", std::uint64_t at = 0) {
+        std::string out = "f 1 2 " + std::to_string(3 * kGroups) + "\n";
+        for (std::uint64_t g = 0; g < kGroups; ++g) {
+            const std::string k = std::to_string(g);
+            out += "v " + k + " 0 0\nv " + k + " 1 0\nv " + k + " 0 1\n";
+            out += (at == 4 * g + 5 ? replaced_line : "f -3 -2 -1") + "\n";
+        }
+        return out;
+    }
+    static std::uint64_t face_line(std::uint64_t group) { return 4 * group + 5; }
+};
+
+TEST_F(LongObjText, CountsAndRelativeIndicesAcrossPieces) {
+    const std::string whole = text();
+    ASSERT_GT(whole.size(), 4u << 20) << "long enough to be checked in pieces";
+    ObjTextProblem problem;
+    const ObjTextCounts counts = check_obj_text(whole, kGroups + 1, problem);
+    EXPECT_EQ(problem.line, 0u) << problem.detail;
+    EXPECT_EQ(counts.positions, 3 * kGroups);
+    EXPECT_EQ(counts.faces, kGroups + 1);
+    EXPECT_EQ(counts.triangles, kGroups + 1);
+    // Back from the last group's face to the very first position: every position precedes it.
+    const std::uint64_t last = kGroups - 1;
+    const std::string first = "-" + std::to_string(3 * kGroups);
+    check_obj_text(text("f " + first + " -2 -1", face_line(last)), kGroups + 1, problem);
+    EXPECT_EQ(problem.line, 0u) << problem.detail;
+    const std::string beyond = "-" + std::to_string(3 * kGroups + 1);
+    check_obj_text(text("f " + beyond + " -2 -1", face_line(last)), kGroups + 1, problem);
+    EXPECT_EQ(problem.line, face_line(last));
+    EXPECT_EQ(problem.detail, "corner 1: position index " + beyond + " is out of range: " +
+                                  std::to_string(3 * kGroups) + " precede this line");
+}
+
+TEST_F(LongObjText, TheFirstProblemIsReportedWhereverItLies) {
+    ObjTextProblem problem;
+    for (std::uint64_t group : {std::uint64_t{2}, kGroups / 2 + 7, kGroups - 1}) {
+        check_obj_text(text("f 1 2 0", face_line(group)), kGroups + 1, problem);
+        EXPECT_EQ(problem.line, face_line(group));
+        EXPECT_EQ(problem.detail, "corner 3: position index 0: indices count from 1 (or back from -1)");
+    }
+    // Two bad lines, far apart: the first is reported.
+    std::string two = text("v 1 nan 0", face_line(3));
+    const std::size_t late = two.rfind("f -3 -2 -1");
+    two.replace(late, 10, "f 1 2");
+    check_obj_text(two, kGroups + 1, problem);
+    EXPECT_EQ(problem.line, face_line(3));
+    EXPECT_EQ(problem.detail, "'v': 'nan' is not a finite number");
+    // The triangle limit, crossed late in the file: named at the face that crosses it.
+    // The first face, then one a group: group g's face makes g + 2 triangles.
+    const std::uint64_t limit = kGroups - 10;
+    check_obj_text(text(), limit, problem);
+    EXPECT_EQ(problem.line, face_line(limit - 1));
+    EXPECT_EQ(problem.detail, "the faces up to this line make " + std::to_string(limit + 1) +
+                                  " triangles, more than the limit of " + std::to_string(limit));
+}
+
 TEST(ObjReader, FilesThatAreNotMeshesAreRefusedAtOnce) {
     TempFolder folder;
     try {
