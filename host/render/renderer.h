@@ -92,8 +92,11 @@ public:
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
-    // For the stage tests: the scene's kernel arguments.
+    // For the stage tests: the scene's kernel arguments, and the geometry in them made relative
+    // to `origin` (after construction it is relative to the first camera key's eye, the first
+    // frame's origin; the stage tests give rays in scene coordinates, origin (0, 0, 0)).
     const SceneArgs& scene_args() const { return scene_args_; }
+    void move_geometry_to(const Vec3& origin);
 
 private:
     // Moves the device geometry to `origin` (the frame camera's) and places the impostors for

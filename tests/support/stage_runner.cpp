@@ -29,7 +29,9 @@ void run_1d(cl::Kernel& kernel, std::size_t count) {
 StageRunner::StageRunner(const Scene& scene, const RendererOptions& options)
     : renderer_(test_device(), scene, options),
       program_(test_device().build_program(assemble_program_source(kTestStagesProgram.entry, options.kernel_dir),
-                                           renderer_.features().build_options())) {}
+                                           renderer_.features().build_options())) {
+    renderer_.move_geometry_to({0, 0, 0});  // the stages' rays are in scene coordinates
+}
 
 std::vector<ClrRay> StageRunner::raygen(const ClrCamera& camera) {
     std::size_t count = static_cast<std::size_t>(camera.width) * camera.height;
