@@ -36,5 +36,7 @@ Bvh build_bvh(const FrameGeometry& frame);
 // The device form, bounds relative to `origin` and rounded outwards to float so that they
 // still contain every object after rounding.
 std::vector<ClrBvhNode> compile_bvh(const Bvh& bvh, const Vec3& origin);
+// The same into `nodes`, whose storage a moving camera's frames reuse.
+void compile_bvh(const Bvh& bvh, const Vec3& origin, std::vector<ClrBvhNode>& nodes);
 
 }  // namespace clr

@@ -141,6 +141,7 @@ private:
     PageAlignedVector<std::uint8_t> texel_storage_;
     SceneArgs scene_args_;  // the scene's buffers on the device
     Bvh bvh_;
+    std::vector<ClrBvhNode> device_bvh_nodes_;  // bvh_ relative to origin_, as last uploaded
     cl::Buffer pixels_;
     std::vector<std::uint8_t> spare_pixels_;  // a recycled image's storage (see recycle())
     bool render_in_place_ = false;  // the kernel writes into the image's own storage (CPU devices)
