@@ -5,6 +5,7 @@
 #include <new>
 
 #include "core/printable_text.h"
+#include "scene/mesh_cache.h"
 #include "scene/obj_reader.h"
 #include "scene/value_ranges.h"
 
@@ -154,13 +155,14 @@ std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
 
 void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders) {
     const fs::path folder = fs::path(scene.path).parent_path();
+    const MeshCache cache = MeshCache::from_environment();
     for (const PendingMesh& each : pending) {
         const fs::path name(each.mesh.filename);
         const std::string path = (name.is_absolute() ? name : folder / name).lexically_normal().string();
         Mesh mesh = each.mesh;
         ObjMesh model;
         try {
-            model = read_obj(path);
+            model = read_obj_through_cache(path, cache);
             // Any text reads as an OBJ of unknown statements: a file without one face is
             // not the mesh the scene asks for (a wrong file, or points and lines only).
             if (model.triangles.empty())

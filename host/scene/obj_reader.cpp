@@ -69,6 +69,7 @@ public:
             return false;
         }
         files_.push_back(path.lexically_normal().string());
+        digests_.push_back(sha256(text.data(), text.size()));
         const ObjTextProblem colour = check_mtl_text(text);
         if (colour.line != 0) {
             if (problem_.empty()) {
@@ -86,12 +87,14 @@ public:
 
     const std::string& problem() const { return problem_; }
     const std::vector<std::string>& files() const { return files_; }
+    const std::vector<Sha256Digest>& digests() const { return digests_; }
     bool gives_diffuse(const std::string& material) const { return with_diffuse_.count(material) != 0; }
 
 private:
     std::filesystem::path folder_;
     std::string problem_;
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
+    std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
     std::set<std::string> with_diffuse_;
 };
 
@@ -138,6 +141,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
 
     ObjMesh mesh;
     mesh.material_files = material_files.files();
+    mesh.material_digests = material_files.digests();
     const std::size_t positions = attributes.vertices.size() / 3;
     const std::size_t normals = attributes.normals.size() / 3;
     if (positions != counts.positions || normals != counts.normals) {

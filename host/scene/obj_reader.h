@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sha256.h"
 #include "core/vec3.h"
 
 namespace clr {
@@ -42,6 +43,7 @@ struct ObjMesh {
     std::optional<Vec3> diffuse;
     std::uint64_t faces = 0;  // polygons in the file
     std::vector<std::string> material_files;  // the .mtl files read, as paths
+    std::vector<Sha256Digest> material_digests;  // the SHA-256 of each, as read
 };
 
 // Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a

@@ -3,6 +3,7 @@
 // read-only never makes a run fail.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "core/payload_checksum.h"
 #include "core/sha256.h"
 #include "support/command.h"
+#include "support/obj_text.h"
 #include "support/small_disk.h"
 #include "support/temp_folder.h"
 
@@ -149,6 +151,31 @@ TEST(CacheRun, ACacheFolderThatIsAFileLeavesTheRunSuccessful) {
     ASSERT_EQ(run.exit_code, 0) << run.output;
     EXPECT_EQ(read_bytes(folder.file("out.png")), reference);
     EXPECT_EQ(read_bytes(folder.file("cache")), "not a folder");
+}
+
+// A large OBJ's parsed mesh comes from the cache on the second run (its entry's time is
+// refreshed by the hit) and renders the image a run without any cache renders.
+TEST(MeshCacheRun, ASecondRunTakesTheParsedMeshAndRendersTheSameImage) {
+    TempFolder folder;
+    folder.write("grid.obj", testing::grid_obj_text(160));
+    folder.write("grid.mtl", "newmtl green\nKd 0.1 0.7 0.2\n");
+    folder.write("scene.json", R"({
+  "eye": [20, 6, 8], "lookat": [20, 0, -40], "up": [0, 1, 0], "fov_angle": 60,
+  "width": 48, "height": 32, "DefaultColor": [0.1, 0.1, 0.3], "SunLocation": [30, 40, 10],
+  "obj": {"type": "obj", "filename": "grid.obj"}})");
+    const std::string reference = reference_image(folder);
+    const std::string cache = folder.file("cache");
+    const std::string environment = "CLRENDER_CACHE_DIR='" + cache + "'";
+    ASSERT_EQ(run_clrender("scene.json -q -o first.png", folder.path(), environment).exit_code, 0);
+    std::vector<fs::path> entries;
+    for (const auto& entry : fs::directory_iterator(cache + "/meshes")) entries.push_back(entry.path());
+    ASSERT_EQ(entries.size(), 1u);
+    const auto long_ago = fs::file_time_type::clock::now() - std::chrono::hours(24 * 365);
+    fs::last_write_time(entries[0], long_ago);
+    ASSERT_EQ(run_clrender("scene.json -q -o second.png", folder.path(), environment).exit_code, 0);
+    EXPECT_GT(fs::last_write_time(entries[0]), long_ago) << "the entry was used";
+    EXPECT_EQ(read_bytes(folder.file("first.png")), reference);
+    EXPECT_EQ(read_bytes(folder.file("second.png")), reference);
 }
 
 }  // namespace

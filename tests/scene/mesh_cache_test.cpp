@@ -1,0 +1,113 @@
+// The parsed-mesh cache (scene/mesh_cache.h): a second read of a large OBJ is the stored mesh,
+// equal to a fresh parse; an edited OBJ or .mtl is a miss; a damaged entry or one whose mesh the
+// reader would refuse is never used; failures and small files are not stored.
+#include "scene/mesh_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/obj_text.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::TempFolder;
+
+void expect_same_mesh(const ObjMesh& a, const ObjMesh& b) {
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.normals, b.normals);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.triangle_normals, b.triangle_normals);
+    EXPECT_EQ(a.faces, b.faces);
+    ASSERT_EQ(a.diffuse.has_value(), b.diffuse.has_value());
+    if (a.diffuse) {
+        EXPECT_EQ(*a.diffuse, *b.diffuse);
+    }
+    EXPECT_EQ(a.material_files, b.material_files);
+    EXPECT_EQ(a.material_digests, b.material_digests);
+}
+
+class MeshCacheTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        obj_ = folder_.write("grid.obj", testing::grid_obj_text(160));
+        ASSERT_GE(fs::file_size(obj_), MeshCache::kSmallestStoredBytes);
+        folder_.write("grid.mtl", "newmtl green\nKd 0.1 0.7 0.2\n");
+    }
+    std::string entry() const { return cache_.path(MeshCache::key(obj_, testing::read_bytes(obj_))); }
+
+    TempFolder folder_;
+    MeshCache cache_{folder_.file("cache")};
+    std::string obj_;
+};
+
+TEST_F(MeshCacheTest, TheSecondReadIsTheStoredMeshAndEqualsAFreshParse) {
+    const ObjMesh parsed = read_obj(obj_);
+    const ObjMesh first = read_obj_through_cache(obj_, cache_);
+    ASSERT_TRUE(fs::exists(entry()));
+    expect_same_mesh(first, parsed);
+    // The stored mesh, not a parse: a parse of a file that is no longer there would fail.
+    const std::string text = testing::read_bytes(obj_);
+    const std::optional<ObjMesh> stored = cache_.load(MeshCache::key(obj_, text));
+    ASSERT_TRUE(stored.has_value());
+    expect_same_mesh(*stored, parsed);
+    expect_same_mesh(read_obj_through_cache(obj_, cache_), parsed);
+    ASSERT_TRUE(parsed.diffuse.has_value());
+    EXPECT_NEAR(parsed.diffuse->y, 0.7, 1e-12);
+}
+
+TEST_F(MeshCacheTest, AnEditedObjOrMaterialIsAMiss) {
+    read_obj_through_cache(obj_, cache_);
+    folder_.write("grid.mtl", "newmtl green\nKd 0.9 0.1 0.1\n");
+    const std::optional<Vec3> red = read_obj_through_cache(obj_, cache_).diffuse;
+    ASSERT_TRUE(red.has_value());
+    EXPECT_NEAR(red->x, 0.9, 1e-12);
+    fs::remove(folder_.file("grid.mtl"));
+    EXPECT_THROW(read_obj_through_cache(obj_, cache_), ObjError) << "a missing .mtl is the reader's error";
+    folder_.write("grid.mtl", "newmtl green\nKd 0.1 0.7 0.2\n");
+    folder_.write("grid.obj", testing::grid_obj_text(161));
+    EXPECT_EQ(read_obj_through_cache(obj_, cache_).triangles.size(), 2u * 161 * 161);
+}
+
+TEST_F(MeshCacheTest, ADamagedEntryIsNotUsedAndIsReplaced) {
+    read_obj_through_cache(obj_, cache_);
+    std::string bytes = testing::read_bytes(entry());
+    bytes[bytes.size() / 2] ^= 0x10;
+    std::ofstream(entry(), std::ios::binary | std::ios::trunc) << bytes;
+    expect_same_mesh(read_obj_through_cache(obj_, cache_), read_obj(obj_));
+    EXPECT_NE(testing::read_bytes(entry()), bytes) << "stored again, whole";
+}
+
+// An entry with correct checksums whose mesh the reader would never make (an index beyond the
+// positions, a coordinate beyond the range) is refused and removed.
+TEST_F(MeshCacheTest, AStoredMeshTheReaderWouldRefuseIsNotUsed) {
+    const MeshCache::Key key = MeshCache::key(obj_, testing::read_bytes(obj_));
+    ObjMesh bad = read_obj(obj_);
+    bad.triangles[7][1] = static_cast<std::uint32_t>(bad.positions.size());
+    cache_.store(key, bad);
+    ASSERT_TRUE(fs::exists(cache_.path(key)));
+    EXPECT_FALSE(cache_.load(key).has_value());
+    EXPECT_FALSE(fs::exists(cache_.path(key)));
+    bad = read_obj(obj_);
+    bad.positions[3].y = 2e15;
+    cache_.store(key, bad);
+    EXPECT_FALSE(cache_.load(key).has_value());
+    expect_same_mesh(read_obj_through_cache(obj_, cache_), read_obj(obj_));
+}
+
+TEST_F(MeshCacheTest, FailuresAndSmallFilesAreNotStored) {
+    const std::string small = folder_.write("small.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    read_obj_through_cache(small, cache_);
+    const std::string bad = folder_.write("bad.obj", testing::grid_obj_text(160) + "f 1 2 99999999\n");
+    EXPECT_THROW(read_obj_through_cache(bad, cache_), ObjError);
+    EXPECT_THROW(read_obj_through_cache(bad, cache_), ObjError) << "reported every time";
+    EXPECT_FALSE(fs::exists(folder_.file("cache/meshes")) && !fs::is_empty(folder_.file("cache/meshes")));
+}
+
+}  // namespace
+}  // namespace clr
