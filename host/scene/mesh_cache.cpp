@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -17,8 +18,10 @@ namespace clr {
 namespace {
 
 CacheEntryKind mesh_entries(std::uint64_t size_limit) {
-    // An entry larger than the whole cache could never be kept: a header claiming one is refused.
-    return {"mesh", {'c', 'l', 'r', 'm', 'e', 's', 'h', '1'}, MeshCache::kFormatVersion, size_limit};
+    // A header claiming more than a stored mesh and its .mtl list (at most 1024 paths) is
+    // refused before anything is allocated, as one larger than the whole cache.
+    const std::uint64_t largest = MeshCache::kLargestStoredBytes + (std::uint64_t(8) << 20);
+    return {"mesh", {'c', 'l', 'r', 'm', 'e', 's', 'h', '1'}, MeshCache::kFormatVersion, std::min(size_limit, largest)};
 }
 
 // The clrender build that parses: the file holding read_obj, its size and modification time.
@@ -133,8 +136,8 @@ bool as_the_reader_makes_them(const ObjMesh& mesh) {
 
 MeshCache MeshCache::from_environment() { return MeshCache(cache_folder_from_environment()); }
 
-MeshCache::MeshCache(std::string cache_folder, std::uint64_t size_limit)
-    : entries_(std::move(cache_folder), "meshes", mesh_entries(size_limit), size_limit) {}
+MeshCache::MeshCache(std::string cache_folder, std::uint64_t size_limit, std::uint64_t largest_mesh)
+    : entries_(std::move(cache_folder), "meshes", mesh_entries(size_limit), size_limit), largest_mesh_(largest_mesh) {}
 
 MeshCache::Key MeshCache::key(const std::string& path, const std::string& text) {
     return Sha256()
@@ -181,7 +184,12 @@ std::optional<ObjMesh> MeshCache::load(const Key& key) const {
 }
 
 void MeshCache::store(const Key& key, const ObjMesh& mesh) const {
-    if (!enabled()) return;
+    if (!enabled() || mesh.material_digests.size() != mesh.material_files.size()) return;
+    // The payload is built whole before it is written: a copy of the mesh, so a mesh too large
+    // to copy without pressing on the machine's memory is not stored.
+    const std::uint64_t bytes = (mesh.positions.size() + mesh.normals.size()) * sizeof(Vec3) +
+                                mesh.triangles.size() * (sizeof(mesh.triangles[0]) + sizeof(mesh.triangle_normals[0]));
+    if (bytes > largest_mesh_) return;
     PayloadWriter out;
     out.put<std::uint64_t>(mesh.positions.size());
     out.put<std::uint64_t>(mesh.normals.size());
@@ -194,7 +202,6 @@ void MeshCache::store(const Key& key, const ObjMesh& mesh) const {
     out.put_all(mesh.normals);
     out.put_all(mesh.triangles);
     out.put_all(mesh.triangle_normals);
-    if (mesh.material_digests.size() != mesh.material_files.size()) return;
     for (std::size_t i = 0; i < mesh.material_files.size(); ++i) {
         out.put_text(mesh.material_files[i]);
         out.put(mesh.material_digests[i]);

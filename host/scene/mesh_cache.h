@@ -12,8 +12,8 @@
 // range, coordinates finite and within clrender's range): not even an entry planted in the
 // private cache folder with correct checksums can make a mesh the reader would refuse. Failures
 // are never stored, so they are reported every time. Only OBJ files of at least
-// kSmallestStoredBytes are stored; the folder is kept under a size limit by removing the least
-// recently used entries.
+// kSmallestStoredBytes, and meshes of at most kLargestStoredBytes, are stored; the folder is
+// kept under a size limit by removing the least recently used entries.
 #pragma once
 
 #include <cstdint>
@@ -31,6 +31,9 @@ public:
     // Smaller files parse in about the time an entry takes to look up and read.
     static constexpr std::size_t kSmallestStoredBytes = 1u << 20;
     static constexpr std::uint64_t kDefaultSizeLimit = std::uint64_t(1) << 30;
+    // A stored mesh is copied into one payload first: larger meshes (about 5M triangles) are
+    // not stored, so that storing never doubles a huge mesh's memory.
+    static constexpr std::uint64_t kLargestStoredBytes = std::uint64_t(256) << 20;
     // Part of every key and header: a change of the entry layout must bump it. (A change of
     // how OBJ files are read changes the build, which is in every key already.)
     static constexpr std::uint32_t kFormatVersion = 1;
@@ -42,7 +45,9 @@ public:
 
     // Entries go in `cache_folder`/meshes; "" disables the cache. `size_limit`: most bytes of
     // entries kept there.
-    explicit MeshCache(std::string cache_folder, std::uint64_t size_limit = kDefaultSizeLimit);
+    // `largest_mesh`: the most bytes of mesh arrays stored (kLargestStoredBytes; tests lower it).
+    explicit MeshCache(std::string cache_folder, std::uint64_t size_limit = kDefaultSizeLimit,
+                       std::uint64_t largest_mesh = kLargestStoredBytes);
     bool enabled() const { return entries_.enabled(); }
     std::string folder() const { return entries_.folder(); }
     // The entry's file for `key`.
@@ -60,6 +65,7 @@ public:
 
 private:
     CacheEntryFolder entries_;
+    std::uint64_t largest_mesh_;
 };
 
 // read_obj(path) through `cache`: the same mesh, and the same ObjError for a file that cannot

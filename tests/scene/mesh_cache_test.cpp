@@ -109,5 +109,18 @@ TEST_F(MeshCacheTest, FailuresAndSmallFilesAreNotStored) {
     EXPECT_FALSE(fs::exists(folder_.file("cache/meshes")) && !fs::is_empty(folder_.file("cache/meshes")));
 }
 
+// A mesh larger than the cache's largest is read, and not stored (storing copies it whole).
+TEST_F(MeshCacheTest, AMeshLargerThanTheLargestStoredIsReadAndNotStored) {
+    const ObjMesh parsed = read_obj(obj_);
+    const std::uint64_t bytes = (parsed.positions.size() + parsed.normals.size()) * sizeof(Vec3) +
+                                parsed.triangles.size() * 24;
+    const MeshCache small(folder_.file("small-cache"), MeshCache::kDefaultSizeLimit, bytes - 1);
+    expect_same_mesh(read_obj_through_cache(obj_, small), parsed);
+    EXPECT_FALSE(fs::exists(small.path(MeshCache::key(obj_, testing::read_bytes(obj_)))));
+    const MeshCache enough(folder_.file("enough-cache"), MeshCache::kDefaultSizeLimit, bytes);
+    read_obj_through_cache(obj_, enough);
+    EXPECT_TRUE(fs::exists(enough.path(MeshCache::key(obj_, testing::read_bytes(obj_)))));
+}
+
 }  // namespace
 }  // namespace clr
