@@ -25,11 +25,12 @@ namespace clr {
 struct RendererOptions {
     std::string kernel_dir;                // read kernels from here instead of the embedded copies
     std::optional<FeatureSet> features;    // compile these instead of the scene's own (tests)
-    // For a still: where neither the program cache nor the program store holds the scene's own
-    // program but one of them holds the general one (FeatureSet::general), render with that
-    // instead of compiling: the same pixels, a little slower per frame, and no compile (seconds
-    // on PoCL). Frames of an animation leave it off: one compile pays for them all, and the
-    // program cache keeps it for the next run. Not with `features`.
+    // For a still and for the viewer: where neither the program cache nor the program store
+    // holds the scene's own program but one of them holds the general one
+    // (FeatureSet::general), render with that instead of compiling: the same pixels, a little
+    // slower per frame, and no compile (seconds on PoCL). Frames of an animation leave it off:
+    // one compile pays for them all, and the program cache keeps it for the next run. Not with
+    // `features`.
     bool general_stand_in = false;
     // Largest pixel buffer to allocate on the device, in bytes; 0: the device's own limit.
     // No band is larger (see render_bands()).

@@ -5,6 +5,7 @@
 #include "app/explain_pixel.h"
 #include "core/interruption.h"
 #include "device/device_selection.h"
+#include "device/program_store.h"
 
 namespace clr {
 namespace {
@@ -37,11 +38,16 @@ private:
 RenderService::RenderService(const Scene& scene, const Options& options) : scene_(scene) {
     DeviceEntry entry = select_device(list_devices(), options.device);
     if (options.threads) entry = select_compute_units(entry, *options.threads);
-    device_ = std::make_unique<DeviceContext>(entry);
+    // The program store, as a render's: a fresh install's first view compiles nothing.
+    device_ = std::make_unique<DeviceContext>(entry, ProgramStore::from_environment());
     device_name_ = entry.device_name;
     RendererOptions renderer_options;
     renderer_options.kernel_dir = options.kernel_dir;
     renderer_options.double_precision = options.double_precision;
+    // A scene whose own program is not prebuilt (meshes, planes, lights, clipping) is served by
+    // the store's general program at once rather than after a compile of seconds: the same
+    // pixels, a little slower per frame (docs/architecture.md, Program store).
+    renderer_options.general_stand_in = true;
     // A signal stops a long frame within a band, so the server stops promptly.
     renderer_options.between_bands = throw_if_interrupted;
     renderer_ = std::make_unique<Renderer>(*device_, scene_, renderer_options);

@@ -36,6 +36,9 @@ public:
     std::string explain(const ViewCamera& view, int x, int y);
 
     const std::string& device_name() const { return device_name_; }
+    // Programs taken from the program cache and from the program store (the rest compiled).
+    int cache_hits() const { return device_->cache_hits(); }
+    int store_hits() const { return device_->store_hits(); }
 
 private:
     Image render_locked(const ViewCamera& view);

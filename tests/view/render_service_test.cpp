@@ -1,0 +1,70 @@
+// The viewer's renderer (view/render_service.h) starts from the program store as a render
+// does: a scene whose own program is not prebuilt (here planes and lights) is served by the
+// store's general program without a compile, and shows the image the scene's own program
+// renders.
+#include "view/render_service.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "render/feature_set.h"
+#include "render/program_store_builder.h"
+#include "support/opencl_test_device.h"
+#include "support/scene_builder.h"
+#include "support/scoped_env.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+// A sphere on a floor plane under a point light (the fall 2019 format's kinds).
+Scene lit_floor() {
+    Scene scene = testing::make_scene({2, 5, 14}, {0, 1, 0}, {0, 1, 0}, 50, 64, 48);
+    Material material;
+    material.diffuse = {0.6, 0.4, 0.2};
+    material.specular = {0.5, 0.5, 0.5};
+    material.phong_exponent = 20;
+    scene.materials.push_back(material);
+    Sphere ball = testing::make_sphere({0, 2, 0}, 2, {0.1, 0.05, 0.05});
+    ball.material = 1;
+    scene.spheres.push_back(ball);
+    Plane floor;
+    floor.point = {0, 0, 0};
+    floor.normal = {0, 1, 0};
+    floor.ambient = {0.05, 0.05, 0.05};
+    floor.material = 1;
+    scene.planes.push_back(floor);
+    scene.lights.push_back({{8, 12, 6}, {0.8, 0.8, 0.8}});
+    return scene;
+}
+
+TEST(RenderService, AViewOfAnotherFeatureSetTakesTheStoresGeneralProgram) {
+    const Scene scene = lit_floor();
+    ASSERT_TRUE(FeatureSet::of(scene).planes && FeatureSet::of(scene).lights);
+    testing::TempFolder folder;
+    std::ostringstream log;
+    ASSERT_EQ(build_program_store(folder.file("store"), testing::test_device().entry(),
+                                  {FeatureSet::general(FeatureSet())}, log)
+                  .built,
+              1)
+        << log.str();
+    const Image own = Renderer(testing::test_device(), scene).render(scene.camera_path.front());
+
+    testing::ScopedEnv store("CLRENDER_PROGRAM_STORE", folder.file("store").c_str());
+    testing::ScopedEnv cache("CLRENDER_CACHE_DIR", folder.file("cache").c_str());  // empty: no program of its own
+    RenderService service(scene, Options{});
+    EXPECT_EQ(service.store_hits(), 1);
+    EXPECT_EQ(service.cache_hits(), 0);
+    ViewCamera view;
+    view.key = scene.camera_path.front();
+    view.up = scene.up;
+    view.fov_degrees = scene.fov_degrees;
+    view.width = scene.width;
+    view.height = scene.height;
+    view.sampling = scene.sampling;
+    EXPECT_TRUE(service.render(view).rgba == own.rgba);
+}
+
+}  // namespace
+}  // namespace clr
