@@ -18,6 +18,7 @@ typedef double2 real2;
 typedef double3 real3;
 typedef double16 real16;
 typedef long16 mask16; /* what comparing two real16 gives */
+#define convert_mask16 convert_long16
 #define convert_real3 convert_double3
 #define convert_real16 convert_double16
 #else
@@ -26,6 +27,7 @@ typedef float2 real2;
 typedef float3 real3;
 typedef float16 real16;
 typedef int16 mask16;
+#define convert_mask16 convert_int16
 #define convert_real3 convert_float3
 #define convert_real16 convert_float16
 #endif

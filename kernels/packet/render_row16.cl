@@ -12,6 +12,7 @@
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
+#include "packet/shadows16.cl"
 #include "shared/clr_samples.h"
 #include "shared/clr_types.h"
 #include "trace.cl"
@@ -117,6 +118,90 @@ CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hit
     return out;
 }
 
+#if CLR_SUN_PACKETS
+/* traced_colors16() with `flat` in the sun-alone mode: each lane on a lit kind shaded as
+ * surface_color() shades it, with the 16 lanes' shadow rays traced together
+ * (occluded_lanes16()): the same colours. */
+CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
+{
+    real ts[16], xs[16], ys[16], zs[16];
+    int kinds[16], indices[16];
+    float rl[16], gl[16], bl[16];
+    float3 lit[16];
+    vstore16(flat.r, 0, rl);
+    vstore16(flat.g, 0, gl);
+    vstore16(flat.b, 0, bl);
+    vstore16(hits.t, 0, ts);
+    vstore16(hits.kind, 0, kinds);
+    vstore16(hits.index, 0, indices);
+    vstore16(d.x, 0, xs);
+    vstore16(d.y, 0, ys);
+    vstore16(d.z, 0, zs);
+    ShadowRays16 rays;
+    int shadow_rays = 0;
+    for (int lane = 0; lane < 16; ++lane) {
+        rays.wanted[lane] = 0;
+        if (!kind_is_lit(kinds[lane]))
+            continue; /* its flat colour is in rl, gl, bl already */
+        real3 direction = (real3)(xs[lane], ys[lane], zs[lane]);
+        /* surface_color() in sun mode, up to its shadow ray. */
+        float3 color = kind_surface_color(kinds[lane], indices[lane], eye, direction, ts[lane], CLR_SCENE_ARGS);
+        if (!info.lit) {
+            rl[lane] = color.x;
+            gl[lane] = color.y;
+            bl[lane] = color.z;
+            continue;
+        }
+        real3 point = eye + ts[lane] * direction;
+        real3 normal = kind_normal(kinds[lane], indices[lane], point, direction, CLR_SCENE_ARGS);
+        real3 to_sun = convert_real3(info.sun.xyz) - point;
+        real sun_distance = sqrt(dot3(to_sun, to_sun));
+        real3 light = to_sun / sun_distance;
+        real cosine = dot3(normal, light);
+        if (cosine <= 0.0f) {
+            rl[lane] = gl[lane] = bl[lane] = 0.0f; /* facing away: no shadow ray needed */
+            continue;
+        }
+        lit[lane] = color * (float)cosine;
+        rays.wanted[lane] = 1;
+        rays.ox[lane] = point.x;
+        rays.oy[lane] = point.y;
+        rays.oz[lane] = point.z;
+        rays.dx[lane] = light.x;
+        rays.dy[lane] = light.y;
+        rays.dz[lane] = light.z;
+        rays.t_max[lane] = sun_distance;
+        rays.skip_kind[lane] = kinds[lane];
+        rays.skip_index[lane] = indices[lane];
+        ++shadow_rays;
+    }
+    if (shadow_rays > 0) {
+        /* Lanes without a shadow ray still take part in the vectors: any finite values. */
+        for (int lane = 0; lane < 16; ++lane) {
+            if (rays.wanted[lane])
+                continue;
+            rays.ox[lane] = rays.oy[lane] = rays.oz[lane] = 0.0f;
+            rays.dx[lane] = rays.dy[lane] = rays.dz[lane] = 1.0f;
+            rays.t_max[lane] = 0.0f;
+        }
+        occluded_lanes16(&rays, CLR_SCENE_ARGS);
+        for (int lane = 0; lane < 16; ++lane) {
+            if (!rays.wanted[lane])
+                continue;
+            float3 color = rays.occluded[lane] ? (float3)(0.0f) : lit[lane];
+            rl[lane] = color.x;
+            gl[lane] = color.y;
+            bl[lane] = color.z;
+        }
+    }
+    Colors16 out;
+    out.r = vload16(0, rl);
+    out.g = vload16(0, gl);
+    out.b = vload16(0, bl);
+    return out;
+}
+#endif
+
 /* The colours of 16 rays from the eye with nearest hits `hits`, in the program's shading mode
  * (shading_modes.cl). `flat` holds the intersection loop's flat colours (CLR_LOOP_COLORS). */
 #if CLR_FLAT_SHADING
@@ -131,7 +216,11 @@ CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hit
 {
     if (!any_lanes16(lit_lanes16(hits.kind))) /* no lane needs the sun */
         return flat;
+#if CLR_SUN_PACKETS
+    return sunlit_colors16(eye, d, hits, flat, CLR_SCENE_ARGS);
+#else
     return traced_colors16(eye, d, hits, &flat, CLR_SCENE_ARGS);
+#endif
 }
 #else
 /* Mirrors: every lane's path is traced (the loop gives no flat colours). */

@@ -11,5 +11,8 @@
  * it even with a sun or lights; only lanes on lit kinds are then shaded one by one (a
  * material's mirror share k_m is followed there too, in trace_path()). */
 #define CLR_LOOP_COLORS (!CLR_FEATURE_MIRRORS)
+/* The sun alone (no lights, no mirrors) through a BVH: the lanes' shadow rays walk the BVH
+ * together (packet/shadows16.cl), the one shading step not done 16 lanes at a time. */
+#define CLR_SUN_PACKETS (CLR_FEATURE_SUN && CLR_FEATURE_BVH && !CLR_FEATURE_LIGHTS && !CLR_FEATURE_MIRRORS)
 
 #endif /* CLR_PACKET_SHADING_MODES_CL */

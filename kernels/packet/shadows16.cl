@@ -1,0 +1,122 @@
+/* The shadow rays of 16 lanes through the BVH together (CLR_SUN_PACKETS, shading_modes.cl).
+ * A lane's shadow ray towards the sun starts at its own hit point, but the 16 rays of a row
+ * leave neighbouring points in one direction: they enter mostly the same boxes. Walking the
+ * BVH once for the packet, each box tested for all 16 lanes in vector operations, replaces 16
+ * walks of one ray each (the largest part of a sunlit mesh's frame).
+ *
+ * Each lane's answer is occluded()'s: a lane stops at the first surface, other than the one
+ * it leaves, that hit_beats() its ray's t_max, found by the same kind_hit_distance() on the
+ * same ray. The packet only decides which leaves are visited, and it visits every leaf that
+ * any lane's own walk would (a box test in vectors rounds otherwise than box_reachable(), by
+ * far less than the boxes' padding), so a lane may test more surfaces, never fewer: the same
+ * answer. */
+#ifndef CLR_PACKET_SHADOWS16_CL
+#define CLR_PACKET_SHADOWS16_CL
+
+#include "common/hit_order.cl"
+#include "common/math.cl"
+#include "common/scene_params.cl"
+#include "intersect.cl"
+#include "kinds/kinds.cl"
+#include "packet/lane_masks.cl"
+#include "packet/packet_types.cl"
+#include "packet/shading_modes.cl"
+#include "shared/clr_types.h"
+
+#if CLR_SUN_PACKETS
+
+/* The larger and the smaller lane by lane, of numbers that are not NaN (as larger()). */
+CLR_PACKET_INLINE real16 larger16(real16 a, real16 b) { return select(b, a, a > b); }
+CLR_PACKET_INLINE real16 smaller16(real16 a, real16 b) { return select(b, a, a < b); }
+
+/* The shadow rays of one row: lane l starts at (ox, oy, oz)[l], goes along (dx, dy, dz)[l],
+ * ends at t_max[l] and leaves surface (skip_kind, skip_index)[l]; only lanes with wanted[l]
+ * are traced. Sets occluded[l] as occluded() would answer. */
+typedef struct {
+    real ox[16], oy[16], oz[16];
+    real dx[16], dy[16], dz[16];
+    real t_max[16];
+    int skip_kind[16], skip_index[16];
+    int wanted[16];
+    int occluded[16];
+} ShadowRays16;
+
+/* Whether lane `lane` meets surface (kind, index) before its t_max (intersect_bvh()'s leaf
+ * test with first_hit). */
+bool lane_meets16(const ShadowRays16* rays, int lane, int kind, int index, CLR_SCENE_PARAMS)
+{
+    if (kind == rays->skip_kind[lane] && index == rays->skip_index[lane])
+        return false;
+    real3 origin = (real3)(rays->ox[lane], rays->oy[lane], rays->oz[lane]);
+    real3 direction = (real3)(rays->dx[lane], rays->dy[lane], rays->dz[lane]);
+    real t = kind_hit_distance(kind, index, origin, direction, INFINITY, CLR_SCENE_ARGS);
+    Hit none;
+    none.t = rays->t_max[lane];
+    none.kind = CLR_HIT_NONE;
+    none.index = -1;
+    return hit_beats(t, kind, index, none);
+}
+
+void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
+{
+    for (int lane = 0; lane < 16; ++lane)
+        rays->occluded[lane] = 0;
+    real16 ox = vload16(0, rays->ox), oy = vload16(0, rays->oy), oz = vload16(0, rays->oz);
+    real16 dx = vload16(0, rays->dx), dy = vload16(0, rays->dy), dz = vload16(0, rays->dz);
+    real16 t_max = vload16(0, rays->t_max);
+    /* safe_inverse() lane by lane: no 0 * inf, so no NaN in the slab test. */
+    const real16 tiny = (real16)(1e-30f);
+    real16 ix = (real16)(1.0f) / select(dx, copysign(tiny, dx), fabs(dx) < tiny);
+    real16 iy = (real16)(1.0f) / select(dy, copysign(tiny, dy), fabs(dy) < tiny);
+    real16 iz = (real16)(1.0f) / select(dz, copysign(tiny, dz), fabs(dz) < tiny);
+    mask16 open = convert_mask16(vload16(0, rays->wanted) != (int16)(0));
+    uint stack[CLR_BVH_STACK];
+    int top = 0;
+    if (info.sphere_count + info.billboard_count + info.triangle_count > 0)
+        stack[top++] = 0;
+    while (top > 0 && any_lanes16(open)) {
+        __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
+        real16 t0x = ((real16)((real)node->lower.x) - ox) * ix, t1x = ((real16)((real)node->upper.x) - ox) * ix;
+        real16 t0y = ((real16)((real)node->lower.y) - oy) * iy, t1y = ((real16)((real)node->upper.y) - oy) * iy;
+        real16 t0z = ((real16)((real)node->lower.z) - oz) * iz, t1z = ((real16)((real)node->upper.z) - oz) * iz;
+        real16 enter = larger16(larger16(smaller16(t0x, t1x), smaller16(t0y, t1y)),
+                                larger16(smaller16(t0z, t1z), (real16)(0.0f)));
+        real16 leave = smaller16(smaller16(larger16(t0x, t1x), larger16(t0y, t1y)), larger16(t0z, t1z)) * (real)1.000001f;
+        mask16 reach = open & (enter <= leave) & (enter <= t_max);
+        if (!any_lanes16(reach))
+            continue;
+        if (node->count == 0) {
+            stack[top++] = node->first + 1;
+            stack[top++] = node->first;
+            continue;
+        }
+        int reaching[16];
+        vstore16(convert_int16(reach), 0, reaching);
+        for (uint k = node->first; k < node->first + node->count; ++k) {
+            int kind = item_kind(bvh_items[k]);
+            int index = item_index(bvh_items[k]);
+            for (int lane = 0; lane < 16; ++lane) {
+                if (reaching[lane] && !rays->occluded[lane] && lane_meets16(rays, lane, kind, index, CLR_SCENE_ARGS))
+                    rays->occluded[lane] = 1;
+            }
+        }
+        open = open & convert_mask16(vload16(0, rays->occluded) == (int16)(0));
+    }
+    /* Planes lie in no BVH: a lane the BVH left unoccluded tests them, as occluded() does. */
+    for (int lane = 0; lane < 16; ++lane) {
+        if (!rays->wanted[lane] || rays->occluded[lane])
+            continue;
+        Hit hit;
+        hit.t = rays->t_max[lane];
+        hit.kind = CLR_HIT_NONE;
+        hit.index = -1;
+        nearest_plane((real3)(rays->ox[lane], rays->oy[lane], rays->oz[lane]),
+                      (real3)(rays->dx[lane], rays->dy[lane], rays->dz[lane]), rays->skip_kind[lane],
+                      rays->skip_index[lane], &hit, CLR_SCENE_ARGS);
+        rays->occluded[lane] = hit.kind != CLR_HIT_NONE;
+    }
+}
+
+#endif /* CLR_SUN_PACKETS */
+
+#endif /* CLR_PACKET_SHADOWS16_CL */
