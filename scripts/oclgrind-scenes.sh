@@ -74,6 +74,9 @@ octahedron='{"filename": "octahedron.obj", "position": [2, 0.5, 1], "scale": 2, 
 mirror_cube='{"filename": "cube.obj", "position": [0, -3, -3], "scale": [6, 0.5, 2], "IsMirror": 1}'
 scene meshes "$sun, \"MaxDepth\": 2, \"spheres\": [$ball2], \"billboards\": [$backdrop], \"obj\": [$cube, $octahedron, $mirror_cube]"
 scene flat_meshes "\"obj\": [$cube, $octahedron]"
+# The sun alone with a BVH: the lanes' shadow rays walk it together (kernels/packet/shadows16.cl),
+# through transparent texels too.
+scene sun_packets "$sun, \"spheres\": [$many $ball2], \"billboards\": [$backdrop, $cutout], \"obj\": [$cube, $octahedron]"
 
 # The fall 2019 format: spheres and planes with Blinn-Phong materials, two point lights, a
 # mirror share; with a billboard (unlit) and a mesh (the default material) beside them.

@@ -66,6 +66,9 @@ TEST(FeatureVariants, SunWithoutMirrors) {
     scene.sun_location = {-20, 40, 30};
     FeatureSet features = FeatureSet::of(scene);
     EXPECT_TRUE(features.sun && features.alpha && !features.mirrors);
+    // With a BVH the 16 lanes' shadow rays walk it together (kernels/packet/shadows16.cl),
+    // through billboards' transparent texels too; the general kernel traces them one by one.
+    EXPECT_TRUE(features.bvh);
     expect_same_as_general(scene);
     scene.spheres.clear();  // a sun with nothing to light
     expect_same_as_general(scene);
