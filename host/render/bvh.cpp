@@ -5,6 +5,7 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <system_error>
 
 #include "core/box3.h"
 #include "core/parallel_for.h"
@@ -124,11 +125,19 @@ private:
             build_node(nodes, left + 1, middle, end, cut.right, depth + 1, 0);
             return;
         }
-        // The right subtree on another thread, into its own array whose node 0 is its root.
+        // The right subtree on another thread, into its own array whose node 0 is its root. A
+        // process that cannot start a thread builds both here, the same nodes.
         Nodes right(1);
-        std::future<void> right_built = std::async(std::launch::async, [&] {
-            build_node(right, 0, middle, end, cut.right, depth + 1, parallel_levels - 1);
-        });
+        std::future<void> right_built;
+        try {
+            right_built = std::async(std::launch::async, [&] {
+                build_node(right, 0, middle, end, cut.right, depth + 1, parallel_levels - 1);
+            });
+        } catch (const std::system_error&) {
+            build_node(nodes, left, begin, middle, cut.left, depth + 1, 0);
+            build_node(nodes, left + 1, middle, end, cut.right, depth + 1, 0);
+            return;
+        }
         try {
             build_node(nodes, left, begin, middle, cut.left, depth + 1, parallel_levels - 1);
         } catch (...) {
@@ -160,7 +169,7 @@ private:
         int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
         double low = bounds.centroids.lower[axis], width = extent[axis];
         if (!(width > 0)) return leaf;
-        // Each primitive's bin, found once for the counts and again for the partition.
+        // Each primitive's bin, found once for both the counts and the partition.
         std::vector<std::uint8_t> bins(end - begin);
         std::array<Bounds, kBins> binned;
         std::array<std::uint32_t, kBins> counts{};
@@ -273,12 +282,6 @@ void compile_bvh(const Bvh& bvh, const Vec3& origin, std::vector<ClrBvhNode>& no
         const std::size_t end = std::min(bvh.nodes.size(), (task + 1) * kNodesPerTask);
         for (std::size_t i = task * kNodesPerTask; i < end; ++i) nodes[i] = device_node(bvh.nodes[i], shift);
     });
-}
-
-std::vector<ClrBvhNode> compile_bvh(const Bvh& bvh, const Vec3& origin) {
-    std::vector<ClrBvhNode> nodes;
-    compile_bvh(bvh, origin, nodes);
-    return nodes;
 }
 
 }  // namespace clr

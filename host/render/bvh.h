@@ -33,10 +33,9 @@ struct Bvh {
 
 Bvh build_bvh(const FrameGeometry& frame);
 
-// The device form, bounds relative to `origin` and rounded outwards to float so that they
-// still contain every object after rounding.
-std::vector<ClrBvhNode> compile_bvh(const Bvh& bvh, const Vec3& origin);
-// The same into `nodes`, whose storage a moving camera's frames reuse.
+// The device form into `nodes` (whose storage a moving camera's frames reuse), bounds relative
+// to `origin` and rounded outwards to float so that they still contain every object after
+// rounding.
 void compile_bvh(const Bvh& bvh, const Vec3& origin, std::vector<ClrBvhNode>& nodes);
 
 }  // namespace clr
