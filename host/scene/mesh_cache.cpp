@@ -17,8 +17,11 @@
 namespace clr {
 namespace {
 
+// The most .mtl files an entry lists: a mesh that read more is not stored.
+constexpr std::uint64_t kMostMaterialFiles = 1024;
+
 CacheEntryKind mesh_entries(std::uint64_t size_limit) {
-    // A header claiming more than a stored mesh and its .mtl list (at most 1024 paths) is
+    // A header claiming more than a stored mesh and its .mtl list (kMostMaterialFiles paths) is
     // refused before anything is allocated, as one larger than the whole cache.
     const std::uint64_t largest = MeshCache::kLargestStoredBytes + (std::uint64_t(8) << 20);
     return {"mesh", {'c', 'l', 'r', 'm', 'e', 's', 'h', '1'}, MeshCache::kFormatVersion, std::min(size_limit, largest)};
@@ -42,6 +45,9 @@ const std::string& build_identity() {
 // .mtl file's path and SHA-256.
 class PayloadWriter {
 public:
+    // `size`: the whole payload's, allocated once (a grown vector would copy the mesh again).
+    explicit PayloadWriter(std::size_t size) { out_.reserve(size); }
+
     template <typename T>
     void put(const T& value) {
         static_assert(std::is_trivially_copyable_v<T>);
@@ -144,9 +150,10 @@ MeshCache::Key MeshCache::key(const std::string& path, const std::string& text) 
         .add_field(std::string("clrender parsed OBJ mesh"))
         .add_number(kFormatVersion)
         .add_field(build_identity())
-        .add_field(std::filesystem::current_path().string())  // relative paths, the .mtl files' too, mean
-        .add_field(path)                                       // the same files
-
+        // The working folder and the path as given: relative paths, the .mtl files' too, then
+        // name the same files.
+        .add_field(std::filesystem::current_path().string())
+        .add_field(path)
         .add_field(text.data(), text.size())
         .finish();
 }
@@ -161,7 +168,7 @@ std::optional<ObjMesh> MeshCache::load(const Key& key) const {
     bool read = in.get(positions) && in.get(normals) && in.get(triangles) && in.get(mesh.faces) &&
                 in.get(has_diffuse) && in.get(diffuse) && in.get(materials) && in.get_all(mesh.positions, positions) &&
                 in.get_all(mesh.normals, normals) && in.get_all(mesh.triangles, triangles) &&
-                in.get_all(mesh.triangle_normals, triangles) && materials <= 1024;
+                in.get_all(mesh.triangle_normals, triangles) && materials <= kMostMaterialFiles;
     for (std::uint64_t i = 0; read && i < materials; ++i) {
         mesh.material_files.emplace_back();
         mesh.material_digests.emplace_back();
@@ -184,13 +191,17 @@ std::optional<ObjMesh> MeshCache::load(const Key& key) const {
 }
 
 void MeshCache::store(const Key& key, const ObjMesh& mesh) const {
-    if (!enabled() || mesh.material_digests.size() != mesh.material_files.size()) return;
+    if (!enabled() || mesh.material_digests.size() != mesh.material_files.size() ||
+        mesh.material_files.size() > kMostMaterialFiles)
+        return;
     // The payload is built whole before it is written: a copy of the mesh, so a mesh too large
     // to copy without pressing on the machine's memory is not stored.
     const std::uint64_t bytes = (mesh.positions.size() + mesh.normals.size()) * sizeof(Vec3) +
                                 mesh.triangles.size() * (sizeof(mesh.triangles[0]) + sizeof(mesh.triangle_normals[0]));
     if (bytes > largest_mesh_) return;
-    PayloadWriter out;
+    std::uint64_t listed = 0;
+    for (const std::string& path : mesh.material_files) listed += sizeof(std::uint64_t) + path.size() + sizeof(Sha256Digest);
+    PayloadWriter out(6 * sizeof(std::uint64_t) + sizeof(Vec3) + bytes + listed);  // counts, colour, arrays, list
     out.put<std::uint64_t>(mesh.positions.size());
     out.put<std::uint64_t>(mesh.normals.size());
     out.put<std::uint64_t>(mesh.triangles.size());
@@ -210,12 +221,7 @@ void MeshCache::store(const Key& key, const ObjMesh& mesh) const {
 }
 
 ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache) {
-    std::string text;
-    try {
-        text = read_bounded_file(path, kMaxObjFileBytes);
-    } catch (const BoundedFileError& failure) {
-        throw ObjError(failure.what());
-    }
+    const std::string text = read_obj_text(path);
     if (!cache.enabled() || text.size() < MeshCache::kSmallestStoredBytes) return parse_obj(text, path);
     std::optional<MeshCache::Key> key;
     try {

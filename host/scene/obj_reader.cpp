@@ -195,14 +195,14 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
     return mesh;
 }
 
-ObjMesh read_obj(const std::string& path) {
-    std::string text;
+std::string read_obj_text(const std::string& path) {
     try {
-        text = read_bounded_file(path, kMaxObjFileBytes);
+        return read_bounded_file(path, kMaxObjFileBytes);
     } catch (const BoundedFileError& failure) {
         throw ObjError(failure.what());
     }
-    return parse_obj(text, path);
 }
+
+ObjMesh read_obj(const std::string& path) { return parse_obj(read_obj_text(path), path); }
 
 }  // namespace clr

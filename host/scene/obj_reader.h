@@ -56,4 +56,7 @@ ObjMesh read_obj(const std::string& path);
 // locates its .mtl files.
 ObjMesh parse_obj(const std::string& text, const std::string& path);
 
+// The whole text of the OBJ at `path`, with read_obj's limits; ObjError when it cannot be read.
+std::string read_obj_text(const std::string& path);
+
 }  // namespace clr

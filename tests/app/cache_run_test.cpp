@@ -3,6 +3,8 @@
 // read-only never makes a run fail.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -172,7 +174,14 @@ TEST(MeshCacheRun, ASecondRunTakesTheParsedMeshAndRendersTheSameImage) {
     ASSERT_EQ(entries.size(), 1u);
     const auto long_ago = fs::file_time_type::clock::now() - std::chrono::hours(24 * 365);
     fs::last_write_time(entries[0], long_ago);
+    struct stat before {};
+    ASSERT_EQ(::stat(entries[0].c_str(), &before), 0);
     ASSERT_EQ(run_clrender("scene.json -q -o second.png", folder.path(), environment).exit_code, 0);
+    // Used, not stored again: the same file (a store renames a new one into place), its time
+    // refreshed by the hit.
+    struct stat after {};
+    ASSERT_EQ(::stat(entries[0].c_str(), &after), 0);
+    EXPECT_EQ(after.st_ino, before.st_ino) << "the entry was replaced, not used";
     EXPECT_GT(fs::last_write_time(entries[0]), long_ago) << "the entry was used";
     EXPECT_EQ(read_bytes(folder.file("first.png")), reference);
     EXPECT_EQ(read_bytes(folder.file("second.png")), reference);
