@@ -1,13 +1,12 @@
 #include "scene/obj_text_checks.h"
 
-#include <charconv>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <vector>
 
 #include "core/parallel_for.h"
 #include "core/usable_cpus.h"
-
 #include "scene/value_ranges.h"
 
 namespace clr {

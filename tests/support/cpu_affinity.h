@@ -1,4 +1,5 @@
-// The CPUs the test process may run on, for tests that pin a child to one (taskset).
+// The CPUs the test process may run on, for tests that pin a child (taskset) or a thread of
+// their own to one.
 #pragma once
 
 namespace clr::testing {
