@@ -90,6 +90,35 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     return select((real16)(INFINITY), t, hit);
 }
 
+/* triangle_distance() for 16 rays from 16 origins (t_max = infinity), the shadow rays of a
+ * packet's hit points (packet/shadows16.cl): lane by lane the same operations in the same
+ * order, so each lane's t is the one triangle_distance() gives its ray, to the last bit.
+ * `nearest` is triangle_nearest_t() of each lane's origin. */
+CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* triangle, Points16 o, real16 nearest,
+                                                  Directions16 d)
+{
+    real3 c0 = convert_real3(triangle->corner0.xyz);
+    real3 c1 = convert_real3(triangle->corner1.xyz);
+    real3 c2 = convert_real3(triangle->corner2.xyz);
+    real16 ax = c0.x - o.x, ay = c0.y - o.y, az = c0.z - o.z;
+    real16 bx = c1.x - o.x, by = c1.y - o.y, bz = c1.z - o.z;
+    real16 cx = c2.x - o.x, cy = c2.y - o.y, cz = c2.z - o.z;
+    /* dot3(edge_cross(p, q), d) written out, for (p, q) = (b, c), (c, a), (a, b) */
+    real16 u = (by * cz - bz * cy) * d.x + (bz * cx - bx * cz) * d.y + (bx * cy - by * cx) * d.z;
+    real16 v = (cy * az - cz * ay) * d.x + (cz * ax - cx * az) * d.y + (cx * ay - cy * ax) * d.z;
+    real16 w = (ay * bz - az * by) * d.x + (az * bx - ax * bz) * d.y + (ax * by - ay * bx) * d.z;
+    mask16 inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
+    real16 det = u + v + w;
+    mask16 hit = inside && det != 0.0f;
+    if (!any_lanes16(hit))
+        return (real16)(INFINITY);
+    real16 t = (u * (ax * d.x + ay * d.y + az * d.z) + v * (bx * d.x + by * d.y + bz * d.z) +
+                w * (cx * d.x + cy * d.y + cz * d.z)) /
+               det;
+    hit = hit && t > nearest;
+    return select((real16)(INFINITY), t, hit);
+}
+
 /* The kind's functions for kinds/kinds.cl. */
 
 real triangle_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)

@@ -14,6 +14,11 @@ typedef struct {
     real16 x, y, z;
 } Directions16;
 
+/* 16 points, one per lane: the origins of rays that do not all start at the eye. */
+typedef struct {
+    real16 x, y, z;
+} Points16;
+
 /* The 16 rays' nearest hits so far, lane by lane as in Hit. */
 typedef struct {
     real16 t;

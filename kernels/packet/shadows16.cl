@@ -6,7 +6,9 @@
  *
  * Each lane's answer is occluded()'s: a lane stops at the first surface, other than the one
  * it leaves, that hit_beats() its ray's t_max, found by the same kind_hit_distance() on the
- * same ray. The packet only decides which leaves are visited, and it visits every leaf that
+ * same ray (for a leaf's triangles, triangle_distance16_from() on the 16 lanes at once, the
+ * same operations lane by lane; other kinds lane by lane, as few leaves hold them). The
+ * packet only decides which leaves are visited, and it visits every leaf that
  * any lane's own walk would (a box test in vectors rounds otherwise than box_reachable(), by
  * far less than the boxes' padding), so a lane may test more surfaces, never fewer: the same
  * answer. */
@@ -64,6 +66,13 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
     real16 ox = vload16(0, rays->ox), oy = vload16(0, rays->oy), oz = vload16(0, rays->oz);
     real16 dx = vload16(0, rays->dx), dy = vload16(0, rays->dy), dz = vload16(0, rays->dz);
     real16 t_max = vload16(0, rays->t_max);
+#if CLR_FEATURE_TRIANGLES
+    Points16 origins = {ox, oy, oz};
+    Directions16 d = {dx, dy, dz};
+    /* triangle_nearest_t() lane by lane */
+    real16 nearest = (real)CLR_TRIANGLE_SELF_GAP * (fabs(ox) + fabs(oy) + fabs(oz));
+    int16 skip_kind = vload16(0, rays->skip_kind), skip_index = vload16(0, rays->skip_index);
+#endif
     /* safe_inverse() lane by lane: no 0 * inf, so no NaN in the slab test. */
     const real16 tiny = (real16)(1e-30f);
     real16 ix = (real16)(1.0f) / select(dx, copysign(tiny, dx), fabs(dx) < tiny);
@@ -92,15 +101,27 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
         }
         int reaching[16];
         vstore16(convert_int16(reach), 0, reaching);
+        int16 met = (int16)(0); /* lanes that a triangle of this leaf occludes */
         for (uint k = node->first; k < node->first + node->count; ++k) {
             int kind = item_kind(bvh_items[k]);
             int index = item_index(bvh_items[k]);
+#if CLR_FEATURE_TRIANGLES
+            if (kind == CLR_HIT_TRIANGLE) {
+                /* A mesh's leaves hold triangles: all 16 lanes at once, as lane_meets16(). */
+                mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
+                real16 t = triangle_distance16_from(&triangles[index], origins, nearest, d);
+                met |= convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
+                continue;
+            }
+#endif
             for (int lane = 0; lane < 16; ++lane) {
                 if (reaching[lane] && !rays->occluded[lane] && lane_meets16(rays, lane, kind, index, CLR_SCENE_ARGS))
                     rays->occluded[lane] = 1;
             }
         }
-        open = open & convert_mask16(vload16(0, rays->occluded) == (int16)(0));
+        int16 occluded = select(vload16(0, rays->occluded), (int16)(1), met);
+        vstore16(occluded, 0, rays->occluded);
+        open = open & convert_mask16(occluded == (int16)(0));
     }
     /* Planes lie in no BVH: a lane the BVH left unoccluded tests them, as occluded() does. */
     for (int lane = 0; lane < 16; ++lane) {

@@ -63,6 +63,9 @@ TEST(Meshes, MirrorMeshesReflectLikeMirrorSpheres) {
 // A still of meshes, lit and mirrored and flat, whose own program the program store does not
 // hold, may render with the store's general program instead: the same bytes.
 TEST(Meshes, TheGeneralProgramRendersTheSameBytes) {
+    // Sunlit without mirrors: the scene's own program traces 16 shadow rays at a time
+    // (packet/shadows16.cl), the general one each alone.
+    testing::expect_general_program_renders_the_same(lit_meshes());
     Scene scene = lit_meshes();
     add_mesh(scene, grid_mesh({-5, -1.2, -3}, {10, 0, 0}, {0, 6, 0}, 3, 2), {0, 0, 0}, true);
     scene.max_depth = 3;
