@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <new>
 
 #include "core/printable_text.h"
@@ -156,30 +157,49 @@ std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
 void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders) {
     const fs::path folder = fs::path(scene.path).parent_path();
     const MeshCache cache = MeshCache::from_environment();
+    std::vector<std::string> paths;
     for (const PendingMesh& each : pending) {
         const fs::path name(each.mesh.filename);
-        const std::string path = (name.is_absolute() ? name : folder / name).lexically_normal().string();
+        paths.push_back((name.is_absolute() ? name : folder / name).lexically_normal().string());
+    }
+    // A file that several meshes place (one model, many copies) is read once, and its model
+    // kept only until the last of them is placed.
+    std::map<std::string, std::size_t> uses_left;
+    for (const std::string& path : paths) ++uses_left[path];
+    std::map<std::string, ObjMesh> kept;
+    for (std::size_t m = 0; m < pending.size(); ++m) {
+        const PendingMesh& each = pending[m];
+        const std::string& path = paths[m];
+        const bool used_again = --uses_left[path] > 0;
         Mesh mesh = each.mesh;
-        ObjMesh model;
+        ObjMesh read;  // a model for this mesh alone
+        const ObjMesh* model = &read;
         try {
-            model = read_obj_through_cache(path, cache);
+            auto found = kept.find(path);
+            if (found == kept.end()) {
+                read = read_obj_through_cache(path, cache);
+                if (used_again) found = kept.emplace(path, std::move(read)).first;
+            }
+            if (found != kept.end()) model = &found->second;
             // Any text reads as an OBJ of unknown statements: a file without one face is
             // not the mesh the scene asks for (a wrong file, or points and lines only).
-            if (model.triangles.empty())
+            if (model->triangles.empty())
                 throw ObjError("it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
             each.filename.warn(problem + "; rendering a placeholder cube instead");
-            model = placeholder_cube();
+            read = placeholder_cube();
+            model = &read;
             mesh.placeholder = true;
         }
         if (!mesh.placeholder) {
             mesh.path = path;
-            mesh.material_paths = model.material_files;
+            mesh.material_paths = model->material_files;
         }
-        if (!each.ambient_given) mesh.ambient = model.diffuse && !mesh.placeholder ? *model.diffuse : kDefaultMeshColor;
-        add_mesh(scene, std::move(mesh), model, each.filename);
+        if (!each.ambient_given) mesh.ambient = model->diffuse && !mesh.placeholder ? *model->diffuse : kDefaultMeshColor;
+        add_mesh(scene, std::move(mesh), *model, each.filename);
+        if (!used_again) kept.erase(path);
     }
 }
 

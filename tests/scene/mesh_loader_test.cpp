@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <string>
 
 #include "core/errors.h"
@@ -175,6 +177,40 @@ TEST(MeshLoader, AFileWithoutFacesIsNoMesh) {
         EXPECT_NE(error.find("/obj/filename: cannot read OBJ"), std::string::npos) << name << ": " << error;
         EXPECT_NE(error.find("it has no faces"), std::string::npos) << name << ": " << error;
     }
+}
+
+// The bytes this process has read so far (rchar of /proc/self/io: every read() and pread()).
+std::uint64_t bytes_read() {
+    std::ifstream io("/proc/self/io");
+    std::string key;
+    std::uint64_t value = 0;
+    while (io >> key >> value)
+        if (key == "rchar:") return value;
+    return 0;
+}
+
+// One model placed many times (a forest of one tree) is one file: read once, not once a copy.
+TEST(MeshLoader, AFilePlacedManyTimesIsReadOnce) {
+    TempFolder folder;
+    std::string obj;
+    for (int i = 0; i < 2000; ++i) obj += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\n";
+    for (int i = 1; i < 2000; ++i)
+        obj += "f " + std::to_string(2 * i - 1) + " " + std::to_string(2 * i + 1) + " " + std::to_string(2 * i) + "\n";
+    folder.write("strip.obj", obj);
+    Json copies = Json::array();
+    for (int i = 0; i < 40; ++i) copies.push_back({{"filename", "strip.obj"}, {"position", {0, 0, -i}}});
+    copies.push_back({{"filename", "./strip.obj"}, {"position", {0, 5, 0}}});  // the same file, named otherwise
+    const std::string scene_file = folder.write("scene.json", with_obj(copies).dump());
+    LoadOptions options;
+    const std::uint64_t before = bytes_read();
+    const Scene scene = load_scene(scene_file, options);
+    const std::uint64_t read = bytes_read() - before;
+    if (before == 0) GTEST_SKIP() << "no /proc/self/io here";
+    ASSERT_EQ(scene.meshes.size(), 41u);
+    for (const Mesh& mesh : scene.meshes) EXPECT_EQ(mesh.triangle_count, 1999u);
+    EXPECT_EQ(scene.triangles[1999].corners[0], (scene.triangles[0].corners[0] + Vec3{0, 0, -1})) << "the second copy";
+    EXPECT_EQ(scene.triangles[40 * 1999].corners[2], (scene.triangles[0].corners[2] + Vec3{0, 5, 0})) << "the last";
+    EXPECT_LT(read, 3 * obj.size()) << "strip.obj (" << obj.size() << " bytes) read more than once";
 }
 
 TEST(MeshLoader, MeshesChangeTheScenesDigest) {
