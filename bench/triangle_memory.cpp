@@ -1,6 +1,7 @@
 #include "bench/triangle_memory.h"
 
 #include "render/bvh.h"
+#include "render/scene_bvh.h"
 #include "render/frame_geometry.h"
 #include "shared/clr_types.h"
 

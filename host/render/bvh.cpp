@@ -10,8 +10,6 @@
 #include "core/box3.h"
 #include "core/parallel_for.h"
 #include "core/usable_cpus.h"
-#include "kinds/kinds.h"
-#include "render/scene_item.h"
 
 namespace clr {
 namespace {
@@ -20,32 +18,7 @@ constexpr int kBins = 16;         // candidate split planes per axis
 constexpr std::uint32_t kLeafSize = 4;
 
 using Box = Box3;
-
-struct Primitive {
-    Box box;
-    Vec3 centroid;
-    std::uint32_t item;
-};
-
-// The frame's objects' boxes relative to `origin`, kind by kind (kinds/kinds.h).
-std::vector<Primitive> primitives_of(const FrameGeometry& frame, const Vec3& origin) {
-    std::vector<Primitive> primitives;
-    std::size_t count = 0;
-    for_each_bounded_kind([&](auto kind) { count += decltype(kind)::count(frame); });
-    primitives.reserve(count);
-    for_each_bounded_kind([&](auto kind) {
-        using Kind = decltype(kind);
-        for (std::size_t i = 0; i < Kind::count(frame); ++i) {
-            // Zero for placed impostors, whose corners are relative to `origin` already: exact.
-            const Vec3 shift = origin - Kind::origin(frame, i);
-            Primitive p;
-            p.box = Kind::box(Kind::object(frame, i), shift, p.centroid);
-            p.item = scene_item(Kind::kHit, i);
-            primitives.push_back(p);
-        }
-    });
-    return primitives;
-}
+using Primitive = BvhPrimitive;
 
 // Subtrees of at least this many primitives are built on a thread of their own, down to a depth
 // that gives every usable CPU work (below that, starting a thread costs more than it saves).
@@ -64,7 +37,7 @@ int parallel_levels() {
 // bytes on any number of threads.
 class Builder {
 public:
-    explicit Builder(std::vector<Primitive> primitives) : primitives_(std::move(primitives)) {}
+    Builder(std::vector<Primitive> primitives, int max_depth) : primitives_(std::move(primitives)), max_depth_(max_depth) {}
 
     Bvh build() {
         Bvh bvh;
@@ -108,7 +81,7 @@ private:
         nodes[index].lower = bounds.box.lower;
         nodes[index].upper = bounds.box.upper;
         // Depth is capped so that the kernels' fixed traversal stack always suffices.
-        bool may_split = end - begin > kLeafSize && depth < kMaxBvhDepth;
+        bool may_split = end - begin > kLeafSize && depth < max_depth_;
         const Split cut = may_split ? split(begin, end, bounds) : Split{begin, {}, {}};
         const std::uint32_t middle = cut.middle;
         if (middle == begin || middle == end) {
@@ -224,6 +197,7 @@ private:
     }
 
     std::vector<Primitive> primitives_;
+    int max_depth_;
 };
 
 // Rounds towards -inf or +inf, so float bounds still contain the double ones.
@@ -238,11 +212,8 @@ float up(double v) {
 
 }  // namespace
 
-Bvh build_bvh(const FrameGeometry& frame) {
-    const Vec3 origin = frame.impostor_origin();
-    Bvh bvh = Builder(primitives_of(frame, origin)).build();
-    bvh.origin = origin;
-    return bvh;
+Bvh build_tree(std::vector<BvhPrimitive> primitives, int max_depth) {
+    return Builder(std::move(primitives), std::min(max_depth, kMaxBvhDepth)).build();
 }
 
 namespace {

@@ -1,15 +1,14 @@
-// A bounding volume hierarchy over a frame's spheres and billboards, for the rays that screen
-// tiles cannot cull: shadow rays and mirror reflections. Built on the host (binned
-// surface-area heuristic) once per scene, or every frame when impostors turn; its bounds are
-// re-expressed relative to each frame's origin when uploaded, like the rest of the geometry
-// (see compile_scene).
+// A bounding volume hierarchy over a frame's objects, for the rays that screen tiles cannot
+// cull: shadow rays and mirror reflections. Built on the host (binned surface-area heuristic,
+// render/scene_bvh.h says over what and when); its bounds are re-expressed relative to each
+// frame's origin when uploaded, like the rest of the geometry (see compile_scene).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "core/box3.h"
 #include "core/vec3.h"
-#include "render/frame_geometry.h"
 #include "shared/clr_types.h"
 
 namespace clr {
@@ -31,7 +30,17 @@ struct Bvh {
     Vec3 origin;
 };
 
-Bvh build_bvh(const FrameGeometry& frame);
+// What build_tree() bounds: a scene item (render/scene_item.h), its box and the box's centre.
+struct BvhPrimitive {
+    Box3 box;
+    Vec3 centroid;
+    std::uint32_t item;
+};
+
+// Binned SAH over `primitives`, no deeper than `max_depth` (at most kMaxBvhDepth). The nodes are
+// laid out depth first, each node before its children. The frame's BVH is made of such trees
+// (render/scene_bvh.h).
+Bvh build_tree(std::vector<BvhPrimitive> primitives, int max_depth = kMaxBvhDepth);
 
 // The device form into `nodes` (whose storage a moving camera's frames reuse), bounds relative
 // to `origin` and rounded outwards to float so that they still contain every object after

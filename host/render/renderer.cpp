@@ -125,7 +125,10 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         scene_args_.coverage = upload(device_.context(), features_.alpha ? compiled_.coverage : std::vector<std::uint32_t>{});
         compiled_.texels = {};  // the buffer's now; frames only move positions
         compiled_.coverage = {};
-        if (features_.bvh) bvh_ = build_bvh(frame_);  // otherwise empty: never read
+        if (features_.bvh) {  // otherwise empty: never read
+            mesh_trees_ = build_mesh_trees(scene_);
+            bvh_ = build_bvh(frame_, mesh_trees_);
+        }
         // Corner normals do not move with the eye: uploaded once, not with each frame's geometry.
         scene_args_.triangle_normals = upload(device_.context(), compiled_.triangle_normals);
         compiled_.triangle_normals = {};  // the buffer's now, as the texels are
@@ -176,7 +179,7 @@ void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera*
         }
     }
     compile_frame(compiled_, frame_, origin_);
-    if (turns && features_.bvh) bvh_ = build_bvh(frame_);
+    if (turns && features_.bvh) bvh_ = build_bvh(frame_, mesh_trees_);
     try {
         upload_geometry();
     } catch (const cl::Error& error) {

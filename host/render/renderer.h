@@ -12,6 +12,7 @@
 #include "device/device_context.h"
 #include "render/band_sizer.h"
 #include "render/bvh.h"
+#include "render/scene_bvh.h"
 #include "render/compiled_scene.h"
 #include "render/frame_camera.h"
 #include "render/frame_geometry.h"
@@ -141,6 +142,7 @@ private:
     // scene_args_.texels, which is declared after it and so released before it.
     PageAlignedVector<std::uint8_t> texel_storage_;
     SceneArgs scene_args_;  // the scene's buffers on the device
+    MeshTrees mesh_trees_;  // built once; each frame's BVH joins them (render/scene_bvh.h)
     Bvh bvh_;
     std::vector<ClrBvhNode> device_bvh_nodes_;  // bvh_ relative to origin_, as last uploaded
     cl::Buffer pixels_;

@@ -2,6 +2,7 @@
 // small leaves, and a sensible split even when one object is far from the rest (which once
 // left whole scenes in a single leaf).
 #include "render/bvh.h"
+#include "render/scene_bvh.h"
 
 #include <gtest/gtest.h>
 

@@ -14,6 +14,7 @@
 #include "scene/camera_path.h"
 #include "render/feature_set.h"
 #include "render/impostor_placement.h"
+#include "render/scene_bvh.h"
 #include "support/image_compare.h"
 #include "support/opencl_test_device.h"
 #include "support/render_helpers.h"
@@ -243,6 +244,34 @@ TEST(ImpostorFrames, ForestWithSunAndMirrorEqualsTheGeneralKernel) {
         Image image = specialised.render(key);
         EXPECT_EQ(image.rgba, brute_force.render(key).rgba);
         expect_matches_reference(image, reference::render(scene, reference::camera_of(scene, key)), "forest");
+    }
+}
+
+// Large meshes have BVH trees of their own, built once (a copy of one file refitted), that
+// each frame joins with the tree over the impostors placed for it (render/scene_bvh.h): the
+// shadows and reflections of every frame are still the general kernel's and the reference's.
+TEST(ImpostorFrames, LargeMeshesKeepTheirTreesWhileImpostorsTurn) {
+    Scene scene = impostor_scene({1, 3, 14}, {0, 1, 0});
+    scene.has_sun = true;
+    scene.sun_location = {20, 40, 10};
+    for (int i = 0; i < 8; ++i) scene.impostors.push_back(four_view_impostor({-7.0 + 2 * i, 1.5, -3}));
+    for (const Vec3& centre : {Vec3{-3, 1.5, 2}, Vec3{3, 1.5, 2}}) {
+        testing::add_mesh(scene, testing::sphere_mesh(centre, 1.4, 48, 24, true), {0.8, 0.3, 0.2});
+        scene.meshes.back().path = "ball.obj";  // one file placed twice: the second is refitted
+    }
+    testing::add_mesh(scene, testing::grid_mesh({-6, 3.5, -6}, {0, 0, 12}, {0, 1.5, 0}, 32, 16), {0, 0, 0}, true);
+    scene.spheres.push_back(testing::make_sphere({0, 0.8, 4}, 0.8, {0.6, 0.6, 0.6}));
+    ASSERT_EQ(build_mesh_trees(scene).trees.size(), 3u) << "the test needs meshes large enough for trees";
+    scene.camera_path.push_back({{-6, 2.5, 12}, {0, 1, 0}});
+    RendererOptions general;
+    general.features = FeatureSet::all();
+    general.screen_tiles = false;
+    Renderer specialised(testing::test_device(), scene);
+    Renderer brute_force(testing::test_device(), scene, general);
+    for (const CameraKey& key : scene.camera_path) {
+        Image image = specialised.render(key);
+        EXPECT_EQ(image.rgba, brute_force.render(key).rgba);
+        expect_matches_reference(image, reference::render(scene, reference::camera_of(scene, key)), "meshes");
     }
 }
 
