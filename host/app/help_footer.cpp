@@ -13,7 +13,7 @@ std::string help_footer() {
 
 Environment:
   CLRENDER_DEVICE            Default for -d, the OpenCL device
-  CLRENDER_CACHE_DIR         Folder of the program, image and mesh caches, or 'off'; default
+  CLRENDER_CACHE_DIR         Folder of the program, image, mesh and mesh tree caches, or 'off'; default
                              $XDG_CACHE_HOME/clrender, else ~/.cache/clrender
   XDG_CACHE_HOME             See CLRENDER_CACHE_DIR
   CLRENDER_PROGRAM_STORE     Folder of programs built ahead of need, or 'off'; default

@@ -126,7 +126,8 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         compiled_.texels = {};  // the buffer's now; frames only move positions
         compiled_.coverage = {};
         if (features_.bvh) {  // otherwise empty: never read
-            mesh_trees_ = build_mesh_trees(scene_);
+            const MeshTreeCache tree_cache = MeshTreeCache::from_environment();
+            mesh_trees_ = build_mesh_trees(scene_, &tree_cache);
             bvh_ = build_bvh(frame_, mesh_trees_);
         }
         // Corner normals do not move with the eye: uploaded once, not with each frame's geometry.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -54,27 +55,14 @@ Bvh mesh_tree(const Scene& scene, const Mesh& mesh, int max_depth) {
 
 // `shape`, the tree of the mesh whose triangles start at `shape_first`, for another mesh of as
 // many triangles starting at `first`: the same nodes and leaves over its triangles, each box
-// made anew from them (children before parents: build_tree() puts each node before them).
+// made anew from them.
 Bvh refitted(const Bvh& shape, std::size_t shape_first, const Scene& scene, std::size_t first) {
     Bvh tree;
     tree.items.reserve(shape.items.size());
     for (std::uint32_t item : shape.items)
         tree.items.push_back(scene_item(CLR_HIT_TRIANGLE, first + (scene_item_index(item) - shape_first)));
     tree.nodes = shape.nodes;
-    for (std::size_t i = tree.nodes.size(); i-- > 0;) {
-        Bvh::Node& node = tree.nodes[i];
-        Box3 box;
-        if (node.count == 0) {
-            for (std::uint32_t child : {node.first, node.first + 1}) {
-                box.grow(tree.nodes[child].lower);
-                box.grow(tree.nodes[child].upper);
-            }
-        } else {
-            for (std::uint32_t k = node.first; k < node.first + node.count; ++k) box.grow(triangle_box(scene, tree.items[k]));
-        }
-        node.lower = box.lower;
-        node.upper = box.upper;
-    }
+    make_boxes(tree, scene);
     return tree;
 }
 
@@ -141,9 +129,37 @@ void join(Bvh& joined, std::size_t index, std::vector<Part>& parts, std::size_t 
     join(joined, left + 1, parts, middle, end);
 }
 
+// A mesh's tree: from `cache` when it holds one for these triangles, else built (and stored).
+Bvh mesh_tree(const Scene& scene, const Mesh& mesh, int max_depth, const MeshTreeCache* cache) {
+    if (!cache || !cache->worth_keeping(mesh)) return mesh_tree(scene, mesh, max_depth);
+    const MeshTreeCache::Key key = MeshTreeCache::key(scene, mesh, max_depth);
+    if (std::optional<Bvh> stored = cache->load(key, scene, mesh, max_depth)) return std::move(*stored);
+    Bvh tree = mesh_tree(scene, mesh, max_depth);
+    cache->store(key, tree, mesh);
+    return tree;
+}
+
 }  // namespace
 
-MeshTrees build_mesh_trees(const Scene& scene) {
+void make_boxes(Bvh& tree, const Scene& scene) {
+    // Children before parents: build_tree() puts each node before them.
+    for (std::size_t i = tree.nodes.size(); i-- > 0;) {
+        Bvh::Node& node = tree.nodes[i];
+        Box3 box;
+        if (node.count == 0) {
+            for (std::uint32_t child : {node.first, node.first + 1}) {
+                box.grow(tree.nodes[child].lower);
+                box.grow(tree.nodes[child].upper);
+            }
+        } else {
+            for (std::uint32_t k = node.first; k < node.first + node.count; ++k) box.grow(triangle_box(scene, tree.items[k]));
+        }
+        node.lower = box.lower;
+        node.upper = box.upper;
+    }
+}
+
+MeshTrees build_mesh_trees(const Scene& scene, const MeshTreeCache* cache) {
     MeshTrees meshes;
     meshes.tree_of_mesh.assign(scene.meshes.size(), MeshTrees::kNone);
     std::vector<std::size_t> own;  // meshes with a tree
@@ -162,7 +178,7 @@ MeshTrees build_mesh_trees(const Scene& scene) {
         shape_of[t] = found->second;
         if (built_here || mesh.path.empty()) {
             shape_of[t] = t;
-            meshes.trees[t] = mesh_tree(scene, mesh, meshes.max_depth);
+            meshes.trees[t] = mesh_tree(scene, mesh, meshes.max_depth, cache);
         }
     }
     parallel_for(own.size(), static_cast<std::size_t>(usable_cpu_count()), [&](std::size_t t) {

@@ -1,6 +1,6 @@
 // The frame's BVH (render/bvh.h) in two levels. Each large mesh has a tree of its own over its
-// triangles, in scene coordinates, made once per scene: moving the camera, or impostors
-// turning, never rebuilds it. A mesh placed again from the same file takes the first one's
+// triangles, in scene coordinates, made once per scene (and kept across runs by
+// render/mesh_tree_cache.h): moving the camera, or impostors turning, never rebuilds it. A mesh placed again from the same file takes the first one's
 // tree shape with its own bounds (a refit: one pass over its triangles, not a build). Each
 // frame, a tree over the rest (spheres, billboards, placed impostors, small meshes' triangles)
 // is joined with the mesh trees under a few nodes into one array, which the kernels walk as
@@ -13,6 +13,7 @@
 
 #include "render/bvh.h"
 #include "render/frame_geometry.h"
+#include "render/mesh_tree_cache.h"
 
 namespace clr {
 
@@ -28,8 +29,12 @@ struct MeshTrees {
                                             // that join them still fit the kernels' stack
 };
 
-// The scene's mesh trees (none for a scene without large meshes).
-MeshTrees build_mesh_trees(const Scene& scene);
+// The scene's mesh trees (none for a scene without large meshes); with a `cache`, the trees of
+// large meshes are taken from it when it holds them, and stored in it when built.
+MeshTrees build_mesh_trees(const Scene& scene, const MeshTreeCache* cache = nullptr);
+
+// Makes the boxes of `tree`, whose leaves hold triangles of `scene`, from the triangles up.
+void make_boxes(Bvh& tree, const Scene& scene);
 
 // The frame's BVH, bounds relative to frame.impostor_origin(): a tree over the frame's objects
 // outside `meshes`, joined with the trees of `meshes` (built for frame.scene()). Without mesh
