@@ -30,9 +30,12 @@ std::vector<FeatureSet> store_feature_sets(bool double_precision, bool float_out
     FeatureSet specialised;
     specialised.double_precision = double_precision;
     specialised.float_output = float_output;
-    for (bool clip : {false, true}) {
-        specialised.clip = clip;
-        sets.push_back(FeatureSet::general(specialised));
+    for (bool mirrors : {true, false}) {
+        specialised.mirrors = mirrors;
+        for (bool clip : {false, true}) {
+            specialised.clip = clip;
+            sets.push_back(FeatureSet::general(specialised));
+        }
     }
     return sets;
 }

@@ -19,6 +19,7 @@ FeatureSet FeatureSet::all() {
 FeatureSet FeatureSet::general(const FeatureSet& specialised) {
     FeatureSet features = all();
     features.clip = specialised.clip;
+    if (!specialised.mirrors && !specialised.lights) features.mirrors = features.lights = false;
     features.double_precision = specialised.double_precision;
     features.float_output = specialised.float_output;
     return features;

@@ -34,9 +34,13 @@ struct FeatureSet {
     static FeatureSet all();
     // The general program that can stand in for `specialised` (the same pixels: FeatureVariants
     // tests): every scene feature on, except near/far clipping, which changes how the packet
-    // kernel searches (about 4x slower) and so is on only where `specialised` clips; the
-    // precision and output mode are `specialised`'s. A still takes it from the program store
-    // rather than compiling `specialised` (Renderer, RendererOptions::general_stand_in).
+    // kernel searches (about 4x slower) and so is on only where `specialised` clips; and,
+    // where `specialised` has neither mirrors nor point lights, those two: without them the
+    // packet kernel takes flat colours from its intersection loop and traces a row's shadow
+    // rays together (packet/shading_modes.cl), as the scene's own program would. The precision
+    // and output mode are `specialised`'s. A
+    // still takes it from the program store rather than compiling `specialised` (Renderer,
+    // RendererOptions::general_stand_in).
     static FeatureSet general(const FeatureSet& specialised);
     static FeatureSet of(const Scene& scene);
 

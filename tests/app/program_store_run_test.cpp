@@ -19,6 +19,13 @@
 namespace clr {
 namespace {
 
+// The general program that stands in for a scene with point lights (and mirrors), without clipping.
+FeatureSet general_with_lights() {
+    FeatureSet lit;
+    lit.lights = true;
+    return FeatureSet::general(lit);
+}
+
 namespace fs = std::filesystem;
 using testing::read_bytes;
 using testing::run_clrender;
@@ -105,7 +112,7 @@ protected:
         folder_.write("path.json", lit_plane_scene(2));
         std::ostringstream log;
         ASSERT_EQ(build_program_store(folder_.file("store"), testing::test_device().entry(),
-                                      {FeatureSet::general(FeatureSet())}, log)
+                                      {general_with_lights()}, log)
                       .built,
                   1)
             << log.str();

@@ -55,29 +55,43 @@ TEST(FeatureCombinations, AreExactlyTheFeatureSetsScenesHave) {
     EXPECT_EQ(options_of(sets), feature_sets_of_built_scenes());
 }
 
-// The store holds the scene sets and the two general programs (with and without clipping)
-// that stand in for every other set in a still.
-TEST(FeatureCombinations, TheStoreAddsTheGeneralProgramsWithAndWithoutClipping) {
+// The store holds the scene sets and the four general programs that stand in for every other
+// set in a still: with mirrors and lights, and without (the faster packet shading), each with
+// and without clipping.
+TEST(FeatureCombinations, TheStoreAddsTheFourGeneralPrograms) {
     for (bool double_precision : {false, true})
         for (bool float_output : {false, true}) {
             const std::vector<FeatureSet> scene_sets = scene_feature_sets(double_precision, float_output);
             const std::vector<FeatureSet> store_sets = store_feature_sets(double_precision, float_output);
-            ASSERT_EQ(store_sets.size(), scene_sets.size() + 2);
+            ASSERT_EQ(store_sets.size(), scene_sets.size() + 4);
             EXPECT_EQ(options_of(store_sets).size(), store_sets.size()) << "each once";
             EXPECT_TRUE(std::equal(scene_sets.begin(), scene_sets.end(), store_sets.begin()));
-            FeatureSet clipping;
-            clipping.clip = true;
-            for (const FeatureSet& general : {store_sets[scene_sets.size()], store_sets[scene_sets.size() + 1]}) {
+            for (std::size_t g = 0; g < 4; ++g) {
+                const FeatureSet& general = store_sets[scene_sets.size() + g];
                 EXPECT_TRUE(general.spheres && general.billboards && general.triangles && general.planes &&
-                            general.lights && general.textures && general.alpha && general.sun && general.mirrors &&
-                            general.bvh);
+                            general.textures && general.alpha && general.sun && general.bvh);
+                EXPECT_EQ(general.mirrors && general.lights, g < 2) << g;
+                EXPECT_EQ(general.mirrors || general.lights, g < 2) << g;
+                EXPECT_EQ(general.clip, g % 2 == 1) << g;
                 EXPECT_EQ(general.double_precision, double_precision);
                 EXPECT_EQ(general.float_output, float_output);
             }
-            EXPECT_FALSE(store_sets[scene_sets.size()].clip);
-            EXPECT_TRUE(store_sets[scene_sets.size() + 1].clip);
-            EXPECT_EQ(FeatureSet::general(clipping).clip, true);
         }
+}
+
+// A set with mirrors or lights takes the general program with both; one with neither, the one
+// without: it covers every other feature.
+TEST(FeatureCombinations, TheGeneralProgramKeepsMirrorsAndLightsOnlyWhereNeeded) {
+    FeatureSet flat, mirrored, lit;
+    mirrored.mirrors = true;
+    lit.lights = true;
+    EXPECT_TRUE(FeatureSet::general(mirrored).mirrors && FeatureSet::general(mirrored).lights);
+    EXPECT_TRUE(FeatureSet::general(lit).mirrors && FeatureSet::general(lit).lights);
+    EXPECT_FALSE(FeatureSet::general(flat).mirrors || FeatureSet::general(flat).lights);
+    FeatureSet clipping;
+    clipping.clip = true;
+    EXPECT_TRUE(FeatureSet::general(clipping).clip);
+    EXPECT_FALSE(FeatureSet::general(flat).clip);
 }
 
 TEST(FeatureCombinations, CarryThePrecisionAndOutputModeAsked) {

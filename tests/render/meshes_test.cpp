@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "render/feature_set.h"
+#include "render/renderer.h"
 #include "support/render_helpers.h"
 #include "support/scene_builder.h"
 
@@ -63,9 +65,15 @@ TEST(Meshes, MirrorMeshesReflectLikeMirrorSpheres) {
 // A still of meshes, lit and mirrored and flat, whose own program the program store does not
 // hold, may render with the store's general program instead: the same bytes.
 TEST(Meshes, TheGeneralProgramRendersTheSameBytes) {
-    // Sunlit without mirrors: the scene's own program traces 16 shadow rays at a time
-    // (packet/shadows16.cl), the general one each alone.
+    // Sunlit without mirrors: the scene's own program and the general one without mirrors
+    // trace 16 shadow rays at a time (packet/shadows16.cl), the general one with mirrors each
+    // alone; all three give the same bytes.
     testing::expect_general_program_renders_the_same(lit_meshes());
+    FeatureSet mirrored;
+    mirrored.mirrors = true;
+    RendererOptions each_alone;
+    each_alone.features = FeatureSet::general(mirrored);
+    EXPECT_TRUE(testing::render_with_kernels(lit_meshes()).rgba == testing::render_with_kernels(lit_meshes(), each_alone).rgba);
     Scene scene = lit_meshes();
     add_mesh(scene, grid_mesh({-5, -1.2, -3}, {10, 0, 0}, {0, 6, 0}, 3, 2), {0, 0, 0}, true);
     scene.max_depth = 3;

@@ -18,6 +18,13 @@
 namespace clr {
 namespace {
 
+// The general program that stands in for a scene with point lights (and mirrors), without clipping.
+FeatureSet general_with_lights() {
+    FeatureSet lit;
+    lit.lights = true;
+    return FeatureSet::general(lit);
+}
+
 // A sphere on a floor plane under a point light (the fall 2019 format's kinds).
 Scene lit_floor() {
     Scene scene = testing::make_scene({2, 5, 14}, {0, 1, 0}, {0, 1, 0}, 50, 64, 48);
@@ -45,7 +52,7 @@ TEST(RenderService, AViewOfAnotherFeatureSetTakesTheStoresGeneralProgram) {
     testing::TempFolder folder;
     std::ostringstream log;
     ASSERT_EQ(build_program_store(folder.file("store"), testing::test_device().entry(),
-                                  {FeatureSet::general(FeatureSet())}, log)
+                                  {general_with_lights()}, log)
                   .built,
               1)
         << log.str();
