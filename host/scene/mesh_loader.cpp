@@ -192,11 +192,12 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             read = placeholder_cube();
             model = &read;
             mesh.placeholder = true;
+            mesh.material_paths = error.material_files;
         }
-        if (!mesh.placeholder) {
-            mesh.path = path;
-            mesh.material_paths = model->material_files;
-        }
+        // The files are inputs of the run whatever happened: an output must never replace a
+        // model (or its .mtl) that failed to load and that a placeholder stands in for.
+        mesh.path = path;
+        if (!mesh.placeholder) mesh.material_paths = model->material_files;
         if (!each.ambient_given) mesh.ambient = model->diffuse && !mesh.placeholder ? *model->diffuse : kDefaultMeshColor;
         add_mesh(scene, std::move(mesh), *model, each.filename);
         if (!used_again) kept.erase(path);

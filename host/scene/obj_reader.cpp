@@ -61,6 +61,7 @@ public:
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warning, std::string* error) override {
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
+        tried_.push_back(path.lexically_normal().string());
         std::string text;
         try {
             text = read_bounded_file(path.string(), kMaxMtlFileBytes);
@@ -88,11 +89,13 @@ public:
     const std::string& problem() const { return problem_; }
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
+    const std::vector<std::string>& tried() const { return tried_; }
     bool gives_diffuse(const std::string& material) const { return with_diffuse_.count(material) != 0; }
 
 private:
     std::filesystem::path folder_;
     std::string problem_;
+    std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
     std::set<std::string> with_diffuse_;
@@ -121,18 +124,12 @@ void check_values_read(const ObjMesh& mesh) {
     if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
 }
 
-}  // namespace
-
-ObjMesh parse_obj(const std::string& text, const std::string& path) {
-    ObjTextProblem problem;
-    const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
-    if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
-
+// parse_obj once the text's checks have passed; `material_files` reads the .mtl files.
+ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
     tinyobj::attrib_t attributes;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::string warning, error;
-    MaterialFiles material_files(std::filesystem::path(path).parent_path());
     std::istringstream stream(obj_statements_used(text));
     const bool read = tinyobj::LoadObj(&attributes, &shapes, &materials, &warning, &error, &stream, &material_files,
                                        /*triangulate=*/false, /*default_vcols_fallback=*/false);
@@ -193,6 +190,21 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
     }
     check_values_read(mesh);
     return mesh;
+}
+
+}  // namespace
+
+ObjMesh parse_obj(const std::string& text, const std::string& path) {
+    ObjTextProblem problem;
+    const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
+    if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
+    MaterialFiles material_files(std::filesystem::path(path).parent_path());
+    try {
+        return parse_checked(text, counts, material_files);
+    } catch (ObjError& failure) {
+        failure.material_files = material_files.tried();
+        throw;
+    }
 }
 
 std::string read_obj_text(const std::string& path) {

@@ -22,6 +22,9 @@ namespace clr {
 class ObjError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+    // The .mtl files the reader had tried to read when it failed, as paths: they stay inputs
+    // of the run (never replaced by an output) even when a placeholder stands in for the mesh.
+    std::vector<std::string> material_files;
 };
 
 // Largest OBJ file and largest .mtl file read, and most triangles a file may fan into: a

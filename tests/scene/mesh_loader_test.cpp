@@ -139,6 +139,26 @@ TEST(MeshLoader, PlaceholdersStandACubeInForAMissingFile) {
     EXPECT_TRUE(testing::scene_json::has_warning(scene, "placeholder cube")) << testing::scene_json::all_warnings(scene);
 }
 
+// The files a placeholder stands in for are still the run's inputs (no output may replace
+// them): the OBJ, and the .mtl files it names as far as they were read.
+TEST(MeshLoader, PlaceholdersKeepTheFilesTheyStandInForAsInputs) {
+    TempFolder folder;
+    folder.write("bad.obj", "mtllib a.mtl\nmtllib b.mtl\nusemtl r\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("a.mtl", "newmtl r\nKd 1 0 0\n");
+    folder.write("b.mtl", "newmtl r\nKd 1 0 0 0.5\n");
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene = load_in(folder, with_obj(Json::array({{{"filename", "bad.obj"}}, {{"filename", "gone.obj"}}})),
+                                options);
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_TRUE(scene.meshes[0].placeholder);
+    EXPECT_EQ(scene.meshes[0].path, folder.file("bad.obj"));
+    EXPECT_EQ(scene.meshes[0].material_paths, (std::vector<std::string>{folder.file("a.mtl"), folder.file("b.mtl")}));
+    EXPECT_TRUE(scene.meshes[1].placeholder);
+    EXPECT_EQ(scene.meshes[1].path, folder.file("gone.obj"));
+    EXPECT_TRUE(scene.meshes[1].material_paths.empty());
+}
+
 TEST(MeshLoader, BadSettingsAreRefusedWhereTheyAreWritten) {
     TempFolder folder;
     folder.write("square.obj", kSquareObj);
