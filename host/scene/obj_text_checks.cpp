@@ -184,6 +184,7 @@ std::string_view keyword_of(std::string_view line) {
 
 template <typename Keep>
 std::string statements_kept(std::string_view text, Keep&& keep) {
+    text = without_byte_order_mark(text);
     std::string kept;
     kept.reserve(text.size() + 1);
     for_each_line(text, [&](std::uint64_t, std::string_view line) {
@@ -195,6 +196,12 @@ std::string statements_kept(std::string_view text, Keep&& keep) {
 }
 
 }  // namespace
+
+std::string_view without_byte_order_mark(std::string_view text) {
+    constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+    if (text.substr(0, kUtf8ByteOrderMark.size()) == kUtf8ByteOrderMark) text.remove_prefix(kUtf8ByteOrderMark.size());
+    return text;
+}
 
 std::string obj_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) {
@@ -209,7 +216,7 @@ std::string mtl_statements_used(std::string_view text) {
 
 ObjTextProblem check_mtl_text(std::string_view text) {
     ObjTextProblem problem;
-    for_each_line(text, [&](std::uint64_t number, std::string_view line) {
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         const std::vector<std::string_view> tokens = tokens_of(line);
         if (tokens.empty() || tokens[0] != "Kd") return true;
         std::string detail;
@@ -346,6 +353,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
 // piece starts from (which count every line) are what a single pass would have reached.
 ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem) {
     problem = {};
+    text = without_byte_order_mark(text);
     const std::size_t parts = text.size() >= kPartedBytes ? static_cast<std::size_t>(usable_cpu_count()) : 1;
     const std::vector<std::string_view> pieces = cut_at_lines(text, parts);
     std::vector<PieceCounts> counted(pieces.size());

@@ -12,6 +12,10 @@
 
 namespace clr {
 
+// `text` without the UTF-8 byte order mark (EF BB BF) that some editors write at its start:
+// it is not part of the first line's keyword. Every function below skips it.
+std::string_view without_byte_order_mark(std::string_view text);
+
 // What the checks counted, for the reader's limits and its consistency check.
 struct ObjTextCounts {
     std::uint64_t positions = 0;  // `v` lines

@@ -89,6 +89,33 @@ TEST(ObjReader, CrlfAndCrLineEndsCountLinesAsTheyShow) {
     EXPECT_EQ(error_for("v 0 0 0\rv 1 0 0\rf 1 2 3\r"), "line 3: corner 3: position index 3 is out of range: the file has 2");
 }
 
+// Editors on Windows start UTF-8 text with a byte order mark (EF BB BF): it is not part of
+// the first line, which would otherwise be an unknown statement and shift every index.
+TEST(ObjReader, AUtf8ByteOrderMarkIsSkipped) {
+    TempFolder folder;
+    const std::string bom = "\xEF\xBB\xBF";
+    const ObjMesh mesh = read_obj(folder.write("bom.obj", bom + "v 5 6 7\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n"));
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[0], (Vec3{5, 6, 7}));
+    EXPECT_EQ(mesh.triangles, (std::vector<Triangle>{{0, 1, 2}}));
+    // The first line's number stays 1.
+    EXPECT_EQ(error_for(bom + "v 0 nan 0\n"), "line 1: 'v': 'nan' is not a finite number");
+    // In a .mtl too: the first material keeps its name, and its colour.
+    folder.write("bom.mtl", bom + "newmtl red\nKd 1 0 0.25\n");
+    const ObjMesh red = read_obj(folder.write("red.obj", "mtllib bom.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(red.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0.25}}));
+    folder.write("bad.mtl", bom + "Kd 1 0\n");
+    try {
+        read_obj(folder.write("bad.obj", "mtllib bad.mtl\n" + kSquare + "f 1 2 3\n"));
+        ADD_FAILURE() << "a Kd of two numbers after a byte order mark was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib bad.mtl: line 1: 'Kd' needs 3 numbers (r g b), the line has 2");
+    }
+    // Only at the start: elsewhere it is text.
+    EXPECT_EQ(error_for("v 0 0 0\n" + bom + "v 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+              "line 4: corner 3: position index 3 is out of range: the file has 2");
+}
+
 TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
     TempFolder folder;
     folder.write("colours.mtl", "newmtl red\nKd 1 0 0.25\nnewmtl plain\nKs 1 1 1\n");
