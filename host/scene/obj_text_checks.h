@@ -31,7 +31,8 @@ struct ObjTextProblem {
     std::string detail;
 };
 
-// Checks every `v`, `vn`, `vt` and `f` line of `text`: coordinates are finite numbers within
+// Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#', which starts a comment;
+// numbers and indices may carry a '+' sign): coordinates are finite numbers within
 // clrender's coordinate range, of at most 64 characters and a decimal exponent of at most 300
 // in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has three corners or more, each naming a position
 // (and optionally a texture coordinate and a normal) by a non-zero index, counted from the
@@ -56,7 +57,8 @@ ObjTextProblem check_mtl_text(std::string_view text);
 // `o`, `g`, `s`, `usemtl`, `mtllib`); every other line (comments, lines, points, skin weights,
 // tags, curves) is left empty, so that lines keep their numbers and the library never parses
 // what clrender ignores (its `vw` parser turns an out-of-range number into an int, undefined
-// behaviour). Every line ends in "\n".
+// behaviour); a comment after the numbers of a `v`, `vn`, `vt`, `f` or `Kd` line is cut.
+// Every line ends in "\n".
 std::string obj_statements_used(std::string_view text);
 
 // The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.

@@ -116,6 +116,33 @@ TEST(ObjReader, AUtf8ByteOrderMarkIsSkipped) {
               "line 4: corner 3: position index 3 is out of range: the file has 2");
 }
 
+// Forms that OBJ writers use: a '+' sign on a number or an index, and a comment after a
+// statement. tinyobjloader must read them as the checks do.
+TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl red\nKd +1 0 +0.25 # red\n");
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib m.mtl\nv +1 0 0 # first\nv 0 +2.5 0\nv 0 0 +1e+1\nv 1 1 1#tight\n"
+                    "vn 0 0 +1 # up\nvt 0.5 +0.5 # uv\nusemtl red\nf 1//1 2//1 3//1 # tri\nf +1 +2 +4#tight\n"));
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[0], (Vec3{1, 0, 0}));
+    EXPECT_EQ(mesh.positions[1], (Vec3{0, 2.5, 0}));
+    EXPECT_EQ(mesh.positions[2], (Vec3{0, 0, 10}));
+    EXPECT_EQ(mesh.positions[3], (Vec3{1, 1, 1}));
+    ASSERT_EQ(mesh.normals.size(), 1u);
+    EXPECT_EQ(mesh.normals[0], (Vec3{0, 0, 1}));
+    EXPECT_EQ(mesh.triangles, (std::vector<Triangle>{{0, 1, 2}, {0, 1, 3}}));
+    EXPECT_EQ(mesh.triangle_normals, (std::vector<Normals>{{0, 0, 0}, {-1, -1, -1}}));
+    EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0.25}}));
+    // A comment is not a corner, and a sign is one sign.
+    EXPECT_EQ(error_for(kSquare + "f 1 2 # 3\n"), "line 5: a face needs 3 corners or more, this one has 2");
+    EXPECT_EQ(error_for("v +-1 0 0\n"), "line 1: 'v': '+-1' is not a finite number");
+    EXPECT_EQ(error_for("v ++1 0 0\n"), "line 1: 'v': '++1' is not a finite number");
+    EXPECT_EQ(error_for("v + 0 0\n"), "line 1: 'v': '+' is not a finite number");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 +-3\n"), "line 5: corner 3: '+-3' is not a position index");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 +9\n"), "line 5: corner 3: position index 9 is out of range: the file has 4");
+}
+
 TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
     TempFolder folder;
     folder.write("colours.mtl", "newmtl red\nKd 1 0 0.25\nnewmtl plain\nKs 1 1 1\n");
@@ -148,7 +175,6 @@ TEST(ObjReader, BadIndicesNameTheirLineAndCorner) {
               "line 6: corner 2: normal index 2 is out of range: the file has 1");
     EXPECT_EQ(error_for(kSquare + "f 1/1 2/1 3/1\n"), "line 5: corner 1: texture coordinate index 1 is out of range: the file has 0");
     EXPECT_EQ(error_for(kSquare + "f 1 2 x\n"), "line 5: corner 3: 'x' is not a position index");
-    EXPECT_EQ(error_for(kSquare + "f 1 2 3 # a comment\n"), "line 5: corner 4: '#' is not a position index");
     EXPECT_EQ(error_for(kSquare + "f 1/1/1/1 2 3\n"), "line 5: corner 1: '1/1/1/1' is not a corner (p, p/t, p//n or p/t/n)");
     EXPECT_EQ(error_for(kSquare + "f 99999999999999999999 2 3\n"), "line 5: corner 1: '99999999999999999999' is not a position index");
 }
