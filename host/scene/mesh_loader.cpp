@@ -88,6 +88,17 @@ bool transformed_normal(const Vec3& normal, const Vec3& scale, Vec3& out) {
     return true;
 }
 
+// Whether any triangle of `model` has an area: a mesh whose faces all have repeated or collinear
+// corners draws nothing, which is never the model a scene means.
+bool any_triangle_has_area(const ObjMesh& model) {
+    for (const auto& corners : model.triangles) {
+        const Vec3& a = model.positions[corners[0]];
+        const Vec3 area = cross(model.positions[corners[1]] - a, model.positions[corners[2]] - a);
+        if (dot(area, area) > 0) return true;
+    }
+    return false;
+}
+
 // Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
 // once placed are left out: no ray can hit them, and their plane has no normal.
 void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename) {
@@ -126,6 +137,9 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
         scene.triangles.push_back(triangle);
     }
     mesh.triangle_count = scene.triangles.size() - mesh.first_triangle;
+    if (mesh.triangle_count == 0)
+        filename.fail("mesh '" + printable(mesh.filename) + "': all its faces have zero area once scaled and placed: "
+                      "it draws nothing");
     scene.meshes.push_back(std::move(mesh));
 }
 
@@ -185,6 +199,8 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             // not the mesh the scene asks for (a wrong file, or points and lines only).
             if (model->triangles.empty())
                 throw ObjError("it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
+            if (!any_triangle_has_area(*model))
+                throw ObjError("all its faces have zero area (repeated or collinear corners): it draws nothing");
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);

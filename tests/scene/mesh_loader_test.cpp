@@ -105,6 +105,27 @@ TEST(MeshLoader, TrianglesWithoutAreaAreLeftOut) {
     EXPECT_EQ(scene.triangles[0].corners[2], (Vec3{0, 1, 0}));
 }
 
+// A mesh that would draw nothing is refused as a file without faces is: its faces all have
+// repeated or collinear corners in the file, or collapse once placed far from its origin.
+TEST(MeshLoader, AMeshWhoseFacesAllHaveZeroAreaIsRefused) {
+    TempFolder folder;
+    folder.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\nf 3 2 1 1\n");
+    const std::string error = error_of(folder, with_obj({{"filename", "flat.obj"}}));
+    EXPECT_EQ(error.rfind("/obj/filename: cannot read OBJ '", 0), 0u) << error;
+    EXPECT_NE(error.find("flat.obj': all its faces have zero area"), std::string::npos) << error;
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene = load_in(folder, with_obj({{"filename", "flat.obj"}}), options);
+    EXPECT_TRUE(scene.meshes.at(0).placeholder);
+    EXPECT_EQ(scene.triangles.size(), 12u);
+    // A triangle of 1e-10 sides has an area in the file, and none at 1e10 from the origin.
+    folder.write("tiny.obj", "v 0 0 0\nv 1e-10 0 0\nv 0 1e-10 0\nf 1 2 3\n");
+    EXPECT_EQ(load_in(folder, with_obj({{"filename", "tiny.obj"}})).triangles.size(), 1u);
+    const std::string placed = error_of(folder, with_obj({{"filename", "tiny.obj"}, {"position", {1e10, 1e10, 0}}}));
+    EXPECT_EQ(placed, "/obj/filename: mesh 'tiny.obj': all its faces have zero area once scaled and placed: it draws "
+                      "nothing") << placed;
+}
+
 TEST(MeshLoader, AMissingFileIsTheScenesErrorAtItsFilename) {
     TempFolder folder;
     const std::string error = error_of(folder, with_obj({{"filename", "gone.obj"}}));
