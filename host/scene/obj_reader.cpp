@@ -185,8 +185,9 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
         }
     }
     if (mesh.faces != counts.faces || mesh.triangles.size() != counts.triangles) {
-        throw ObjError("tinyobjloader read " + std::to_string(mesh.faces) + " faces where the file has " +
-                       std::to_string(counts.faces));
+        throw ObjError("tinyobjloader read " + std::to_string(mesh.faces) + " faces of " +
+                       std::to_string(mesh.triangles.size()) + " triangles where the file has " +
+                       std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
     check_values_read(mesh);
     return mesh;

@@ -334,6 +334,9 @@ ObjTextProblem check_piece(std::string_view piece, std::uint64_t lines_before, O
         else if (keyword == "f") {
             if (tokens.size() < 4) {
                 detail = "a face needs 3 corners or more, this one has " + std::to_string(tokens.size() - 1);
+            } else if (tokens.size() - 1 > kMaxFaceCorners) {
+                detail = "a face has at most " + std::to_string(kMaxFaceCorners) + " corners (tinyobjloader's limit), "
+                         "this one has " + std::to_string(tokens.size() - 1) + ": split it into smaller faces";
             }
             for (std::size_t i = 1; detail.empty() && i < tokens.size(); ++i) {
                 detail = check_corner(tokens[i], counts, total);

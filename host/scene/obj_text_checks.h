@@ -16,6 +16,10 @@ namespace clr {
 // it is not part of the first line's keyword. Every function below skips it.
 std::string_view without_byte_order_mark(std::string_view text);
 
+// The most corners a face may have: tinyobjloader keeps a face's corner count in a byte, and
+// reads a larger polygon as another one.
+constexpr std::uint64_t kMaxFaceCorners = 255;
+
 // What the checks counted, for the reader's limits and its consistency check.
 struct ObjTextCounts {
     std::uint64_t positions = 0;  // `v` lines
@@ -34,12 +38,13 @@ struct ObjTextProblem {
 // Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#', which starts a comment;
 // numbers and indices may carry a '+' sign): coordinates are finite numbers within
 // clrender's coordinate range, of at most 64 characters and a decimal exponent of at most 300
-// in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has three corners or more, each naming a position
-// (and optionally a texture coordinate and a normal) by a non-zero index, counted from the
-// start (1 is the first) or, negative, back from the latest one before the face, that
-// names an entry of the file. Stops at the first problem. Also stops when the faces fan
-// into more than `max_triangles` triangles (the memory budget). Other lines (`o`, `g`, `s`,
-// `usemtl`, `mtllib`, comments, unknown commands) are the library's.
+// in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has from three to
+// kMaxFaceCorners corners, each naming a position (and optionally a texture coordinate and a
+// normal) by a non-zero index, counted from the start (1 is the first) or, negative, back
+// from the latest one before the face, that names an entry of the file. Stops at the first
+// problem. Also stops when the faces fan into more than `max_triangles` triangles (the memory
+// budget). Other lines (`o`, `g`, `s`, `usemtl`, `mtllib`, comments, unknown commands) are
+// the library's.
 // Returns the counts; sets `problem` (line 0: none) to the first problem found.
 ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem);
 

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -232,6 +233,31 @@ TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
     EXPECT_EQ(error_with("Kd spectral red.rfl 1"), "mtllib m.mtl: line 3: 'Kd': 'spectral' is not a finite number");
     EXPECT_EQ(error_with("Kd 0 2e6 0"), "mtllib m.mtl: line 3: 'Kd': '2e6' is out of range: a colour lies from -1e6 to 1e6");
     EXPECT_EQ(error_with("Kd 0 1.5 -0.25"), "");  // outside [0, 1] is a colour, as in a scene
+}
+
+// tinyobjloader counts a face's corners in a byte: a polygon of 256 corners would be read as
+// another one. The checks refuse it at its line; 255 corners fan as any polygon.
+TEST(ObjReader, FacesOfMoreThan255CornersAreRefused) {
+    const auto polygon = [](int corners) {
+        std::string text;
+        for (int i = 0; i < corners; ++i) {
+            const double angle = 6.283185307179586 * i / corners;
+            text += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+        }
+        text += "f";
+        for (int i = 1; i <= corners; ++i) text += " " + std::to_string(i);
+        return text + "\n";
+    };
+    TempFolder folder;
+    const ObjMesh largest = read_obj(folder.write("255.obj", polygon(255)));
+    EXPECT_EQ(largest.faces, 1u);
+    ASSERT_EQ(largest.triangles.size(), 253u);
+    EXPECT_EQ(largest.triangles.back(), (Triangle{0, 253, 254}));
+    for (int corners : {256, 1000}) {
+        EXPECT_EQ(error_for(polygon(corners)), "line " + std::to_string(corners + 1) +
+                                                   ": a face has at most 255 corners (tinyobjloader's limit), this one has " +
+                                                   std::to_string(corners) + ": split it into smaller faces");
+    }
 }
 
 TEST(ObjReader, TheTriangleLimitIsCountedAsTheFacesFan) {
