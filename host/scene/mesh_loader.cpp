@@ -210,6 +210,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             mesh.placeholder = true;
             mesh.material_paths = error.material_files;
         }
+        for (const std::string& warning : model->warnings) each.filename.warn("OBJ '" + printable(path) + "': " + warning);
         // The files are inputs of the run whatever happened: an output must never replace a
         // model (or its .mtl) that failed to load and that a placeholder stands in for.
         mesh.path = path;

@@ -32,24 +32,43 @@ std::string first_line(const std::string& text) {
     return line.empty() ? "tinyobjloader could not read it" : line;
 }
 
-// The names of the materials of an .mtl text that give a `Kd` line: tinyobjloader leaves an
-// unset Kd at 0, which a black material also has.
-std::set<std::string> materials_with_diffuse(const std::string& text) {
-    std::set<std::string> names;
+// Whether each material that tinyobjloader's LoadMtl makes of an .mtl text gives a `Kd` line
+// (the library leaves an unset Kd at 0, which a black material also has), in the order the
+// library adds them to its list. This follows LoadMtl's own reading: a line trimmed of
+// trailing blanks; "newmtl" and a blank start a material and add the previous one if it has
+// a name; the last one is added whatever its name. A name defined twice keeps its first
+// definition (the library's map of names), which the list's order lets the caller find.
+std::vector<bool> materials_giving_diffuse(const std::string& text) {
+    std::vector<bool> gives;
+    bool named = false, has_kd = false;
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
     std::istringstream lines(text);
-    std::string current;
     for (std::string line; std::getline(lines, line);) {
-        std::istringstream tokens(line);
-        std::string keyword;
-        tokens >> keyword;
-        if (keyword == "newmtl") {
-            std::getline(tokens >> std::ws, current);
-            while (!current.empty() && (current.back() == '\r' || current.back() == ' ')) current.pop_back();
-        } else if (keyword == "Kd") {
-            names.insert(current);
+        while (!line.empty() && blank(line.back())) line.pop_back();
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::size_t at = 0;
+        while (at < line.size() && blank(line[at])) ++at;
+        const std::string_view token = std::string_view(line).substr(at);
+        if (token.size() > 6 && token.substr(0, 6) == "newmtl" && blank(token[6])) {
+            if (named) gives.push_back(has_kd);
+            named = token.size() > 7 && token[7] != '\0';  // the library reads the name as a C string
+            has_kd = false;
+        } else if (token.size() > 2 && token.substr(0, 2) == "Kd" && blank(token[2])) {
+            has_kd = true;
         }
     }
-    return names;
+    gives.push_back(has_kd);
+    return gives;
+}
+
+// The material name of a `usemtl` statement, as tinyobjloader reads it: the first word.
+std::string used_material(std::string_view statement) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    std::size_t at = statement.find("usemtl") + 6;
+    while (at < statement.size() && blank(statement[at])) ++at;
+    std::size_t end = at;
+    while (end < statement.size() && !blank(statement[end])) ++end;
+    return std::string(statement.substr(at, end - at));
 }
 
 // Reads each `mtllib` file relative to the OBJ's folder, with the limits of any input file;
@@ -80,9 +99,20 @@ public:
             return false;
         }
         text = mtl_statements_used(text);
-        for (const std::string& material : materials_with_diffuse(text)) with_diffuse_.insert(material);
+        const std::vector<bool> gives_diffuse = materials_giving_diffuse(text);
+        const std::size_t before = materials->size();
         std::istringstream stream(text);
         tinyobj::LoadMtl(names, materials, &stream, warning, error);
+        if (materials->size() != before + gives_diffuse.size()) {
+            if (problem_.empty()) {
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": tinyobjloader read " +
+                           std::to_string(materials->size() - before) + " materials where the file defines " +
+                           std::to_string(gives_diffuse.size());
+            }
+            return false;
+        }
+        with_diffuse_.insert(with_diffuse_.end(), gives_diffuse.begin(), gives_diffuse.end());
+        for (const auto& named : *names) names_.insert(named.first);
         return true;
     }
 
@@ -90,7 +120,9 @@ public:
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
     const std::vector<std::string>& tried() const { return tried_; }
-    bool gives_diffuse(const std::string& material) const { return with_diffuse_.count(material) != 0; }
+    // Whether the material at `index` in tinyobjloader's list gives a `Kd` line.
+    bool gives_diffuse(std::size_t index) const { return index < with_diffuse_.size() && with_diffuse_[index]; }
+    bool defines(const std::string& material) const { return names_.count(material) != 0; }
 
 private:
     std::filesystem::path folder_;
@@ -98,7 +130,8 @@ private:
     std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
-    std::set<std::string> with_diffuse_;
+    std::vector<bool> with_diffuse_;  // of each material in tinyobjloader's list
+    std::set<std::string> names_;     // the materials defined, as usemtl names them
 };
 
 Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
@@ -122,6 +155,29 @@ void check_values_read(const ObjMesh& mesh) {
         if (!finite(mesh.normals[i])) throw ObjError("tinyobjloader read normal " + std::to_string(i + 1) + " as not finite");
     }
     if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
+}
+
+// A `usemtl` that names no material of the .mtl files leaves the mesh without the colour its
+// author chose (tinyobjloader only warns): a warning naming the first such line, and how many
+// more there are.
+void warn_about_undefined_materials(const std::string& text, const MaterialFiles& material_files, ObjMesh& mesh) {
+    std::uint64_t first_line = 0, more = 0;
+    std::string first_name;
+    for_each_statement(text, "usemtl", [&](std::uint64_t line, std::string_view statement) {
+        const std::string name = used_material(statement);
+        if (material_files.defines(name)) return;
+        if (first_line != 0) {
+            ++more;
+            return;
+        }
+        first_line = line;
+        first_name = name;
+    });
+    if (first_line == 0) return;
+    mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
+                            ": no .mtl file of the OBJ defines this material" +
+                            (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : "") +
+                            "; its faces take the scene's ambient, else 0.8 grey");
 }
 
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files.
@@ -176,8 +232,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                 }
             }
             const int material = shape.mesh.material_ids[face];
-            if (mesh.faces == 0 && in_range(material, materials.size()) &&
-                material_files.gives_diffuse(materials[material].name)) {
+            if (mesh.faces == 0 && in_range(material, materials.size()) && material_files.gives_diffuse(material)) {
                 const auto& kd = materials[material].diffuse;
                 mesh.diffuse = Vec3{kd[0], kd[1], kd[2]};
             }
@@ -190,6 +245,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
     check_values_read(mesh);
+    if (warning.find("not found in .mtl") != std::string::npos) warn_about_undefined_materials(text, material_files, mesh);
     return mesh;
 }
 

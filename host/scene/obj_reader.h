@@ -47,6 +47,9 @@ struct ObjMesh {
     std::uint64_t faces = 0;  // polygons in the file
     std::vector<std::string> material_files;  // the .mtl files read, as paths
     std::vector<Sha256Digest> material_digests;  // the SHA-256 of each, as read
+    // What the file asks for that cannot be done, each one line ("line 7: usemtl red: no .mtl
+    // file of the OBJ defines this material; ..."): the scene's warnings at its "filename".
+    std::vector<std::string> warnings;
 };
 
 // Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a

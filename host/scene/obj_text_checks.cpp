@@ -224,6 +224,14 @@ std::string_view without_byte_order_mark(std::string_view text) {
     return text;
 }
 
+void for_each_statement(std::string_view text, std::string_view keyword,
+                        const std::function<void(std::uint64_t, std::string_view)>& visit) {
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        if (keyword_of(line) == keyword) visit(number, line);
+        return true;
+    });
+}
+
 std::string obj_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) {
         return keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "f" || keyword == "o" ||

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -57,6 +58,10 @@ constexpr double kMaxMaterialColor = 1e6;
 // tinyobjloader reads them), finite, within the limits of check_obj_text's numbers and within
 // kMaxMaterialColor. Returns the first problem (line 0: none).
 ObjTextProblem check_mtl_text(std::string_view text);
+
+// Calls `visit(line_number, line)` for each line of `text` whose first word is `keyword`.
+void for_each_statement(std::string_view text, std::string_view keyword,
+                        const std::function<void(std::uint64_t, std::string_view)>& visit);
 
 // `text` with only the statements clrender uses kept for tinyobjloader (`v`, `vn`, `vt`, `f`,
 // `o`, `g`, `s`, `usemtl`, `mtllib`); every other line (comments, lines, points, skin weights,

@@ -126,6 +126,18 @@ TEST(MeshLoader, AMeshWhoseFacesAllHaveZeroAreaIsRefused) {
                       "nothing") << placed;
 }
 
+// The reader's warnings are the scene's, at the mesh's "filename" (so --strict refuses them).
+TEST(MeshLoader, AnUndefinedMaterialIsAWarningAtTheFilename) {
+    TempFolder folder;
+    folder.write("red.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("blue.obj", "mtllib red.mtl\nusemtl blue\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Scene scene = load_in(folder, with_obj(Json::array({{{"filename", "blue.obj"}}})));
+    EXPECT_TRUE(testing::scene_json::has_warning(
+        scene, "/obj/0/filename: OBJ '" + folder.file("blue.obj") + "': line 2: usemtl blue: no .mtl file"))
+        << testing::scene_json::all_warnings(scene);
+    EXPECT_EQ(scene.meshes.at(0).ambient, (Vec3{0.8, 0.8, 0.8}));
+}
+
 TEST(MeshLoader, AMissingFileIsTheScenesErrorAtItsFilename) {
     TempFolder folder;
     const std::string error = error_of(folder, with_obj({{"filename", "gone.obj"}}));

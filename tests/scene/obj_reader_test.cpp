@@ -155,6 +155,54 @@ TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
     EXPECT_FALSE(read_obj(folder.write("none.obj", kSquare + "f 1 2 3\n")).diffuse.has_value());
 }
 
+// clrender knows which materials give a Kd as tinyobjloader names and picks them: a name
+// defined twice is its first definition, and a name ends before trailing blanks (a tab too).
+TEST(ObjReader, MaterialNamesAreReadAsTinyobjloaderReadsThem) {
+    TempFolder folder;
+    const auto diffuse_of = [&](const std::string& material) {
+        folder.write("m.mtl", material);
+        const ObjMesh mesh = read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+        EXPECT_TRUE(mesh.warnings.empty()) << mesh.warnings.front();
+        return mesh.diffuse;
+    };
+    // The first definition gives no Kd: the scene's colour, not black.
+    EXPECT_FALSE(diffuse_of("newmtl red\nnewmtl red\nKd 0 1 0\n").has_value());
+    EXPECT_EQ(diffuse_of("newmtl red\nKd 0 0 1\nnewmtl red\nKd 0 1 0\n"), (std::optional<Vec3>{Vec3{0, 0, 1}}));
+    EXPECT_EQ(diffuse_of("newmtl red\t\nKd 1 0 0\n"), (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_EQ(diffuse_of("newmtl red \t \r\nKd 1 0 0.5\r\n"), (std::optional<Vec3>{Vec3{1, 0, 0.5}}));
+    EXPECT_EQ(diffuse_of("newmtl\tred\nKd 0.5 0 0\n"), (std::optional<Vec3>{Vec3{0.5, 0, 0}}));
+    // A Kd before any name, and a `newmtl` without one, belong to no material that usemtl finds.
+    EXPECT_EQ(diffuse_of("Kd 0 1 0\nnewmtl red\nKd 0.25 0 0\nnewmtl\nKd 0 0 1\n"),
+              (std::optional<Vec3>{Vec3{0, 0, 1}}))
+        << "tinyobjloader reads a Kd after a bare 'newmtl' as the current material's";
+    // Several .mtl files: materials are counted across them.
+    folder.write("a.mtl", "newmtl blue\nnewmtl green\nKd 0 1 0\n");
+    folder.write("b.mtl", "newmtl red\nKd 1 0 0\n");
+    EXPECT_EQ(read_obj(folder.write("two.obj", "mtllib a.mtl\nmtllib b.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).diffuse,
+              (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_FALSE(read_obj(folder.write("two.obj", "mtllib a.mtl b.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"))
+                     .diffuse.has_value());
+}
+
+// A usemtl that names no material is a warning with its line (tinyobjloader's own says
+// neither file nor line), counting the others; a name it finds is none.
+TEST(ObjReader, AMaterialThatNoMtlDefinesIsAWarning) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl rde\nKd 1 0 0\nnewmtl red  \n");  // "red": trailing blanks are no part of it
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\nusemtl blue # again\n"
+                    "usemtl rde\nf 2 3 4\n"));
+    EXPECT_EQ(mesh.triangles.size(), 3u);
+    EXPECT_FALSE(mesh.diffuse.has_value());
+    EXPECT_EQ(mesh.warnings, (std::vector<std::string>{
+                                 "line 8: usemtl blue: no .mtl file of the OBJ defines this material (nor those of 1 "
+                                 "more usemtl lines); its faces take the scene's ambient, else 0.8 grey"}));
+    const ObjMesh none = read_obj(folder.write("none.obj", kSquare + "usemtl red\nf 1 2 3\n"));
+    ASSERT_EQ(none.warnings.size(), 1u);
+    EXPECT_EQ(none.warnings[0].rfind("line 5: usemtl red: no .mtl file", 0), 0u) << none.warnings[0];
+    EXPECT_TRUE(read_obj(folder.write("fine.obj", "mtllib m.mtl\n" + kSquare + "usemtl rde\nf 1 2 3\n")).warnings.empty());
+}
+
 TEST(ObjReader, AMissingMaterialFileIsAnError) {
     const std::string message = error_for("mtllib gone.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n");
     EXPECT_EQ(message.rfind("mtllib gone.mtl: ", 0), 0u) << message;
