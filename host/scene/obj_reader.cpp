@@ -1,5 +1,7 @@
 #include "scene/obj_reader.h"
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -81,6 +83,16 @@ public:
                     std::map<std::string, int>* names, std::string* warning, std::string* error) override {
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
         tried_.push_back(path.lexically_normal().string());
+        // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
+        // in the list already, and tinyobjloader only skips a name it has read.
+        struct stat info {};
+        if (::stat(path.c_str(), &info) == 0 && !read_.insert({info.st_dev, info.st_ino}).second) return true;
+        if (files_.size() >= kMaxMtlFiles) {
+            if (problem_.empty())
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": the OBJ reads more than " +
+                           std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
+            return false;
+        }
         std::string text;
         try {
             text = read_bounded_file(path.string(), kMaxMtlFileBytes);
@@ -101,6 +113,13 @@ public:
         text = mtl_statements_used(text);
         const std::vector<bool> gives_diffuse = materials_giving_diffuse(text);
         const std::size_t before = materials->size();
+        if (before + gives_diffuse.size() > kMaxObjMaterials) {
+            if (problem_.empty())
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": it brings the OBJ's materials to " +
+                           std::to_string(before + gives_diffuse.size()) + ", more than the limit of " +
+                           std::to_string(kMaxObjMaterials);
+            return false;
+        }
         std::istringstream stream(text);
         tinyobj::LoadMtl(names, materials, &stream, warning, error);
         if (materials->size() != before + gives_diffuse.size()) {
@@ -130,6 +149,7 @@ private:
     std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
+    std::set<std::pair<dev_t, ino_t>> read_;  // each .mtl read, by identity
     std::vector<bool> with_diffuse_;  // of each material in tinyobjloader's list
     std::set<std::string> names_;     // the materials defined, as usemtl names them
 };

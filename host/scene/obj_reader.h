@@ -33,6 +33,10 @@ public:
 constexpr std::uint64_t kMaxObjFileBytes = std::uint64_t(1) << 30;
 constexpr std::uint64_t kMaxMtlFileBytes = std::uint64_t(16) << 20;
 constexpr std::uint64_t kMaxObjTriangles = std::uint64_t(1) << 24;
+// Most materials the .mtl files of one OBJ may define together, and most .mtl files it may
+// read: tinyobjloader keeps about 3 KB a material, so 16 MiB of `newmtl a` lines took 5.6 GB.
+constexpr std::uint64_t kMaxObjMaterials = 10000;
+constexpr std::uint64_t kMaxMtlFiles = 1024;
 
 struct ObjMesh {
     std::vector<Vec3> positions;  // as the file gives them, in its order

@@ -203,6 +203,56 @@ TEST(ObjReader, AMaterialThatNoMtlDefinesIsAWarning) {
     EXPECT_TRUE(read_obj(folder.write("fine.obj", "mtllib m.mtl\n" + kSquare + "usemtl rde\nf 1 2 3\n")).warnings.empty());
 }
 
+// tinyobjloader keeps about 3 KB a material: an OBJ's .mtl files define at most
+// kMaxObjMaterials together, counted before the library reads them.
+TEST(ObjReader, TheMaterialsOfAnObjAreLimited) {
+    TempFolder folder;
+    std::string materials;
+    for (std::uint64_t i = 0; i < kMaxObjMaterials; ++i) materials += "newmtl m" + std::to_string(i) + "\n";
+    folder.write("full.mtl", materials);
+    folder.write("more.mtl", "newmtl red\nKd 1 0 0\n");
+    const std::string faces = kSquare + "usemtl m9999\nf 1 2 3\n";
+    EXPECT_TRUE(read_obj(folder.write("full.obj", "mtllib full.mtl\n" + faces)).warnings.empty());
+    try {
+        read_obj(folder.write("over.obj", "mtllib full.mtl\nmtllib more.mtl\n" + faces));
+        ADD_FAILURE() << "10001 materials were read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib more.mtl: it brings the OBJ's materials to 10001, more than the limit of 10000");
+    }
+}
+
+// One .mtl named several ways is read once: its materials are not counted (nor kept) twice.
+TEST(ObjReader, AMaterialFileNamedSeveralWaysIsReadOnce) {
+    TempFolder folder;
+    std::string materials = "newmtl red\nKd 1 0 0\n";
+    for (int i = 0; i < 6000; ++i) materials += "newmtl m" + std::to_string(i) + "\n";
+    folder.write("a.mtl", materials);
+    ::mkdir(folder.file("sub").c_str(), 0755);
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib a.mtl\nmtllib ./a.mtl\nmtllib .//a.mtl\nmtllib sub/../a.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(mesh.material_files.size(), 1u);
+    EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+}
+
+// More .mtl files than kMaxMtlFiles are refused at the first one past the limit.
+TEST(ObjReader, TheMaterialFilesOfAnObjAreLimited) {
+    TempFolder folder;
+    std::string libraries;
+    for (std::uint64_t i = 0; i <= kMaxMtlFiles; ++i) {
+        const std::string name = "m" + std::to_string(i) + ".mtl";
+        folder.write(name, "newmtl m" + std::to_string(i) + "\n");
+        libraries += "mtllib " + name + "\n";
+        if (i + 1 == kMaxMtlFiles)
+            EXPECT_EQ(read_obj(folder.write("full.obj", libraries + kSquare + "f 1 2 3\n")).material_files.size(), kMaxMtlFiles);
+    }
+    try {
+        read_obj(folder.write("over.obj", libraries + kSquare + "f 1 2 3\n"));
+        ADD_FAILURE() << "1025 .mtl files were read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib m1024.mtl: the OBJ reads more than 1024 .mtl files, the limit");
+    }
+}
+
 TEST(ObjReader, AMissingMaterialFileIsAnError) {
     const std::string message = error_for("mtllib gone.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n");
     EXPECT_EQ(message.rfind("mtllib gone.mtl: ", 0), 0u) << message;
