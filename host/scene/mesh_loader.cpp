@@ -174,7 +174,9 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     std::vector<std::string> paths;
     for (const PendingMesh& each : pending) {
         const fs::path name(each.mesh.filename);
-        paths.push_back((name.is_absolute() ? name : folder / name).lexically_normal().string());
+        // Not lexically_normal(): "models/../m.obj" is opened as the system resolves it (through
+        // a symbolic link `models`, or not at all when there is no folder `models`).
+        paths.push_back((name.is_absolute() ? name : folder / name).string());
     }
     // A file that several meshes place (one model, many copies) is read once, and its model
     // kept only until the last of them is placed.

@@ -82,7 +82,7 @@ public:
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warning, std::string* error) override {
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
-        tried_.push_back(path.lexically_normal().string());
+        tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
         // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
         // in the list already, and tinyobjloader only skips a name it has read.
         struct stat info {};
@@ -100,7 +100,7 @@ public:
             if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + failure.what();
             return false;
         }
-        files_.push_back(path.lexically_normal().string());
+        files_.push_back(path.string());
         digests_.push_back(sha256(text.data(), text.size()));
         const ObjTextProblem colour = check_mtl_text(text);
         if (colour.line != 0) {

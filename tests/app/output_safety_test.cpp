@@ -159,6 +159,21 @@ TEST(OutputSafety, OutputsNamingAMeshThatFailedToLoadAreRefused) {
     EXPECT_FALSE(fs::exists(folder.file("out.png")));
 }
 
+// A mesh named "models/../m.obj" through a symbolic link `models` is the file the system
+// opens (beside the link's target): that file is the input an output may not replace.
+TEST(OutputSafety, AMeshNamedThroughALinkAndDotDotIsProtectedAsOpened) {
+    TempFolder folder;
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    fs::create_directories(folder.file("elsewhere/models"));
+    fs::create_directory_symlink(folder.file("elsewhere/models"), folder.file("models"));
+    folder.write("elsewhere/m.obj", obj);
+    folder.write("scene.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 8, "height": 6, "obj": {"filename": "models/../m.obj"}})");
+    const auto result = run_clrender("scene.json -o out.png --stats elsewhere/m.obj --reference -q", folder.path(), "timeout 60");
+    expect_refused(result, "--stats report", "mesh");
+    EXPECT_EQ(read_bytes(folder.file("elsewhere/m.obj")), obj);
+}
+
 TEST(OutputSafety, DefaultOutputNameNamingATextureIsRefused) {
     TempFolder folder;  // the scene tex.json: its default output is tex.png in the current folder
     const std::string texture = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "scenes/demo/checker.png");

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -19,6 +20,7 @@
 namespace clr {
 namespace {
 
+namespace fs = std::filesystem;
 using testing::TempFolder;
 using testing::scene_json::Json;
 using testing::scene_json::minimal_scene;
@@ -136,6 +138,25 @@ TEST(MeshLoader, AnUndefinedMaterialIsAWarningAtTheFilename) {
         scene, "/obj/0/filename: OBJ '" + folder.file("blue.obj") + "': line 2: usemtl blue: no .mtl file"))
         << testing::scene_json::all_warnings(scene);
     EXPECT_EQ(scene.meshes.at(0).ambient, (Vec3{0.8, 0.8, 0.8}));
+}
+
+// "models/../m.obj" is the file the system opens: through a symbolic link `models`, the
+// folder above the link's target; without a folder `models`, none. The same for `mtllib`.
+TEST(MeshLoader, DotDotIsResolvedByTheSystemNotOnTheText) {
+    TempFolder folder;
+    fs::create_directories(folder.file("elsewhere/models"));
+    fs::create_directory_symlink(folder.file("elsewhere/models"), folder.file("models"));
+    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");  // what the text would name
+    folder.write("elsewhere/m.obj", "mtllib models/../c.mtl\nusemtl c\n" + kSquareObj);  // what the system opens
+    folder.write("c.mtl", "newmtl c\nKd 1 0 0\n");
+    folder.write("elsewhere/c.mtl", "newmtl c\nKd 0 0 1\n");
+    const Scene scene = load_in(folder, with_obj({{"filename", "models/../m.obj"}}));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.triangles.size(), 2u) << "the square of elsewhere/m.obj";
+    EXPECT_EQ(scene.meshes[0].ambient, (Vec3{0, 0, 1})) << "elsewhere/c.mtl";
+    EXPECT_EQ(scene.meshes[0].path, folder.file("models/../m.obj"));
+    const std::string missing = error_of(folder, with_obj({{"filename", "nowhere/../m.obj"}}));
+    EXPECT_NE(missing.find("cannot read OBJ '" + folder.file("nowhere/../m.obj") + "'"), std::string::npos) << missing;
 }
 
 TEST(MeshLoader, AMissingFileIsTheScenesErrorAtItsFilename) {
