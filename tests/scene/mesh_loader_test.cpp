@@ -213,6 +213,18 @@ TEST(MeshLoader, PlaceholdersKeepTheFilesTheyStandInForAsInputs) {
     EXPECT_TRUE(scene.meshes[1].material_paths.empty());
 }
 
+// A placement that even the cube cannot take says why the cube is there: the file's problem.
+TEST(MeshLoader, APlaceholderOutOfRangeNamesTheFilesProblem) {
+    TempFolder folder;
+    LoadOptions options;
+    options.placeholder_images = true;
+    const std::string error =
+        error_of(folder, with_obj({{"filename", "gone.obj"}, {"scale", 1e15}, {"position", {1e15, 0, 0}}}), options);
+    EXPECT_EQ(error.rfind("/obj/filename: the placeholder cube for mesh 'gone.obj' (cannot read OBJ '", 0), 0u) << error;
+    EXPECT_NE(error.find("gone.obj': no such file"), std::string::npos) << error;
+    EXPECT_NE(error.find("): vertex 2 lies at "), std::string::npos) << error;
+}
+
 TEST(MeshLoader, BadSettingsAreRefusedWhereTheyAreWritten) {
     TempFolder folder;
     folder.write("square.obj", kSquareObj);
@@ -220,7 +232,9 @@ TEST(MeshLoader, BadSettingsAreRefusedWhereTheyAreWritten) {
         const std::string error = error_of(folder, with_obj(obj));
         EXPECT_EQ(error.rfind(expected, 0), 0u) << error;
     };
-    fails({{"filename", "square.obj"}, {"scale", 0}}, "/obj/scale: scale must be a non-zero factor");
+    fails({{"filename", "square.obj"}, {"scale", 0}}, "/obj/scale: scale must be a non-zero factor on every axis, of "
+                                                     "magnitude from 1e-15 to 1e16 (got 0)");
+    fails({{"filename", "square.obj"}, {"scale", "2"}}, "/obj/scale: scale must be a number or [sx, sy, sz], got \"2\"");
     fails({{"filename", "square.obj"}, {"scale", {1, -1e-300, 1}}}, "/obj/scale: scale must be a non-zero factor");
     fails({{"filename", "square.obj"}, {"scale", {1, 2}}}, "/obj/scale: ");
     fails({{"filename", "square.obj"}, {"position", {0, 1e300, 0}}}, "/obj/position/1: ");
