@@ -11,6 +11,7 @@
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/obj_text_checks.h"
+#include "scene/text_encoding.h"
 #include "scene/value_ranges.h"
 
 // tinyobjloader is one header; its implementation is compiled here, in double so that the
@@ -63,6 +64,16 @@ std::vector<bool> materials_giving_diffuse(const std::string& text) {
     return gives;
 }
 
+// Why `text` is not the text of an OBJ or .mtl file though it may be one saved another way:
+// UTF-16 or UTF-32 (whose NUL bytes would read as unknown statements), or gzip-compressed.
+// "" when neither.
+std::string encoding_problem(std::string_view text) {
+    if (const auto encoding = wide_unicode_encoding(text))
+        return "it is " + *encoding + " text; save it as UTF-8 (clrender reads only UTF-8)";
+    if (text.size() >= 2 && text[0] == '\x1F' && text[1] == '\x8B') return "it is gzip-compressed; decompress it first";
+    return "";
+}
+
 // The material name of a `usemtl` statement, as tinyobjloader reads it: the first word.
 std::string used_material(std::string_view statement) {
     const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
@@ -102,6 +113,10 @@ public:
         }
         files_.push_back(path.string());
         digests_.push_back(sha256(text.data(), text.size()));
+        if (const std::string encoding = encoding_problem(text); !encoding.empty()) {
+            if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + encoding;
+            return false;
+        }
         const ObjTextProblem colour = check_mtl_text(text);
         if (colour.line != 0) {
             if (problem_.empty()) {
@@ -272,6 +287,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
 }  // namespace
 
 ObjMesh parse_obj(const std::string& text, const std::string& path) {
+    if (const std::string encoding = encoding_problem(text); !encoding.empty()) throw ObjError(encoding);
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);

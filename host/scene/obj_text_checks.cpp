@@ -167,6 +167,8 @@ std::string check_corner(std::string_view corner, const ObjTextCounts& before, c
         start = slash + 1;
         if (count == 3) return quoted(corner) + " is not a corner (p, p/t, p//n or p/t/n)";
     }
+    // "p/" names no texture coordinate after its slash (tinyobjloader refuses it without a line).
+    if (count == 2 && parts[1].empty()) return quoted(corner) + " is not a corner (p, p/t, p//n or p/t/n)";
     std::string problem = check_index(parts[0], "position", before.positions, total.positions);
     if (problem.empty() && count >= 2 && !parts[1].empty()) {
         problem = check_index(parts[1], "texture coordinate", before.texcoords, total.texcoords);

@@ -278,6 +278,35 @@ TEST(ObjReader, BadIndicesNameTheirLineAndCorner) {
     EXPECT_EQ(error_for(kSquare + "f 99999999999999999999 2 3\n"), "line 5: corner 1: '99999999999999999999' is not a position index");
 }
 
+// "1/" names no texture coordinate: refused at its line, as the other corner forms are.
+TEST(ObjReader, ACornerEndingInASlashIsRefusedAtItsLine) {
+    EXPECT_EQ(error_for(kSquare + "f 1/ 2/ 3/\n"), "line 5: corner 1: '1/' is not a corner (p, p/t, p//n or p/t/n)");
+    EXPECT_EQ(error_for(kSquare + "vt 0 0\nf 1/1 2/1 3/\n"), "line 6: corner 3: '3/' is not a corner (p, p/t, p//n or p/t/n)");
+}
+
+// A file saved as UTF-16 or compressed with gzip is named as such, not as a file of unknown
+// statements and no faces; the same for its .mtl.
+TEST(ObjReader, Utf16AndGzipFilesAreNamedAsSuch) {
+    const auto utf16 = [](const std::string& ascii, bool mark) {
+        std::string wide = mark ? "\xFF\xFE" : "";
+        for (char c : ascii) wide += std::string{c, '\0'};
+        return wide;
+    };
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_EQ(error_for(utf16(triangle, true)), "it is UTF-16 (little-endian) text; save it as UTF-8 (clrender reads only UTF-8)");
+    EXPECT_EQ(error_for(utf16(triangle, false)), "it is UTF-16 (little-endian) text; save it as UTF-8 (clrender reads only UTF-8)");
+    EXPECT_EQ(error_for(std::string("\x1F\x8B\x08\0\0\0\0\0", 8) + "compressed"), "it is gzip-compressed; decompress it first");
+    TempFolder folder;
+    folder.write("wide.mtl", utf16("newmtl red\nKd 1 0 0\n", true));
+    try {
+        read_obj(folder.write("mesh.obj", "mtllib wide.mtl\nusemtl red\n" + triangle));
+        ADD_FAILURE() << "a UTF-16 .mtl was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib wide.mtl: it is UTF-16 (little-endian) text; save it as UTF-8 (clrender "
+                                             "reads only UTF-8)");
+    }
+}
+
 TEST(ObjReader, FacesOfFewerThanThreeCornersAreRefused) {
     EXPECT_EQ(error_for(kSquare + "f 1 2\n"), "line 5: a face needs 3 corners or more, this one has 2");
     EXPECT_EQ(error_for(kSquare + "f\n"), "line 5: a face needs 3 corners or more, this one has 0");
