@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -146,11 +147,19 @@ public:
             return false;
         }
         with_diffuse_.insert(with_diffuse_.end(), gives_diffuse.begin(), gives_diffuse.end());
+        note_redefinitions(name, text);
         for (const auto& named : *names) names_.insert(named.first);
         return true;
     }
 
     const std::string& problem() const { return problem_; }
+    // A warning for the first material defined again (tinyobjloader keeps the first
+    // definition, so the later one's colour is silently unused), or "".
+    std::string redefinition_warning() const {
+        if (redefined_ == 0) return "";
+        return first_redefinition_ + ": the material is defined again; the first definition is used" +
+               (redefined_ > 1 ? " (and " + std::to_string(redefined_ - 1) + " more materials defined again)" : "");
+    }
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
     const std::vector<std::string>& tried() const { return tried_; }
@@ -159,6 +168,23 @@ public:
     bool defines(const std::string& material) const { return names_.count(material) != 0; }
 
 private:
+    // Counts the `newmtl` lines of the .mtl `name` (its used statements, `text`) that define
+    // a name this OBJ's .mtl files defined already, keeping the first for the warning.
+    void note_redefinitions(const std::string& name, const std::string& text) {
+        std::set<std::string> defined = names_;
+        for_each_statement(text, "newmtl", [&](std::uint64_t line, std::string_view statement) {
+            std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
+            material = material.substr(0, material.find('\0'));  // the library reads it as a C string
+            while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
+            if (material.empty() || defined.insert(material).second) return;
+            if (redefined_++ == 0)
+                first_redefinition_ = "mtllib " + printable(shortened(name, 200)) + ": line " + std::to_string(line) +
+                                      ": newmtl " + printable(shortened(material, 200));
+        });
+    }
+
+    std::uint64_t redefined_ = 0;
+    std::string first_redefinition_;
     std::filesystem::path folder_;
     std::string problem_;
     std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
@@ -280,6 +306,8 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
     check_values_read(mesh);
+    if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
+        mesh.warnings.push_back(redefined);
     if (warning.find("not found in .mtl") != std::string::npos) warn_about_undefined_materials(text, material_files, mesh);
     return mesh;
 }

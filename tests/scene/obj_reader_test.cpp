@@ -161,9 +161,7 @@ TEST(ObjReader, MaterialNamesAreReadAsTinyobjloaderReadsThem) {
     TempFolder folder;
     const auto diffuse_of = [&](const std::string& material) {
         folder.write("m.mtl", material);
-        const ObjMesh mesh = read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
-        EXPECT_TRUE(mesh.warnings.empty()) << mesh.warnings.front();
-        return mesh.diffuse;
+        return read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).diffuse;
     };
     // The first definition gives no Kd: the scene's colour, not black.
     EXPECT_FALSE(diffuse_of("newmtl red\nnewmtl red\nKd 0 1 0\n").has_value());
@@ -182,6 +180,24 @@ TEST(ObjReader, MaterialNamesAreReadAsTinyobjloaderReadsThem) {
               (std::optional<Vec3>{Vec3{1, 0, 0}}));
     EXPECT_FALSE(read_obj(folder.write("two.obj", "mtllib a.mtl b.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"))
                      .diffuse.has_value());
+}
+
+// A material defined again keeps its first definition: the later one's colour is unused, which
+// a warning says, with the .mtl's line (across .mtl files too).
+TEST(ObjReader, AMaterialDefinedAgainIsAWarning) {
+    TempFolder folder;
+    folder.write("a.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\n\nnewmtl red\t\nKd 0 1 0\n");
+    folder.write("b.mtl", "newmtl blue\nnewmtl green\n");
+    const ObjMesh one = read_obj(folder.write("one.obj", "mtllib a.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(one.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_EQ(one.warnings, (std::vector<std::string>{
+                                "mtllib a.mtl: line 5: newmtl red: the material is defined again; the first definition is used"}));
+    const ObjMesh two = read_obj(folder.write("two.obj", "mtllib a.mtl\nmtllib b.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(two.warnings, (std::vector<std::string>{
+                                "mtllib a.mtl: line 5: newmtl red: the material is defined again; the first definition is "
+                                "used (and 1 more materials defined again)"}));
+    folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // " red" is another name
+    EXPECT_TRUE(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
 }
 
 // A usemtl that names no material is a warning with its line (tinyobjloader's own says
