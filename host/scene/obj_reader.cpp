@@ -171,18 +171,18 @@ private:
     // Counts the `newmtl` lines of the .mtl `name` (its used statements, `text`) that define
     // a name this OBJ's .mtl files defined already, keeping the first for the warning.
     void note_redefinitions(const std::string& name, const std::string& text) {
-        std::set<std::string> defined = names_;
         for_each_statement(text, "newmtl", [&](std::uint64_t line, std::string_view statement) {
             std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
             material = material.substr(0, material.find('\0'));  // the library reads it as a C string
             while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
-            if (material.empty() || defined.insert(material).second) return;
+            if (material.empty() || defined_.insert(material).second) return;
             if (redefined_++ == 0)
                 first_redefinition_ = "mtllib " + printable(shortened(name, 200)) + ": line " + std::to_string(line) +
                                       ": newmtl " + printable(shortened(material, 200));
         });
     }
 
+    std::set<std::string> defined_;  // each name a `newmtl` line gave, across the .mtl files
     std::uint64_t redefined_ = 0;
     std::string first_redefinition_;
     std::filesystem::path folder_;
