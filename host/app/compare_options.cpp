@@ -44,7 +44,8 @@ void add_render_options(CLI::App& app, Options& options, RenderValues& values) {
         ->check(CLI::IsMember({"float", "double"}));
     app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
     app.add_flag("--placeholders", options.placeholders,
-                 "Render a magenta checkerboard for billboard images that are missing, instead of failing");
+                 "Render a magenta checkerboard for billboard images, and a unit cube for OBJ meshes, that cannot be "
+                 "read, with a warning, instead of failing");
     app.add_option("-t,--threads", options.threads, "Compute units (threads) of the CPU device to render with")
         ->check(CLI::Range(1, kMaxThreads));
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder");

@@ -166,7 +166,8 @@ ParsedOptions parse_options(int argc, const char* const* argv) {
         ->check(CLI::IsMember({"float", "double"}));
     app.add_flag("--reference", options.reference, "Render with the double-precision host reference instead of OpenCL");
     app.add_flag("--placeholders", options.placeholders,
-                 "Render a magenta checkerboard for billboard images that are missing, instead of failing");
+                 "Render a magenta checkerboard for billboard images, and a unit cube for OBJ meshes, that cannot be "
+                 "read, with a warning, instead of failing");
     app.add_option("--stats", options.stats_path, "Write a JSON timing report to this file ('-': standard output)");
     app.add_flag("-q,--quiet", options.quiet, "No progress output");
     app.add_option("--kernel-dir", options.kernel_dir, "Read the OpenCL sources from this folder (kernel development)");

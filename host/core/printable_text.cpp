@@ -32,8 +32,12 @@ std::size_t utf8_sequence_length(const std::string& text, std::size_t at, char32
 
 bool is_unsafe(char32_t c) {
     const bool control = c < 0x20 || (c >= 0x7F && c <= 0x9F);
-    const bool bidi = c == 0x200E || c == 0x200F || (c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069);
-    return control || bidi;
+    const bool bidi = c == 0x061C || c == 0x200E || c == 0x200F || (c >= 0x202A && c <= 0x202E) ||
+                      (c >= 0x2066 && c <= 0x2069);
+    // Invisible format characters: a name holding one looks like another name, or like none.
+    const bool invisible = c == 0x00AD || c == 0x180E || (c >= 0x200B && c <= 0x200D) || (c >= 0x2060 && c <= 0x2064) ||
+                           c == 0xFEFF;
+    return control || bidi || invisible;
 }
 
 void append_escaped(std::string& out, const std::string& text, std::size_t at, std::size_t count) {

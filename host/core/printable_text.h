@@ -12,8 +12,10 @@
 namespace clr {
 
 // `text` with every byte of a control character (C0, DEL, C1 such as U+009B), a
-// bidirectional formatting character (U+200E-200F, U+202A-202E, U+2066-2069) or invalid
-// UTF-8 written as \xNN. Valid UTF-8 otherwise stays as it is.
+// bidirectional formatting character (U+061C, U+200E-200F, U+202A-202E, U+2066-2069), an
+// invisible format character (soft hyphen U+00AD, U+180E, zero-width U+200B-200D,
+// U+2060-2064, the byte order mark U+FEFF) or invalid UTF-8 written as \xNN. Valid UTF-8
+// otherwise stays as it is.
 std::string printable(const std::string& text);
 
 // `text` itself when it has at most `most` characters (UTF-8 code points); otherwise its

@@ -174,12 +174,11 @@ MeshTrees build_mesh_trees(const Scene& scene, const MeshTreeCache* cache) {
     for (std::size_t t = 0; t < own.size(); ++t) {
         const Mesh& mesh = scene.meshes[own[t]];
         meshes.tree_of_mesh[own[t]] = static_cast<std::uint32_t>(t);
-        const auto [found, built_here] = first_of_shape.emplace(std::pair{mesh.path, mesh.triangle_count}, t);
-        shape_of[t] = found->second;
-        if (built_here || mesh.path.empty()) {
-            shape_of[t] = t;
-            meshes.trees[t] = mesh_tree(scene, mesh, meshes.max_depth, cache);
-        }
+        shape_of[t] = t;
+        // A placeholder cube stands in for a file that failed to load: not that file's shape.
+        if (!mesh.path.empty() && !mesh.placeholder)
+            shape_of[t] = first_of_shape.emplace(std::pair{mesh.path, mesh.triangle_count}, t).first->second;
+        if (shape_of[t] == t) meshes.trees[t] = mesh_tree(scene, mesh, meshes.max_depth, cache);
     }
     parallel_for(own.size(), static_cast<std::size_t>(usable_cpu_count()), [&](std::size_t t) {
         if (shape_of[t] == t) return;

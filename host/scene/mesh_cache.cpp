@@ -231,7 +231,7 @@ ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache) 
         key.reset();
     }
     ObjMesh mesh = parse_obj(text, path);
-    if (key && !mesh.triangles.empty()) {
+    if (key && !mesh.triangles.empty() && mesh.warnings.empty()) {  // an entry does not keep warnings
         try {
             cache.store(*key, mesh);
         } catch (const std::exception&) {  // best effort

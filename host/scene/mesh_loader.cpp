@@ -21,12 +21,14 @@ const Color kDefaultMeshColor{0.8, 0.8, 0.8};
 // A scale is a number (the same on every axis) or [sx, sy, sz]; each factor non-zero and
 // within the length range, so that a scaled mesh keeps an area and stays renderable.
 Vec3 read_scale(const Node& node) {
+    if (!node.json().is_number() && !node.json().is_array())
+        node.fail("scale must be a number or [sx, sy, sz], got " + node.shown());
     const Vec3 scale = node.json().is_number() ? Vec3{1, 1, 1} * node.number() : node.vec3("[sx, sy, sz]");
     for (int axis = 0; axis < 3; ++axis) {
         const double factor = std::fabs(scale[axis]);
         if (!(factor >= kMinLength && factor <= kMaxLength))
-            node.fail("scale must be a non-zero factor of magnitude " + length_range_text() + " on every axis (got " +
-                      number_text(scale[axis]) + ")");
+            node.fail("scale must be a non-zero factor on every axis, of magnitude from " + number_text(kMinLength) +
+                      " to " + number_text(kMaxLength) + " (got " + number_text(scale[axis]) + ")");
     }
     return scale;
 }
@@ -88,16 +90,28 @@ bool transformed_normal(const Vec3& normal, const Vec3& scale, Vec3& out) {
     return true;
 }
 
+// Whether any triangle of `model` has an area: a mesh whose faces all have repeated or collinear
+// corners draws nothing, which is never the model a scene means.
+bool any_triangle_has_area(const ObjMesh& model) {
+    for (const auto& corners : model.triangles) {
+        const Vec3& a = model.positions[corners[0]];
+        const Vec3 area = cross(model.positions[corners[1]] - a, model.positions[corners[2]] - a);
+        if (dot(area, area) > 0) return true;
+    }
+    return false;
+}
+
 // Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
-// once placed are left out: no ray can hit them, and their plane has no normal.
-void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename) {
+// once placed are left out: no ray can hit them, and their plane has no normal. `what` names
+// the model in messages ("mesh 'bunny.obj'").
+void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename, const std::string& what) {
     std::vector<Vec3> placed(model.positions.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {
         const Vec3& p = model.positions[i];
         placed[i] = Vec3{p.x * mesh.scale.x, p.y * mesh.scale.y, p.z * mesh.scale.z} + mesh.position;
         for (int axis = 0; axis < 3; ++axis) {
             if (!(std::fabs(placed[i][axis]) <= kMaxCoordinate))
-                filename.fail("mesh '" + printable(mesh.filename) + "': vertex " + std::to_string(i + 1) +
+                filename.fail(what + ": vertex " + std::to_string(i + 1) +
                               " lies at " + number_text(placed[i][axis]) + " once scaled and placed; " +
                               position_range_text());
         }
@@ -105,7 +119,7 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
     const std::uint32_t mesh_index = static_cast<std::uint32_t>(scene.meshes.size());
     mesh.first_triangle = scene.triangles.size();
     if (scene.triangles.size() + model.triangles.size() > kMaxSceneTriangles)
-        filename.fail("mesh '" + printable(mesh.filename) + "' brings the scene's triangles to " +
+        filename.fail(what + " brings the scene's triangles to " +
                       std::to_string(scene.triangles.size() + model.triangles.size()) + ", more than the limit of " +
                       std::to_string(kMaxSceneTriangles));
     for (std::size_t f = 0; f < model.triangles.size(); ++f) {
@@ -126,6 +140,9 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
         scene.triangles.push_back(triangle);
     }
     mesh.triangle_count = scene.triangles.size() - mesh.first_triangle;
+    if (mesh.triangle_count == 0)
+        filename.fail(what + ": all its faces have zero area once scaled and placed: "
+                      "it draws nothing");
     scene.meshes.push_back(std::move(mesh));
 }
 
@@ -139,7 +156,8 @@ void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, c
     model.triangles.push_back({0, 1, 2});
     model.triangle_normals.push_back({-1, -1, -1});
     model.faces = 1;
-    add_mesh(scene, std::move(mesh), model, node);
+    const std::string what = "mesh '" + printable(mesh.filename) + "'";
+    add_mesh(scene, std::move(mesh), model, node, what);
 }
 
 std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
@@ -160,7 +178,9 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     std::vector<std::string> paths;
     for (const PendingMesh& each : pending) {
         const fs::path name(each.mesh.filename);
-        paths.push_back((name.is_absolute() ? name : folder / name).lexically_normal().string());
+        // Not lexically_normal(): "models/../m.obj" is opened as the system resolves it (through
+        // a symbolic link `models`, or not at all when there is no folder `models`).
+        paths.push_back((name.is_absolute() ? name : folder / name).string());
     }
     // A file that several meshes place (one model, many copies) is read once, and its model
     // kept only until the last of them is placed.
@@ -174,6 +194,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         Mesh mesh = each.mesh;
         ObjMesh read;  // a model for this mesh alone
         const ObjMesh* model = &read;
+        std::string what = "mesh '" + printable(mesh.filename) + "'";
         try {
             auto found = kept.find(path);
             if (found == kept.end()) {
@@ -185,6 +206,8 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             // not the mesh the scene asks for (a wrong file, or points and lines only).
             if (model->triangles.empty())
                 throw ObjError("it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
+            if (!any_triangle_has_area(*model))
+                throw ObjError("all its faces have zero area (repeated or collinear corners): it draws nothing");
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
@@ -192,13 +215,17 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             read = placeholder_cube();
             model = &read;
             mesh.placeholder = true;
+            mesh.material_paths = error.material_files;
+            // A placement the cube cannot take must still say why there is a cube at all.
+            what = "the placeholder cube for " + what + " (" + problem + ")";
         }
-        if (!mesh.placeholder) {
-            mesh.path = path;
-            mesh.material_paths = model->material_files;
-        }
+        for (const std::string& warning : model->warnings) each.filename.warn("OBJ '" + printable(path) + "': " + warning);
+        // The files are inputs of the run whatever happened: an output must never replace a
+        // model (or its .mtl) that failed to load and that a placeholder stands in for.
+        mesh.path = path;
+        if (!mesh.placeholder) mesh.material_paths = model->material_files;
         if (!each.ambient_given) mesh.ambient = model->diffuse && !mesh.placeholder ? *model->diffuse : kDefaultMeshColor;
-        add_mesh(scene, std::move(mesh), *model, each.filename);
+        add_mesh(scene, std::move(mesh), *model, each.filename, what);
         if (!used_again) kept.erase(path);
     }
 }

@@ -1,5 +1,8 @@
 #include "scene/obj_reader.h"
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -9,6 +12,7 @@
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/obj_text_checks.h"
+#include "scene/text_encoding.h"
 #include "scene/value_ranges.h"
 
 // tinyobjloader is one header; its implementation is compiled here, in double so that the
@@ -32,24 +36,53 @@ std::string first_line(const std::string& text) {
     return line.empty() ? "tinyobjloader could not read it" : line;
 }
 
-// The names of the materials of an .mtl text that give a `Kd` line: tinyobjloader leaves an
-// unset Kd at 0, which a black material also has.
-std::set<std::string> materials_with_diffuse(const std::string& text) {
-    std::set<std::string> names;
+// Whether each material that tinyobjloader's LoadMtl makes of an .mtl text gives a `Kd` line
+// (the library leaves an unset Kd at 0, which a black material also has), in the order the
+// library adds them to its list. This follows LoadMtl's own reading: a line trimmed of
+// trailing blanks; "newmtl" and a blank start a material and add the previous one if it has
+// a name; the last one is added whatever its name. A name defined twice keeps its first
+// definition (the library's map of names), which the list's order lets the caller find.
+std::vector<bool> materials_giving_diffuse(const std::string& text) {
+    std::vector<bool> gives;
+    bool named = false, has_kd = false;
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
     std::istringstream lines(text);
-    std::string current;
     for (std::string line; std::getline(lines, line);) {
-        std::istringstream tokens(line);
-        std::string keyword;
-        tokens >> keyword;
-        if (keyword == "newmtl") {
-            std::getline(tokens >> std::ws, current);
-            while (!current.empty() && (current.back() == '\r' || current.back() == ' ')) current.pop_back();
-        } else if (keyword == "Kd") {
-            names.insert(current);
+        while (!line.empty() && blank(line.back())) line.pop_back();
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::size_t at = 0;
+        while (at < line.size() && blank(line[at])) ++at;
+        const std::string_view token = std::string_view(line).substr(at);
+        if (token.size() > 6 && token.substr(0, 6) == "newmtl" && blank(token[6])) {
+            if (named) gives.push_back(has_kd);
+            named = token.size() > 7 && token[7] != '\0';  // the library reads the name as a C string
+            has_kd = false;
+        } else if (token.size() > 2 && token.substr(0, 2) == "Kd" && blank(token[2])) {
+            has_kd = true;
         }
     }
-    return names;
+    gives.push_back(has_kd);
+    return gives;
+}
+
+// Why `text` is not the text of an OBJ or .mtl file though it may be one saved another way:
+// UTF-16 or UTF-32 (whose NUL bytes would read as unknown statements), or gzip-compressed.
+// "" when neither.
+std::string encoding_problem(std::string_view text) {
+    if (const auto encoding = wide_unicode_encoding(text))
+        return "it is " + *encoding + " text; save it as UTF-8 (clrender reads only UTF-8)";
+    if (text.size() >= 2 && text[0] == '\x1F' && text[1] == '\x8B') return "it is gzip-compressed; decompress it first";
+    return "";
+}
+
+// The material name of a `usemtl` statement, as tinyobjloader reads it: the first word.
+std::string used_material(std::string_view statement) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    std::size_t at = statement.find("usemtl") + 6;
+    while (at < statement.size() && blank(statement[at])) ++at;
+    std::size_t end = at;
+    while (end < statement.size() && !blank(statement[end])) ++end;
+    return std::string(statement.substr(at, end - at));
 }
 
 // Reads each `mtllib` file relative to the OBJ's folder, with the limits of any input file;
@@ -61,6 +94,17 @@ public:
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warning, std::string* error) override {
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
+        tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
+        // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
+        // in the list already, and tinyobjloader only skips a name it has read.
+        struct stat info {};
+        if (::stat(path.c_str(), &info) == 0 && !read_.insert({info.st_dev, info.st_ino}).second) return true;
+        if (files_.size() >= kMaxMtlFiles) {
+            if (problem_.empty())
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": the OBJ reads more than " +
+                           std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
+            return false;
+        }
         std::string text;
         try {
             text = read_bounded_file(path.string(), kMaxMtlFileBytes);
@@ -68,8 +112,12 @@ public:
             if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + failure.what();
             return false;
         }
-        files_.push_back(path.lexically_normal().string());
+        files_.push_back(path.string());
         digests_.push_back(sha256(text.data(), text.size()));
+        if (const std::string encoding = encoding_problem(text); !encoding.empty()) {
+            if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + encoding;
+            return false;
+        }
         const ObjTextProblem colour = check_mtl_text(text);
         if (colour.line != 0) {
             if (problem_.empty()) {
@@ -79,23 +127,72 @@ public:
             return false;
         }
         text = mtl_statements_used(text);
-        for (const std::string& material : materials_with_diffuse(text)) with_diffuse_.insert(material);
+        const std::vector<bool> gives_diffuse = materials_giving_diffuse(text);
+        const std::size_t before = materials->size();
+        if (before + gives_diffuse.size() > kMaxObjMaterials) {
+            if (problem_.empty())
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": it brings the OBJ's materials to " +
+                           std::to_string(before + gives_diffuse.size()) + ", more than the limit of " +
+                           std::to_string(kMaxObjMaterials);
+            return false;
+        }
         std::istringstream stream(text);
         tinyobj::LoadMtl(names, materials, &stream, warning, error);
+        if (materials->size() != before + gives_diffuse.size()) {
+            if (problem_.empty()) {
+                problem_ = "mtllib " + printable(shortened(name, 200)) + ": tinyobjloader read " +
+                           std::to_string(materials->size() - before) + " materials where the file defines " +
+                           std::to_string(gives_diffuse.size());
+            }
+            return false;
+        }
+        with_diffuse_.insert(with_diffuse_.end(), gives_diffuse.begin(), gives_diffuse.end());
+        note_redefinitions(name, text);
+        for (const auto& named : *names) names_.insert(named.first);
         return true;
     }
 
     const std::string& problem() const { return problem_; }
+    // A warning for the first material defined again (tinyobjloader keeps the first
+    // definition, so the later one's colour is silently unused), or "".
+    std::string redefinition_warning() const {
+        if (redefined_ == 0) return "";
+        return first_redefinition_ + ": the material is defined again; the first definition is used" +
+               (redefined_ > 1 ? " (and " + std::to_string(redefined_ - 1) + " more materials defined again)" : "");
+    }
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
-    bool gives_diffuse(const std::string& material) const { return with_diffuse_.count(material) != 0; }
+    const std::vector<std::string>& tried() const { return tried_; }
+    // Whether the material at `index` in tinyobjloader's list gives a `Kd` line.
+    bool gives_diffuse(std::size_t index) const { return index < with_diffuse_.size() && with_diffuse_[index]; }
+    bool defines(const std::string& material) const { return names_.count(material) != 0; }
 
 private:
+    // Counts the `newmtl` lines of the .mtl `name` (its used statements, `text`) that define
+    // a name this OBJ's .mtl files defined already, keeping the first for the warning.
+    void note_redefinitions(const std::string& name, const std::string& text) {
+        for_each_statement(text, "newmtl", [&](std::uint64_t line, std::string_view statement) {
+            std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
+            material = material.substr(0, material.find('\0'));  // the library reads it as a C string
+            while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
+            if (material.empty() || defined_.insert(material).second) return;
+            if (redefined_++ == 0)
+                first_redefinition_ = "mtllib " + printable(shortened(name, 200)) + ": line " + std::to_string(line) +
+                                      ": newmtl " + printable(shortened(material, 200));
+        });
+    }
+
+    std::set<std::string> defined_;  // each name a `newmtl` line gave, across the .mtl files
+    std::uint64_t redefined_ = 0;
+    std::string first_redefinition_;
     std::filesystem::path folder_;
     std::string problem_;
+    std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
-    std::set<std::string> with_diffuse_;
+    std::set<std::pair<dev_t, ino_t>> read_;  // each .mtl read, by identity
+    std::vector<bool> with_diffuse_;  // of each material in tinyobjloader's list
+    std::set<std::string> names_;     // the materials defined, as usemtl names them
 };
 
 Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
@@ -121,18 +218,35 @@ void check_values_read(const ObjMesh& mesh) {
     if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
 }
 
-}  // namespace
+// A `usemtl` that names no material of the .mtl files leaves the mesh without the colour its
+// author chose (tinyobjloader only warns): a warning naming the first such line, and how many
+// more there are.
+void warn_about_undefined_materials(const std::string& text, const MaterialFiles& material_files, ObjMesh& mesh) {
+    std::uint64_t first_line = 0, more = 0;
+    std::string first_name;
+    for_each_statement(text, "usemtl", [&](std::uint64_t line, std::string_view statement) {
+        const std::string name = used_material(statement);
+        if (material_files.defines(name)) return;
+        if (first_line != 0) {
+            ++more;
+            return;
+        }
+        first_line = line;
+        first_name = name;
+    });
+    if (first_line == 0) return;
+    mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
+                            ": no .mtl file of the OBJ defines this material" +
+                            (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : "") +
+                            "; its faces take the scene's ambient, else 0.8 grey");
+}
 
-ObjMesh parse_obj(const std::string& text, const std::string& path) {
-    ObjTextProblem problem;
-    const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
-    if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
-
+// parse_obj once the text's checks have passed; `material_files` reads the .mtl files.
+ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
     tinyobj::attrib_t attributes;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> materials;
     std::string warning, error;
-    MaterialFiles material_files(std::filesystem::path(path).parent_path());
     std::istringstream stream(obj_statements_used(text));
     const bool read = tinyobj::LoadObj(&attributes, &shapes, &materials, &warning, &error, &stream, &material_files,
                                        /*triangulate=*/false, /*default_vcols_fallback=*/false);
@@ -179,8 +293,7 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
                 }
             }
             const int material = shape.mesh.material_ids[face];
-            if (mesh.faces == 0 && in_range(material, materials.size()) &&
-                material_files.gives_diffuse(materials[material].name)) {
+            if (mesh.faces == 0 && in_range(material, materials.size()) && material_files.gives_diffuse(material)) {
                 const auto& kd = materials[material].diffuse;
                 mesh.diffuse = Vec3{kd[0], kd[1], kd[2]};
             }
@@ -188,11 +301,31 @@ ObjMesh parse_obj(const std::string& text, const std::string& path) {
         }
     }
     if (mesh.faces != counts.faces || mesh.triangles.size() != counts.triangles) {
-        throw ObjError("tinyobjloader read " + std::to_string(mesh.faces) + " faces where the file has " +
-                       std::to_string(counts.faces));
+        throw ObjError("tinyobjloader read " + std::to_string(mesh.faces) + " faces of " +
+                       std::to_string(mesh.triangles.size()) + " triangles where the file has " +
+                       std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
     check_values_read(mesh);
+    if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
+        mesh.warnings.push_back(redefined);
+    if (warning.find("not found in .mtl") != std::string::npos) warn_about_undefined_materials(text, material_files, mesh);
     return mesh;
+}
+
+}  // namespace
+
+ObjMesh parse_obj(const std::string& text, const std::string& path) {
+    if (const std::string encoding = encoding_problem(text); !encoding.empty()) throw ObjError(encoding);
+    ObjTextProblem problem;
+    const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
+    if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
+    MaterialFiles material_files(std::filesystem::path(path).parent_path());
+    try {
+        return parse_checked(text, counts, material_files);
+    } catch (ObjError& failure) {
+        failure.material_files = material_files.tried();
+        throw;
+    }
 }
 
 std::string read_obj_text(const std::string& path) {

@@ -22,6 +22,9 @@ namespace clr {
 class ObjError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+    // The .mtl files the reader had tried to read when it failed, as paths: they stay inputs
+    // of the run (never replaced by an output) even when a placeholder stands in for the mesh.
+    std::vector<std::string> material_files;
 };
 
 // Largest OBJ file and largest .mtl file read, and most triangles a file may fan into: a
@@ -30,6 +33,10 @@ public:
 constexpr std::uint64_t kMaxObjFileBytes = std::uint64_t(1) << 30;
 constexpr std::uint64_t kMaxMtlFileBytes = std::uint64_t(16) << 20;
 constexpr std::uint64_t kMaxObjTriangles = std::uint64_t(1) << 24;
+// Most materials the .mtl files of one OBJ may define together, and most .mtl files it may
+// read: tinyobjloader keeps about 3 KB a material, so 16 MiB of `newmtl a` lines took 5.6 GB.
+constexpr std::uint64_t kMaxObjMaterials = 10000;
+constexpr std::uint64_t kMaxMtlFiles = 1024;
 
 struct ObjMesh {
     std::vector<Vec3> positions;  // as the file gives them, in its order
@@ -44,6 +51,9 @@ struct ObjMesh {
     std::uint64_t faces = 0;  // polygons in the file
     std::vector<std::string> material_files;  // the .mtl files read, as paths
     std::vector<Sha256Digest> material_digests;  // the SHA-256 of each, as read
+    // What the file asks for that cannot be done, each one line ("line 7: usemtl red: no .mtl
+    // file of the OBJ defines this material; ..."): the scene's warnings at its "filename".
+    std::vector<std::string> warnings;
 };
 
 // Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a

@@ -65,7 +65,15 @@ std::vector<std::string_view> tokens_of(std::string_view line) {
     return tokens;
 }
 
+// A leading '+' ("+1", "1/+2"), which from_chars refuses and tinyobjloader's readers (its own
+// number parser, atoi) accept; "+-1" keeps its '+' and stays refused.
+std::string_view without_plus(std::string_view token) {
+    if (token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-') token.remove_prefix(1);
+    return token;
+}
+
 bool parse_number(std::string_view token, double& value) {
+    token = without_plus(token);
     const char* end = token.data() + token.size();
     const auto result = std::from_chars(token.data(), end, value);
     return result.ec == std::errc() && result.ptr == end && std::isfinite(value);
@@ -131,8 +139,9 @@ std::string check_numbers(const std::vector<std::string_view>& tokens, std::size
 // the file.
 std::string check_index(std::string_view token, const char* what, std::uint64_t defined, std::uint64_t total) {
     long long index = 0;
-    const char* end = token.data() + token.size();
-    const auto result = std::from_chars(token.data(), end, index);
+    const std::string_view digits = without_plus(token);
+    const char* end = digits.data() + digits.size();
+    const auto result = std::from_chars(digits.data(), end, index);
     if (result.ec != std::errc() || result.ptr != end) return quoted(token) + " is not a " + std::string(what) + " index";
     if (index == 0) return std::string(what) + " index 0: indices count from 1 (or back from -1)";
     if (index > 0 && static_cast<std::uint64_t>(index) > total) {
@@ -158,6 +167,8 @@ std::string check_corner(std::string_view corner, const ObjTextCounts& before, c
         start = slash + 1;
         if (count == 3) return quoted(corner) + " is not a corner (p, p/t, p//n or p/t/n)";
     }
+    // "p/" names no texture coordinate after its slash (tinyobjloader refuses it without a line).
+    if (count == 2 && parts[1].empty()) return quoted(corner) + " is not a corner (p, p/t, p//n or p/t/n)";
     std::string problem = check_index(parts[0], "position", before.positions, total.positions);
     if (problem.empty() && count >= 2 && !parts[1].empty()) {
         problem = check_index(parts[1], "texture coordinate", before.texcoords, total.texcoords);
@@ -174,6 +185,16 @@ void count_entry(std::string_view keyword, ObjTextCounts& counts) {
     else if (keyword == "vt") ++counts.texcoords;
 }
 
+// The statement of a line: the text before a '#', which starts a comment ("f 1 2 3 # tri").
+std::string_view statement_of(std::string_view line) { return line.substr(0, line.find('#')); }
+
+// Statements of numbers only, whose trailing comment tinyobjloader would read as one more
+// corner (a zero index, refused) or number: it gets them without the comment. Names (`usemtl`,
+// `mtllib`, `newmtl`) are the library's to read whole.
+bool is_numeric_statement(std::string_view keyword) {
+    return keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "f" || keyword == "Kd";
+}
+
 // The first word of a line ("" for a blank one).
 std::string_view keyword_of(std::string_view line) {
     const std::size_t at = find_not_blank(line, 0);
@@ -184,10 +205,13 @@ std::string_view keyword_of(std::string_view line) {
 
 template <typename Keep>
 std::string statements_kept(std::string_view text, Keep&& keep) {
+    text = without_byte_order_mark(text);
     std::string kept;
     kept.reserve(text.size() + 1);
     for_each_line(text, [&](std::uint64_t, std::string_view line) {
-        if (keep(keyword_of(line))) kept.append(line);
+        const std::string_view statement = statement_of(line);
+        const std::string_view keyword = keyword_of(statement);
+        if (keep(keyword)) kept.append(is_numeric_statement(keyword) ? statement : line);
         kept.push_back('\n');
         return true;
     });
@@ -195,6 +219,20 @@ std::string statements_kept(std::string_view text, Keep&& keep) {
 }
 
 }  // namespace
+
+std::string_view without_byte_order_mark(std::string_view text) {
+    constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+    if (text.substr(0, kUtf8ByteOrderMark.size()) == kUtf8ByteOrderMark) text.remove_prefix(kUtf8ByteOrderMark.size());
+    return text;
+}
+
+void for_each_statement(std::string_view text, std::string_view keyword,
+                        const std::function<void(std::uint64_t, std::string_view)>& visit) {
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        if (keyword_of(line) == keyword) visit(number, line);
+        return true;
+    });
+}
 
 std::string obj_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) {
@@ -209,8 +247,8 @@ std::string mtl_statements_used(std::string_view text) {
 
 ObjTextProblem check_mtl_text(std::string_view text) {
     ObjTextProblem problem;
-    for_each_line(text, [&](std::uint64_t number, std::string_view line) {
-        const std::vector<std::string_view> tokens = tokens_of(line);
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        const std::vector<std::string_view> tokens = tokens_of(statement_of(line));
         if (tokens.empty() || tokens[0] != "Kd") return true;
         std::string detail;
         if (tokens.size() != 4) {
@@ -273,8 +311,9 @@ struct PieceCounts {
 
 PieceCounts count_piece(std::string_view piece) {
     PieceCounts counts;
-    for_each_line(piece, [&](std::uint64_t, std::string_view line) {
+    for_each_line(piece, [&](std::uint64_t, std::string_view whole_line) {
         ++counts.lines;
+        const std::string_view line = statement_of(whole_line);
         const std::string_view keyword = keyword_of(line);
         count_entry(keyword, counts.entries);
         if (keyword == "f") {
@@ -295,7 +334,7 @@ ObjTextProblem check_piece(std::string_view piece, std::uint64_t lines_before, O
                            const ObjTextCounts& total, std::uint64_t max_triangles) {
     ObjTextProblem problem;
     for_each_line(piece, [&](std::uint64_t number, std::string_view line) {
-        const std::vector<std::string_view> tokens = tokens_of(line);
+        const std::vector<std::string_view> tokens = tokens_of(statement_of(line));
         if (tokens.empty()) return true;
         const std::string_view keyword = tokens[0];
         std::string detail;
@@ -305,6 +344,9 @@ ObjTextProblem check_piece(std::string_view piece, std::uint64_t lines_before, O
         else if (keyword == "f") {
             if (tokens.size() < 4) {
                 detail = "a face needs 3 corners or more, this one has " + std::to_string(tokens.size() - 1);
+            } else if (tokens.size() - 1 > kMaxFaceCorners) {
+                detail = "a face has at most " + std::to_string(kMaxFaceCorners) + " corners (tinyobjloader's limit), "
+                         "this one has " + std::to_string(tokens.size() - 1) + ": split it into smaller faces";
             }
             for (std::size_t i = 1; detail.empty() && i < tokens.size(); ++i) {
                 detail = check_corner(tokens[i], counts, total);
@@ -346,6 +388,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
 // piece starts from (which count every line) are what a single pass would have reached.
 ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem) {
     problem = {};
+    text = without_byte_order_mark(text);
     const std::size_t parts = text.size() >= kPartedBytes ? static_cast<std::size_t>(usable_cpu_count()) : 1;
     const std::vector<std::string_view> pieces = cut_at_lines(text, parts);
     std::vector<PieceCounts> counted(pieces.size());

@@ -7,10 +7,19 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
 namespace clr {
+
+// `text` without the UTF-8 byte order mark (EF BB BF) that some editors write at its start:
+// it is not part of the first line's keyword. Every function below skips it.
+std::string_view without_byte_order_mark(std::string_view text);
+
+// The most corners a face may have: tinyobjloader keeps a face's corner count in a byte, and
+// reads a larger polygon as another one.
+constexpr std::uint64_t kMaxFaceCorners = 255;
 
 // What the checks counted, for the reader's limits and its consistency check.
 struct ObjTextCounts {
@@ -27,14 +36,16 @@ struct ObjTextProblem {
     std::string detail;
 };
 
-// Checks every `v`, `vn`, `vt` and `f` line of `text`: coordinates are finite numbers within
+// Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#', which starts a comment;
+// numbers and indices may carry a '+' sign): coordinates are finite numbers within
 // clrender's coordinate range, of at most 64 characters and a decimal exponent of at most 300
-// in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has three corners or more, each naming a position
-// (and optionally a texture coordinate and a normal) by a non-zero index, counted from the
-// start (1 is the first) or, negative, back from the latest one before the face, that
-// names an entry of the file. Stops at the first problem. Also stops when the faces fan
-// into more than `max_triangles` triangles (the memory budget). Other lines (`o`, `g`, `s`,
-// `usemtl`, `mtllib`, comments, unknown commands) are the library's.
+// in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has from three to
+// kMaxFaceCorners corners, each naming a position (and optionally a texture coordinate and a
+// normal) by a non-zero index, counted from the start (1 is the first) or, negative, back
+// from the latest one before the face, that names an entry of the file. Stops at the first
+// problem. Also stops when the faces fan into more than `max_triangles` triangles (the memory
+// budget). Other lines (`o`, `g`, `s`, `usemtl`, `mtllib`, comments, unknown commands) are
+// the library's.
 // Returns the counts; sets `problem` (line 0: none) to the first problem found.
 ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles, ObjTextProblem& problem);
 
@@ -48,11 +59,16 @@ constexpr double kMaxMaterialColor = 1e6;
 // kMaxMaterialColor. Returns the first problem (line 0: none).
 ObjTextProblem check_mtl_text(std::string_view text);
 
+// Calls `visit(line_number, line)` for each line of `text` whose first word is `keyword`.
+void for_each_statement(std::string_view text, std::string_view keyword,
+                        const std::function<void(std::uint64_t, std::string_view)>& visit);
+
 // `text` with only the statements clrender uses kept for tinyobjloader (`v`, `vn`, `vt`, `f`,
 // `o`, `g`, `s`, `usemtl`, `mtllib`); every other line (comments, lines, points, skin weights,
 // tags, curves) is left empty, so that lines keep their numbers and the library never parses
 // what clrender ignores (its `vw` parser turns an out-of-range number into an int, undefined
-// behaviour). Every line ends in "\n".
+// behaviour); a comment after the numbers of a `v`, `vn`, `vt`, `f` or `Kd` line is cut.
+// Every line ends in "\n".
 std::string obj_statements_used(std::string_view text);
 
 // The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.

@@ -70,8 +70,10 @@ struct Billboard {
 // (docs/scene-format.md, Meshes). Its triangles are Scene::triangles[first_triangle, +count).
 struct Mesh {
     std::string filename;  // as the scene names it, for messages and --check
-    std::string path;      // the file read (relative to the scene's folder); "" for a placeholder
-    std::vector<std::string> material_paths;  // the .mtl files it named and that were read
+    // The file read (relative to the scene's folder), also when a placeholder stands in for
+    // it: every file the scene tried to read is an input that no output may replace.
+    std::string path;
+    std::vector<std::string> material_paths;  // the .mtl files it named, as far as it was read
     Vec3 position;
     Vec3 scale{1, 1, 1};
     Color ambient;  // the scene's, else the OBJ material's Kd, else 0.8 grey

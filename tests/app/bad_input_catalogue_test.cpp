@@ -370,6 +370,8 @@ std::vector<BadInput> catalogue() {
          "bad.json", 2, {"bad.json: /obj/filename: cannot read OBJ", "line 2:", "not a finite number"}},
         {"ObjWithoutFaces", {{"bad.json", mesh_scene("m.obj")}, {"m.obj", binary_garbage(300)}}, {}, "bad.json", 2,
          {"bad.json: /obj/filename: cannot read OBJ", "it has no faces"}},
+        {"ObjFacesWithoutArea", {{"bad.json", mesh_scene("m.obj")}, {"m.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"}},
+         {}, "bad.json", 2, {"bad.json: /obj/filename: cannot read OBJ", "all its faces have zero area"}},
         {"ObjPathIsAFolder", {{"bad.json", mesh_scene("models")}}, {"models"}, "bad.json", 2,
          {"bad.json: /obj/filename: cannot read OBJ"}},
         bad_scene("ObjScaleZero", mesh_scene("m.obj", R"(, "scale": 0)"), {"bad.json: /obj/scale: scale must be a non-zero factor"}),

@@ -111,6 +111,18 @@ TEST(Help, EndsWithExamplesThatRunClrender) {
     EXPECT_EQ(commands, 4) << help.output;
 }
 
+// --placeholders stands in for unreadable meshes too, and the help must say so (CLI11 may wrap
+// the text: the words are searched with any whitespace between them).
+TEST(Help, SaysThatPlaceholdersCoverMeshes) {
+    const auto help = run_clrender("--help");
+    std::string words;
+    std::istringstream stream(help.output);
+    for (std::string word; stream >> word;) words += word + " ";
+    EXPECT_NE(words.find("--placeholders Render a magenta checkerboard for billboard images, and a unit cube for OBJ meshes,"),
+              std::string::npos)
+        << help.output;
+}
+
 TEST(Help, KeepsTheCompletionWordsOptionHidden) {
     const auto help = run_clrender("--help");
     EXPECT_EQ(help.output.find("--completion-words"), std::string::npos);

@@ -127,6 +127,53 @@ TEST(OutputSafety, OutputsNamingAMeshOrItsMaterialAreRefused) {
     EXPECT_FALSE(fs::exists(folder.file("out.png")));
 }
 
+// With --placeholders, a mesh that fails to load (here its .mtl has a bad Kd line) is drawn as
+// a cube, but its files are still the scene's inputs: a report must not replace them.
+TEST(OutputSafety, OutputsNamingAMeshThatFailedToLoadAreRefused) {
+    TempFolder folder;
+    const std::string obj = "mtllib look.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string mtl = "newmtl red\nKd 1 0 0 0.5\n";
+    folder.write("model.obj", obj);
+    folder.write("look.mtl", mtl);
+    folder.write("scene.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 8, "height": 6, "obj": {"filename": "model.obj"}})");
+    const auto run = [&](const std::string& arguments) {
+        return run_clrender(arguments + " --placeholders --reference -q", folder.path(), "timeout 60");
+    };
+    for (const std::string check : {"", " --check"}) {
+        const auto obj_report = run("scene.json -o out.png --stats model.obj" + check);
+        EXPECT_EQ(obj_report.exit_code, 4) << obj_report.output;
+        EXPECT_TRUE(contains(obj_report.output, "the --stats report would replace the mesh")) << obj_report.output;
+        const auto mtl_report = run("scene.json -o out.png --stats look.mtl" + check);
+        EXPECT_EQ(mtl_report.exit_code, 4) << mtl_report.output;
+        EXPECT_TRUE(contains(mtl_report.output, "the --stats report would replace the mesh material")) << mtl_report.output;
+    }
+    // A missing .mtl is an input too: the report must not take its name.
+    folder.write("model.obj", "mtllib gone.mtl\n" + obj);
+    const auto missing = run("scene.json -o out.png --stats gone.mtl");
+    EXPECT_EQ(missing.exit_code, 4) << missing.output;
+    EXPECT_FALSE(fs::exists(folder.file("gone.mtl")));
+    folder.write("model.obj", obj);
+    EXPECT_EQ(read_bytes(folder.file("model.obj")), obj);
+    EXPECT_EQ(read_bytes(folder.file("look.mtl")), mtl);
+    EXPECT_FALSE(fs::exists(folder.file("out.png")));
+}
+
+// A mesh named "models/../m.obj" through a symbolic link `models` is the file the system
+// opens (beside the link's target): that file is the input an output may not replace.
+TEST(OutputSafety, AMeshNamedThroughALinkAndDotDotIsProtectedAsOpened) {
+    TempFolder folder;
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    fs::create_directories(folder.file("elsewhere/models"));
+    fs::create_directory_symlink(folder.file("elsewhere/models"), folder.file("models"));
+    folder.write("elsewhere/m.obj", obj);
+    folder.write("scene.json", R"({"eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 8, "height": 6, "obj": {"filename": "models/../m.obj"}})");
+    const auto result = run_clrender("scene.json -o out.png --stats elsewhere/m.obj --reference -q", folder.path(), "timeout 60");
+    expect_refused(result, "--stats report", "mesh");
+    EXPECT_EQ(read_bytes(folder.file("elsewhere/m.obj")), obj);
+}
+
 TEST(OutputSafety, DefaultOutputNameNamingATextureIsRefused) {
     TempFolder folder;  // the scene tex.json: its default output is tex.png in the current folder
     const std::string texture = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "scenes/demo/checker.png");

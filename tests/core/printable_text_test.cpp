@@ -21,6 +21,16 @@ TEST(MessageText, EscapesBidirectionalOverrides) {
     EXPECT_EQ(printable("a\xE2\x80\xAE" "b\xE2\x81\xA6"), "a\\xE2\\x80\\xAEb\\xE2\\x81\\xA6");
 }
 
+TEST(MessageText, EscapesInvisibleFormatCharacters) {
+    // A byte order mark, a zero-width space, a soft hyphen, a word joiner and the Arabic letter
+    // mark show nothing: "a.mtl" and "a.mtl\uFEFF" would read the same.
+    EXPECT_EQ(printable("a.mtl\xEF\xBB\xBF"), "a.mtl\\xEF\\xBB\\xBF");
+    EXPECT_EQ(printable("a\xE2\x80\x8B" "b\xC2\xAD" "c\xE2\x81\xA0" "d\xD8\x9C"),
+              "a\\xE2\\x80\\x8Bb\\xC2\\xADc\\xE2\\x81\\xA0d\\xD8\\x9C");
+    // Their neighbours that show something stay: a hair space, a hyphen.
+    EXPECT_EQ(printable("a\xE2\x80\x8A" "b\xE2\x80\x90"), "a\xE2\x80\x8A" "b\xE2\x80\x90");
+}
+
 TEST(MessageText, EscapesInvalidUtf8ByteByByte) {
     EXPECT_EQ(printable("ty\xFF\xFEpe"), "ty\\xFF\\xFEpe");
     EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");            // overlong '/'

@@ -109,6 +109,17 @@ TEST_F(MeshCacheTest, FailuresAndSmallFilesAreNotStored) {
     EXPECT_FALSE(fs::exists(folder_.file("cache/meshes")) && !fs::is_empty(folder_.file("cache/meshes")));
 }
 
+// An entry keeps no warnings: a mesh that has some is parsed, and warns, on every read.
+TEST_F(MeshCacheTest, AMeshWithWarningsIsNotStored) {
+    const std::string obj = folder_.write("warned.obj", "usemtl nowhere\n" + testing::grid_obj_text(160));
+    for (int read = 0; read < 2; ++read) {
+        const ObjMesh mesh = read_obj_through_cache(obj, cache_);
+        ASSERT_EQ(mesh.warnings.size(), 1u) << "read " << read;
+        EXPECT_EQ(mesh.warnings[0].rfind("line 1: usemtl nowhere: ", 0), 0u) << mesh.warnings[0];
+    }
+    EXPECT_FALSE(fs::exists(cache_.path(MeshCache::key(obj, testing::read_bytes(obj)))));
+}
+
 // A mesh larger than the cache's largest is read, and not stored (storing copies it whole).
 TEST_F(MeshCacheTest, AMeshLargerThanTheLargestStoredIsReadAndNotStored) {
     const ObjMesh parsed = read_obj(obj_);

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -19,6 +20,7 @@
 namespace clr {
 namespace {
 
+namespace fs = std::filesystem;
 using testing::TempFolder;
 using testing::scene_json::Json;
 using testing::scene_json::minimal_scene;
@@ -105,6 +107,58 @@ TEST(MeshLoader, TrianglesWithoutAreaAreLeftOut) {
     EXPECT_EQ(scene.triangles[0].corners[2], (Vec3{0, 1, 0}));
 }
 
+// A mesh that would draw nothing is refused as a file without faces is: its faces all have
+// repeated or collinear corners in the file, or collapse once placed far from its origin.
+TEST(MeshLoader, AMeshWhoseFacesAllHaveZeroAreaIsRefused) {
+    TempFolder folder;
+    folder.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\nf 3 2 1 1\n");
+    const std::string error = error_of(folder, with_obj({{"filename", "flat.obj"}}));
+    EXPECT_EQ(error.rfind("/obj/filename: cannot read OBJ '", 0), 0u) << error;
+    EXPECT_NE(error.find("flat.obj': all its faces have zero area"), std::string::npos) << error;
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene = load_in(folder, with_obj({{"filename", "flat.obj"}}), options);
+    EXPECT_TRUE(scene.meshes.at(0).placeholder);
+    EXPECT_EQ(scene.triangles.size(), 12u);
+    // A triangle of 1e-10 sides has an area in the file, and none at 1e10 from the origin.
+    folder.write("tiny.obj", "v 0 0 0\nv 1e-10 0 0\nv 0 1e-10 0\nf 1 2 3\n");
+    EXPECT_EQ(load_in(folder, with_obj({{"filename", "tiny.obj"}})).triangles.size(), 1u);
+    const std::string placed = error_of(folder, with_obj({{"filename", "tiny.obj"}, {"position", {1e10, 1e10, 0}}}));
+    EXPECT_EQ(placed, "/obj/filename: mesh 'tiny.obj': all its faces have zero area once scaled and placed: it draws "
+                      "nothing") << placed;
+}
+
+// The reader's warnings are the scene's, at the mesh's "filename" (so --strict refuses them).
+TEST(MeshLoader, AnUndefinedMaterialIsAWarningAtTheFilename) {
+    TempFolder folder;
+    folder.write("red.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("blue.obj", "mtllib red.mtl\nusemtl blue\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Scene scene = load_in(folder, with_obj(Json::array({{{"filename", "blue.obj"}}})));
+    EXPECT_TRUE(testing::scene_json::has_warning(
+        scene, "/obj/0/filename: OBJ '" + folder.file("blue.obj") + "': line 2: usemtl blue: no .mtl file"))
+        << testing::scene_json::all_warnings(scene);
+    EXPECT_EQ(scene.meshes.at(0).ambient, (Vec3{0.8, 0.8, 0.8}));
+}
+
+// "models/../m.obj" is the file the system opens: through a symbolic link `models`, the
+// folder above the link's target; without a folder `models`, none. The same for `mtllib`.
+TEST(MeshLoader, DotDotIsResolvedByTheSystemNotOnTheText) {
+    TempFolder folder;
+    fs::create_directories(folder.file("elsewhere/models"));
+    fs::create_directory_symlink(folder.file("elsewhere/models"), folder.file("models"));
+    folder.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");  // what the text would name
+    folder.write("elsewhere/m.obj", "mtllib models/../c.mtl\nusemtl c\n" + kSquareObj);  // what the system opens
+    folder.write("c.mtl", "newmtl c\nKd 1 0 0\n");
+    folder.write("elsewhere/c.mtl", "newmtl c\nKd 0 0 1\n");
+    const Scene scene = load_in(folder, with_obj({{"filename", "models/../m.obj"}}));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.triangles.size(), 2u) << "the square of elsewhere/m.obj";
+    EXPECT_EQ(scene.meshes[0].ambient, (Vec3{0, 0, 1})) << "elsewhere/c.mtl";
+    EXPECT_EQ(scene.meshes[0].path, folder.file("models/../m.obj"));
+    const std::string missing = error_of(folder, with_obj({{"filename", "nowhere/../m.obj"}}));
+    EXPECT_NE(missing.find("cannot read OBJ '" + folder.file("nowhere/../m.obj") + "'"), std::string::npos) << missing;
+}
+
 TEST(MeshLoader, AMissingFileIsTheScenesErrorAtItsFilename) {
     TempFolder folder;
     const std::string error = error_of(folder, with_obj({{"filename", "gone.obj"}}));
@@ -139,6 +193,38 @@ TEST(MeshLoader, PlaceholdersStandACubeInForAMissingFile) {
     EXPECT_TRUE(testing::scene_json::has_warning(scene, "placeholder cube")) << testing::scene_json::all_warnings(scene);
 }
 
+// The files a placeholder stands in for are still the run's inputs (no output may replace
+// them): the OBJ, and the .mtl files it names as far as they were read.
+TEST(MeshLoader, PlaceholdersKeepTheFilesTheyStandInForAsInputs) {
+    TempFolder folder;
+    folder.write("bad.obj", "mtllib a.mtl\nmtllib b.mtl\nusemtl r\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("a.mtl", "newmtl r\nKd 1 0 0\n");
+    folder.write("b.mtl", "newmtl r\nKd 1 0 0 0.5\n");
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene = load_in(folder, with_obj(Json::array({{{"filename", "bad.obj"}}, {{"filename", "gone.obj"}}})),
+                                options);
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_TRUE(scene.meshes[0].placeholder);
+    EXPECT_EQ(scene.meshes[0].path, folder.file("bad.obj"));
+    EXPECT_EQ(scene.meshes[0].material_paths, (std::vector<std::string>{folder.file("a.mtl"), folder.file("b.mtl")}));
+    EXPECT_TRUE(scene.meshes[1].placeholder);
+    EXPECT_EQ(scene.meshes[1].path, folder.file("gone.obj"));
+    EXPECT_TRUE(scene.meshes[1].material_paths.empty());
+}
+
+// A placement that even the cube cannot take says why the cube is there: the file's problem.
+TEST(MeshLoader, APlaceholderOutOfRangeNamesTheFilesProblem) {
+    TempFolder folder;
+    LoadOptions options;
+    options.placeholder_images = true;
+    const std::string error =
+        error_of(folder, with_obj({{"filename", "gone.obj"}, {"scale", 1e15}, {"position", {1e15, 0, 0}}}), options);
+    EXPECT_EQ(error.rfind("/obj/filename: the placeholder cube for mesh 'gone.obj' (cannot read OBJ '", 0), 0u) << error;
+    EXPECT_NE(error.find("gone.obj': no such file"), std::string::npos) << error;
+    EXPECT_NE(error.find("): vertex 2 lies at "), std::string::npos) << error;
+}
+
 TEST(MeshLoader, BadSettingsAreRefusedWhereTheyAreWritten) {
     TempFolder folder;
     folder.write("square.obj", kSquareObj);
@@ -146,7 +232,9 @@ TEST(MeshLoader, BadSettingsAreRefusedWhereTheyAreWritten) {
         const std::string error = error_of(folder, with_obj(obj));
         EXPECT_EQ(error.rfind(expected, 0), 0u) << error;
     };
-    fails({{"filename", "square.obj"}, {"scale", 0}}, "/obj/scale: scale must be a non-zero factor");
+    fails({{"filename", "square.obj"}, {"scale", 0}}, "/obj/scale: scale must be a non-zero factor on every axis, of "
+                                                     "magnitude from 1e-15 to 1e16 (got 0)");
+    fails({{"filename", "square.obj"}, {"scale", "2"}}, "/obj/scale: scale must be a number or [sx, sy, sz], got \"2\"");
     fails({{"filename", "square.obj"}, {"scale", {1, -1e-300, 1}}}, "/obj/scale: scale must be a non-zero factor");
     fails({{"filename", "square.obj"}, {"scale", {1, 2}}}, "/obj/scale: ");
     fails({{"filename", "square.obj"}, {"position", {0, 1e300, 0}}}, "/obj/position/1: ");

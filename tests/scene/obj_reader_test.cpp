@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,60 @@ TEST(ObjReader, CrlfAndCrLineEndsCountLinesAsTheyShow) {
     EXPECT_EQ(error_for("v 0 0 0\rv 1 0 0\rf 1 2 3\r"), "line 3: corner 3: position index 3 is out of range: the file has 2");
 }
 
+// Editors on Windows start UTF-8 text with a byte order mark (EF BB BF): it is not part of
+// the first line, which would otherwise be an unknown statement and shift every index.
+TEST(ObjReader, AUtf8ByteOrderMarkIsSkipped) {
+    TempFolder folder;
+    const std::string bom = "\xEF\xBB\xBF";
+    const ObjMesh mesh = read_obj(folder.write("bom.obj", bom + "v 5 6 7\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n"));
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[0], (Vec3{5, 6, 7}));
+    EXPECT_EQ(mesh.triangles, (std::vector<Triangle>{{0, 1, 2}}));
+    // The first line's number stays 1.
+    EXPECT_EQ(error_for(bom + "v 0 nan 0\n"), "line 1: 'v': 'nan' is not a finite number");
+    // In a .mtl too: the first material keeps its name, and its colour.
+    folder.write("bom.mtl", bom + "newmtl red\nKd 1 0 0.25\n");
+    const ObjMesh red = read_obj(folder.write("red.obj", "mtllib bom.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(red.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0.25}}));
+    folder.write("bad.mtl", bom + "Kd 1 0\n");
+    try {
+        read_obj(folder.write("bad.obj", "mtllib bad.mtl\n" + kSquare + "f 1 2 3\n"));
+        ADD_FAILURE() << "a Kd of two numbers after a byte order mark was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib bad.mtl: line 1: 'Kd' needs 3 numbers (r g b), the line has 2");
+    }
+    // Only at the start: elsewhere it is text.
+    EXPECT_EQ(error_for("v 0 0 0\n" + bom + "v 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+              "line 4: corner 3: position index 3 is out of range: the file has 2");
+}
+
+// Forms that OBJ writers use: a '+' sign on a number or an index, and a comment after a
+// statement. tinyobjloader must read them as the checks do.
+TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl red\nKd +1 0 +0.25 # red\n");
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib m.mtl\nv +1 0 0 # first\nv 0 +2.5 0\nv 0 0 +1e+1\nv 1 1 1#tight\n"
+                    "vn 0 0 +1 # up\nvt 0.5 +0.5 # uv\nusemtl red\nf 1//1 2//1 3//1 # tri\nf +1 +2 +4#tight\n"));
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[0], (Vec3{1, 0, 0}));
+    EXPECT_EQ(mesh.positions[1], (Vec3{0, 2.5, 0}));
+    EXPECT_EQ(mesh.positions[2], (Vec3{0, 0, 10}));
+    EXPECT_EQ(mesh.positions[3], (Vec3{1, 1, 1}));
+    ASSERT_EQ(mesh.normals.size(), 1u);
+    EXPECT_EQ(mesh.normals[0], (Vec3{0, 0, 1}));
+    EXPECT_EQ(mesh.triangles, (std::vector<Triangle>{{0, 1, 2}, {0, 1, 3}}));
+    EXPECT_EQ(mesh.triangle_normals, (std::vector<Normals>{{0, 0, 0}, {-1, -1, -1}}));
+    EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0.25}}));
+    // A comment is not a corner, and a sign is one sign.
+    EXPECT_EQ(error_for(kSquare + "f 1 2 # 3\n"), "line 5: a face needs 3 corners or more, this one has 2");
+    EXPECT_EQ(error_for("v +-1 0 0\n"), "line 1: 'v': '+-1' is not a finite number");
+    EXPECT_EQ(error_for("v ++1 0 0\n"), "line 1: 'v': '++1' is not a finite number");
+    EXPECT_EQ(error_for("v + 0 0\n"), "line 1: 'v': '+' is not a finite number");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 +-3\n"), "line 5: corner 3: '+-3' is not a position index");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 +9\n"), "line 5: corner 3: position index 9 is out of range: the file has 4");
+}
+
 TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
     TempFolder folder;
     folder.write("colours.mtl", "newmtl red\nKd 1 0 0.25\nnewmtl plain\nKs 1 1 1\n");
@@ -98,6 +153,121 @@ TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
     // A material without Kd leaves the colour to the scene (tinyobjloader's 0 is not a colour).
     EXPECT_FALSE(read_obj(folder.write("plain.obj", faces + "usemtl plain\nf 1 2 3\n")).diffuse.has_value());
     EXPECT_FALSE(read_obj(folder.write("none.obj", kSquare + "f 1 2 3\n")).diffuse.has_value());
+}
+
+// clrender knows which materials give a Kd as tinyobjloader names and picks them: a name
+// defined twice is its first definition, and a name ends before trailing blanks (a tab too).
+TEST(ObjReader, MaterialNamesAreReadAsTinyobjloaderReadsThem) {
+    TempFolder folder;
+    const auto diffuse_of = [&](const std::string& material) {
+        folder.write("m.mtl", material);
+        return read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).diffuse;
+    };
+    // The first definition gives no Kd: the scene's colour, not black.
+    EXPECT_FALSE(diffuse_of("newmtl red\nnewmtl red\nKd 0 1 0\n").has_value());
+    EXPECT_EQ(diffuse_of("newmtl red\nKd 0 0 1\nnewmtl red\nKd 0 1 0\n"), (std::optional<Vec3>{Vec3{0, 0, 1}}));
+    EXPECT_EQ(diffuse_of("newmtl red\t\nKd 1 0 0\n"), (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_EQ(diffuse_of("newmtl red \t \r\nKd 1 0 0.5\r\n"), (std::optional<Vec3>{Vec3{1, 0, 0.5}}));
+    EXPECT_EQ(diffuse_of("newmtl\tred\nKd 0.5 0 0\n"), (std::optional<Vec3>{Vec3{0.5, 0, 0}}));
+    // A Kd before any name, and a `newmtl` without one, belong to no material that usemtl finds.
+    EXPECT_EQ(diffuse_of("Kd 0 1 0\nnewmtl red\nKd 0.25 0 0\nnewmtl\nKd 0 0 1\n"),
+              (std::optional<Vec3>{Vec3{0, 0, 1}}))
+        << "tinyobjloader reads a Kd after a bare 'newmtl' as the current material's";
+    // Several .mtl files: materials are counted across them.
+    folder.write("a.mtl", "newmtl blue\nnewmtl green\nKd 0 1 0\n");
+    folder.write("b.mtl", "newmtl red\nKd 1 0 0\n");
+    EXPECT_EQ(read_obj(folder.write("two.obj", "mtllib a.mtl\nmtllib b.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).diffuse,
+              (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_FALSE(read_obj(folder.write("two.obj", "mtllib a.mtl b.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"))
+                     .diffuse.has_value());
+}
+
+// A material defined again keeps its first definition: the later one's colour is unused, which
+// a warning says, with the .mtl's line (across .mtl files too).
+TEST(ObjReader, AMaterialDefinedAgainIsAWarning) {
+    TempFolder folder;
+    folder.write("a.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\n\nnewmtl red\t\nKd 0 1 0\n");
+    folder.write("b.mtl", "newmtl blue\nnewmtl green\n");
+    const ObjMesh one = read_obj(folder.write("one.obj", "mtllib a.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(one.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_EQ(one.warnings, (std::vector<std::string>{
+                                "mtllib a.mtl: line 5: newmtl red: the material is defined again; the first definition is used"}));
+    const ObjMesh two = read_obj(folder.write("two.obj", "mtllib a.mtl\nmtllib b.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(two.warnings, (std::vector<std::string>{
+                                "mtllib a.mtl: line 5: newmtl red: the material is defined again; the first definition is "
+                                "used (and 1 more materials defined again)"}));
+    folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // " red" is another name
+    EXPECT_TRUE(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
+}
+
+// A usemtl that names no material is a warning with its line (tinyobjloader's own says
+// neither file nor line), counting the others; a name it finds is none.
+TEST(ObjReader, AMaterialThatNoMtlDefinesIsAWarning) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl rde\nKd 1 0 0\nnewmtl red  \n");  // "red": trailing blanks are no part of it
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\nusemtl blue # again\n"
+                    "usemtl rde\nf 2 3 4\n"));
+    EXPECT_EQ(mesh.triangles.size(), 3u);
+    EXPECT_FALSE(mesh.diffuse.has_value());
+    EXPECT_EQ(mesh.warnings, (std::vector<std::string>{
+                                 "line 8: usemtl blue: no .mtl file of the OBJ defines this material (nor those of 1 "
+                                 "more usemtl lines); its faces take the scene's ambient, else 0.8 grey"}));
+    const ObjMesh none = read_obj(folder.write("none.obj", kSquare + "usemtl red\nf 1 2 3\n"));
+    ASSERT_EQ(none.warnings.size(), 1u);
+    EXPECT_EQ(none.warnings[0].rfind("line 5: usemtl red: no .mtl file", 0), 0u) << none.warnings[0];
+    EXPECT_TRUE(read_obj(folder.write("fine.obj", "mtllib m.mtl\n" + kSquare + "usemtl rde\nf 1 2 3\n")).warnings.empty());
+}
+
+// tinyobjloader keeps about 3 KB a material: an OBJ's .mtl files define at most
+// kMaxObjMaterials together, counted before the library reads them.
+TEST(ObjReader, TheMaterialsOfAnObjAreLimited) {
+    TempFolder folder;
+    std::string materials;
+    for (std::uint64_t i = 0; i < kMaxObjMaterials; ++i) materials += "newmtl m" + std::to_string(i) + "\n";
+    folder.write("full.mtl", materials);
+    folder.write("more.mtl", "newmtl red\nKd 1 0 0\n");
+    const std::string faces = kSquare + "usemtl m9999\nf 1 2 3\n";
+    EXPECT_TRUE(read_obj(folder.write("full.obj", "mtllib full.mtl\n" + faces)).warnings.empty());
+    try {
+        read_obj(folder.write("over.obj", "mtllib full.mtl\nmtllib more.mtl\n" + faces));
+        ADD_FAILURE() << "10001 materials were read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib more.mtl: it brings the OBJ's materials to 10001, more than the limit of 10000");
+    }
+}
+
+// One .mtl named several ways is read once: its materials are not counted (nor kept) twice.
+TEST(ObjReader, AMaterialFileNamedSeveralWaysIsReadOnce) {
+    TempFolder folder;
+    std::string materials = "newmtl red\nKd 1 0 0\n";
+    for (int i = 0; i < 6000; ++i) materials += "newmtl m" + std::to_string(i) + "\n";
+    folder.write("a.mtl", materials);
+    ::mkdir(folder.file("sub").c_str(), 0755);
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib a.mtl\nmtllib ./a.mtl\nmtllib .//a.mtl\nmtllib sub/../a.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(mesh.material_files.size(), 1u);
+    EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+}
+
+// More .mtl files than kMaxMtlFiles are refused at the first one past the limit.
+TEST(ObjReader, TheMaterialFilesOfAnObjAreLimited) {
+    TempFolder folder;
+    std::string libraries;
+    for (std::uint64_t i = 0; i <= kMaxMtlFiles; ++i) {
+        const std::string name = "m" + std::to_string(i) + ".mtl";
+        folder.write(name, "newmtl m" + std::to_string(i) + "\n");
+        libraries += "mtllib " + name + "\n";
+        if (i + 1 == kMaxMtlFiles) {
+            EXPECT_EQ(read_obj(folder.write("full.obj", libraries + kSquare + "f 1 2 3\n")).material_files.size(), kMaxMtlFiles);
+        }
+    }
+    try {
+        read_obj(folder.write("over.obj", libraries + kSquare + "f 1 2 3\n"));
+        ADD_FAILURE() << "1025 .mtl files were read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib m1024.mtl: the OBJ reads more than 1024 .mtl files, the limit");
+    }
 }
 
 TEST(ObjReader, AMissingMaterialFileIsAnError) {
@@ -121,9 +291,37 @@ TEST(ObjReader, BadIndicesNameTheirLineAndCorner) {
               "line 6: corner 2: normal index 2 is out of range: the file has 1");
     EXPECT_EQ(error_for(kSquare + "f 1/1 2/1 3/1\n"), "line 5: corner 1: texture coordinate index 1 is out of range: the file has 0");
     EXPECT_EQ(error_for(kSquare + "f 1 2 x\n"), "line 5: corner 3: 'x' is not a position index");
-    EXPECT_EQ(error_for(kSquare + "f 1 2 3 # a comment\n"), "line 5: corner 4: '#' is not a position index");
     EXPECT_EQ(error_for(kSquare + "f 1/1/1/1 2 3\n"), "line 5: corner 1: '1/1/1/1' is not a corner (p, p/t, p//n or p/t/n)");
     EXPECT_EQ(error_for(kSquare + "f 99999999999999999999 2 3\n"), "line 5: corner 1: '99999999999999999999' is not a position index");
+}
+
+// "1/" names no texture coordinate: refused at its line, as the other corner forms are.
+TEST(ObjReader, ACornerEndingInASlashIsRefusedAtItsLine) {
+    EXPECT_EQ(error_for(kSquare + "f 1/ 2/ 3/\n"), "line 5: corner 1: '1/' is not a corner (p, p/t, p//n or p/t/n)");
+    EXPECT_EQ(error_for(kSquare + "vt 0 0\nf 1/1 2/1 3/\n"), "line 6: corner 3: '3/' is not a corner (p, p/t, p//n or p/t/n)");
+}
+
+// A file saved as UTF-16 or compressed with gzip is named as such, not as a file of unknown
+// statements and no faces; the same for its .mtl.
+TEST(ObjReader, Utf16AndGzipFilesAreNamedAsSuch) {
+    const auto utf16 = [](const std::string& ascii, bool mark) {
+        std::string wide = mark ? "\xFF\xFE" : "";
+        for (char c : ascii) wide += std::string{c, '\0'};
+        return wide;
+    };
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_EQ(error_for(utf16(triangle, true)), "it is UTF-16 (little-endian) text; save it as UTF-8 (clrender reads only UTF-8)");
+    EXPECT_EQ(error_for(utf16(triangle, false)), "it is UTF-16 (little-endian) text; save it as UTF-8 (clrender reads only UTF-8)");
+    EXPECT_EQ(error_for(std::string("\x1F\x8B\x08\0\0\0\0\0", 8) + "compressed"), "it is gzip-compressed; decompress it first");
+    TempFolder folder;
+    folder.write("wide.mtl", utf16("newmtl red\nKd 1 0 0\n", true));
+    try {
+        read_obj(folder.write("mesh.obj", "mtllib wide.mtl\nusemtl red\n" + triangle));
+        ADD_FAILURE() << "a UTF-16 .mtl was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "mtllib wide.mtl: it is UTF-16 (little-endian) text; save it as UTF-8 (clrender "
+                                             "reads only UTF-8)");
+    }
 }
 
 TEST(ObjReader, FacesOfFewerThanThreeCornersAreRefused) {
@@ -179,6 +377,31 @@ TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
     EXPECT_EQ(error_with("Kd spectral red.rfl 1"), "mtllib m.mtl: line 3: 'Kd': 'spectral' is not a finite number");
     EXPECT_EQ(error_with("Kd 0 2e6 0"), "mtllib m.mtl: line 3: 'Kd': '2e6' is out of range: a colour lies from -1e6 to 1e6");
     EXPECT_EQ(error_with("Kd 0 1.5 -0.25"), "");  // outside [0, 1] is a colour, as in a scene
+}
+
+// tinyobjloader counts a face's corners in a byte: a polygon of 256 corners would be read as
+// another one. The checks refuse it at its line; 255 corners fan as any polygon.
+TEST(ObjReader, FacesOfMoreThan255CornersAreRefused) {
+    const auto polygon = [](int corners) {
+        std::string text;
+        for (int i = 0; i < corners; ++i) {
+            const double angle = 6.283185307179586 * i / corners;
+            text += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+        }
+        text += "f";
+        for (int i = 1; i <= corners; ++i) text += " " + std::to_string(i);
+        return text + "\n";
+    };
+    TempFolder folder;
+    const ObjMesh largest = read_obj(folder.write("255.obj", polygon(255)));
+    EXPECT_EQ(largest.faces, 1u);
+    ASSERT_EQ(largest.triangles.size(), 253u);
+    EXPECT_EQ(largest.triangles.back(), (Triangle{0, 253, 254}));
+    for (int corners : {256, 1000}) {
+        EXPECT_EQ(error_for(polygon(corners)), "line " + std::to_string(corners + 1) +
+                                                   ": a face has at most 255 corners (tinyobjloader's limit), this one has " +
+                                                   std::to_string(corners) + ": split it into smaller faces");
+    }
 }
 
 TEST(ObjReader, TheTriangleLimitIsCountedAsTheFacesFan) {
