@@ -125,7 +125,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/export", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
-            send_json(response, 200, {{"scene", exported.text}, {"file", exported.path}});
+            send_json(response, 200, {{"scene", exported.text}, {"file", exported.path}, {"name", exported.name}});
         });
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {
@@ -135,7 +135,8 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
                 send_error(response, 409, "a video is rendering already; one at a time");
                 return;
             }
-            const ExportedScene exported = session.exporter.export_keys(keys);
+            // The scene and the video share their name: both free when the scene is written.
+            const ExportedScene exported = session.exporter.export_keys(keys, {".mp4"});
             const std::string video = session.exporter.output_dir() + "/" + exported.name + ".mp4";
             session.exporter.check_output("video", video);
             const std::optional<int> job = session.videos.start(exported.path, video);
@@ -143,7 +144,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
                 send_error(response, 409, "a video is rendering already; one at a time");
                 return;
             }
-            send_json(response, 200, {{"job", *job}, {"file", video}, {"scene", exported.path}});
+            send_json(response, 200, {{"job", *job}, {"file", video}, {"scene", exported.path}, {"name", exported.name}});
         });
     });
     server.Get("/job", [&session](const Request& request, Response& response) {
