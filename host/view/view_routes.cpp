@@ -185,6 +185,14 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
             response.status = 403;
             return httplib::Server::HandlerResponse::Handled;
         }
+        // cpp-httplib limits a body by its Content-Length only: a chunked body would be read
+        // whole, however large. The page sends none, so any Transfer-Encoding is refused here,
+        // before the body is read, and the connection is closed (its body is never read).
+        if (request.has_header("Transfer-Encoding")) {
+            response.set_header("Connection", "close");
+            send_error(response, 411, "request bodies must have a Content-Length (no Transfer-Encoding)");
+            return httplib::Server::HandlerResponse::Handled;
+        }
         // Nothing the viewer sends is for a cache, another site's frame, or a content sniffer;
         // the address holds the token, which no link may pass on.
         response.set_header("Cache-Control", "no-store");

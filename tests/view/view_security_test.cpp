@@ -5,10 +5,12 @@
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <thread>
@@ -25,6 +27,43 @@ using testing::TempFolder;
 using testing::ViewerProcess;
 
 const std::string kDemoScene = std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json";
+
+// A TCP connection to the viewer; -1 when it cannot connect.
+int connect_to_viewer(int port) {
+    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        ::close(socket);
+        return -1;
+    }
+    return socket;
+}
+
+// One answer: its head and as many bytes of body as its Content-Length says, or what came
+// within `seconds`.
+std::string read_one_answer(int socket, int seconds) {
+    std::string text;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (std::chrono::steady_clock::now() < give_up) {
+        const std::size_t head_end = text.find("\r\n\r\n");
+        if (head_end != std::string::npos) {
+            const std::size_t length_at = text.find("Content-Length: ");
+            if (length_at != std::string::npos && length_at < head_end &&
+                text.size() >= head_end + 4 + std::stoul(text.substr(length_at + 16)))
+                break;
+        }
+        pollfd ready{socket, POLLIN, 0};
+        if (::poll(&ready, 1, 100) <= 0) continue;
+        char buffer[4096];
+        const ssize_t got = ::read(socket, buffer, sizeof buffer);
+        if (got <= 0) break;
+        text.append(buffer, static_cast<std::size_t>(got));
+    }
+    return text;
+}
 
 // One viewer for the whole suite: starting it is the slow part.
 class ViewSecurity : public ::testing::Test {
@@ -153,6 +192,28 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
         }
     }
     EXPECT_EQ(client->Get(viewer_->with_token("/frame.png?size=16x9").c_str())->status, 200) << "still serving";
+}
+
+// cpp-httplib bounds a body by its Content-Length only: a chunked body would be read whole,
+// however large. It is refused before a byte of it is read (the answer comes while the body
+// has not ended), and the answer asks the client to close the connection.
+TEST_F(ViewSecurity, AChunkedBodyIsRefusedBeforeItIsRead) {
+    for (const std::string method : {"POST", "GET"}) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        // The headers and the first chunk of a body that never ends.
+        const std::string request = method + " " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                                    "\r\nOrigin: " + own_origin() +
+                                    "\r\nContent-Type: application/json\r\nTransfer-Encoding: chunked\r\n\r\n"
+                                    "100000\r\n" + std::string(4096, ' ');
+        ASSERT_EQ(::write(socket, request.data(), request.size()), static_cast<ssize_t>(request.size()));
+        const std::string answer = read_one_answer(socket, 10);
+        ::close(socket);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 411", 0), 0u) << method << ": " << answer.substr(0, 200);
+        EXPECT_NE(answer.find("\"error\":\"request bodies must have a Content-Length"), std::string::npos) << answer;
+        EXPECT_NE(answer.find("Connection: close"), std::string::npos) << answer;
+    }
+    EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
 }
 
 TEST_F(ViewSecurity, TenClientsAtOnceBesideOnesThatHangUpStallOrReadSlowly) {
