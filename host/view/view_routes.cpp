@@ -1,5 +1,6 @@
 #include "view/view_routes.h"
 
+#include <memory>
 #include <new>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -8,7 +9,9 @@
 #include "core/interruption.h"
 #include "output/image_writer.h"
 #include "view/camera_keys.h"
+#include "view/client_connection.h"
 #include "view/embedded_assets.h"
+#include "view/render_cost.h"
 #include "view/scene_summary.h"
 #include "view/view_camera.h"
 #include "view/view_parameters.h"
@@ -38,6 +41,8 @@ void answer(Response& response, Route&& route) {
         route();
     } catch (const ParameterError& error) {
         send_error(response, 400, error.what(), error.parameter());
+    } catch (const FrameAbandoned& error) {
+        send_error(response, 503, error.what());  // nobody reads it
     } catch (const Interrupted&) {
         send_error(response, 503, "the viewer is stopping");
     } catch (const DeviceError& error) {
@@ -77,15 +82,25 @@ void add_assets(httplib::Server& server) {
     }
 }
 
+// Whether the request's client is gone: asked between the bands of its frame.
+std::function<bool()> abandonment_of(const Request& request) {
+    auto connection = std::make_shared<ClientConnection>(request.local_addr, request.local_port, request.remote_addr,
+                                                         request.remote_port);
+    return [connection] { return connection->gone(); };
+}
+
 ViewCamera camera_of(const ViewSession& session, const Request& request) {
-    return resolve_view_camera(session.scene, parse_view_query(request.params));
+    const ViewQuery query = parse_view_query(request.params);
+    const ViewCamera view = resolve_view_camera(session.scene, query);
+    check_render_cost(session.scene, view, query);
+    return view;
 }
 
 void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.png", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ViewCamera view = camera_of(session, request);
-            Image frame = session.renderer.render(view);
+            Image frame = session.renderer.render(view, abandonment_of(request));
             const std::vector<std::uint8_t> png = png_bytes(frame);
             session.renderer.recycle(std::move(frame));
             response.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
@@ -95,7 +110,7 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.rgba", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ViewCamera view = camera_of(session, request);
-            Image frame = session.renderer.render(view);
+            Image frame = session.renderer.render(view, abandonment_of(request));
             response.set_header("X-Width", std::to_string(frame.width));
             response.set_header("X-Height", std::to_string(frame.height));
             response.set_content(reinterpret_cast<const char*>(frame.rgba.data()), frame.rgba.size(),

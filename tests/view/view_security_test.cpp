@@ -180,6 +180,8 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
         {"up=0,0,-1&eye=0,0,5&lookat=0,0,0", "up"},  {"size=100000x100000", "size"}, {"size=-64x36", "size"},
         {"spp=1000000000", "spp"},      {"fov=180", "fov"},            {"fov=0", "fov"},
         {"lookat=%00%ff", "lookat"},    {"frame=1", "frame"},          {"eye=2e15,0,0", "eye"},
+        // Hours of rendering from one request (view/render_cost.h).
+        {"size=8192x8192&spp=4096", "spp"}, {"size=1920x1080&spp=33", "spp"}, {"size=8192x8192", "size"},
     };
     for (const auto& [query, parameter] : cases) {
         for (const char* route : {"/frame.png?", "/frame.rgba?"}) {
@@ -191,6 +193,10 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
             EXPECT_NE(result->body.find("\"error\":"), std::string::npos) << result->body;
         }
     }
+    const httplib::Result explain = client->Get(viewer_->with_token("/explain?x=0&y=0&size=4096x4096&spp=64").c_str());
+    ASSERT_TRUE(explain);
+    EXPECT_EQ(explain->status, 400);
+    EXPECT_NE(explain->body.find("\"parameter\":\"spp\""), std::string::npos) << explain->body;
     EXPECT_EQ(client->Get(viewer_->with_token("/frame.png?size=16x9").c_str())->status, 200) << "still serving";
 }
 
