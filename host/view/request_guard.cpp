@@ -82,19 +82,10 @@ RequestVerdict RequestGuard::check(const RequestFacts& request) const {
     // Every method but GET and HEAD may change something: it must come from the page itself.
     const bool reads_only = request.method == "GET" || request.method == "HEAD";
     if (!reads_only && (!request.origin || !origin_allowed(*request.origin))) return RequestVerdict::Forbidden;
-    // token= given: it alone decides (a wrong one is not rescued by the cookie). Given twice:
-    // refused, as is a cookie given twice.
-    if (!request.query_tokens.empty()) {
-        if (request.query_tokens.size() != 1 || !token_matches(request.query_tokens.front(), token_))
-            return RequestVerdict::Forbidden;
-        return request.path == "/" && reads_only ? RequestVerdict::AllowedSetCookie : RequestVerdict::Allowed;
-    }
-    if (token_matches(cookie_value(request.cookie_header, kTokenCookie), token_)) return RequestVerdict::Allowed;
-    return RequestVerdict::Forbidden;
-}
-
-std::string RequestGuard::token_cookie() const {
-    return std::string(kTokenCookie) + "=" + token_ + "; HttpOnly; SameSite=Strict; Path=/";
+    // Exactly one token=, the right one (given twice: which one would count?).
+    if (request.query_tokens.size() != 1 || !token_matches(request.query_tokens.front(), token_))
+        return RequestVerdict::Forbidden;
+    return RequestVerdict::Allowed;
 }
 
 }  // namespace clr

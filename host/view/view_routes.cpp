@@ -68,11 +68,28 @@ const char* content_type_of(const std::string& path) {
     return "application/octet-stream";
 }
 
-void add_assets(httplib::Server& server) {
+// index.html with the token in the addresses of the page's own files (src="viewer.js" becomes
+// src="viewer.js?token=..."): the browser loads them with the token, as every request must
+// carry it (there is no cookie, view/request_guard.h).
+std::string page_with_token(std::string page, const std::string& token) {
+    for (const EmbeddedAsset& asset : embedded_viewer_assets()) {
+        for (const char* attribute : {"src=\"", "href=\""}) {
+            const std::string reference = attribute + std::string(asset.path) + "\"";
+            const std::string with_token = attribute + std::string(asset.path) + "?token=" + token + "\"";
+            for (std::size_t at = page.find(reference); at != std::string::npos; at = page.find(reference, at + with_token.size()))
+                page.replace(at, reference.size(), with_token);
+        }
+    }
+    return page;
+}
+
+void add_assets(httplib::Server& server, const std::string& token) {
     for (const EmbeddedAsset& asset : embedded_viewer_assets()) {
         const std::string path = asset.path;
-        const auto serve = [&asset, path](const Request&, Response& response) {
-            response.set_content(std::string(asset.content()), content_type_of(path));
+        const std::string content = path == "index.html" ? page_with_token(std::string(asset.content()), token)
+                                                         : std::string(asset.content());
+        const auto serve = [content, path](const Request&, Response& response) {
+            response.set_content(content, content_type_of(path));
         };
         // Routes are patterns: the name's dots must match only dots.
         std::string pattern = "/";
@@ -189,7 +206,6 @@ RequestFacts request_facts(const Request& request) {
     if (request.has_header("Origin")) facts.origin = request.get_header_value("Origin");
     const auto [first, last] = request.params.equal_range("token");
     for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
-    facts.cookie_header = request.get_header_value("Cookie");
     return facts;
 }
 
@@ -217,10 +233,9 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         response.set_header("Content-Security-Policy",
                             "default-src 'self' 'unsafe-inline' blob: data:; frame-ancestors 'none'; base-uri 'none'; "
                             "form-action 'self'");
-        if (verdict == RequestVerdict::AllowedSetCookie) response.set_header("Set-Cookie", session.guard.token_cookie());
         return httplib::Server::HandlerResponse::Unhandled;
     });
-    add_assets(server);
+    add_assets(server, session.guard.token());
     add_frame_routes(server, session);
     add_path_routes(server, session);
 }
