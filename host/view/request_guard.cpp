@@ -23,9 +23,21 @@ std::string without_brackets(const std::string& address) {
     return address;
 }
 
-// "host:port" -> host, when the port is exactly `port`; nullopt otherwise (a Host header
-// without a port or with another one does not name this server).
+// HTTP's default port, which browsers leave out of Host and Origin ("127.0.0.1", not
+// "127.0.0.1:80").
+constexpr int kDefaultHttpPort = 80;
+
+// Whether `host` has no port: a name, an IPv4 address, or an IPv6 address in brackets.
+bool has_no_port(const std::string& host) {
+    const std::size_t colon = host.rfind(':');
+    return colon == std::string::npos || (host.front() == '[' && host.back() == ']');
+}
+
+// "host:port" -> host, when the port is exactly `port` (or left out, where `port` is 80);
+// nullopt otherwise (a Host header without a port or with another one does not name this
+// server).
 std::optional<std::string> host_of(const std::string& host_and_port, int port) {
+    if (port == kDefaultHttpPort && !host_and_port.empty() && has_no_port(host_and_port)) return host_and_port;
     const std::string suffix = ":" + std::to_string(port);
     if (host_and_port.size() <= suffix.size() ||
         host_and_port.compare(host_and_port.size() - suffix.size(), suffix.size(), suffix) != 0)
@@ -51,8 +63,10 @@ std::string url_host(const std::string& bind) {
 RequestGuard::RequestGuard(std::string token, std::string bind, int port)
     : token_(std::move(token)), port_(port), wildcard_(is_wildcard(bind)) {
     const std::string suffix = ":" + std::to_string(port);
-    for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), url_host(bind)})
+    for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), url_host(bind)}) {
         hosts_.insert(lowercase(name) + suffix);
+        if (port == kDefaultHttpPort) hosts_.insert(lowercase(name));
+    }
 }
 
 bool RequestGuard::host_allowed(const std::string& host) const {

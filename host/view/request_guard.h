@@ -1,6 +1,7 @@
 // Which requests `clrender view` answers (docs/command-line.md, Viewer: Security):
 // - the Host header names this server by an address, never by a DNS name that a web page
-//   could point at 127.0.0.1 (DNS rebinding);
+//   could point at 127.0.0.1 (DNS rebinding), with its port (left out on port 80, as browsers
+//   leave out HTTP's default port);
 // - every request carries the access token in its query (token=...). There is no cookie:
 //   cookies are not kept apart by port, so every other server on 127.0.0.1 would receive it,
 //   and SameSite counts every port of 127.0.0.1 as the same site, so a page served from any

@@ -72,6 +72,27 @@ TEST(RequestGuard, HostMustNameTheServerByAddressOrLocalhost) {
     EXPECT_EQ(guard.check(no_host), RequestVerdict::Forbidden);
 }
 
+// Browsers leave HTTP's default port out of Host and Origin: on port 80 the bare forms name
+// the server, and only there.
+TEST(RequestGuard, OnPort80TheHostMayLeaveThePortOut) {
+    const RequestGuard guard(kToken, "127.0.0.1", 80);
+    for (const char* host : {"127.0.0.1", "localhost", "[::1]", "127.0.0.1:80", "LOCALHOST"})
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Allowed) << host;
+    for (const char* host : {"evil.example", "127.0.0.1:8080", "127.0.0.1:", "10.0.0.1", "127.0.0.1.evil.example"})
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Forbidden) << host;
+    RequestFacts post = get("/export", "127.0.0.1");
+    post.method = "POST";
+    post.origin = "http://127.0.0.1";
+    EXPECT_EQ(guard.check(post), RequestVerdict::Allowed);
+    post.origin = "http://127.0.0.1:8080";
+    EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden);
+    const RequestGuard everywhere(kToken, "0.0.0.0", 80);
+    EXPECT_EQ(everywhere.check(get("/", "192.168.1.20")), RequestVerdict::Allowed);
+    EXPECT_EQ(everywhere.check(get("/", "[fe80::1]")), RequestVerdict::Allowed);
+    EXPECT_EQ(everywhere.check(get("/", "attacker.example")), RequestVerdict::Forbidden);
+    EXPECT_EQ(everywhere.check(get("/", "192.168.1.20:8080")), RequestVerdict::Forbidden);
+}
+
 TEST(RequestGuard, WildcardBindAdmitsAddressesButNoNames) {
     const RequestGuard guard(kToken, "0.0.0.0", 8123);
     EXPECT_EQ(guard.check(get("/scene.json", "192.168.1.20:8123")), RequestVerdict::Allowed);
