@@ -52,6 +52,15 @@ bool is_ip_address(const std::string& text) {
     return inet_pton(AF_INET, text.c_str(), buffer) == 1 || inet_pton(AF_INET6, text.c_str(), buffer) == 1;
 }
 
+bool is_loopback_address(const std::string& bind) {
+    if (bind == "localhost") return true;
+    const std::string address = without_brackets(bind);
+    unsigned char buffer[16];
+    if (inet_pton(AF_INET, address.c_str(), buffer) == 1) return buffer[0] == 127;
+    static const unsigned char loopback6[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+    return inet_pton(AF_INET6, address.c_str(), buffer) == 1 && std::equal(buffer, buffer + 16, loopback6);
+}
+
 std::string url_host(const std::string& bind) {
     if (is_wildcard(bind)) return "127.0.0.1";
     const std::string address = without_brackets(bind);

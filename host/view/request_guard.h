@@ -61,4 +61,8 @@ std::string url_host(const std::string& bind);
 // Whether `text` is an IPv4 address in dotted form or an IPv6 address (without brackets).
 bool is_ip_address(const std::string& text);
 
+// Whether `bind` (a --bind value) is this machine only: localhost, 127.0.0.0/8, ::1 (with or
+// without brackets).
+bool is_loopback_address(const std::string& bind);
+
 }  // namespace clr
