@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <new>
+#include <regex>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -83,6 +84,13 @@ std::string page_with_token(std::string page, const std::string& token) {
     return page;
 }
 
+// Routes are patterns: the name's dots must match only dots.
+std::string asset_pattern(const std::string& path) {
+    std::string pattern = "/";
+    for (char c : path) pattern += c == '.' ? std::string("\\.") : std::string(1, c);
+    return pattern;
+}
+
 void add_assets(httplib::Server& server, const std::string& token) {
     for (const EmbeddedAsset& asset : embedded_viewer_assets()) {
         const std::string path = asset.path;
@@ -91,10 +99,7 @@ void add_assets(httplib::Server& server, const std::string& token) {
         const auto serve = [content, path](const Request&, Response& response) {
             response.set_content(content, content_type_of(path));
         };
-        // Routes are patterns: the name's dots must match only dots.
-        std::string pattern = "/";
-        for (char c : path) pattern += c == '.' ? std::string("\\.") : std::string(1, c);
-        server.Get(pattern, serve);
+        server.Get(asset_pattern(path), serve);
         if (path == "index.html") server.Get("/", serve);
     }
 }
@@ -181,10 +186,13 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     });
     server.Get("/job", [&session](const Request& request, Response& response) {
         answer(response, [&] {
+            // A job's number as /render-video gave it: 1.5 or 1e0 names no job.
+            static const std::regex whole(R"([1-9][0-9]{0,8})");
             const auto id_text = request.params.find("id");
-            const std::optional<double> id = id_text == request.params.end() ? std::nullopt : parse_plain_number(id_text->second);
+            if (id_text != request.params.end() && !std::regex_match(id_text->second, whole))
+                throw ParameterError("id", "id must be a job number as /render-video answered it (1, 2, ...)");
             const std::optional<VideoJobState> job =
-                id && *id >= 1 && *id <= 1e9 ? session.videos.state(static_cast<int>(*id)) : std::nullopt;
+                id_text == request.params.end() ? std::nullopt : session.videos.state(std::stoi(id_text->second));
             if (!job) {
                 send_error(response, 404, "no such job", "id");
                 return;
@@ -194,6 +202,24 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             send_json(response, 200, body);
         });
     });
+}
+
+// Every other method on a route's path: 405 naming the methods it answers, rather than 404
+// (the path exists).
+void refuse_other_methods(httplib::Server& server, const std::string& pattern, bool answers_get) {
+    const std::string allowed = answers_get ? "GET, HEAD" : "POST";
+    const auto refuse = [allowed](const Request& request, Response& response) {
+        response.set_header("Allow", allowed);
+        send_error(response, 405, request.method + " is not answered here; " + allowed + " is");
+    };
+    if (answers_get)
+        server.Post(pattern, refuse);
+    else
+        server.Get(pattern, refuse);
+    server.Put(pattern, refuse);
+    server.Patch(pattern, refuse);
+    server.Delete(pattern, refuse);
+    server.Options(pattern, refuse);
 }
 
 }  // namespace
@@ -238,6 +264,10 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
     add_assets(server, session.guard.token());
     add_frame_routes(server, session);
     add_path_routes(server, session);
+    for (const EmbeddedAsset& asset : embedded_viewer_assets()) refuse_other_methods(server, asset_pattern(asset.path), true);
+    for (const char* pattern : {"/", "/frame\\.png", "/frame\\.rgba", "/explain", "/scene\\.json", "/job"})
+        refuse_other_methods(server, pattern, true);
+    for (const char* pattern : {"/export", "/render-video"}) refuse_other_methods(server, pattern, false);
 }
 
 }  // namespace clr

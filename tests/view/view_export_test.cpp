@@ -239,6 +239,29 @@ TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// A video whose render fails reports the render's own message, not its --progress json line;
+// its scene stays (the input of the render, the scene the page showed), its video is not made.
+TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path(), "PATH=/nonexistent");  // no ffmpeg
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    const std::string id = std::to_string(json::parse(started->body)["job"].get<int>());
+    json state;
+    for (int i = 0; i < 600; ++i) {
+        state = json::parse(viewer.client()->Get(viewer.with_token("/job?id=" + id).c_str())->body);
+        if (state["state"] != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_EQ(state["state"], "failed") << state.dump();
+    EXPECT_EQ(state["error"], "video encoder 'ffmpeg' not found on PATH; install the ffmpeg package (apt-get install ffmpeg)");
+    EXPECT_FALSE(fs::exists(folder.file("tour.mp4")));
+    EXPECT_TRUE(fs::exists(folder.file("tour.json")));
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
     TempFolder folder;
     ViewerProcess viewer("'" + kDemo + "demo.json' --size 320x180 --spp 16", folder.path());

@@ -236,6 +236,46 @@ TEST_F(ViewSecurity, AChunkedBodyIsRefusedBeforeItIsRead) {
     EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
 }
 
+// A path the viewer answers, asked with another method: 405 and the methods it answers.
+TEST_F(ViewSecurity, WrongMethodsGet405WithAllow) {
+    auto client = viewer_->client();
+    const httplib::Headers origin = {{"Origin", own_origin()}};
+    const auto expect_405 = [](const httplib::Result& result, const std::string& allow, const std::string& what) {
+        ASSERT_TRUE(result) << what;
+        EXPECT_EQ(result->status, 405) << what;
+        EXPECT_EQ(result->get_header_value("Allow"), allow) << what;
+        EXPECT_NE(result->body.find("\"error\":"), std::string::npos) << what << ": " << result->body;
+    };
+    for (const char* path : {"/", "/frame.png", "/frame.rgba", "/scene.json", "/explain", "/job", "/viewer.js"}) {
+        const std::string address = viewer_->with_token(path);
+        expect_405(client->Post(address.c_str(), origin, "{}", "application/json"), "GET, HEAD", std::string("POST ") + path);
+        expect_405(client->Delete(address.c_str(), origin), "GET, HEAD", std::string("DELETE ") + path);
+    }
+    for (const char* path : {"/export", "/render-video"}) {
+        const std::string address = viewer_->with_token(path);
+        expect_405(client->Get(address.c_str()), "POST", std::string("GET ") + path);
+        expect_405(client->Put(address.c_str(), origin, "{}", "application/json"), "POST", std::string("PUT ") + path);
+        expect_405(client->Options(address.c_str(), origin), "POST", std::string("OPTIONS ") + path);
+    }
+    const httplib::Result nothing = client->Post(viewer_->with_token("/nothing").c_str(), origin, "{}", "application/json");
+    ASSERT_TRUE(nothing);
+    EXPECT_EQ(nothing->status, 404) << "a path the viewer does not answer";
+    // Without the token the method changes nothing: 403.
+    EXPECT_EQ(client->Delete("/scene.json", origin)->status, 403);
+}
+
+TEST_F(ViewSecurity, AJobIsNamedByItsWholeNumber) {
+    auto client = viewer_->client();
+    for (const char* id : {"1.5", "1e0", "0", "-1", "01", "%201", "1x", "9999999999"}) {
+        const httplib::Result result = client->Get(viewer_->with_token(std::string("/job?id=") + id).c_str());
+        ASSERT_TRUE(result) << id;
+        EXPECT_EQ(result->status, 400) << id;
+        EXPECT_NE(result->body.find("\"parameter\":\"id\""), std::string::npos) << id << ": " << result->body;
+    }
+    EXPECT_EQ(client->Get(viewer_->with_token("/job?id=1").c_str())->status, 404) << "no job yet";
+    EXPECT_EQ(client->Get(viewer_->with_token("/job").c_str())->status, 404);
+}
+
 TEST_F(ViewSecurity, TenClientsAtOnceBesideOnesThatHangUpStallOrReadSlowly) {
     // A client that asks for a large frame and closes the connection before the answer.
     const int hang_up = ::socket(AF_INET, SOCK_STREAM, 0);
