@@ -4,6 +4,8 @@
 // the series NAME, NAME-2, NAME-3, ..., as a browser names a download whose name is taken.
 // The final rename itself refuses to replace (RENAME_NOREPLACE, or link(2) where the file
 // system lacks it), so a file made under the chosen name meanwhile is not replaced either.
+// (A video's MP4 is written later by its render, whose own rename replaces: the name is only
+// checked to be free when its scene is written.)
 #pragma once
 
 #include <functional>
