@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <new>
+#include <optional>
 #include <regex>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -104,11 +105,26 @@ void add_assets(httplib::Server& server, const std::string& token) {
     }
 }
 
-// Whether the request's client is gone: asked between the bands of its frame.
+// Whether the request's client is gone: asked between the bands of its frame. The connection is
+// looked up at the second band, so that the live view's frames of one band never look.
 std::function<bool()> abandonment_of(const Request& request) {
-    auto connection = std::make_shared<ClientConnection>(request.local_addr, request.local_port, request.remote_addr,
-                                                         request.remote_port);
-    return [connection] { return connection->gone(); };
+    struct Watch {
+        std::string local_addr, remote_addr;
+        int local_port, remote_port;
+        bool asked = false;
+        std::optional<ClientConnection> connection;
+    };
+    auto watch = std::make_shared<Watch>(
+        Watch{request.local_addr, request.remote_addr, request.local_port, request.remote_port, false, std::nullopt});
+    return [watch] {
+        if (!watch->asked) {
+            watch->asked = true;  // before the first band: the client has just asked
+            return false;
+        }
+        if (!watch->connection)
+            watch->connection.emplace(watch->local_addr, watch->local_port, watch->remote_addr, watch->remote_port);
+        return watch->connection->gone();
+    };
 }
 
 ViewCamera camera_of(const ViewSession& session, const Request& request) {
