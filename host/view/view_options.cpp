@@ -59,11 +59,11 @@ ParsedViewOptions parse_view_options(int argc, const char* const* argv) {
     app.allow_extras();
     app.add_option("--port", options.port, "TCP port to listen on; 0 (default): a free port")->check(CLI::Range(0, 65535));
     app.add_option("--bind", options.bind,
-                   "Address to listen on; default 127.0.0.1 (this machine only); any other warns, since other "
-                   "machines may then reach the viewer");
+                   "IP address (or localhost) to listen on; default 127.0.0.1 (this machine only); an address "
+                   "beyond this machine warns, since other machines may then reach the viewer");
     CLI::Option* output_dir = app.add_option("--output-dir", options.output_dir,
-                                             "Folder for the scenes and videos the page exports; default the current "
-                                             "folder");
+                                             "Folder for the scenes and videos the page exports, never replacing a "
+                                             "file; default the current folder");
     bool no_browser = false;
     app.add_flag("--no-browser", no_browser, "Do not open the browser (xdg-open); only print the address");
     std::vector<std::string> render_arguments;
