@@ -1,8 +1,8 @@
 // Fuzzes what `clrender view` does with a request before anything renders: the guard (Host,
-// Origin, token, cookie), the camera parameters of the query and their check against a scene
+// Origin, token), the camera parameters of the query and their check against a scene
 // (view/view_camera.h), the pixel of /explain, and the camera keys of a POST body.
 //
-// The input is lines: METHOD, PATH, HOST, ORIGIN, COOKIE, then name=value query parameters
+// The input is lines: METHOD, PATH, HOST, ORIGIN, COOKIE (unused: the viewer has no cookie), then name=value query parameters
 // (decoded, as cpp-httplib hands them over); the whole input is also tried as a POST body.
 // The contract under test (docs/command-line.md, Viewer): every request is either
 // allowed or refused, every bad parameter is a clr::ParameterError naming a known parameter
@@ -76,7 +76,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     facts.path = lines[1];
     if (!lines[2].empty()) facts.host = lines[2];
     if (!lines[3].empty()) facts.origin = lines[3];
-    facts.cookie_header = lines[4];
     clr::QueryParameters query;
     for (std::size_t i = 5; i < lines.size(); ++i) {
         const std::size_t equals = lines[i].find('=');
@@ -89,9 +88,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const clr::RequestVerdict verdict = guard.check(facts);
     if (verdict != clr::RequestVerdict::Forbidden) {
         // Allowed only with the token, a Host naming the server, and for a change its own Origin.
-        const bool has_token = (facts.query_tokens.size() == 1 && facts.query_tokens[0] == kToken) ||
-                               (facts.query_tokens.empty() && facts.cookie_header.find(kToken) != std::string::npos);
-        if (!has_token) report_bug("allowed without the token", facts.cookie_header);
+        const bool has_token = facts.query_tokens.size() == 1 && facts.query_tokens[0] == kToken;
+        if (!has_token) report_bug("allowed without the token in the query", lines[4]);
         if (!facts.host || !guard.host_allowed(*facts.host)) report_bug("allowed with a foreign Host", "");
         if (facts.method != "GET" && facts.method != "HEAD" && (!facts.origin || !guard.origin_allowed(*facts.origin)))
             report_bug("allowed a change from a foreign Origin", "");

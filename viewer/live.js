@@ -25,8 +25,9 @@ function clrenderFrameQuery(token, camera, size, spp, frame) {
   return params.toString();
 }
 
-// A request's address with the page's token, when its address had one; without one the
-// cookie the server set with the page stands in (an empty token= would be a wrong token).
+// A request's address with the page's token: every request must carry it (the server sets no
+// cookie). Without one (an address typed without it) the request is refused, and an empty
+// token= would be a wrong token.
 function clrenderAddress(path, token, params = {}) {
   const query = new URLSearchParams(params);
   if (token) query.set("token", token);

@@ -52,6 +52,20 @@ bool ReplacementFile::close(bool sync) {
     return synced && closed;
 }
 
+bool ReplacementFile::rename_onto_unused(const std::string& final_path) {
+    if (::renameat2(AT_FDCWD, temporary_path_.c_str(), AT_FDCWD, final_path.c_str(), RENAME_NOREPLACE) == 0) {
+        renamed_ = true;
+        return true;
+    }
+    if (errno != EINVAL && errno != ENOSYS && errno != ENOTSUP) return false;
+    // No RENAME_NOREPLACE here (some network and FUSE file systems): a hard link is made only
+    // under a free name, and the temporary name is then removed.
+    if (::link(temporary_path_.c_str(), final_path.c_str()) != 0) return false;
+    renamed_ = true;
+    entry_.remove();
+    return true;
+}
+
 bool ReplacementFile::rename_onto(const std::string& final_path) {
     if (std::rename(temporary_path_.c_str(), final_path.c_str()) != 0) return false;
     renamed_ = true;

@@ -41,6 +41,10 @@ public:
     // Renames the (closed) temporary file over `final_path`; false, errno set, when that fails,
     // in which case the temporary file is still removed at the end.
     bool rename_onto(const std::string& final_path);
+    // The same where nothing may be replaced: false with errno EEXIST when `final_path` names
+    // any directory entry (a file, a folder, a link even to nothing). renameat2's
+    // RENAME_NOREPLACE, or link(2) and unlink(2) on a file system without it.
+    bool rename_onto_unused(const std::string& final_path);
 
 private:
     ReplacementFile() = default;

@@ -34,24 +34,4 @@ bool token_matches(std::string_view given, std::string_view token) {
     return CRYPTO_memcmp(given.data(), token.data(), token.size()) == 0;
 }
 
-std::string cookie_value(std::string_view cookie_header, std::string_view name) {
-    std::string found;
-    int times = 0;
-    std::size_t start = 0;
-    while (start <= cookie_header.size()) {
-        std::size_t end = cookie_header.find(';', start);
-        if (end == std::string_view::npos) end = cookie_header.size();
-        std::string_view pair = cookie_header.substr(start, end - start);
-        while (!pair.empty() && pair.front() == ' ') pair.remove_prefix(1);
-        while (!pair.empty() && pair.back() == ' ') pair.remove_suffix(1);
-        const std::size_t equals = pair.find('=');
-        if (equals != std::string_view::npos && pair.substr(0, equals) == name) {
-            found = std::string(pair.substr(equals + 1));
-            ++times;
-        }
-        start = end + 1;
-    }
-    return times == 1 ? found : "";
-}
-
 }  // namespace clr

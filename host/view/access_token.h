@@ -16,8 +16,4 @@ std::string make_access_token();
 // side channel must not reveal the token digit by digit).
 bool token_matches(std::string_view given, std::string_view token);
 
-// The value of the cookie `name` in a Cookie header ("a=1; clrender_token=..."), or "" if it
-// has none. A cookie given twice counts as not given.
-std::string cookie_value(std::string_view cookie_header, std::string_view name);
-
 }  // namespace clr

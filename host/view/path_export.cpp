@@ -5,11 +5,11 @@
 #include <system_error>
 
 #include "core/errors.h"
-#include "output/atomic_file.h"
 #include "output/output_roles.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
+#include "view/unused_name_file.h"
 #include "view/view_parameters.h"
 
 namespace clr {
@@ -83,10 +83,11 @@ void PathExporter::check_output(const std::string& role, const std::string& path
     roles.add_output(role, path);
 }
 
-ExportedScene PathExporter::export_keys(const CameraKeysRequest& request) const {
+ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused) const {
+    const std::string base = request.name.empty() ? default_name() : request.name;
+    // Checked under the requested name: the text names neither the file nor its folder.
+    const std::string checked_path = (fs::path(output_dir_) / (base + ".json")).string();
     ExportedScene exported;
-    exported.name = request.name.empty() ? default_name() : request.name;
-    exported.path = (fs::path(output_dir_) / (exported.name + ".json")).string();
     exported.text = scene_text_for(request);
     // The loader's checks, as `clrender` will run them on the file: every key in range, a view
     // direction and a roll at every key and between keys, the animation's length. Images are
@@ -95,14 +96,15 @@ ExportedScene PathExporter::export_keys(const CameraKeysRequest& request) const 
     check.decode_images = false;
     check.placeholder_images = options_.placeholders;
     try {
-        parse_scene(exported.text, exported.path, check);
+        parse_scene(exported.text, checked_path, check);
     } catch (const SceneError& error) {
         throw ParameterError("keys", error.location().empty() ? error.detail() : error.location() + ": " + error.detail());
     }
-    check_output("exported scene", exported.path);
-    AtomicFile file(exported.path);
-    file.write(exported.text.data(), exported.text.size());
-    file.commit();
+    const UnusedNameFile written = write_under_unused_name(
+        output_dir_, base, ".json", also_unused, exported.text,
+        [this](const std::string& path) { check_output("exported scene", path); });
+    exported.name = written.name;
+    exported.path = written.path;
     return exported;
 }
 

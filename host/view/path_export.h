@@ -3,10 +3,11 @@
 // The exported scene is the scene the viewer shows: the file with the command line's -D values
 // applied, --size, --spp and --seed written in, and image paths rewritten to be found from
 // --output-dir. It is checked by the scene loader before it is written, written atomically, and
-// never over the scene, its images, or another of the run's outputs.
+// never over any file: a name that is taken is skipped for the next free one (NAME-2, ...).
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "app/options.h"
 #include "scene/scene.h"
@@ -17,7 +18,7 @@ namespace clr {
 struct ExportedScene {
     std::string text;  // the scene file's text
     std::string path;  // where it was written: OUTPUT_DIR/NAME.json
-    std::string name;  // NAME
+    std::string name;  // NAME: the request's name, or the next free one of its series
 };
 
 class PathExporter {
@@ -26,10 +27,12 @@ public:
     // from it), `options` the command line's.
     PathExporter(const Scene& scene, std::string scene_text, const Options& options, std::string output_dir);
 
-    // Makes, checks and writes the exported scene. Throws ParameterError (the keys make no
-    // valid scene: "keys", naming the problem as the loader does) and OutputError (the file
-    // cannot be written, or would replace an input).
-    ExportedScene export_keys(const CameraKeysRequest& request) const;
+    // Makes, checks and writes the exported scene, under the first name of the request's
+    // name's series (view/unused_name_file.h) whose NAME.json, and NAME + each of
+    // `also_unused` (".mp4" for a video), do not exist. Throws ParameterError (the keys make
+    // no valid scene: "keys", naming the problem as the loader does) and OutputError (the file
+    // cannot be written).
+    ExportedScene export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused = {}) const;
 
     // The exported scene's text without writing it (for the checks and tests).
     std::string scene_text_for(const CameraKeysRequest& request) const;

@@ -48,8 +48,9 @@ RenderService::RenderService(const Scene& scene, const Options& options) : scene
     // the store's general program at once rather than after a compile of seconds: the same
     // pixels, a little slower per frame (docs/architecture.md, Program store).
     renderer_options.general_stand_in = true;
-    // A signal stops a long frame within a band, so the server stops promptly.
-    renderer_options.between_bands = throw_if_interrupted;
+    // A signal stops a long frame within a band, so the server stops promptly; a client that
+    // goes away stops its frame too, so that the next client's frame is not kept waiting.
+    renderer_options.between_bands = [this] { between_bands(); };
     renderer_ = std::make_unique<Renderer>(*device_, scene_, renderer_options);
     renderer_->warm_up();
     // The next start builds from the program cache (asking the driver for the binary takes
@@ -62,8 +63,18 @@ Image RenderService::render_locked(const ViewCamera& view) {
     return renderer_->render(view.key, view.frame);
 }
 
-Image RenderService::render(const ViewCamera& view) {
+void RenderService::between_bands() const {
+    throw_if_interrupted();
+    if (abandoned_ && abandoned_()) throw FrameAbandoned();
+}
+
+Image RenderService::render(const ViewCamera& view, std::function<bool()> abandoned) {
     std::lock_guard<std::mutex> lock(mutex_);
+    abandoned_ = std::move(abandoned);
+    struct Forget {
+        std::function<bool()>& abandoned;
+        ~Forget() { abandoned = nullptr; }
+    } forget{abandoned_};
     return render_locked(view);
 }
 

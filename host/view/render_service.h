@@ -5,8 +5,10 @@
 // fastest, and each request waits its turn.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "app/options.h"
@@ -25,8 +27,10 @@ public:
     RenderService(const Scene& scene, const Options& options);
 
     // The frame `view` sees: byte for byte what a render of the scene with that camera,
-    // size and samples gives for that frame. Throws DeviceError, or Interrupted after a signal.
-    Image render(const ViewCamera& view);
+    // size and samples gives for that frame. Throws DeviceError, Interrupted after a signal,
+    // or FrameAbandoned when `abandoned` (asked before every band of rows, several times a
+    // second) says that nobody waits for the frame any more.
+    Image render(const ViewCamera& view, std::function<bool()> abandoned = {});
     // Hands back a frame sent to a client: the next frame renders into its storage.
     void recycle(Image&& image);
 
@@ -42,12 +46,20 @@ public:
 
 private:
     Image render_locked(const ViewCamera& view);
+    void between_bands() const;
 
     const Scene& scene_;
     std::mutex mutex_;  // one frame at a time on the device
+    std::function<bool()> abandoned_;  // the frame in progress's, under mutex_
     std::unique_ptr<DeviceContext> device_;
     std::unique_ptr<Renderer> renderer_;
     std::string device_name_;
+};
+
+// A frame stopped between two bands because its client went away.
+class FrameAbandoned : public std::runtime_error {
+public:
+    FrameAbandoned() : std::runtime_error("the client went away before the frame was finished") {}
 };
 
 // An explanation longer than this (many samples, deep mirrors) is cut, with a note.

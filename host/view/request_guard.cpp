@@ -23,9 +23,21 @@ std::string without_brackets(const std::string& address) {
     return address;
 }
 
-// "host:port" -> host, when the port is exactly `port`; nullopt otherwise (a Host header
-// without a port or with another one does not name this server).
+// HTTP's default port, which browsers leave out of Host and Origin ("127.0.0.1", not
+// "127.0.0.1:80").
+constexpr int kDefaultHttpPort = 80;
+
+// Whether `host` has no port: a name, an IPv4 address, or an IPv6 address in brackets.
+bool has_no_port(const std::string& host) {
+    const std::size_t colon = host.rfind(':');
+    return colon == std::string::npos || (host.front() == '[' && host.back() == ']');
+}
+
+// "host:port" -> host, when the port is exactly `port` (or left out, where `port` is 80);
+// nullopt otherwise (a Host header without a port or with another one does not name this
+// server).
 std::optional<std::string> host_of(const std::string& host_and_port, int port) {
+    if (port == kDefaultHttpPort && !host_and_port.empty() && has_no_port(host_and_port)) return host_and_port;
     const std::string suffix = ":" + std::to_string(port);
     if (host_and_port.size() <= suffix.size() ||
         host_and_port.compare(host_and_port.size() - suffix.size(), suffix.size(), suffix) != 0)
@@ -40,6 +52,15 @@ bool is_ip_address(const std::string& text) {
     return inet_pton(AF_INET, text.c_str(), buffer) == 1 || inet_pton(AF_INET6, text.c_str(), buffer) == 1;
 }
 
+bool is_loopback_address(const std::string& bind) {
+    if (bind == "localhost") return true;
+    const std::string address = without_brackets(bind);
+    unsigned char buffer[16];
+    if (inet_pton(AF_INET, address.c_str(), buffer) == 1) return buffer[0] == 127;
+    static const unsigned char loopback6[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+    return inet_pton(AF_INET6, address.c_str(), buffer) == 1 && std::equal(buffer, buffer + 16, loopback6);
+}
+
 std::string url_host(const std::string& bind) {
     if (is_wildcard(bind)) return "127.0.0.1";
     const std::string address = without_brackets(bind);
@@ -51,8 +72,10 @@ std::string url_host(const std::string& bind) {
 RequestGuard::RequestGuard(std::string token, std::string bind, int port)
     : token_(std::move(token)), port_(port), wildcard_(is_wildcard(bind)) {
     const std::string suffix = ":" + std::to_string(port);
-    for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), url_host(bind)})
+    for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), url_host(bind)}) {
         hosts_.insert(lowercase(name) + suffix);
+        if (port == kDefaultHttpPort) hosts_.insert(lowercase(name));
+    }
 }
 
 bool RequestGuard::host_allowed(const std::string& host) const {
@@ -82,19 +105,10 @@ RequestVerdict RequestGuard::check(const RequestFacts& request) const {
     // Every method but GET and HEAD may change something: it must come from the page itself.
     const bool reads_only = request.method == "GET" || request.method == "HEAD";
     if (!reads_only && (!request.origin || !origin_allowed(*request.origin))) return RequestVerdict::Forbidden;
-    // token= given: it alone decides (a wrong one is not rescued by the cookie). Given twice:
-    // refused, as is a cookie given twice.
-    if (!request.query_tokens.empty()) {
-        if (request.query_tokens.size() != 1 || !token_matches(request.query_tokens.front(), token_))
-            return RequestVerdict::Forbidden;
-        return request.path == "/" && reads_only ? RequestVerdict::AllowedSetCookie : RequestVerdict::Allowed;
-    }
-    if (token_matches(cookie_value(request.cookie_header, kTokenCookie), token_)) return RequestVerdict::Allowed;
-    return RequestVerdict::Forbidden;
-}
-
-std::string RequestGuard::token_cookie() const {
-    return std::string(kTokenCookie) + "=" + token_ + "; HttpOnly; SameSite=Strict; Path=/";
+    // Exactly one token=, the right one (given twice: which one would count?).
+    if (request.query_tokens.size() != 1 || !token_matches(request.query_tokens.front(), token_))
+        return RequestVerdict::Forbidden;
+    return RequestVerdict::Allowed;
 }
 
 }  // namespace clr

@@ -1,8 +1,12 @@
 // Which requests `clrender view` answers (docs/command-line.md, Viewer: Security):
 // - the Host header names this server by an address, never by a DNS name that a web page
-//   could point at 127.0.0.1 (DNS rebinding);
-// - every request carries the access token, in the query (token=...) or in the cookie that
-//   the first authorised request for the page sets;
+//   could point at 127.0.0.1 (DNS rebinding), with its port (left out on port 80, as browsers
+//   leave out HTTP's default port);
+// - every request carries the access token in its query (token=...). There is no cookie:
+//   cookies are not kept apart by port, so every other server on 127.0.0.1 would receive it,
+//   and SameSite counts every port of 127.0.0.1 as the same site, so a page served from any
+//   of them could have the browser load frames with it. The page passes the token itself
+//   (view/view_routes.cpp writes it into the page's own file names);
 // - a request that changes something (POST) comes from the viewer's own page: its Origin
 //   header is the server's own origin, so another web site cannot drive the viewer.
 // Nothing here knows HTTP's wire format (cpp-httplib parses requests): the checks take the
@@ -22,17 +26,12 @@ struct RequestFacts {
     std::optional<std::string> host;    // the Host header
     std::optional<std::string> origin;  // the Origin header
     std::vector<std::string> query_tokens;  // every token=... of the query
-    std::string cookie_header;          // the Cookie header, "" without
 };
 
 enum class RequestVerdict {
-    Forbidden,           // 403 and nothing else
+    Forbidden,  // 403 and nothing else
     Allowed,
-    AllowedSetCookie,    // allowed; the response sets the token cookie (the page, with token=)
 };
-
-// The name of the cookie that stands in for token= after the page's first load.
-inline constexpr const char* kTokenCookie = "clrender_token";
 
 class RequestGuard {
 public:
@@ -41,8 +40,8 @@ public:
 
     RequestVerdict check(const RequestFacts& request) const;
 
-    // The Set-Cookie value for a verdict of AllowedSetCookie.
-    std::string token_cookie() const;
+    // The token, for the page's own addresses.
+    const std::string& token() const { return token_; }
 
     // Whether `host` (a Host header) names this server; `origin` (an Origin header) is its own.
     bool host_allowed(const std::string& host) const;
@@ -61,5 +60,9 @@ std::string url_host(const std::string& bind);
 
 // Whether `text` is an IPv4 address in dotted form or an IPv6 address (without brackets).
 bool is_ip_address(const std::string& text);
+
+// Whether `bind` (a --bind value) is this machine only: localhost, 127.0.0.0/8, ::1 (with or
+// without brackets).
+bool is_loopback_address(const std::string& bind);
 
 }  // namespace clr

@@ -19,7 +19,7 @@ struct VideoJobState {
     int done = 0;       // frames rendered
     int total = 0;      // frames of the video (0 until the render reports them)
     std::string file;   // the video's path
-    std::string error;  // why it failed: the render's message
+    std::string error;  // why it failed: the render's last message (of its --progress json line)
 };
 
 class VideoJobs {

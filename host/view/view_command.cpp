@@ -1,6 +1,10 @@
 #include "view/view_command.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -53,10 +57,20 @@ Scene load_view_scene(const Options& options, const std::string& text) {
     return scene;
 }
 
-void check_output_dir(const std::string& folder) {
+// The output folder is checked before anything listens, so that an export does not fail only
+// when the user has recorded a path. The current folder (the default) that cannot be written
+// is only a warning: viewing needs no folder, and --output-dir names one for the exports.
+void check_output_dir(const std::string& folder, bool given) {
     std::error_code error;
-    if (!fs::is_directory(folder, error))
+    const fs::file_status status = fs::status(folder, error);
+    if (!fs::exists(status))
         throw OutputError("--output-dir " + printable(folder) + ": no such folder (make it first)");
+    if (!fs::is_directory(status)) throw OutputError("--output-dir " + printable(folder) + ": not a folder");
+    if (::access(folder.c_str(), W_OK | X_OK) == 0) return;
+    const std::string why = std::strerror(errno);
+    if (given) throw OutputError("--output-dir " + printable(folder) + ": cannot write there (" + why + ")");
+    std::cerr << "clrender: warning: the current folder cannot be written (" << why
+              << "): exports and videos will fail; --output-dir names a folder for them\n";
 }
 
 // What a video render needs of the command line beyond the exported scene, which holds the
@@ -75,7 +89,7 @@ int run_view(const ViewOptions& view) {
     const Options& options = view.render;
     if (options.threads) limit_cpu_threads(*options.threads);  // before any driver loads
     install_interruption_handlers();
-    check_output_dir(view.output_dir);
+    check_output_dir(view.output_dir, view.output_dir_given);
     const std::string text = read_scene_text(options.scene_path);
     const Scene scene = load_view_scene(options, text);
     throw_if_interrupted();

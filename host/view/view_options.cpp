@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/printable_text.h"
+#include "view/request_guard.h"
 
 namespace clr {
 namespace {
@@ -33,6 +34,12 @@ std::string option_not_for_view(const Options& options) {
     return "";
 }
 
+bool is_bind_address(const std::string& bind) {
+    if (bind == "localhost") return true;
+    const bool bracketed = bind.size() >= 2 && bind.front() == '[' && bind.back() == ']';
+    return is_ip_address(bracketed ? bind.substr(1, bind.size() - 2) : bind);
+}
+
 int usage_error(const std::string& message) {
     std::cerr << "clrender: error: " << printable(message) << "\nRun 'clrender view --help' for more information.\n";
     return 1;
@@ -52,16 +59,22 @@ ParsedViewOptions parse_view_options(int argc, const char* const* argv) {
     app.allow_extras();
     app.add_option("--port", options.port, "TCP port to listen on; 0 (default): a free port")->check(CLI::Range(0, 65535));
     app.add_option("--bind", options.bind,
-                   "Address to listen on; default 127.0.0.1 (this machine only); any other warns, since other "
-                   "machines may then reach the viewer");
-    app.add_option("--output-dir", options.output_dir,
-                   "Folder for the scenes and videos the page exports; default the current folder");
+                   "IP address (or localhost) to listen on; default 127.0.0.1 (this machine only); an address "
+                   "beyond this machine warns, since other machines may then reach the viewer");
+    CLI::Option* output_dir = app.add_option("--output-dir", options.output_dir,
+                                             "Folder for the scenes and videos the page exports, never replacing a "
+                                             "file; default the current folder");
     bool no_browser = false;
     app.add_flag("--no-browser", no_browser, "Do not open the browser (xdg-open); only print the address");
     std::vector<std::string> render_arguments;
     try {
         app.parse(argc, argv);
         if (options.bind.empty()) throw CLI::ValidationError("--bind", "the value is empty; give an address");
+        // An address, never a name: a name would be looked up (and could name another machine
+        // tomorrow), and the Host check admits the bound address (view/request_guard.h).
+        if (!is_bind_address(options.bind))
+            throw CLI::ValidationError("--bind", "'" + printable(options.bind) +
+                                                     "' is not an IP address (127.0.0.1, ::1, 0.0.0.0, ...) or localhost");
         if (options.output_dir.empty()) throw CLI::ValidationError("--output-dir", "the value is empty; give a folder");
         render_arguments = app.remaining();
     } catch (const CLI::ParseError& error) {
@@ -73,6 +86,7 @@ ParsedViewOptions parse_view_options(int argc, const char* const* argv) {
         return parsed;
     }
     options.open_browser = !no_browser;
+    options.output_dir_given = output_dir->count() > 0;
 
     // The scene and the render options: the render command's parser, so that they are checked
     // and spelt as there.

@@ -17,6 +17,7 @@ struct ViewOptions {
     int port = 0;                    // --port; 0: a free port the system picks
     std::string bind = "127.0.0.1";  // --bind
     std::string output_dir = ".";    // --output-dir: where exported scenes and videos go
+    bool output_dir_given = false;   // --output-dir was on the command line
     bool open_browser = true;        // off with --no-browser
 };
 

@@ -1,6 +1,9 @@
 #include "view/view_routes.h"
 
+#include <memory>
 #include <new>
+#include <optional>
+#include <regex>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -8,7 +11,9 @@
 #include "core/interruption.h"
 #include "output/image_writer.h"
 #include "view/camera_keys.h"
+#include "view/client_connection.h"
 #include "view/embedded_assets.h"
+#include "view/render_cost.h"
 #include "view/scene_summary.h"
 #include "view/view_camera.h"
 #include "view/view_parameters.h"
@@ -38,6 +43,8 @@ void answer(Response& response, Route&& route) {
         route();
     } catch (const ParameterError& error) {
         send_error(response, 400, error.what(), error.parameter());
+    } catch (const FrameAbandoned& error) {
+        send_error(response, 503, error.what());  // nobody reads it
     } catch (const Interrupted&) {
         send_error(response, 503, "the viewer is stopping");
     } catch (const DeviceError& error) {
@@ -63,29 +70,75 @@ const char* content_type_of(const std::string& path) {
     return "application/octet-stream";
 }
 
-void add_assets(httplib::Server& server) {
+// index.html with the token in the addresses of the page's own files (src="viewer.js" becomes
+// src="viewer.js?token=..."): the browser loads them with the token, as every request must
+// carry it (there is no cookie, view/request_guard.h).
+std::string page_with_token(std::string page, const std::string& token) {
+    for (const EmbeddedAsset& asset : embedded_viewer_assets()) {
+        for (const char* attribute : {"src=\"", "href=\""}) {
+            const std::string reference = attribute + std::string(asset.path) + "\"";
+            const std::string with_token = attribute + std::string(asset.path) + "?token=" + token + "\"";
+            for (std::size_t at = page.find(reference); at != std::string::npos; at = page.find(reference, at + with_token.size()))
+                page.replace(at, reference.size(), with_token);
+        }
+    }
+    return page;
+}
+
+// Routes are patterns: the name's dots must match only dots.
+std::string asset_pattern(const std::string& path) {
+    std::string pattern = "/";
+    for (char c : path) pattern += c == '.' ? std::string("\\.") : std::string(1, c);
+    return pattern;
+}
+
+void add_assets(httplib::Server& server, const std::string& token) {
     for (const EmbeddedAsset& asset : embedded_viewer_assets()) {
         const std::string path = asset.path;
-        const auto serve = [&asset, path](const Request&, Response& response) {
-            response.set_content(std::string(asset.content()), content_type_of(path));
+        const std::string content = path == "index.html" ? page_with_token(std::string(asset.content()), token)
+                                                         : std::string(asset.content());
+        const auto serve = [content, path](const Request&, Response& response) {
+            response.set_content(content, content_type_of(path));
         };
-        // Routes are patterns: the name's dots must match only dots.
-        std::string pattern = "/";
-        for (char c : path) pattern += c == '.' ? std::string("\\.") : std::string(1, c);
-        server.Get(pattern, serve);
+        server.Get(asset_pattern(path), serve);
         if (path == "index.html") server.Get("/", serve);
     }
 }
 
+// Whether the request's client is gone: asked between the bands of its frame. The connection is
+// looked up at the second band, so that the live view's frames of one band never look.
+std::function<bool()> abandonment_of(const Request& request) {
+    struct Watch {
+        std::string local_addr, remote_addr;
+        int local_port, remote_port;
+        bool asked = false;
+        std::optional<ClientConnection> connection;
+    };
+    auto watch = std::make_shared<Watch>(
+        Watch{request.local_addr, request.remote_addr, request.local_port, request.remote_port, false, std::nullopt});
+    return [watch] {
+        if (!watch->asked) {
+            watch->asked = true;  // before the first band: the client has just asked
+            return false;
+        }
+        if (!watch->connection)
+            watch->connection.emplace(watch->local_addr, watch->local_port, watch->remote_addr, watch->remote_port);
+        return watch->connection->gone();
+    };
+}
+
 ViewCamera camera_of(const ViewSession& session, const Request& request) {
-    return resolve_view_camera(session.scene, parse_view_query(request.params));
+    const ViewQuery query = parse_view_query(request.params);
+    const ViewCamera view = resolve_view_camera(session.scene, query);
+    check_render_cost(session.scene, view, query);
+    return view;
 }
 
 void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.png", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ViewCamera view = camera_of(session, request);
-            Image frame = session.renderer.render(view);
+            Image frame = session.renderer.render(view, abandonment_of(request));
             const std::vector<std::uint8_t> png = png_bytes(frame);
             session.renderer.recycle(std::move(frame));
             response.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
@@ -95,7 +148,7 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.rgba", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ViewCamera view = camera_of(session, request);
-            Image frame = session.renderer.render(view);
+            Image frame = session.renderer.render(view, abandonment_of(request));
             response.set_header("X-Width", std::to_string(frame.width));
             response.set_header("X-Height", std::to_string(frame.height));
             response.set_content(reinterpret_cast<const char*>(frame.rgba.data()), frame.rgba.size(),
@@ -125,7 +178,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/export", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
-            send_json(response, 200, {{"scene", exported.text}, {"file", exported.path}});
+            send_json(response, 200, {{"scene", exported.text}, {"file", exported.path}, {"name", exported.name}});
         });
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {
@@ -135,7 +188,8 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
                 send_error(response, 409, "a video is rendering already; one at a time");
                 return;
             }
-            const ExportedScene exported = session.exporter.export_keys(keys);
+            // The scene and the video share their name: both free when the scene is written.
+            const ExportedScene exported = session.exporter.export_keys(keys, {".mp4"});
             const std::string video = session.exporter.output_dir() + "/" + exported.name + ".mp4";
             session.exporter.check_output("video", video);
             const std::optional<int> job = session.videos.start(exported.path, video);
@@ -143,15 +197,18 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
                 send_error(response, 409, "a video is rendering already; one at a time");
                 return;
             }
-            send_json(response, 200, {{"job", *job}, {"file", video}, {"scene", exported.path}});
+            send_json(response, 200, {{"job", *job}, {"file", video}, {"scene", exported.path}, {"name", exported.name}});
         });
     });
     server.Get("/job", [&session](const Request& request, Response& response) {
         answer(response, [&] {
+            // A job's number as /render-video gave it: 1.5 or 1e0 names no job.
+            static const std::regex whole(R"([1-9][0-9]{0,8})");
             const auto id_text = request.params.find("id");
-            const std::optional<double> id = id_text == request.params.end() ? std::nullopt : parse_plain_number(id_text->second);
+            if (id_text != request.params.end() && !std::regex_match(id_text->second, whole))
+                throw ParameterError("id", "id must be a job number as /render-video answered it (1, 2, ...)");
             const std::optional<VideoJobState> job =
-                id && *id >= 1 && *id <= 1e9 ? session.videos.state(static_cast<int>(*id)) : std::nullopt;
+                id_text == request.params.end() ? std::nullopt : session.videos.state(std::stoi(id_text->second));
             if (!job) {
                 send_error(response, 404, "no such job", "id");
                 return;
@@ -161,6 +218,24 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             send_json(response, 200, body);
         });
     });
+}
+
+// Every other method on a route's path: 405 naming the methods it answers, rather than 404
+// (the path exists).
+void refuse_other_methods(httplib::Server& server, const std::string& pattern, bool answers_get) {
+    const std::string allowed = answers_get ? "GET, HEAD" : "POST";
+    const auto refuse = [allowed](const Request& request, Response& response) {
+        response.set_header("Allow", allowed);
+        send_error(response, 405, request.method + " is not answered here; " + allowed + " is");
+    };
+    if (answers_get)
+        server.Post(pattern, refuse);
+    else
+        server.Get(pattern, refuse);
+    server.Put(pattern, refuse);
+    server.Patch(pattern, refuse);
+    server.Delete(pattern, refuse);
+    server.Options(pattern, refuse);
 }
 
 }  // namespace
@@ -173,7 +248,6 @@ RequestFacts request_facts(const Request& request) {
     if (request.has_header("Origin")) facts.origin = request.get_header_value("Origin");
     const auto [first, last] = request.params.equal_range("token");
     for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
-    facts.cookie_header = request.get_header_value("Cookie");
     return facts;
 }
 
@@ -182,6 +256,14 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         const RequestVerdict verdict = session.guard.check(request_facts(request));
         if (verdict == RequestVerdict::Forbidden) {
             response.status = 403;
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // cpp-httplib limits a body by its Content-Length only: a chunked body would be read
+        // whole, however large. The page sends none, so any Transfer-Encoding is refused here,
+        // before the body is read, and the connection is closed (its body is never read).
+        if (request.has_header("Transfer-Encoding")) {
+            response.set_header("Connection", "close");
+            send_error(response, 411, "request bodies must have a Content-Length (no Transfer-Encoding)");
             return httplib::Server::HandlerResponse::Handled;
         }
         // Nothing the viewer sends is for a cache, another site's frame, or a content sniffer;
@@ -193,12 +275,15 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         response.set_header("Content-Security-Policy",
                             "default-src 'self' 'unsafe-inline' blob: data:; frame-ancestors 'none'; base-uri 'none'; "
                             "form-action 'self'");
-        if (verdict == RequestVerdict::AllowedSetCookie) response.set_header("Set-Cookie", session.guard.token_cookie());
         return httplib::Server::HandlerResponse::Unhandled;
     });
-    add_assets(server);
+    add_assets(server, session.guard.token());
     add_frame_routes(server, session);
     add_path_routes(server, session);
+    for (const EmbeddedAsset& asset : embedded_viewer_assets()) refuse_other_methods(server, asset_pattern(asset.path), true);
+    for (const char* pattern : {"/", "/frame\\.png", "/frame\\.rgba", "/explain", "/scene\\.json", "/job"})
+        refuse_other_methods(server, pattern, true);
+    for (const char* pattern : {"/export", "/render-video"}) refuse_other_methods(server, pattern, false);
 }
 
 }  // namespace clr

@@ -5,8 +5,8 @@
 //   GET  /explain                     the --explain-pixel text of pixel x, y
 //   POST /export                      the recorded keys as a scene file in --output-dir
 //   POST /render-video, GET /job      that scene rendered to a video, in the background
-// Every request passes the RequestGuard first; every other path is 404, and no request
-// reads a file.
+// Every request passes the RequestGuard first; another method on these paths is 405 (with
+// Allow), every other path is 404, and no request reads a file.
 #pragma once
 
 #include <httplib.h>

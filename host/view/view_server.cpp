@@ -83,7 +83,7 @@ void configure(httplib::Server& server, int& listening) {
 
 void warn_about_bind(const std::string& bind) {
     if (bind == "127.0.0.1") return;
-    if (bind == "localhost" || bind == "::1" || bind == "[::1]")
+    if (is_loopback_address(bind))
         std::cerr << "clrender: warning: --bind " << printable(bind) << ": listening on " << printable(bind)
                   << " rather than 127.0.0.1\n";
     else
@@ -107,9 +107,10 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
         port = server.bind_to_any_port(bind_address);
     else if (!server.bind_to_port(bind_address, port))
         port = -1;
+    const int bind_error = errno;
     if (port <= 0)
         throw UsageError("cannot listen on " + printable(settings.bind) + " port " + std::to_string(settings.port) +
-                         (settings.port ? " (in use? --port 0 picks a free one)" : "") + ": " + std::strerror(errno));
+                         (settings.port ? " (in use? --port 0 picks a free one)" : "") + ": " + std::strerror(bind_error));
     // cpp-httplib listens with a backlog of 5: ten tabs connecting at once would see their
     // connections dropped and retried a second later. The backlog is raised on the same socket.
     if (listening >= 0) ::listen(listening, SOMAXCONN);

@@ -73,5 +73,27 @@ TEST(RenderService, AViewOfAnotherFeatureSetTakesTheStoresGeneralProgram) {
     EXPECT_TRUE(service.render(view).rgba == own.rgba);
 }
 
+// A frame whose client went away stops before its next band, and the service renders the next
+// frame as if nothing had happened.
+TEST(RenderService, AnAbandonedFrameStopsAndTheNextRendersWhole) {
+    const Scene scene = lit_floor();
+    const Image own = Renderer(testing::test_device(), scene).render(scene.camera_path.front());
+    RenderService service(scene, Options{});
+    ViewCamera view;
+    view.key = scene.camera_path.front();
+    view.up = scene.up;
+    view.fov_degrees = scene.fov_degrees;
+    view.width = scene.width;
+    view.height = scene.height;
+    view.sampling = scene.sampling;
+    int asked = 0;
+    EXPECT_THROW(service.render(view, [&asked] { return ++asked > 0; }), FrameAbandoned);
+    EXPECT_EQ(asked, 1) << "asked before the first band";
+    int asked_after = 0;
+    EXPECT_TRUE(service.render(view, [&asked_after] { return ++asked_after < 0; }).rgba == own.rgba);
+    EXPECT_GE(asked_after, 1);
+    EXPECT_TRUE(service.render(view).rgba == own.rgba);
+}
+
 }  // namespace
 }  // namespace clr

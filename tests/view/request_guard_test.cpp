@@ -1,4 +1,4 @@
-// The viewer's request checks, driven directly: the token (query or cookie), the Host header
+// The viewer's request checks, driven directly: the token (in the query; there is no cookie), the Host header
 // against DNS rebinding, the Origin of requests that change something.
 #include <gtest/gtest.h>
 
@@ -43,15 +43,7 @@ TEST(AccessToken, MatchesOnlyTheWholeToken) {
     EXPECT_FALSE(token_matches("", ""));  // a guard without a token admits nothing
 }
 
-TEST(AccessToken, CookieValueIsFoundAmongOthersAndRefusedWhenRepeated) {
-    EXPECT_EQ(cookie_value("a=1; clrender_token=abc; b=2", "clrender_token"), "abc");
-    EXPECT_EQ(cookie_value("clrender_token=abc", "clrender_token"), "abc");
-    EXPECT_EQ(cookie_value("xclrender_token=abc", "clrender_token"), "");
-    EXPECT_EQ(cookie_value("clrender_token=abc; clrender_token=def", "clrender_token"), "");
-    EXPECT_EQ(cookie_value("", "clrender_token"), "");
-}
-
-TEST(RequestGuard, NeedsTheTokenInTheQueryOrTheCookie) {
+TEST(RequestGuard, NeedsTheTokenInTheQuery) {
     const RequestGuard guard(kToken, "127.0.0.1", 8123);
     EXPECT_EQ(guard.check(get("/frame.png")), RequestVerdict::Allowed);
     RequestFacts none = get("/frame.png");
@@ -63,30 +55,42 @@ TEST(RequestGuard, NeedsTheTokenInTheQueryOrTheCookie) {
     RequestFacts twice = get("/frame.png");
     twice.query_tokens = {kToken, kToken};
     EXPECT_EQ(guard.check(twice), RequestVerdict::Forbidden);
-    RequestFacts cookie = none;
-    cookie.cookie_header = "clrender_token=" + kToken;
-    EXPECT_EQ(guard.check(cookie), RequestVerdict::Allowed);
-    // A wrong token in the query is not rescued by a right cookie.
-    wrong.cookie_header = cookie.cookie_header;
-    EXPECT_EQ(guard.check(wrong), RequestVerdict::Forbidden);
-}
-
-TEST(RequestGuard, ThePageWithTheTokenSetsTheCookie) {
-    const RequestGuard guard(kToken, "127.0.0.1", 8123);
-    EXPECT_EQ(guard.check(get("/")), RequestVerdict::AllowedSetCookie);
-    EXPECT_EQ(guard.token_cookie(), "clrender_token=" + kToken + "; HttpOnly; SameSite=Strict; Path=/");
+    RequestFacts empty = get("/frame.png");
+    empty.query_tokens = {""};
+    EXPECT_EQ(guard.check(empty), RequestVerdict::Forbidden);
 }
 
 TEST(RequestGuard, HostMustNameTheServerByAddressOrLocalhost) {
     const RequestGuard guard(kToken, "127.0.0.1", 8123);
     for (const char* host : {"127.0.0.1:8123", "localhost:8123", "LOCALHOST:8123", "[::1]:8123"})
-        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::AllowedSetCookie) << host;
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Allowed) << host;
     for (const char* host : {"evil.example:8123", "127.0.0.1", "127.0.0.1:8124", "localhost", "127.0.0.1:81230",
                              "10.0.0.1:8123", "", "127.0.0.1:8123 ", "localhost.evil.example:8123"})
         EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Forbidden) << host;
     RequestFacts no_host = get("/");
     no_host.host.reset();
     EXPECT_EQ(guard.check(no_host), RequestVerdict::Forbidden);
+}
+
+// Browsers leave HTTP's default port out of Host and Origin: on port 80 the bare forms name
+// the server, and only there.
+TEST(RequestGuard, OnPort80TheHostMayLeaveThePortOut) {
+    const RequestGuard guard(kToken, "127.0.0.1", 80);
+    for (const char* host : {"127.0.0.1", "localhost", "[::1]", "127.0.0.1:80", "LOCALHOST"})
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Allowed) << host;
+    for (const char* host : {"evil.example", "127.0.0.1:8080", "127.0.0.1:", "10.0.0.1", "127.0.0.1.evil.example"})
+        EXPECT_EQ(guard.check(get("/", host)), RequestVerdict::Forbidden) << host;
+    RequestFacts post = get("/export", "127.0.0.1");
+    post.method = "POST";
+    post.origin = "http://127.0.0.1";
+    EXPECT_EQ(guard.check(post), RequestVerdict::Allowed);
+    post.origin = "http://127.0.0.1:8080";
+    EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden);
+    const RequestGuard everywhere(kToken, "0.0.0.0", 80);
+    EXPECT_EQ(everywhere.check(get("/", "192.168.1.20")), RequestVerdict::Allowed);
+    EXPECT_EQ(everywhere.check(get("/", "[fe80::1]")), RequestVerdict::Allowed);
+    EXPECT_EQ(everywhere.check(get("/", "attacker.example")), RequestVerdict::Forbidden);
+    EXPECT_EQ(everywhere.check(get("/", "192.168.1.20:8080")), RequestVerdict::Forbidden);
 }
 
 TEST(RequestGuard, WildcardBindAdmitsAddressesButNoNames) {

@@ -88,7 +88,6 @@ TEST(ViewExport, RefusesBadKeysNamesAndOutputsOverInputs) {
         {R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}], "name": "/tmp/abs"})", "name"},
         {R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}], "name": ".hidden"})", "name"},
         {R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}], "name": 7})", "name"},
-        {R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}], "name": "demo"})", "name"},  // the scene itself
     };
     for (const auto& [body, parameter] : cases) {
         const httplib::Result result = post(viewer, "/export", body);
@@ -98,13 +97,17 @@ TEST(ViewExport, RefusesBadKeysNamesAndOutputsOverInputs) {
     }
     EXPECT_EQ(read_bytes(folder.file("demo.json")), scene_before);
     EXPECT_FALSE(fs::exists(folder.path() + "/../escape.json"));
-    // A symbolic link under the export's name that points at the scene is not written through.
+    // The scene's own name, or a symbolic link to the scene: the export takes the next free name.
     fs::create_symlink("demo.json", folder.file("link.json"));
-    const httplib::Result through_link =
-        post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}], "name": "link"})");
-    ASSERT_TRUE(through_link);
-    EXPECT_EQ(through_link->status, 409) << through_link->body;
+    for (const std::string name : {"demo", "link"}) {
+        const httplib::Result result =
+            post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}], "name": ")" + name + "\"}");
+        ASSERT_TRUE(result);
+        ASSERT_EQ(result->status, 200) << result->body;
+        EXPECT_EQ(json::parse(result->body)["file"], "./" + name + "-2.json");
+    }
     EXPECT_EQ(read_bytes(folder.file("demo.json")), scene_before);
+    EXPECT_TRUE(fs::is_symlink(folder.file("link.json")));
     // A body beyond the limit is refused without being read.
     const std::string huge(3 * 1024 * 1024, ' ');
     const httplib::Result too_large = post(viewer, "/export", huge);
@@ -113,7 +116,7 @@ TEST(ViewExport, RefusesBadKeysNamesAndOutputsOverInputs) {
 }
 
 // A mesh whose OBJ (or .mtl) is named like an export is an input like the images: the export
-// is refused, and the exported scene names the mesh by its absolute path.
+// takes the next free name, and the exported scene names the mesh by its absolute path.
 TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
     TempFolder folder;
     const std::string obj = "mtllib tour.json\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
@@ -128,7 +131,8 @@ TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
         const httplib::Result result =
             post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 0, 0]}], "name": ")" + std::string(name) + "\"}");
         ASSERT_TRUE(result);
-        EXPECT_EQ(result->status, 409) << name << ": " << result->body;
+        ASSERT_EQ(result->status, 200) << name << ": " << result->body;
+        EXPECT_EQ(json::parse(result->body)["name"], std::string(name) + "-2");
     }
     EXPECT_EQ(read_bytes(folder.file("model.json")), obj);
     EXPECT_EQ(read_bytes(folder.file("tour.json")), mtl);
@@ -138,6 +142,72 @@ TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
     const json scene = json::parse(read_bytes(folder.file("saved.json")));
     EXPECT_EQ(scene["obj"]["filename"], fs::path(folder.file("model.json")).lexically_normal().string());
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
+std::string export_body(const std::string& name) {
+    return R"({"keys": [{"eye": [0, 1.5, 14], "lookat": [0, 1, 0]}])" + (name.empty() ? "" : R"(, "name": ")" + name + "\"") + "}";
+}
+
+// A link under the export's name, to a file outside --output-dir or to nothing, is a taken
+// name: the file behind it keeps its bytes and its mode, and nothing is made where it points.
+TEST(ViewExport, NeverWritesThroughALink) {
+    TempFolder folder;
+    fs::create_directories(folder.file("out"));
+    folder.write("secret.txt", "secret\n");
+    fs::permissions(folder.file("secret.txt"), fs::perms::owner_read | fs::perms::owner_write);
+    fs::create_symlink(folder.file("secret.txt"), folder.file("out/demo_path.json"));
+    fs::create_symlink(folder.file("missing.txt"), folder.file("out/dangling.json"));
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18 --output-dir out", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result page_export = post(viewer, "/export", export_body(""));  // the page sends no name
+    ASSERT_TRUE(page_export);
+    ASSERT_EQ(page_export->status, 200) << page_export->body;
+    EXPECT_EQ(json::parse(page_export->body)["file"], "out/demo_path-2.json");
+    EXPECT_EQ(json::parse(page_export->body)["name"], "demo_path-2");
+    EXPECT_EQ(read_bytes(folder.file("secret.txt")), "secret\n");
+    EXPECT_EQ(fs::status(folder.file("secret.txt")).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write);
+    EXPECT_TRUE(fs::is_symlink(folder.file("out/demo_path.json")));
+    const httplib::Result dangling = post(viewer, "/export", export_body("dangling"));
+    ASSERT_TRUE(dangling);
+    ASSERT_EQ(dangling->status, 200) << dangling->body;
+    EXPECT_EQ(json::parse(dangling->body)["file"], "out/dangling-2.json");
+    EXPECT_FALSE(fs::exists(folder.file("missing.txt")));
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
+// Nothing in --output-dir is replaced: not a user's file of the same name, not the export of
+// the click before, not a neighbouring scene; and a video's scene and MP4 share a free name.
+TEST(ViewExport, NeverReplacesAnExistingFile) {
+    TempFolder folder;
+    folder.write("important.json", "{\"my\": \"data\"}\n");
+    folder.write("clip.mp4", "not mine to replace");
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result named = post(viewer, "/export", export_body("important"));
+    ASSERT_TRUE(named);
+    ASSERT_EQ(named->status, 200) << named->body;
+    EXPECT_EQ(json::parse(named->body)["file"], "./important-2.json");
+    EXPECT_EQ(read_bytes(folder.file("important.json")), "{\"my\": \"data\"}\n");
+    EXPECT_EQ(json::parse(read_bytes(folder.file("important-2.json")))["eyeLocations"], json::parse("[[0, 1.5, 14]]"));
+    // Three clicks of the page: three files, the first two as they were written.
+    std::vector<std::string> files;
+    for (int click = 0; click < 3; ++click) {
+        const httplib::Result result = post(viewer, "/export", export_body(""));
+        ASSERT_TRUE(result);
+        ASSERT_EQ(result->status, 200) << result->body;
+        files.push_back(json::parse(result->body)["file"]);
+    }
+    EXPECT_EQ(files, (std::vector<std::string>{"./demo_path.json", "./demo_path-2.json", "./demo_path-3.json"}));
+    // clip.json is free but clip.mp4 is not: the video takes clip-2 for both.
+    const httplib::Result video = post(viewer, "/render-video", export_body("clip"));
+    ASSERT_TRUE(video);
+    ASSERT_EQ(video->status, 200) << video->body;
+    EXPECT_EQ(json::parse(video->body)["file"], "./clip-2.mp4");
+    EXPECT_EQ(json::parse(video->body)["scene"], "./clip-2.json");
+    EXPECT_FALSE(fs::exists(folder.file("clip.json")));
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_EQ(read_bytes(folder.file("clip.mp4")), "not mine to replace");
 }
 
 TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
@@ -166,6 +236,29 @@ TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
     EXPECT_GT(fs::file_size(folder.file("tour.mp4")), 0u);
     EXPECT_TRUE(fs::exists(folder.file("tour.json")));
     EXPECT_EQ(viewer.client()->Get(viewer.with_token("/job?id=99").c_str())->status, 404);
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
+// A video whose render fails reports the render's own message, not its --progress json line;
+// its scene stays (the input of the render, the scene the page showed), its video is not made.
+TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path(), "PATH=/nonexistent");  // no ffmpeg
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    const std::string id = std::to_string(json::parse(started->body)["job"].get<int>());
+    json state;
+    for (int i = 0; i < 600; ++i) {
+        state = json::parse(viewer.client()->Get(viewer.with_token("/job?id=" + id).c_str())->body);
+        if (state["state"] != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_EQ(state["state"], "failed") << state.dump();
+    EXPECT_EQ(state["error"], "video encoder 'ffmpeg' not found on PATH; install the ffmpeg package (apt-get install ffmpeg)");
+    EXPECT_FALSE(fs::exists(folder.file("tour.mp4")));
+    EXPECT_TRUE(fs::exists(folder.file("tour.json")));
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 

@@ -3,6 +3,8 @@
 // signal ending it with 128 + signal and nothing left behind.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -102,7 +104,38 @@ TEST(ViewLifetime, AMissingOutputFolderIsAnOutputError) {
     TempFolder folder;
     const auto result = run_clrender("view '" + kDemoScene + "' --no-browser --output-dir nowhere", folder.path());
     EXPECT_EQ(result.exit_code, 4) << result.output;
-    EXPECT_NE(result.output.find("--output-dir"), std::string::npos);
+    EXPECT_NE(result.output.find("--output-dir nowhere: no such folder"), std::string::npos) << result.output;
+}
+
+TEST(ViewLifetime, AnOutputDirThatIsAFileOrCannotBeWrittenIsRefusedAtStart) {
+    TempFolder folder;
+    folder.write("file.txt", "a file");
+    const auto file = run_clrender("view '" + kDemoScene + "' --no-browser --output-dir file.txt", folder.path());
+    EXPECT_EQ(file.exit_code, 4) << file.output;
+    EXPECT_NE(file.output.find("--output-dir file.txt: not a folder"), std::string::npos) << file.output;
+    EXPECT_EQ(read_bytes(folder.file("file.txt")), "a file");
+    if (::geteuid() == 0) GTEST_SKIP() << "root may write into read-only folders";
+    fs::create_directories(folder.file("locked"));
+    fs::permissions(folder.file("locked"), fs::perms::owner_read | fs::perms::owner_exec);
+    const auto locked = run_clrender("view '" + kDemoScene + "' --no-browser --output-dir locked", folder.path());
+    fs::permissions(folder.file("locked"), fs::perms::owner_all);
+    EXPECT_EQ(locked.exit_code, 4) << locked.output;
+    EXPECT_NE(locked.output.find("--output-dir locked: cannot write there (Permission denied)"), std::string::npos)
+        << locked.output;
+    EXPECT_EQ(locked.output.find("view at"), std::string::npos);
+}
+
+// A name would be looked up (and could name another machine later), and an address with a
+// space is no address: both are refused before anything loads, with the reason.
+TEST(ViewLifetime, BindMustBeAnAddress) {
+    TempFolder folder;
+    for (const std::string bind : {"evil.example", "'127.0.0.1 '", "127.0.0.1:80", "'[::1'"}) {
+        const auto result = run_clrender("view '" + kDemoScene + "' --no-browser --bind " + bind, folder.path());
+        EXPECT_EQ(result.exit_code, 1) << bind << ": " << result.output;
+        EXPECT_NE(result.output.find("is not an IP address (127.0.0.1, ::1, 0.0.0.0, ...) or localhost"), std::string::npos)
+            << bind << ": " << result.output;
+        EXPECT_EQ(result.output.find("No such file"), std::string::npos) << result.output;
+    }
 }
 
 TEST(ViewLifetime, OpensTheBrowserWithTheAddressAndGoesOnWithoutOne) {
@@ -131,7 +164,21 @@ TEST(ViewLifetime, AnotherBindAddressWarns) {
     ViewerProcess viewer("'" + kDemoScene + "' --size 16x9 --bind 0.0.0.0", folder.path());
     ASSERT_TRUE(viewer.started()) << viewer.output();
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
-    EXPECT_NE(viewer.output().find("warning: --bind 0.0.0.0"), std::string::npos) << viewer.output();
+    EXPECT_NE(viewer.output().find("warning: --bind 0.0.0.0: the viewer listens beyond this machine"), std::string::npos)
+        << viewer.output();
+}
+
+// 127.0.0.0/8 is this machine: the note says which address, not that other machines reach it.
+TEST(ViewLifetime, AnotherLoopbackAddressIsNotBeyondThisMachine) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9 --bind 127.0.0.2", folder.path());
+    // (started() expects 127.0.0.1 in the line)
+    EXPECT_NE(viewer.address_line().find("clrender: view at http://127.0.0.2:"), std::string::npos) << viewer.output();
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_NE(viewer.output().find("warning: --bind 127.0.0.2: listening on 127.0.0.2 rather than 127.0.0.1"),
+              std::string::npos)
+        << viewer.output();
+    EXPECT_EQ(viewer.output().find("beyond this machine"), std::string::npos) << viewer.output();
 }
 
 }  // namespace

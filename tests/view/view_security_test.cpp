@@ -5,12 +5,15 @@
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <regex>
 #include <thread>
 #include <vector>
 
@@ -25,6 +28,43 @@ using testing::TempFolder;
 using testing::ViewerProcess;
 
 const std::string kDemoScene = std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json";
+
+// A TCP connection to the viewer; -1 when it cannot connect.
+int connect_to_viewer(int port) {
+    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        ::close(socket);
+        return -1;
+    }
+    return socket;
+}
+
+// One answer: its head and as many bytes of body as its Content-Length says, or what came
+// within `seconds`.
+std::string read_one_answer(int socket, int seconds) {
+    std::string text;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (std::chrono::steady_clock::now() < give_up) {
+        const std::size_t head_end = text.find("\r\n\r\n");
+        if (head_end != std::string::npos) {
+            const std::size_t length_at = text.find("Content-Length: ");
+            if (length_at != std::string::npos && length_at < head_end &&
+                text.size() >= head_end + 4 + std::stoul(text.substr(length_at + 16)))
+                break;
+        }
+        pollfd ready{socket, POLLIN, 0};
+        if (::poll(&ready, 1, 100) <= 0) continue;
+        char buffer[4096];
+        const ssize_t got = ::read(socket, buffer, sizeof buffer);
+        if (got <= 0) break;
+        text.append(buffer, static_cast<std::size_t>(got));
+    }
+    return text;
+}
 
 // One viewer for the whole suite: starting it is the slow part.
 class ViewSecurity : public ::testing::Test {
@@ -71,17 +111,30 @@ TEST_F(ViewSecurity, EveryPathNeedsTheToken) {
     EXPECT_EQ(client->Get(viewer_->with_token("/viewer.css").c_str())->status, 200);
 }
 
-TEST_F(ViewSecurity, ThePageSetsACookieThatStandsInForTheToken) {
+// No cookie: cookies are not kept apart by port, so every server on 127.0.0.1 would receive it,
+// and pages on other ports of 127.0.0.1 are the same site to SameSite. The page names its own
+// files with the token instead, and a token in a cookie opens nothing.
+TEST_F(ViewSecurity, NoCookieThePageNamesItsFilesWithTheToken) {
     auto client = viewer_->client();
     const httplib::Result page = client->Get(viewer_->with_token("/").c_str());
     ASSERT_TRUE(page);
-    const std::string cookie = page->get_header_value("Set-Cookie");
-    EXPECT_EQ(cookie, "clrender_token=" + viewer_->token() + "; HttpOnly; SameSite=Strict; Path=/");
+    ASSERT_EQ(page->status, 200);
+    EXPECT_FALSE(page->has_header("Set-Cookie"));
+    const std::regex reference(R"re((src|href)="([^"#:]+)")re");
+    int files = 0;
+    for (std::sregex_iterator it(page->body.begin(), page->body.end(), reference), end; it != end; ++it) {
+        const std::string address = (*it)[2];
+        EXPECT_NE(address.find("?token=" + viewer_->token()), std::string::npos) << address;
+        const httplib::Result file = client->Get(("/" + address).c_str());
+        ASSERT_TRUE(file) << address;
+        EXPECT_EQ(file->status, 200) << address;
+        EXPECT_FALSE(file->has_header("Set-Cookie")) << address;
+        ++files;
+    }
+    EXPECT_EQ(files, 6) << "viewer.css and five scripts";
     const httplib::Headers with_cookie = {{"Cookie", "clrender_token=" + viewer_->token()}};
-    EXPECT_EQ(client->Get("/scene.json", with_cookie)->status, 200);
-    EXPECT_EQ(client->Get("/frame.png?size=8x8", with_cookie)->status, 200);
-    const httplib::Headers wrong_cookie = {{"Cookie", "clrender_token=" + std::string(32, 'a')}};
-    EXPECT_EQ(client->Get("/scene.json", wrong_cookie)->status, 403);
+    for (const char* path : {"/", "/viewer.js", "/scene.json", "/frame.png?size=8x8"})
+        EXPECT_EQ(client->Get(path, with_cookie)->status, 403) << path;
 }
 
 TEST_F(ViewSecurity, HostHeaderMustNameThisServer) {
@@ -141,6 +194,8 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
         {"up=0,0,-1&eye=0,0,5&lookat=0,0,0", "up"},  {"size=100000x100000", "size"}, {"size=-64x36", "size"},
         {"spp=1000000000", "spp"},      {"fov=180", "fov"},            {"fov=0", "fov"},
         {"lookat=%00%ff", "lookat"},    {"frame=1", "frame"},          {"eye=2e15,0,0", "eye"},
+        // Hours of rendering from one request (view/render_cost.h).
+        {"size=8192x8192&spp=4096", "spp"}, {"size=1920x1080&spp=33", "spp"}, {"size=8192x8192", "size"},
     };
     for (const auto& [query, parameter] : cases) {
         for (const char* route : {"/frame.png?", "/frame.rgba?"}) {
@@ -152,7 +207,73 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
             EXPECT_NE(result->body.find("\"error\":"), std::string::npos) << result->body;
         }
     }
+    const httplib::Result explain = client->Get(viewer_->with_token("/explain?x=0&y=0&size=4096x4096&spp=64").c_str());
+    ASSERT_TRUE(explain);
+    EXPECT_EQ(explain->status, 400);
+    EXPECT_NE(explain->body.find("\"parameter\":\"spp\""), std::string::npos) << explain->body;
     EXPECT_EQ(client->Get(viewer_->with_token("/frame.png?size=16x9").c_str())->status, 200) << "still serving";
+}
+
+// cpp-httplib bounds a body by its Content-Length only: a chunked body would be read whole,
+// however large. It is refused before a byte of it is read (the answer comes while the body
+// has not ended), and the answer asks the client to close the connection.
+TEST_F(ViewSecurity, AChunkedBodyIsRefusedBeforeItIsRead) {
+    for (const std::string method : {"POST", "GET"}) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        // The headers and the first chunk of a body that never ends.
+        const std::string request = method + " " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                                    "\r\nOrigin: " + own_origin() +
+                                    "\r\nContent-Type: application/json\r\nTransfer-Encoding: chunked\r\n\r\n"
+                                    "100000\r\n" + std::string(4096, ' ');
+        ASSERT_EQ(::write(socket, request.data(), request.size()), static_cast<ssize_t>(request.size()));
+        const std::string answer = read_one_answer(socket, 10);
+        ::close(socket);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 411", 0), 0u) << method << ": " << answer.substr(0, 200);
+        EXPECT_NE(answer.find("\"error\":\"request bodies must have a Content-Length"), std::string::npos) << answer;
+        EXPECT_NE(answer.find("Connection: close"), std::string::npos) << answer;
+    }
+    EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
+}
+
+// A path the viewer answers, asked with another method: 405 and the methods it answers.
+TEST_F(ViewSecurity, WrongMethodsGet405WithAllow) {
+    auto client = viewer_->client();
+    const httplib::Headers origin = {{"Origin", own_origin()}};
+    const auto expect_405 = [](const httplib::Result& result, const std::string& allow, const std::string& what) {
+        ASSERT_TRUE(result) << what;
+        EXPECT_EQ(result->status, 405) << what;
+        EXPECT_EQ(result->get_header_value("Allow"), allow) << what;
+        EXPECT_NE(result->body.find("\"error\":"), std::string::npos) << what << ": " << result->body;
+    };
+    for (const char* path : {"/", "/frame.png", "/frame.rgba", "/scene.json", "/explain", "/job", "/viewer.js"}) {
+        const std::string address = viewer_->with_token(path);
+        expect_405(client->Post(address.c_str(), origin, "{}", "application/json"), "GET, HEAD", std::string("POST ") + path);
+        expect_405(client->Delete(address.c_str(), origin), "GET, HEAD", std::string("DELETE ") + path);
+    }
+    for (const char* path : {"/export", "/render-video"}) {
+        const std::string address = viewer_->with_token(path);
+        expect_405(client->Get(address.c_str()), "POST", std::string("GET ") + path);
+        expect_405(client->Put(address.c_str(), origin, "{}", "application/json"), "POST", std::string("PUT ") + path);
+        expect_405(client->Options(address.c_str(), origin), "POST", std::string("OPTIONS ") + path);
+    }
+    const httplib::Result nothing = client->Post(viewer_->with_token("/nothing").c_str(), origin, "{}", "application/json");
+    ASSERT_TRUE(nothing);
+    EXPECT_EQ(nothing->status, 404) << "a path the viewer does not answer";
+    // Without the token the method changes nothing: 403.
+    EXPECT_EQ(client->Delete("/scene.json", origin)->status, 403);
+}
+
+TEST_F(ViewSecurity, AJobIsNamedByItsWholeNumber) {
+    auto client = viewer_->client();
+    for (const char* id : {"1.5", "1e0", "0", "-1", "01", "%201", "1x", "9999999999"}) {
+        const httplib::Result result = client->Get(viewer_->with_token(std::string("/job?id=") + id).c_str());
+        ASSERT_TRUE(result) << id;
+        EXPECT_EQ(result->status, 400) << id;
+        EXPECT_NE(result->body.find("\"parameter\":\"id\""), std::string::npos) << id << ": " << result->body;
+    }
+    EXPECT_EQ(client->Get(viewer_->with_token("/job?id=1").c_str())->status, 404) << "no job yet";
+    EXPECT_EQ(client->Get(viewer_->with_token("/job").c_str())->status, 404);
 }
 
 TEST_F(ViewSecurity, TenClientsAtOnceBesideOnesThatHangUpStallOrReadSlowly) {

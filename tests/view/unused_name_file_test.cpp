@@ -1,0 +1,66 @@
+// The viewer's writes under the first free name of a series: never over a file, a folder or a
+// link, also when the name is taken between the look and the rename.
+#include "view/unused_name_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/errors.h"
+#include "support/temp_folder.h"
+
+namespace clr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_bytes;
+using testing::TempFolder;
+
+const auto kAnyName = [](const std::string&) {};
+
+TEST(UnusedNameFile, TakesTheFirstNameOfTheSeriesThatNoEntryHolds) {
+    TempFolder folder;
+    folder.write("tour.json", "mine");
+    fs::create_directory(folder.file("tour-2.json"));
+    fs::create_symlink("nowhere", folder.file("tour-3.json"));
+    const UnusedNameFile written = write_under_unused_name(folder.path(), "tour", ".json", {}, "new", kAnyName);
+    EXPECT_EQ(written.name, "tour-4");
+    EXPECT_EQ(written.path, folder.file("tour-4.json"));
+    EXPECT_EQ(read_bytes(folder.file("tour-4.json")), "new");
+    EXPECT_EQ(read_bytes(folder.file("tour.json")), "mine");
+    EXPECT_FALSE(fs::exists(folder.file("nowhere")));
+    EXPECT_EQ(folder.entry_count(), 4) << "no temporary file is left";
+}
+
+TEST(UnusedNameFile, SkipsANameWhoseCompanionIsTaken) {
+    TempFolder folder;
+    folder.write("clip.mp4", "a video");
+    const UnusedNameFile written = write_under_unused_name(folder.path(), "clip", ".json", {".mp4"}, "{}", kAnyName);
+    EXPECT_EQ(written.name, "clip-2");
+    EXPECT_FALSE(fs::exists(folder.file("clip.json")));
+}
+
+// A file made under the chosen name after it was found free is not replaced: the rename
+// itself refuses, and the next name is taken.
+TEST(UnusedNameFile, ANameTakenBeforeTheRenameIsNotReplaced) {
+    TempFolder folder;
+    const auto someone_else_writes = [&folder](const std::string& path) {
+        if (path == folder.file("race.json")) folder.write("race.json", "theirs");
+    };
+    const UnusedNameFile written = write_under_unused_name(folder.path(), "race", ".json", {}, "ours", someone_else_writes);
+    EXPECT_EQ(written.name, "race-2");
+    EXPECT_EQ(read_bytes(folder.file("race.json")), "theirs");
+    EXPECT_EQ(read_bytes(folder.file("race-2.json")), "ours");
+    EXPECT_EQ(folder.entry_count(), 2) << "no temporary file is left";
+}
+
+TEST(UnusedNameFile, RefusesWhenEveryNameIsTakenOrTheFolderIsMissing) {
+    TempFolder folder;
+    for (int n = 1; n <= kMostNameTries; ++n) folder.write(series_name("full", n) + ".json", "");
+    EXPECT_THROW(write_under_unused_name(folder.path(), "full", ".json", {}, "x", kAnyName), OutputError);
+    EXPECT_THROW(write_under_unused_name(folder.file("missing"), "x", ".json", {}, "x", kAnyName), OutputError);
+    EXPECT_EQ(folder.entry_count(), kMostNameTries);
+}
+
+}  // namespace
+}  // namespace clr
