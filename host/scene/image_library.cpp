@@ -8,6 +8,7 @@
 #include "core/parallel_for.h"
 #include "core/usable_cpus.h"
 #include "scene/bounded_file.h"
+#include "scene/file_names.h"
 
 namespace clr {
 namespace {
@@ -93,20 +94,13 @@ std::shared_ptr<const Image> ImageLibrary::image_for(const Node& filename) {
     return image.image;
 }
 
-// Relative to the scene file's folder; without its "." steps, so that "./a.png" and "a.png"
-// are one file. A name with ".." is kept as written: the system resolves it (through a
-// symbolic link "x", "x/../a.png" is not "a.png"), and so must the file read. A NUL (JSON
-// "\u0000") would end the name early for the file system, which would then open another file
-// than the one named.
+// Relative to the scene file's folder (scene/file_names.h). A NUL (JSON "\u0000") would end
+// the name early for the file system, which would then open another file than the one named.
 std::string ImageLibrary::path_of(const Node& filename) const {
     const std::string name = filename.string();
     if (name.find('\0') != std::string::npos)
         filename.fail("filename contains a NUL character (\\u0000), which no file name can hold");
-    const fs::path path(name);
-    const fs::path joined = path.is_absolute() ? path : scene_folder_ / path;
-    for (const fs::path& step : joined)
-        if (step == "..") return joined.string();
-    return joined.lexically_normal().string();
+    return path_in_folder(scene_folder_, name);
 }
 
 // The cost is taken whether or not the cache holds the image, so that whether a scene loads

@@ -6,6 +6,7 @@
 #include <new>
 
 #include "core/printable_text.h"
+#include "scene/file_names.h"
 #include "scene/mesh_cache.h"
 #include "scene/obj_reader.h"
 #include "scene/value_ranges.h"
@@ -177,10 +178,9 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     const MeshCache cache = MeshCache::from_environment();
     std::vector<std::string> paths;
     for (const PendingMesh& each : pending) {
-        const fs::path name(each.mesh.filename);
-        // Not lexically_normal(): "models/../m.obj" is opened as the system resolves it (through
-        // a symbolic link `models`, or not at all when there is no folder `models`).
-        paths.push_back((name.is_absolute() ? name : folder / name).string());
+        // "models/../m.obj" is opened as the system resolves it (through a symbolic link
+        // `models`, or not at all when there is no folder `models`): scene/file_names.h.
+        paths.push_back(path_in_folder(folder, each.mesh.filename));
     }
     // A file that several meshes place (one model, many copies) is read once, and its model
     // kept only until the last of them is placed.

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "output/output_roles.h"
+#include "scene/file_names.h"
 #include "scene/json_reader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_overrides.h"
@@ -34,7 +35,7 @@ void make_image_paths_absolute(nlohmann::json& value, const fs::path& scene_fold
         if (names_image && member.is_string()) {
             const fs::path image = member.get<std::string>();
             if (image.empty() || image.is_absolute()) continue;
-            member = (scene_folder / image).lexically_normal().string();
+            member = path_in_folder(scene_folder, image);  // the file the scene's load read
         } else {
             make_image_paths_absolute(member, scene_folder);
         }
