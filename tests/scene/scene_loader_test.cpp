@@ -352,6 +352,7 @@ TEST(SceneLoader, LoadsEachImageFileOnce) {
     TempFolder folder;
     write_ppm(folder, "a.ppm", 1, 1);
     write_ppm(folder, "b.ppm", 1, 1);
+    std::filesystem::create_directories(folder.file("sub"));  // ".." is the system's: sub must exist
     Json json = minimal_scene();
     json["billboards"] = {flat_billboard(), flat_billboard(), flat_billboard()};
     json["billboards"][0]["filename"] = "a.ppm";
