@@ -222,6 +222,21 @@ TEST(ImpostorFrames, HolesShowWhatIsBehindWhateverTheOrder) {
     EXPECT_TRUE(blue_behind);
 }
 
+// Each frame of the scene's camera path through one renderer, as an animation renders them:
+// the same bytes as the general brute-force kernel's, and the reference's image.
+void expect_frames_are_the_general_kernels_and_the_references(const Scene& scene, const std::string& what) {
+    RendererOptions general;
+    general.features = FeatureSet::all();
+    general.screen_tiles = false;
+    Renderer specialised(testing::test_device(), scene);
+    Renderer brute_force(testing::test_device(), scene, general);
+    for (const CameraKey& key : scene.camera_path) {
+        Image image = specialised.render(key);
+        EXPECT_EQ(image.rgba, brute_force.render(key).rgba) << what;
+        expect_matches_reference(image, reference::render(scene, reference::camera_of(scene, key)), what);
+    }
+}
+
 // Many impostors with a sun and a mirror: the BVH over the placed billboards (rebuilt every
 // frame) and the screen tiles give the general kernel's image, which matches the reference.
 TEST(ImpostorFrames, ForestWithSunAndMirrorEqualsTheGeneralKernel) {
@@ -235,16 +250,7 @@ TEST(ImpostorFrames, ForestWithSunAndMirrorEqualsTheGeneralKernel) {
     scene.spheres[0].is_mirror = true;
     ASSERT_TRUE(FeatureSet::of(scene).bvh);
     scene.camera_path.push_back({{-6, 2.5, 12}, {0, 1, 0}});  // a second frame, from elsewhere
-    RendererOptions general;
-    general.features = FeatureSet::all();
-    general.screen_tiles = false;
-    Renderer specialised(testing::test_device(), scene);
-    Renderer brute_force(testing::test_device(), scene, general);
-    for (const CameraKey& key : scene.camera_path) {
-        Image image = specialised.render(key);
-        EXPECT_EQ(image.rgba, brute_force.render(key).rgba);
-        expect_matches_reference(image, reference::render(scene, reference::camera_of(scene, key)), "forest");
-    }
+    expect_frames_are_the_general_kernels_and_the_references(scene, "forest");
 }
 
 // Large meshes have BVH trees of their own, built once (a copy of one file refitted), that
@@ -263,16 +269,7 @@ TEST(ImpostorFrames, LargeMeshesKeepTheirTreesWhileImpostorsTurn) {
     scene.spheres.push_back(testing::make_sphere({0, 0.8, 4}, 0.8, {0.6, 0.6, 0.6}));
     ASSERT_EQ(build_mesh_trees(scene).trees.size(), 3u) << "the test needs meshes large enough for trees";
     scene.camera_path.push_back({{-6, 2.5, 12}, {0, 1, 0}});
-    RendererOptions general;
-    general.features = FeatureSet::all();
-    general.screen_tiles = false;
-    Renderer specialised(testing::test_device(), scene);
-    Renderer brute_force(testing::test_device(), scene, general);
-    for (const CameraKey& key : scene.camera_path) {
-        Image image = specialised.render(key);
-        EXPECT_EQ(image.rgba, brute_force.render(key).rgba);
-        expect_matches_reference(image, reference::render(scene, reference::camera_of(scene, key)), "meshes");
-    }
+    expect_frames_are_the_general_kernels_and_the_references(scene, "meshes");
 }
 
 }  // namespace
