@@ -101,6 +101,9 @@ tests+=':Antialiasing.PartlyCovered*:Antialiasing.SameSeed*:ScreenTiles.FlatShad
 tests+=':ImpostorFrames*:Mirrors.MaxDepthZero*:FeatureVariants.SpheresOnly:FeatureVariants.BillboardsOnlyWithAlpha'
 tests+=':FeatureVariants.SunAndMirrors:FeatureVariants.EmptyScene:CoverageMask.*'
 tests+=':Course/*grads*:Course/*Undergrad*:Course/*v1_*:Course/*mickey*:Course/*SingleBB*:Course/*close*:Course/*scene1*'
+# Left out: thousands of triangles through the brute-force kernel on one simulated thread; the
+# mesh trees it checks are host code (SceneBvh tests), and the kernels run on the forest test.
+tests+='-ImpostorFrames.LargeMeshesKeepTheirTreesWhileImpostorsTurn'
 # Oclgrind simulates on one thread: the tests run as one gtest shard per CPU, side by side.
 shards="$(nproc)"
 pids=()
