@@ -16,6 +16,7 @@
 #include "core/errors.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
+#include "view/bounded_server.h"
 
 extern char** environ;
 
@@ -97,7 +98,7 @@ void warn_about_bind(const std::string& bind) {
 void serve_view(const ServerSettings& settings, const std::string& token, const Scene& scene, RenderService& renderer,
                 const PathExporter& exporter, VideoJobs& videos) {
     warn_about_bind(settings.bind);
-    httplib::Server server;
+    BoundedServer server;  // cpp-httplib's, with limits on a request's head and time
     int listening = -1;
     configure(server, listening);
     const std::string bind_address =

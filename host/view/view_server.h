@@ -2,8 +2,9 @@
 // with its address and token, opens the browser, and serves until SIGINT, SIGTERM or SIGHUP;
 // then it stops accepting, finishes or drops the requests in flight, stops a video render,
 // joins its threads and returns. Requests are served by a bounded pool of threads with read
-// and write timeouts and a limit on request bodies, so that many tabs, a client that
-// disconnects or a slow reader cannot stall the others.
+// and write timeouts and limits on a request's head, body and time (view/bounded_server), so
+// that many tabs, a client that disconnects, a slow reader or one that never ends its request
+// cannot stall the others or fill the memory.
 #pragma once
 
 #include <string>

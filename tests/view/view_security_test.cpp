@@ -236,6 +236,77 @@ TEST_F(ViewSecurity, AChunkedBodyIsRefusedBeforeItIsRead) {
     EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
 }
 
+// A request line that never ends: the server stops reading it at the head's limit (64 KiB,
+// view/bounded_server.h) and closes the connection, answering 431, instead of keeping it
+// all in memory. Without the limit the server would read all 32 MB.
+TEST_F(ViewSecurity, AnEndlessRequestLineIsCutAtTheHeadsLimit) {
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const std::string block(64 * 1024, 'G');
+    std::size_t sent = 0;
+    while (sent < 32u * 1024 * 1024) {
+        const ssize_t wrote = ::send(socket, block.data(), block.size(), MSG_NOSIGNAL);
+        if (wrote <= 0) break;
+        sent += static_cast<std::size_t>(wrote);
+    }
+    const std::string answer = read_one_answer(socket, 5);
+    ::close(socket);
+    EXPECT_LT(sent, 16u * 1024 * 1024) << "the server went on reading";
+    // The answer may be lost when the client's unread bytes reset the connection.
+    if (!answer.empty()) {
+        EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
+    }
+    EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
+}
+
+// Headers that go on and on, each line short: the same limit, with its answer.
+TEST_F(ViewSecurity, EndlessHeadersGet431) {
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    std::string request = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n";
+    for (int i = 0; request.size() < 70 * 1024; ++i) request += "X-Filler-" + std::to_string(i) + ": 0123456789\r\n";
+    ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+    const std::string answer = read_one_answer(socket, 5);
+    ::close(socket);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
+}
+
+// A client that sends its request a byte at a time, each byte well within the read timeout:
+// its request ends kRequestSeconds (10 s) after it began, with 408, rather than holding one
+// of the server's threads for as long as it goes on.
+TEST_F(ViewSecurity, ATrickledRequestEndsAtItsDeadline) {
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const auto start = std::chrono::steady_clock::now();
+    std::string answer;
+    const std::string request = "GET " + viewer_->with_token("/scene.json") + "&" + std::string(200, 'x');
+    for (std::size_t k = 0; k < request.size() && answer.empty(); ++k) {
+        if (::send(socket, &request[k], 1, MSG_NOSIGNAL) != 1) break;
+        pollfd ready{socket, POLLIN, 0};
+        if (::poll(&ready, 1, 500) > 0) answer = read_one_answer(socket, 2);
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ::close(socket);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 408", 0), 0u) << answer.substr(0, 200);
+    EXPECT_GE(seconds, 9.5);
+    EXPECT_LT(seconds, 30.0);
+}
+
+// Two requests sent together on one connection: both are answered, in order.
+TEST_F(ViewSecurity, PipelinedRequestsAreEachAnswered) {
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const std::string first = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
+    const std::string second = "GET /nothing HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
+    const std::string both = first + second;
+    ASSERT_EQ(::send(socket, both.data(), both.size(), MSG_NOSIGNAL), static_cast<ssize_t>(both.size()));
+    const std::string answer = read_one_answer(socket, 5);
+    const std::string next = answer.size() > 0 ? read_one_answer(socket, 5) : "";
+    ::close(socket);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << answer.substr(0, 200);
+    EXPECT_NE((answer + next).find("HTTP/1.1 403"), std::string::npos) << "the second request, without the token";
+}
+
 // A path the viewer answers, asked with another method: 405 and the methods it answers.
 TEST_F(ViewSecurity, WrongMethodsGet405WithAllow) {
     auto client = viewer_->client();

@@ -1,0 +1,187 @@
+#include "view/bounded_server.h"
+
+#include <netdb.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+
+namespace clr {
+namespace {
+
+// Waits up to `ms` for `events` on `socket`: > 0 when ready, 0 when the time ran out, < 0 on
+// an error.
+int wait_for(int socket, short events, int ms) {
+    pollfd entry{socket, events, 0};
+    int ready;
+    do ready = ::poll(&entry, 1, ms);
+    while (ready < 0 && errno == EINTR);
+    return ready;
+}
+
+// The numeric address and port of a socket address, as cpp-httplib gives them to a request
+// (ClientConnection finds the socket by them).
+void numeric_address(const sockaddr_storage& address, socklen_t length, std::string& ip, int& port) {
+    if (address.ss_family == AF_INET)
+        port = ntohs(reinterpret_cast<const sockaddr_in*>(&address)->sin_port);
+    else if (address.ss_family == AF_INET6)
+        port = ntohs(reinterpret_cast<const sockaddr_in6*>(&address)->sin6_port);
+    std::array<char, NI_MAXHOST> text{};
+    if (::getnameinfo(reinterpret_cast<const sockaddr*>(&address), length, text.data(), text.size(), nullptr, 0,
+                      NI_NUMERICHOST) == 0)
+        ip = text.data();
+}
+
+// Waits, as cpp-httplib does between the requests of a kept-alive connection, until the next
+// request's first bytes arrive (true), or the connection is idle for `idle` or the server
+// stops (false).
+bool next_request_arrives(int socket, std::chrono::milliseconds idle, const std::atomic<socket_t>& listening) {
+    const auto give_up = std::chrono::steady_clock::now() + idle;
+    while (listening != INVALID_SOCKET) {
+        const int ready = wait_for(socket, POLLIN, 50);
+        if (ready != 0) return ready > 0;  // bytes, or the client's end (read as such)
+        if (std::chrono::steady_clock::now() >= give_up) return false;
+    }
+    return false;
+}
+
+}  // namespace
+
+RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
+                             std::chrono::milliseconds write_timeout, std::size_t most_body_bytes)
+    : socket_(socket), read_timeout_(read_timeout), write_timeout_(write_timeout), most_body_bytes_(most_body_bytes) {
+    start_request();
+}
+
+void RequestStream::start_request() {
+    request_deadline_ = Clock::now() + std::chrono::seconds(kRequestSeconds);
+    answering_ = false;
+    head_done_ = false;
+    head_end_matched_ = 0;
+    head_bytes_ = body_bytes_ = 0;
+}
+
+int RequestStream::wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    return static_cast<int>(std::max<std::chrono::milliseconds::rep>(0, std::min(timeout, left).count()));
+}
+
+bool RequestStream::is_readable() const {
+    return buffer_at_ < buffered_ || wait_for(socket_, POLLIN, wait_ms(read_timeout_, request_deadline_)) > 0;
+}
+
+bool RequestStream::is_writable() const {
+    const auto deadline = answering_ ? answer_deadline_ : Clock::now() + std::chrono::seconds(kAnswerSeconds);
+    return wait_for(socket_, POLLOUT, wait_ms(write_timeout_, deadline)) > 0;
+}
+
+// The head ends at its first empty line: a line feed, then a line feed or a carriage return
+// and a line feed. (cpp-httplib ends the headers at an empty line ending in CR LF.)
+bool RequestStream::take(const char* bytes, std::size_t count) {
+    std::size_t k = 0;
+    for (; k < count && !head_done_; ++k) {
+        if (++head_bytes_ > kMostHeadBytes) return false;
+        const char c = bytes[k];
+        if (head_end_matched_ == 0)
+            head_end_matched_ = c == '\n' ? 1 : 0;
+        else if (head_end_matched_ == 1)
+            head_end_matched_ = c == '\n' ? 3 : c == '\r' ? 2 : 0;
+        else
+            head_end_matched_ = c == '\n' ? 3 : 0;
+        head_done_ = head_end_matched_ == 3;
+    }
+    body_bytes_ += count - k;
+    return body_bytes_ <= most_body_bytes_;
+}
+
+ssize_t RequestStream::refuse(const char* status_line) {
+    limit_reached_ = true;
+    if (!answering_) {
+        const std::string answer = std::string(status_line) +
+                                   "\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: 0\r\n\r\n";
+        if (wait_for(socket_, POLLOUT, 1000) > 0) (void)::send(socket_, answer.data(), answer.size(), MSG_NOSIGNAL);
+        answering_ = true;
+    }
+    ::shutdown(socket_, SHUT_RD);
+    return -1;
+}
+
+ssize_t RequestStream::read(char* ptr, std::size_t size) {
+    if (limit_reached_) return -1;
+    if (buffer_at_ == buffered_) {
+        // However steadily a client trickles its bytes, its request ends at the deadline.
+        if (Clock::now() >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
+        const int ready = wait_for(socket_, POLLIN, wait_ms(read_timeout_, request_deadline_));
+        if (ready == 0 && Clock::now() >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
+        if (ready <= 0) return -1;
+        ssize_t got;
+        do got = ::recv(socket_, buffer_, sizeof buffer_, 0);
+        while (got < 0 && errno == EINTR);
+        if (got <= 0) return got;
+        buffered_ = static_cast<std::size_t>(got);
+        buffer_at_ = 0;
+    }
+    const std::size_t count = std::min(size, buffered_ - buffer_at_);
+    const char* bytes = buffer_ + buffer_at_;
+    const bool head_was_done = head_done_;
+    if (!take(bytes, count))
+        return refuse(head_done_ || head_was_done ? "HTTP/1.1 413 Payload Too Large"
+                                                  : "HTTP/1.1 431 Request Header Fields Too Large");
+    std::memcpy(ptr, bytes, count);
+    buffer_at_ += count;
+    return static_cast<ssize_t>(count);
+}
+
+ssize_t RequestStream::write(const char* ptr, std::size_t size) {
+    if (!answering_) {
+        answering_ = true;
+        answer_deadline_ = Clock::now() + std::chrono::seconds(kAnswerSeconds);
+    }
+    if (wait_for(socket_, POLLOUT, wait_ms(write_timeout_, answer_deadline_)) <= 0) return -1;
+    ssize_t sent;
+    do sent = ::send(socket_, ptr, size, MSG_NOSIGNAL);
+    while (sent < 0 && errno == EINTR);
+    return sent;
+}
+
+void RequestStream::get_remote_ip_and_port(std::string& ip, int& port) const {
+    sockaddr_storage address{};
+    socklen_t length = sizeof address;
+    if (::getpeername(socket_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+        numeric_address(address, length, ip, port);
+}
+
+void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
+    sockaddr_storage address{};
+    socklen_t length = sizeof address;
+    if (::getsockname(socket_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+        numeric_address(address, length, ip, port);
+}
+
+// cpp-httplib's own loop over a connection's requests (process_server_socket in 0.11.4), with
+// one RequestStream for the whole connection: bytes of a next request that arrived with the
+// last one stay in its buffer.
+bool BoundedServer::process_and_close_socket(socket_t socket) {
+    using std::chrono::milliseconds;
+    RequestStream stream(socket, milliseconds(read_timeout_sec_ * 1000 + read_timeout_usec_ / 1000),
+                         milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_);
+    bool served = false;
+    for (std::size_t left = keep_alive_max_count_; left > 0; --left) {
+        if (!stream.has_buffered_bytes() && !next_request_arrives(socket, milliseconds(keep_alive_timeout_sec_ * 1000), svr_sock_))
+            break;
+        stream.start_request();
+        bool connection_closed = false;
+        served = process_request(stream, left == 1, connection_closed, nullptr);
+        if (!served || connection_closed || stream.limit_reached()) break;
+    }
+    ::shutdown(socket, SHUT_RDWR);
+    ::close(socket);
+    return served;
+}
+
+}  // namespace clr

@@ -1,0 +1,81 @@
+// cpp-httplib's server with limits on what one request may cost the viewer before a route
+// sees it. cpp-httplib 0.11.4 (Debian 12) bounds a request's body by payload_max_length, but
+// not its head: a request line that never ends grows in memory as fast as a client sends it,
+// and a client that trickles a byte every few seconds keeps one of the server's threads for
+// ever. BoundedServer reads every connection through a stream of its own (RequestStream) that
+//   - ends the head of a request (request line and headers) at kMostHeadBytes, answering 431;
+//   - ends a request that has not arrived whole within kRequestSeconds of its first byte,
+//     answering 408;
+//   - ends an answer that the client has not taken within kAnswerSeconds;
+// and otherwise serves the connection as cpp-httplib does (keep-alive, its timeouts).
+// docs/command-line.md (Viewer, Limits) lists the figures.
+#pragma once
+
+#include <httplib.h>
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+
+namespace clr {
+
+// Largest head of a request: its request line and headers together.
+constexpr std::size_t kMostHeadBytes = 64 * 1024;
+// Longest a request (head and body) may take to arrive, from its first byte.
+constexpr int kRequestSeconds = 10;
+// Longest an answer may take to leave, from its first byte.
+constexpr int kAnswerSeconds = 60;
+
+// One connection's bytes as cpp-httplib reads and writes them, within the limits above.
+// `read_timeout` and `write_timeout` bound each wait, as cpp-httplib's own stream does.
+class RequestStream : public httplib::Stream {
+public:
+    RequestStream(int socket, std::chrono::milliseconds read_timeout, std::chrono::milliseconds write_timeout,
+                  std::size_t most_body_bytes);
+
+    // The next request starts: its limits count from here.
+    void start_request();
+    // Whether a limit ended the request (the client got 431 or 408 and the connection closes).
+    bool limit_reached() const { return limit_reached_; }
+    // Whether bytes that arrived are not read yet (a next request sent with the last one).
+    bool has_buffered_bytes() const { return buffer_at_ < buffered_; }
+
+    bool is_readable() const override;
+    bool is_writable() const override;
+    ssize_t read(char* ptr, std::size_t size) override;
+    ssize_t write(const char* ptr, std::size_t size) override;
+    void get_remote_ip_and_port(std::string& ip, int& port) const override;
+    void get_local_ip_and_port(std::string& ip, int& port) const override;
+    int socket() const override { return socket_; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    // Milliseconds to wait for the socket: `timeout`, or less where `deadline` comes first.
+    int wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const;
+    // Answers `status_line` with an empty body, closes the connection's reading, and fails.
+    ssize_t refuse(const char* status_line);
+    // Counts bytes handed to cpp-httplib: the head ends at its empty line (CR LF CR LF).
+    bool take(const char* bytes, std::size_t count);
+
+    int socket_;
+    std::chrono::milliseconds read_timeout_, write_timeout_;
+    std::size_t most_body_bytes_;
+    char buffer_[4096];
+    std::size_t buffered_ = 0, buffer_at_ = 0;
+    // This request's progress.
+    bool started_ = false;
+    Clock::time_point request_deadline_, answer_deadline_;
+    bool answering_ = false;
+    bool head_done_ = false;
+    int head_end_matched_ = 0;  // how much of CR LF CR LF the last bytes matched
+    std::size_t head_bytes_ = 0, body_bytes_ = 0;
+    bool limit_reached_ = false;
+};
+
+// httplib::Server whose connections are read through RequestStream.
+class BoundedServer : public httplib::Server {
+private:
+    bool process_and_close_socket(socket_t socket) override;
+};
+
+}  // namespace clr
