@@ -11,21 +11,23 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <thread>
 
 #include "core/errors.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "view/bounded_server.h"
+#include "view/opener_page.h"
 
 extern char** environ;
 
 namespace clr {
 namespace {
 
-// Opens `url` with xdg-open, in a session of its own so that the browser it starts is not
+// Opens `target` with xdg-open, in a session of its own so that the browser it starts is not
 // ours to stop. Returns its pid, or -1 (with a warning) when it cannot start.
-pid_t open_browser(const std::string& url) {
+pid_t open_browser(const std::string& target) {
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -40,7 +42,7 @@ pid_t open_browser(const std::string& url) {
     posix_spawnattr_setsigdefault(&attributes, &signals);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSID);
     pid_t pid = -1;
-    const char* argv[] = {"xdg-open", url.c_str(), nullptr};
+    const char* argv[] = {"xdg-open", target.c_str(), nullptr};
     const int error = ::posix_spawnp(&pid, "xdg-open", &actions, &attributes, const_cast<char**>(argv), environ);
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
@@ -133,7 +135,18 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     }
     const std::string url = "http://" + url_host(settings.bind) + ":" + std::to_string(port) + "/?token=" + token;
     std::cout << "clrender: view at " << url << std::endl;
-    pid_t opener = settings.open_browser ? open_browser(url) : -1;
+    // xdg-open gets a page that only this user can read, which forwards the browser to the
+    // address: never the address itself, whose token every user could read in its arguments.
+    std::string why;
+    const std::optional<OpenerPage> page = settings.open_browser ? OpenerPage::write(url, why) : std::nullopt;
+    pid_t opener = -1;
+    if (settings.open_browser) {
+        if (page)
+            opener = open_browser(page->path());
+        else
+            std::cerr << "clrender: warning: cannot open the browser (" << printable(why)
+                      << "); open the address above yourself\n";
+    }
     while (!interruption_requested()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
         reap_browser_opener(opener);

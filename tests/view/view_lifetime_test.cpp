@@ -144,13 +144,28 @@ TEST(ViewLifetime, OpensTheBrowserWithTheAddressAndGoesOnWithoutOne) {
     // A stand-in for xdg-open that records what it was asked to open.
     folder.write("bin/xdg-open", "#!/bin/sh\necho \"$1\" > '" + folder.file("opened.txt") + "'\n");
     fs::permissions(folder.file("bin/xdg-open"), fs::perms::owner_all);
-    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path(), "PATH='" + folder.file("bin") + "'", true);
+    fs::create_directories(folder.file("run"));
+    fs::permissions(folder.file("run"), fs::perms::owner_all);
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path(),
+                         "PATH='" + folder.file("bin") + "' XDG_RUNTIME_DIR='" + folder.file("run") + "'", true);
     ASSERT_TRUE(viewer.started()) << viewer.output();
     for (int i = 0; i < 500 && read_bytes(folder.file("opened.txt")).empty(); ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    EXPECT_EQ(read_bytes(folder.file("opened.txt")),
-              "http://127.0.0.1:" + std::to_string(viewer.port()) + "/?token=" + viewer.token() + "\n");
+    // xdg-open (and the browser it starts) get a page's path, not the token, which any user
+    // could read in their arguments; the page, its owner's alone, forwards to the address.
+    std::string opened = read_bytes(folder.file("opened.txt"));
+    ASSERT_FALSE(opened.empty());
+    opened.pop_back();  // the newline
+    EXPECT_EQ(opened.find(viewer.token()), std::string::npos) << opened;
+    EXPECT_EQ(fs::path(opened).parent_path().parent_path(), fs::path(folder.file("run"))) << opened;
+    EXPECT_EQ(fs::status(opened).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+    EXPECT_EQ(fs::status(fs::path(opened).parent_path()).permissions() & fs::perms::all, fs::perms::owner_all);
+    const std::string address = "http://127.0.0.1:" + std::to_string(viewer.port()) + "/?token=" + viewer.token();
+    EXPECT_NE(read_bytes(opened).find("<meta http-equiv=\"refresh\" content=\"0;url=" + address + "\">"),
+              std::string::npos)
+        << read_bytes(opened);
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_FALSE(fs::exists(fs::path(opened).parent_path())) << "the page and its folder are removed";
     // Without xdg-open: a warning, and the viewer serves all the same.
     ViewerProcess without("'" + kDemoScene + "' --size 16x9", folder.path(), "PATH=/nonexistent", true);
     ASSERT_TRUE(without.started()) << without.output();
