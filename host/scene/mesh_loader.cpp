@@ -1,9 +1,11 @@
 #include "scene/mesh_loader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <new>
+#include <vector>
 
 #include "core/printable_text.h"
 #include "scene/file_names.h"
@@ -105,6 +107,12 @@ bool any_triangle_has_area(const ObjMesh& model) {
 // Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
 // once placed are left out: no ray can hit them, and their plane has no normal. `what` names
 // the model in messages ("mesh 'bunny.obj'").
+// Makes room for `extra` more elements, at least doubling the capacity when it grows.
+template <typename T>
+void reserve_more(std::vector<T>& values, std::size_t extra) {
+    if (values.size() + extra > values.capacity()) values.reserve(std::max(values.size() + extra, 2 * values.capacity()));
+}
+
 void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename, const std::string& what) {
     std::vector<Vec3> placed(model.positions.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {
@@ -123,6 +131,11 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
         filename.fail(what + " brings the scene's triangles to " +
                       std::to_string(scene.triangles.size() + model.triangles.size()) + ", more than the limit of " +
                       std::to_string(kMaxSceneTriangles));
+    // Room for the whole model at once (a million triangles grown one at a time would be
+    // copied about twenty times), doubling as before when many models are placed.
+    reserve_more(scene.triangles, model.triangles.size());
+    if (!model.triangle_normals.empty() && model.triangle_normals.front()[0] >= 0)
+        reserve_more(scene.corner_normals, model.triangles.size());
     for (std::size_t f = 0; f < model.triangles.size(); ++f) {
         Triangle triangle;
         for (int k = 0; k < 3; ++k) triangle.corners[k] = placed[model.triangles[f][k]];
