@@ -50,6 +50,23 @@ bool next_request_arrives(int socket, std::chrono::milliseconds idle, const std:
     return false;
 }
 
+// After a refusal the client may still be sending. Closing with its bytes unread makes the
+// system reset the connection, and a reset can destroy the answer before the client reads it.
+// So the server stops writing and drops what still comes for up to a second (64 KiB at most;
+// what a web server calls a lingering close), then closes.
+void linger_before_close(int socket) {
+    ::shutdown(socket, SHUT_WR);
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    char scratch[4096];
+    for (std::size_t dropped = 0; dropped < 64 * 1024;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
+        if (left.count() <= 0 || wait_for(socket, POLLIN, static_cast<int>(left.count())) <= 0) break;
+        const ssize_t got = ::recv(socket, scratch, sizeof scratch, 0);
+        if (got <= 0) break;
+        dropped += static_cast<std::size_t>(got);
+    }
+}
+
 }  // namespace
 
 RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
@@ -67,7 +84,7 @@ void RequestStream::start_request() {
 }
 
 int RequestStream::wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
     return static_cast<int>(std::max<std::chrono::milliseconds::rep>(0, std::min(timeout, left).count()));
 }
 
@@ -107,7 +124,6 @@ ssize_t RequestStream::refuse(const char* status_line) {
         if (wait_for(socket_, POLLOUT, 1000) > 0) (void)::send(socket_, answer.data(), answer.size(), MSG_NOSIGNAL);
         answering_ = true;
     }
-    ::shutdown(socket_, SHUT_RD);
     return -1;
 }
 
@@ -115,9 +131,12 @@ ssize_t RequestStream::read(char* ptr, std::size_t size) {
     if (limit_reached_) return -1;
     if (buffer_at_ == buffered_) {
         // However steadily a client trickles its bytes, its request ends at the deadline.
-        if (Clock::now() >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
+        const auto now = Clock::now();
+        if (now >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
+        // A wait that the deadline cuts short and that ends with nothing is the deadline.
+        const bool deadline_first = request_deadline_ - now <= read_timeout_;
         const int ready = wait_for(socket_, POLLIN, wait_ms(read_timeout_, request_deadline_));
-        if (ready == 0 && Clock::now() >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
+        if (ready == 0 && deadline_first) return refuse("HTTP/1.1 408 Request Timeout");
         if (ready <= 0) return -1;
         ssize_t got;
         do got = ::recv(socket_, buffer_, sizeof buffer_, 0);
@@ -179,6 +198,7 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
         served = process_request(stream, left == 1, connection_closed, nullptr);
         if (!served || connection_closed || stream.limit_reached()) break;
     }
+    if (stream.limit_reached()) linger_before_close(socket);
     ::shutdown(socket, SHUT_RDWR);
     ::close(socket);
     return served;

@@ -52,7 +52,7 @@ private:
     using Clock = std::chrono::steady_clock;
     // Milliseconds to wait for the socket: `timeout`, or less where `deadline` comes first.
     int wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const;
-    // Answers `status_line` with an empty body, closes the connection's reading, and fails.
+    // Answers `status_line` with an empty body and fails: the connection closes.
     ssize_t refuse(const char* status_line);
     // Counts bytes handed to cpp-httplib: the head ends at its empty line (CR LF CR LF).
     bool take(const char* bytes, std::size_t count);

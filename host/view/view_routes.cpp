@@ -244,8 +244,11 @@ RequestFacts request_facts(const Request& request) {
     RequestFacts facts;
     facts.method = request.method;
     facts.path = request.path;
-    if (request.has_header("Host")) facts.host = request.get_header_value("Host");
-    if (request.has_header("Origin")) facts.origin = request.get_header_value("Origin");
+    // A request has one Host and at most one Origin (RFC 9110). One given twice names no server
+    // and no page: which of the two another program along the way would read is anyone's guess.
+    if (request.get_header_value_count("Host") == 1) facts.host = request.get_header_value("Host");
+    if (request.has_header("Origin"))
+        facts.origin = request.get_header_value_count("Origin") == 1 ? request.get_header_value("Origin") : "";
     const auto [first, last] = request.params.equal_range("token");
     for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
     return facts;

@@ -151,6 +151,37 @@ TEST_F(ViewSecurity, HostHeaderMustNameThisServer) {
         EXPECT_EQ(client->Get(viewer_->with_token("/scene.json").c_str(), {{"Host", host}})->status, 200) << host;
 }
 
+// Host or Origin given twice, the first naming this server: refused, whichever comes first.
+TEST_F(ViewSecurity, AHostOrOriginGivenTwiceIsRefused) {
+    const std::string get = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\n";
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "twice_check"})";
+    const std::string post = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                             "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) + "\r\n";
+    const std::vector<std::string> requests = {
+        get + "Host: " + own_host() + "\r\nHost: evil.example\r\n\r\n",
+        get + "Host: evil.example\r\nHost: " + own_host() + "\r\n\r\n",
+        get + "Host: " + own_host() + "\r\nHost: " + own_host() + "\r\n\r\n",
+        post + "Origin: " + own_origin() + "\r\nOrigin: http://evil.example\r\n\r\n" + body,
+        post + "Origin: " + own_origin() + "\r\nOrigin: " + own_origin() + "\r\n\r\n" + body,
+    };
+    for (const std::string& request : requests) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        const std::string answer = read_one_answer(socket, 5);
+        ::close(socket);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 403", 0), 0u) << request << "\n" << answer.substr(0, 200);
+    }
+    EXPECT_FALSE(fs::exists(folder_->file("twice_check.json")));
+    // The same requests with each header once are served.
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const std::string once = get + "Host: " + own_host() + "\r\n\r\n";
+    ASSERT_EQ(::send(socket, once.data(), once.size(), MSG_NOSIGNAL), static_cast<ssize_t>(once.size()));
+    EXPECT_EQ(read_one_answer(socket, 5).rfind("HTTP/1.1 200", 0), 0u);
+    ::close(socket);
+}
+
 TEST_F(ViewSecurity, PostsMustComeFromTheViewersOwnPage) {
     auto client = viewer_->client();
     const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "origin_check"})";
