@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -319,8 +320,12 @@ inline Float3 edge_cross(Float3 p, Float3 q) {
 }
 
 // kernels/common/math.cl color_to_byte().
+// The clamp written as comparisons and the floor of a non-negative value as the conversion's
+// truncation: the same bytes (a NaN still gives 0) without libm's fminf, fmaxf and floorf
+// calls, which were most of a flat frame's shading in the peer.
 inline std::uint8_t color_to_byte(float c) {
-    return static_cast<std::uint8_t>(std::floor(std::fmin(std::fmax(c, 0.0f), 1.0f) * 255.0f + 0.5f));
+    const float clamped = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+    return static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
 }
 
 // A shadow ray leaving a surface ignores hits nearer than this share of its origin's distance
@@ -451,12 +456,26 @@ private:
             rtcInitIntersectContext(&context);
             rtcOccluded16(shadow_valid, scene_, &context, &shadow);
         }
+        // A packet's lanes mostly see one object: its flat colour's bytes are made once.
+        std::uint32_t flat_id = ~0u;
+        std::uint8_t flat[3] = {0, 0, 0};
         for (int lane = 0; lane < 16; ++lane) {
             if (!valid[lane]) continue;
             int col = left + lane % kPacketSide, row = top + lane / kPacketSide;
             std::size_t pixel = static_cast<std::size_t>(row) * camera_.width + col;
             bool shadowed = shadow_valid[lane] && shadow.tfar[lane] < 0.0f;  // rtcOccluded16 sets -inf
             float scale = cosine[lane] <= 0.0f || shadowed ? 0.0f : cosine[lane];
+            if (scale == 1.0f) {  // flat, as every lane of an unlit scene
+                if (ids[pixel] != flat_id) {
+                    flat_id = ids[pixel];
+                    Color color = id_color(flat_id);
+                    flat[0] = color_to_byte(static_cast<float>(color.x));
+                    flat[1] = color_to_byte(static_cast<float>(color.y));
+                    flat[2] = color_to_byte(static_cast<float>(color.z));
+                }
+                std::memcpy(&rgb[3 * pixel], flat, 3);
+                continue;
+            }
             Color color = id_color(ids[pixel]);
             rgb[3 * pixel + 0] = color_to_byte(static_cast<float>(color.x) * scale);
             rgb[3 * pixel + 1] = color_to_byte(static_cast<float>(color.y) * scale);
