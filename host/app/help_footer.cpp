@@ -26,6 +26,8 @@ Environment:
   POCL_CACHE_DIR             PoCL's kernel cache; default $XDG_CACHE_HOME/pocl, else
                              ~/.cache/pocl: named when PoCL cannot write it
   POCL_KERNEL_CACHE          0: PoCL keeps no kernel cache (then its folder is not needed)
+  XDG_RUNTIME_DIR            clrender view: folder for the page that opens the browser (the
+                             user's own); default the temporary folder
 
 Exit status:
   0    Done
