@@ -1,11 +1,16 @@
 #include "render/tile_lists.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <new>
+#include <string>
 #include <utility>
 
+#include "core/errors.h"
 #include "core/parallel_for.h"
 #include "render/screen_tiles.h"
 
@@ -32,6 +37,31 @@ std::uint32_t entry_count(std::uint64_t count) {
 }
 
 }  // namespace
+
+TileLister::TileLister(std::uint64_t memory_budget) : memory_budget_(memory_budget) {}
+
+std::uint64_t TileLister::default_tile_memory_budget() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page_size = ::sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page_size <= 0) return std::numeric_limits<std::uint64_t>::max();
+    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 2;
+}
+
+void TileLister::check_budget(std::uint64_t entries, std::uint64_t row_entries, std::uint64_t tiles) const {
+    constexpr std::uint64_t kEntryBytes = sizeof(std::uint32_t) + sizeof(float) + sizeof(std::uint32_t);
+    const std::uint64_t bytes = entries * kEntryBytes + row_entries * sizeof(RowEntry);
+    if (bytes <= memory_budget_) return;
+    auto gib = [](std::uint64_t b) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f GiB", static_cast<double>(b) / (1024.0 * 1024.0 * 1024.0));
+        return std::string(text);
+    };
+    throw Error("out of memory: the screen tiles of this frame would list " + std::to_string(entries) +
+                    " objects (" + gib(bytes) + ", more than the " + gib(memory_budget_) +
+                    " they may take: half of this machine's memory): its objects overlap on the screen " +
+                    std::to_string(entries / std::max<std::uint64_t>(1, tiles)) +
+                    " deep on average (docs/robustness.md, Memory)",
+                kExitOutOfMemory);
+}
 
 void list_in_tiles(const std::vector<TileSpan>& spans, std::size_t threads, ScreenTiles& tiles) {
     TileLister().list(spans, threads, tiles);
@@ -69,7 +99,7 @@ void TileLister::sort_nearest_first(const std::vector<TileSpan>& spans, std::siz
 // chunk by chunk: each chunk counts its spans per row, and then writes them where the chunks
 // before it in that row end, so that every row keeps the spans' order whichever thread writes
 // which chunk.
-void TileLister::split_into_rows(int tiles_y, std::size_t threads) {
+void TileLister::split_into_rows(int tiles_x, int tiles_y, std::size_t threads) {
     const std::size_t chunks = chunk_count(sorted_.size());
     chunk_rows_.assign(chunks * tiles_y, 0);
     chunk_entries_.assign(chunks * tiles_y, 0);
@@ -84,6 +114,12 @@ void TileLister::split_into_rows(int tiles_y, std::size_t threads) {
             }
         });
     });
+    std::uint64_t all_rows = 0, all_entries = 0;
+    for (std::size_t k = 0; k < chunk_rows_.size(); ++k) {
+        all_rows += chunk_rows_[k];
+        all_entries += chunk_entries_[k];
+    }
+    check_budget(all_entries, all_rows, tiles_x * static_cast<std::uint64_t>(tiles_y));
     row_starts_.resize(static_cast<std::size_t>(tiles_y) + 1);
     row_first_entry_.resize(static_cast<std::size_t>(tiles_y) + 1);
     std::uint64_t total = 0, total_entries = 0;
@@ -113,7 +149,7 @@ void TileLister::split_into_rows(int tiles_y, std::size_t threads) {
 
 void TileLister::list(const std::vector<TileSpan>& spans, std::size_t threads, ScreenTiles& tiles) {
     sort_nearest_first(spans, threads);
-    split_into_rows(tiles.tiles_y, threads);
+    split_into_rows(tiles.tiles_x, tiles.tiles_y, threads);
     // Each task takes a tile row and writes only its tiles' offsets and entries, which follow
     // the rows before it: it counts its spans per tile, then lists them nearest first. Flat
     // arrays, without a list per tile: a vector per tile (thousands at 1080p) would be

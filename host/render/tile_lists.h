@@ -34,7 +34,16 @@ void list_in_tiles(const std::vector<TileSpan>& spans, std::size_t threads, Scre
 // from the system cost a page fault and a zero fill per 4 KB every frame.
 class TileLister {
 public:
+    // `memory_budget`: the most bytes the lists of one frame may take (default: half of this
+    // machine's memory). Objects that overlap on the screen thousands deep (a file of one
+    // triangle repeated 200,000 times, each covering the screen) would ask for tens of GB, and
+    // the system would kill the process; list() throws an Error with kExitOutOfMemory naming
+    // the figures instead, before anything is allocated.
+    explicit TileLister(std::uint64_t memory_budget = default_tile_memory_budget());
     void list(const std::vector<TileSpan>& spans, std::size_t threads, ScreenTiles& tiles);
+
+    // Half of this machine's physical memory.
+    static std::uint64_t default_tile_memory_budget();
 
 private:
     // A span as the tiles of one tile row list it.
@@ -45,8 +54,13 @@ private:
         int first_column, last_column;
     };
     void sort_nearest_first(const std::vector<TileSpan>& spans, std::size_t threads);
-    void split_into_rows(int tiles_y, std::size_t threads);
+    void split_into_rows(int tiles_x, int tiles_y, std::size_t threads);
 
+    // Throws when the lists of `entries` tile entries and `row_entries` row entries exceed the
+    // budget; `tiles` is the grid's tile count, for the message.
+    void check_budget(std::uint64_t entries, std::uint64_t row_entries, std::uint64_t tiles) const;
+
+    std::uint64_t memory_budget_;
     std::vector<std::uint64_t> keys_;
     RadixSortScratch sort_scratch_;
     std::vector<TileSpan> sorted_;  // the spans nearest first

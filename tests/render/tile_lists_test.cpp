@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <random>
 
+#include "core/errors.h"
 #include "core/worker_threads.h"
 #include "render/screen_tiles.h"
 
@@ -112,6 +113,27 @@ TEST(TileLists, AListerKeptFromFrameToFrameListsEachFrameAsAFreshOne) {
         lister.list(*frame, 2, tiles);
         expect_same_lists(plain_lists(*frame, tiles_x, tiles_y), tiles);
     }
+}
+
+// Objects that overlap on the screen far beyond what memory holds are refused before their
+// lists are made, naming the figures: 50 spans over the whole 10x10 grid are 5,000 entries of
+// 12 bytes and 500 row entries of 20, 70,000 bytes, listed within a budget of exactly that.
+TEST(TileLists, ListsBeyondTheMemoryBudgetAreRefusedBeforeTheyAreMade) {
+    std::vector<TileSpan> spans(50);
+    for (std::size_t i = 0; i < spans.size(); ++i)
+        spans[i] = {static_cast<std::uint32_t>(i), 1.0f + static_cast<float>(i), 0u, 0, 9, 0, 9};
+    ScreenTiles tiles;
+    tiles.tiles_x = tiles.tiles_y = 10;
+    try {
+        TileLister(69999).list(spans, 1, tiles);
+        FAIL() << "listed beyond the budget";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.code(), kExitOutOfMemory);
+        EXPECT_NE(std::string(error.what()).find("would list 5000 objects"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("overlap on the screen 50 deep"), std::string::npos) << error.what();
+    }
+    TileLister(70000).list(spans, 1, tiles);
+    expect_same_lists(plain_lists(spans, 10, 10), tiles);
 }
 
 }  // namespace
