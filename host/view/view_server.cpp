@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -84,6 +85,14 @@ void configure(httplib::Server& server, int& listening) {
     });
 }
 
+// Whether a Content-Length (digits, at most kMostRequestBytes) is one the server reads.
+bool body_length_allowed(const std::string& length) {
+    std::size_t value = 0;
+    const char* end = length.data() + length.size();
+    const auto [stop, error] = std::from_chars(length.data(), end, value);
+    return !length.empty() && error == std::errc() && stop == end && value <= kMostRequestBytes;
+}
+
 void warn_about_bind(const std::string& bind) {
     if (bind == "127.0.0.1") return;
     if (is_loopback_address(bind))
@@ -120,6 +129,21 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     const RequestGuard guard(token, settings.bind, port);
     ViewSession session{scene, renderer, exporter, videos, guard};
     add_view_routes(server, session);
+    // A client that asks before sending its body (Expect: 100-continue) is invited only when
+    // the request may be served: cpp-httplib would invite any, a foreign page's or one whose
+    // Content-Length is over the limit, and then read the body it invited.
+    server.set_expect_100_continue_handler([&guard](const httplib::Request& request, httplib::Response& response) {
+        if (guard.check(request_facts(request)) == RequestVerdict::Forbidden)
+            response.status = 403;
+        else if (request.has_header("Transfer-Encoding"))
+            response.status = 411;  // as the routes answer it (view_routes.cpp)
+        else if (!body_length_allowed(request.get_header_value("Content-Length")))
+            response.status = 413;
+        else
+            return 100;
+        response.set_header("Connection", "close");
+        return response.status;
+    });
 
     std::atomic<bool> listener_ended{false};
     std::thread listener([&server, &listener_ended] {

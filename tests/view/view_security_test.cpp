@@ -338,6 +338,49 @@ TEST_F(ViewSecurity, PipelinedRequestsAreEachAnswered) {
     EXPECT_NE((answer + next).find("HTTP/1.1 403"), std::string::npos) << "the second request, without the token";
 }
 
+// A client that asks before sending its body (Expect: 100-continue) is invited only when the
+// request may be served: no token, a chunked body or a Content-Length over the limit get their
+// refusal at once, and the connection closes, instead of "100 Continue" and a read of the body.
+TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
+    const std::string head = " HTTP/1.1\r\nHost: " + own_host() + "\r\nOrigin: " + own_origin() +
+                             "\r\nContent-Type: application/json\r\nExpect: 100-continue\r\n";
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "expect_check"})";
+    const std::string exporting = "POST " + viewer_->with_token("/export");
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"POST /export" + head + "Content-Length: 99999999\r\n\r\n", "HTTP/1.1 403"},
+        {exporting + head + "Content-Length: 99999999\r\n\r\n", "HTTP/1.1 413"},
+        {exporting + head + "Content-Length: 12abc\r\n\r\n", "HTTP/1.1 413"},
+        {exporting + head + "Transfer-Encoding: chunked\r\n\r\n", "HTTP/1.1 411"},
+    };
+    for (const auto& [request, status] : refused) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        const std::string answer = read_one_answer(socket, 5);
+        char more = 0;
+        const ssize_t after = ::recv(socket, &more, 1, 0);  // the server closes: 0
+        ::close(socket);
+        EXPECT_EQ(answer.rfind(status, 0), 0u) << request << "\n" << answer.substr(0, 200);
+        EXPECT_EQ(after, 0) << request;
+    }
+    // A request that may be served is invited, and its body read.
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const std::string request = exporting + head + "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n";
+    ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+    pollfd ready{socket, POLLIN, 0};
+    ASSERT_GT(::poll(&ready, 1, 5000), 0);
+    char invitation[64] = {};
+    ASSERT_GT(::recv(socket, invitation, sizeof invitation - 1, 0), 0);
+    EXPECT_EQ(std::string(invitation).rfind("HTTP/1.1 100 Continue", 0), 0u) << invitation;
+    ASSERT_EQ(::send(socket, body.data(), body.size(), MSG_NOSIGNAL), static_cast<ssize_t>(body.size()));
+    const std::string answer = read_one_answer(socket, 10);
+    ::close(socket);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << answer.substr(0, 200);
+    EXPECT_TRUE(fs::exists(folder_->file("expect_check.json")));
+    fs::remove(folder_->file("expect_check.json"));
+}
+
 // A path the viewer answers, asked with another method: 405 and the methods it answers.
 TEST_F(ViewSecurity, WrongMethodsGet405WithAllow) {
     auto client = viewer_->client();
