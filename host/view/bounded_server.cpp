@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <string>
 
 namespace clr {
 namespace {
@@ -78,6 +79,8 @@ RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
 void RequestStream::start_request() {
     request_deadline_ = Clock::now() + std::chrono::seconds(kRequestSeconds);
     answering_ = false;
+    answer_head_.clear();
+    answer_head_done_ = answer_closes_ = false;
     head_done_ = false;
     head_end_matched_ = 0;
     head_bytes_ = body_bytes_ = 0;
@@ -161,6 +164,17 @@ ssize_t RequestStream::write(const char* ptr, std::size_t size) {
         answering_ = true;
         answer_deadline_ = Clock::now() + std::chrono::seconds(kAnswerSeconds);
     }
+    if (!answer_head_done_) {
+        // cpp-httplib writes a head in pieces, and writes `Connection: close` as set.
+        constexpr std::size_t kMostAnswerHead = 16 * 1024;
+        answer_head_.append(ptr, std::min(size, kMostAnswerHead - answer_head_.size()));
+        const std::size_t end = answer_head_.find("\r\n\r\n");
+        if (end != std::string::npos || answer_head_.size() == kMostAnswerHead) {
+            answer_head_done_ = true;
+            const std::string head = answer_head_.substr(0, end == std::string::npos ? end : end + 2);
+            answer_closes_ = head.find("\r\nConnection: close\r\n") != std::string::npos;
+        }
+    }
     if (wait_for(socket_, POLLOUT, wait_ms(write_timeout_, answer_deadline_)) <= 0) return -1;
     ssize_t sent;
     do sent = ::send(socket_, ptr, size, MSG_NOSIGNAL);
@@ -196,9 +210,9 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
         stream.start_request();
         bool connection_closed = false;
         served = process_request(stream, left == 1, connection_closed, nullptr);
-        if (!served || connection_closed || stream.limit_reached()) break;
+        if (!served || connection_closed || stream.limit_reached() || stream.answer_closes()) break;
     }
-    if (stream.limit_reached()) linger_before_close(socket);
+    if (stream.limit_reached() || stream.answer_closes()) linger_before_close(socket);
     ::shutdown(socket, SHUT_RDWR);
     ::close(socket);
     return served;

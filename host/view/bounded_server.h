@@ -39,6 +39,9 @@ public:
     bool limit_reached() const { return limit_reached_; }
     // Whether bytes that arrived are not read yet (a next request sent with the last one).
     bool has_buffered_bytes() const { return buffer_at_ < buffered_; }
+    // Whether the last answer's head said `Connection: close` (a refusal whose body, if the
+    // client sends it, is never read): the connection ends after it.
+    bool answer_closes() const { return answer_closes_; }
 
     bool is_readable() const override;
     bool is_writable() const override;
@@ -70,6 +73,8 @@ private:
     int head_end_matched_ = 0;  // how much of CR LF CR LF the last bytes matched
     std::size_t head_bytes_ = 0, body_bytes_ = 0;
     bool limit_reached_ = false;
+    std::string answer_head_;  // the answer's head as written, until its empty line
+    bool answer_head_done_ = false, answer_closes_ = false;
 };
 
 // httplib::Server whose connections are read through RequestStream.
