@@ -104,15 +104,15 @@ bool any_triangle_has_area(const ObjMesh& model) {
     return false;
 }
 
-// Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
-// once placed are left out: no ray can hit them, and their plane has no normal. `what` names
-// the model in messages ("mesh 'bunny.obj'").
 // Makes room for `extra` more elements, at least doubling the capacity when it grows.
 template <typename T>
 void reserve_more(std::vector<T>& values, std::size_t extra) {
     if (values.size() + extra > values.capacity()) values.reserve(std::max(values.size() + extra, 2 * values.capacity()));
 }
 
+// Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
+// once placed are left out: no ray can hit them, and their plane has no normal. `what` names
+// the model in messages ("mesh 'bunny.obj'").
 void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename, const std::string& what) {
     std::vector<Vec3> placed(model.positions.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {

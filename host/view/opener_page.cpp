@@ -35,11 +35,12 @@ std::string page_text(const std::string& url) {
 }  // namespace
 
 std::optional<OpenerPage> OpenerPage::write(const std::string& url, std::string& why) {
-    std::string pattern = parent_folder() + "/clrender-view-XXXXXX";
+    const std::string parent = parent_folder();
+    const std::string pattern = parent + "/clrender-view-XXXXXX";
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     if (!::mkdtemp(name.data())) {
-        why = "cannot make a folder in " + parent_folder() + ": " + std::strerror(errno);
+        why = "cannot make a folder in " + parent + ": " + std::strerror(errno);
         return std::nullopt;
     }
     const std::string folder = name.data();
