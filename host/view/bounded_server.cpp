@@ -71,9 +71,24 @@ void linger_before_close(int socket) {
 }  // namespace
 
 RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
-                             std::chrono::milliseconds write_timeout, std::size_t most_body_bytes)
-    : socket_(socket), read_timeout_(read_timeout), write_timeout_(write_timeout), most_body_bytes_(most_body_bytes) {
+                             std::chrono::milliseconds write_timeout, std::size_t most_body_bytes,
+                             const std::atomic<socket_t>& serving)
+    : socket_(socket),
+      read_timeout_(read_timeout),
+      write_timeout_(write_timeout),
+      most_body_bytes_(most_body_bytes),
+      serving_(serving) {
     start_request();
+}
+
+int RequestStream::wait_readable(int ms) const {
+    const auto give_up = Clock::now() + std::chrono::milliseconds(ms);
+    for (;;) {
+        if (serving_ == INVALID_SOCKET) return -1;
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(give_up - Clock::now()).count();
+        const int ready = wait_for(socket_, POLLIN, static_cast<int>(std::clamp<decltype(left)>(left, 0, 50)));
+        if (ready != 0 || left <= 50) return ready;
+    }
 }
 
 void RequestStream::start_request() {
@@ -92,7 +107,7 @@ int RequestStream::wait_ms(std::chrono::milliseconds timeout, Clock::time_point 
 }
 
 bool RequestStream::is_readable() const {
-    return buffer_at_ < buffered_ || wait_for(socket_, POLLIN, wait_ms(read_timeout_, request_deadline_)) > 0;
+    return buffer_at_ < buffered_ || wait_readable(wait_ms(read_timeout_, request_deadline_)) > 0;
 }
 
 bool RequestStream::is_writable() const {
@@ -138,7 +153,7 @@ ssize_t RequestStream::read(char* ptr, std::size_t size) {
         if (now >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
         // A wait that the deadline cuts short and that ends with nothing is the deadline.
         const bool deadline_first = request_deadline_ - now <= read_timeout_;
-        const int ready = wait_for(socket_, POLLIN, wait_ms(read_timeout_, request_deadline_));
+        const int ready = wait_readable(wait_ms(read_timeout_, request_deadline_));
         if (ready == 0 && deadline_first) return refuse("HTTP/1.1 408 Request Timeout");
         if (ready <= 0) return -1;
         ssize_t got;
@@ -150,10 +165,8 @@ ssize_t RequestStream::read(char* ptr, std::size_t size) {
     }
     const std::size_t count = std::min(size, buffered_ - buffer_at_);
     const char* bytes = buffer_ + buffer_at_;
-    const bool head_was_done = head_done_;
     if (!take(bytes, count))
-        return refuse(head_done_ || head_was_done ? "HTTP/1.1 413 Payload Too Large"
-                                                  : "HTTP/1.1 431 Request Header Fields Too Large");
+        return refuse(head_done_ ? "HTTP/1.1 413 Payload Too Large" : "HTTP/1.1 431 Request Header Fields Too Large");
     std::memcpy(ptr, bytes, count);
     buffer_at_ += count;
     return static_cast<ssize_t>(count);
@@ -202,7 +215,8 @@ void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
 bool BoundedServer::process_and_close_socket(socket_t socket) {
     using std::chrono::milliseconds;
     RequestStream stream(socket, milliseconds(read_timeout_sec_ * 1000 + read_timeout_usec_ / 1000),
-                         milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_);
+                         milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_,
+                         svr_sock_);
     bool served = false;
     for (std::size_t left = keep_alive_max_count_; left > 0; --left) {
         if (!stream.has_buffered_bytes() && !next_request_arrives(socket, milliseconds(keep_alive_timeout_sec_ * 1000), svr_sock_))

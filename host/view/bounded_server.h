@@ -13,6 +13,7 @@
 
 #include <httplib.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <string>
@@ -30,8 +31,10 @@ constexpr int kAnswerSeconds = 60;
 // `read_timeout` and `write_timeout` bound each wait, as cpp-httplib's own stream does.
 class RequestStream : public httplib::Stream {
 public:
+    // While `serving` names the listening socket, the server runs; once the server stops, a
+    // request still arriving is dropped at once (within 50 ms), not waited for.
     RequestStream(int socket, std::chrono::milliseconds read_timeout, std::chrono::milliseconds write_timeout,
-                  std::size_t most_body_bytes);
+                  std::size_t most_body_bytes, const std::atomic<socket_t>& serving);
 
     // The next request starts: its limits count from here.
     void start_request();
@@ -57,20 +60,23 @@ private:
     int wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const;
     // Answers `status_line` with an empty body and fails: the connection closes.
     ssize_t refuse(const char* status_line);
-    // Counts bytes handed to cpp-httplib: the head ends at its empty line (CR LF CR LF).
+    // Waits up to `ms` for bytes to read, as wait_for() answers, or -1 once the server stops.
+    int wait_readable(int ms) const;
+    // Counts bytes handed to cpp-httplib against the head's and the body's limits; false
+    // beyond one of them.
     bool take(const char* bytes, std::size_t count);
 
     int socket_;
     std::chrono::milliseconds read_timeout_, write_timeout_;
     std::size_t most_body_bytes_;
+    const std::atomic<socket_t>& serving_;
     char buffer_[4096];
     std::size_t buffered_ = 0, buffer_at_ = 0;
     // This request's progress.
-    bool started_ = false;
     Clock::time_point request_deadline_, answer_deadline_;
     bool answering_ = false;
     bool head_done_ = false;
-    int head_end_matched_ = 0;  // how much of CR LF CR LF the last bytes matched
+    int head_end_matched_ = 0;  // 1: after a line feed; 2: after LF CR; 3: the head's end
     std::size_t head_bytes_ = 0, body_bytes_ = 0;
     bool limit_reached_ = false;
     std::string answer_head_;  // the answer's head as written, until its empty line

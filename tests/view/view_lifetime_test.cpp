@@ -3,6 +3,10 @@
 // signal ending it with 128 + signal and nothing left behind.
 #include <gtest/gtest.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -172,6 +176,52 @@ TEST(ViewLifetime, OpensTheBrowserWithTheAddressAndGoesOnWithoutOne) {
     EXPECT_EQ(without.client()->Get(without.with_token("/scene.json").c_str())->status, 200);
     EXPECT_EQ(without.stop(SIGTERM), 143);
     EXPECT_NE(without.output().find("warning: cannot open the browser"), std::string::npos) << without.output();
+}
+
+// Where the page that opens the browser cannot be made (a folder no one can create in), the
+// browser is not opened, with a warning, and the viewer serves all the same.
+TEST(ViewLifetime, APageThatCannotBeWrittenOpensNoBrowser) {
+    TempFolder folder;
+    fs::create_directories(folder.file("bin"));
+    folder.write("bin/xdg-open", "#!/bin/sh\necho \"$1\" > '" + folder.file("opened.txt") + "'\n");
+    fs::permissions(folder.file("bin/xdg-open"), fs::perms::owner_all);
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path(),
+                         "PATH='" + folder.file("bin") + "' XDG_RUNTIME_DIR=/proc", true);
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    EXPECT_EQ(viewer.client()->Get(viewer.with_token("/scene.json").c_str())->status, 200);
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_FALSE(fs::exists(folder.file("opened.txt"))) << read_bytes(folder.file("opened.txt"));
+    EXPECT_NE(viewer.output().find("warning: cannot open the browser (cannot make a folder in /proc: "),
+              std::string::npos)
+        << viewer.output();
+}
+
+// A request still arriving when the viewer is told to stop is dropped at once: its client
+// sees the connection end well before the 5 s read timeout that would otherwise run out.
+TEST(ViewLifetime, AHalfSentRequestIsDroppedAtTheStop) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(viewer.port()));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::write(socket, "GET /scene", 10), 10);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the server is reading it
+    int code = 0;
+    const auto signalled = std::chrono::steady_clock::now();
+    std::thread stopper([&] { code = viewer.stop(SIGTERM); });
+    pollfd ready{socket, POLLIN, 0};
+    char byte = 0;
+    const bool ended = ::poll(&ready, 1, 10000) > 0 && ::read(socket, &byte, 1) == 0;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count();
+    stopper.join();
+    ::close(socket);
+    EXPECT_TRUE(ended);
+    EXPECT_LT(seconds, 3.0);
+    EXPECT_EQ(code, 143);
 }
 
 TEST(ViewLifetime, AnotherBindAddressWarns) {

@@ -295,6 +295,32 @@ TEST_F(ViewSecurity, AnEndlessRequestLineIsCutAtTheHeadsLimit) {
     EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
 }
 
+// A body far over its limit, announced and sent: cpp-httplib would read all of it to skip it;
+// the server stops reading at the limit (2 MiB), answers 413 and closes. Without the limit
+// the server would read all 32 MB.
+TEST_F(ViewSecurity, ABodyOverTheLimitIsNotReadToItsEnd) {
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const std::string head = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                             "\r\nOrigin: " + own_origin() + "\r\nContent-Type: application/json\r\nContent-Length: " +
+                             std::to_string(32u * 1024 * 1024) + "\r\n\r\n";
+    ASSERT_EQ(::send(socket, head.data(), head.size(), MSG_NOSIGNAL), static_cast<ssize_t>(head.size()));
+    const std::string block(64 * 1024, ' ');
+    std::size_t sent = 0;
+    while (sent < 32u * 1024 * 1024) {
+        const ssize_t wrote = ::send(socket, block.data(), block.size(), MSG_NOSIGNAL);
+        if (wrote <= 0) break;
+        sent += static_cast<std::size_t>(wrote);
+    }
+    const std::string answer = read_one_answer(socket, 5);
+    ::close(socket);
+    EXPECT_LT(sent, 16u * 1024 * 1024) << "the server went on reading";
+    if (!answer.empty()) {
+        EXPECT_EQ(answer.rfind("HTTP/1.1 413", 0), 0u) << answer.substr(0, 200);
+    }
+    EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
+}
+
 // Headers that go on and on, each line short: the same limit, with its answer.
 TEST_F(ViewSecurity, EndlessHeadersGet431) {
     const int socket = connect_to_viewer(viewer_->port());
