@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <type_traits>
 #include <vector>
 
@@ -180,12 +181,20 @@ std::optional<ObjMesh> MeshCache::load(const Key& key) const {
         return std::nullopt;
     }
     // Each .mtl as the parse read it; otherwise a miss (the entry stays for the files it fits).
+    // A file named several ways ("a.mtl", "./a.mtl") is hashed once, by its identity.
+    std::map<std::pair<dev_t, ino_t>, Sha256Digest> hashed;
     for (std::size_t i = 0; i < mesh.material_files.size(); ++i) {
-        try {
-            if (file_digest(mesh.material_files[i], kMaxMtlFileBytes) != mesh.material_digests[i]) return std::nullopt;
-        } catch (const BoundedFileError&) {
-            return std::nullopt;
+        struct stat info {};
+        if (::stat(mesh.material_files[i].c_str(), &info) != 0) return std::nullopt;
+        auto known = hashed.find({info.st_dev, info.st_ino});
+        if (known == hashed.end()) {
+            try {
+                known = hashed.insert({{info.st_dev, info.st_ino}, file_digest(mesh.material_files[i], kMaxMtlFileBytes)}).first;
+            } catch (const BoundedFileError&) {
+                return std::nullopt;
+            }
         }
+        if (known->second != mesh.material_digests[i]) return std::nullopt;
     }
     return mesh;
 }

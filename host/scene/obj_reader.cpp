@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -75,31 +76,30 @@ std::string encoding_problem(std::string_view text) {
     return "";
 }
 
-// The material name of a `usemtl` statement, as tinyobjloader reads it: the first word.
-std::string used_material(std::string_view statement) {
-    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-    std::size_t at = statement.find("usemtl") + 6;
-    while (at < statement.size() && blank(statement[at])) ++at;
-    std::size_t end = at;
-    while (end < statement.size() && !blank(statement[end])) ++end;
-    return std::string(statement.substr(at, end - at));
-}
-
-// Reads each `mtllib` file relative to the OBJ's folder, with the limits of any input file;
-// the first failure is kept for read_obj to report (tinyobjloader itself only warns).
-class MaterialFiles : public tinyobj::MaterialReader {
+// Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any
+// input file; the first failure is kept for read_obj to report.
+class MaterialFiles {
 public:
     explicit MaterialFiles(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
-    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
-                    std::map<std::string, int>* names, std::string* warning, std::string* error) override {
+    // Adds the materials of .mtl `name` to `materials` and their names to `names`, as
+    // tinyobjloader's LoadMtl does; false (and problem() says why) where it cannot.
+    bool read(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names) {
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
         tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
         // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
-        // in the list already, and tinyobjloader only skips a name it has read.
+        // in the list already. It is still one of the OBJ's files, with the digest of its first read: the mesh cache
+        // checks each name, so that a name later made to point elsewhere is seen.
         struct stat info {};
-        if (::stat(path.c_str(), &info) == 0 && !read_.insert({info.st_dev, info.st_ino}).second) return true;
-        if (files_.size() >= kMaxMtlFiles) {
+        const bool identified = ::stat(path.c_str(), &info) == 0;
+        if (identified) {
+            if (const auto known = read_.find({info.st_dev, info.st_ino}); known != read_.end()) {
+                files_.push_back(path.string());
+                digests_.push_back(digests_[known->second]);
+                return true;
+            }
+        }
+        if (read_.size() >= kMaxMtlFiles) {
             if (problem_.empty())
                 problem_ = "mtllib " + printable(shortened(name, 200)) + ": the OBJ reads more than " +
                            std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
@@ -112,6 +112,7 @@ public:
             if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + failure.what();
             return false;
         }
+        if (identified) read_.insert({{info.st_dev, info.st_ino}, digests_.size()});
         files_.push_back(path.string());
         digests_.push_back(sha256(text.data(), text.size()));
         if (const std::string encoding = encoding_problem(text); !encoding.empty()) {
@@ -137,7 +138,8 @@ public:
             return false;
         }
         std::istringstream stream(text);
-        tinyobj::LoadMtl(names, materials, &stream, warning, error);
+        std::string warning, error;
+        tinyobj::LoadMtl(names, materials, &stream, &warning, &error);
         if (materials->size() != before + gives_diffuse.size()) {
             if (problem_.empty()) {
                 problem_ = "mtllib " + printable(shortened(name, 200)) + ": tinyobjloader read " +
@@ -190,7 +192,7 @@ private:
     std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
-    std::set<std::pair<dev_t, ino_t>> read_;  // each .mtl read, by identity
+    std::map<std::pair<dev_t, ino_t>, std::size_t> read_;  // each .mtl read, by identity: its digest's index
     std::vector<bool> with_diffuse_;  // of each material in tinyobjloader's list
     std::set<std::string> names_;     // the materials defined, as usemtl names them
 };
@@ -225,7 +227,7 @@ void warn_about_undefined_materials(const std::string& text, const MaterialFiles
     std::uint64_t first_line = 0, more = 0;
     std::string first_name;
     for_each_statement(text, "usemtl", [&](std::uint64_t line, std::string_view statement) {
-        const std::string name = used_material(statement);
+        const std::string name = used_material_name(statement);
         if (material_files.defines(name)) return;
         if (first_line != 0) {
             ++more;
@@ -241,16 +243,44 @@ void warn_about_undefined_materials(const std::string& text, const MaterialFiles
                             "; its faces take the scene's ambient, else 0.8 grey");
 }
 
-// parse_obj once the text's checks have passed; `material_files` reads the .mtl files.
+// Reads every .mtl file the OBJ `text` names, each name once, in order, with the first
+// problem kept by `material_files`; `materials` and `names` as tinyobjloader's LoadMtl fills them.
+void read_material_libraries(const std::string& text, MaterialFiles& material_files,
+                             std::vector<tinyobj::material_t>& materials, std::map<std::string, int>& names) {
+    std::set<std::string> named;
+    for (const std::string& name : material_library_names(text)) {
+        if (!named.insert(name).second) continue;
+        if (!material_files.read(name, &materials, &names)) return;
+    }
+}
+
+// The `Kd` of the first face's material, where a .mtl file gives it one.
+std::optional<Vec3> first_face_diffuse(const std::string& text, const std::vector<tinyobj::material_t>& materials,
+                                       const std::map<std::string, int>& names, const MaterialFiles& material_files) {
+    const auto material = names.find(first_face_material(text));
+    if (material == names.end() || material->second < 0 ||
+        static_cast<std::size_t>(material->second) >= materials.size() || !material_files.gives_diffuse(material->second))
+        return std::nullopt;
+    const auto& kd = materials[material->second].diffuse;
+    return Vec3{kd[0], kd[1], kd[2]};
+}
+
+// parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
+// them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
+// their `mtllib` and `usemtl` lines.
 ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
+    std::vector<tinyobj::material_t> materials;
+    std::map<std::string, int> material_names;
+    read_material_libraries(text, material_files, materials, material_names);
+    if (!material_files.problem().empty()) throw ObjError(material_files.problem());
+
     tinyobj::attrib_t attributes;
     std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
+    std::vector<tinyobj::material_t> unused_materials;
     std::string warning, error;
     std::istringstream stream(obj_statements_used(text));
-    const bool read = tinyobj::LoadObj(&attributes, &shapes, &materials, &warning, &error, &stream, &material_files,
-                                       /*triangulate=*/false, /*default_vcols_fallback=*/false);
-    if (!material_files.problem().empty()) throw ObjError(material_files.problem());
+    const bool read = tinyobj::LoadObj(&attributes, &shapes, &unused_materials, &warning, &error, &stream,
+                                       /*readMatFn=*/nullptr, /*triangulate=*/false, /*default_vcols_fallback=*/false);
     if (!read) throw ObjError(printable(shortened(first_line(error), 200)));
 
     ObjMesh mesh;
@@ -292,11 +322,6 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                     mesh.triangle_normals.push_back({-1, -1, -1});
                 }
             }
-            const int material = shape.mesh.material_ids[face];
-            if (mesh.faces == 0 && in_range(material, materials.size()) && material_files.gives_diffuse(material)) {
-                const auto& kd = materials[material].diffuse;
-                mesh.diffuse = Vec3{kd[0], kd[1], kd[2]};
-            }
             ++mesh.faces;
         }
     }
@@ -305,10 +330,11 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(mesh.triangles.size()) + " triangles where the file has " +
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
+    mesh.diffuse = first_face_diffuse(text, materials, material_names, material_files);
     check_values_read(mesh);
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);
-    if (warning.find("not found in .mtl") != std::string::npos) warn_about_undefined_materials(text, material_files, mesh);
+    warn_about_undefined_materials(text, material_files, mesh);
     return mesh;
 }
 

@@ -51,10 +51,12 @@ void for_each_line(std::string_view text, Visit&& visit) {
     }
 }
 
-std::vector<std::string_view> tokens_of(std::string_view line) {
+// The first `most` words of `line`: a line may be a whole file of words, which a list of
+// them all would take about 17 times the file's size to hold.
+std::vector<std::string_view> tokens_of(std::string_view line, std::size_t most) {
     std::vector<std::string_view> tokens;
     std::size_t at = 0;
-    while (at < line.size()) {
+    while (at < line.size() && tokens.size() < most) {
         at = find_not_blank(line, at);
         if (at == std::string_view::npos) break;
         std::size_t end = find_blank(line, at);
@@ -64,6 +66,20 @@ std::vector<std::string_view> tokens_of(std::string_view line) {
     }
     return tokens;
 }
+
+std::uint64_t token_count(std::string_view line) {
+    std::uint64_t count = 0;
+    for (std::size_t at = find_not_blank(line, 0); at != std::string_view::npos; at = find_not_blank(line, at)) {
+        ++count;
+        at = find_blank(line, at);
+        if (at == std::string_view::npos) break;
+    }
+    return count;
+}
+
+// The most words a `v`, `vn`, `vt` or `f` statement may have: its keyword and kMaxFaceCorners
+// corners (a position's numbers are far fewer).
+constexpr std::size_t kMaxStatementWords = kMaxFaceCorners + 1;
 
 // A leading '+' ("+1", "1/+2"), which from_chars refuses and tinyobjloader's readers (its own
 // number parser, atoi) accept; "+-1" keeps its '+' and stays refused.
@@ -237,8 +253,53 @@ void for_each_statement(std::string_view text, std::string_view keyword,
 std::string obj_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) {
         return keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "f" || keyword == "o" ||
-               keyword == "g" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib";
+               keyword == "g" || keyword == "s";
     });
+}
+
+std::vector<std::string> material_library_names(std::string_view text) {
+    std::vector<std::string> names;
+    for_each_statement(text, "mtllib", [&](std::uint64_t, std::string_view line) {
+        std::size_t at = line.find("mtllib") + 6;
+        if (at >= line.size()) return;  // "mtllib" alone
+        std::string name;
+        bool escaped = false;
+        for (const char c : line.substr(at + 1)) {
+            if (!escaped && c == '\\') {
+                escaped = true;
+                continue;
+            }
+            if (!escaped && c == ' ') {
+                if (!name.empty()) names.push_back(name);
+                name.clear();
+                continue;
+            }
+            escaped = false;
+            name += c;
+        }
+        if (!name.empty()) names.push_back(name);
+    });
+    return names;
+}
+
+std::string used_material_name(std::string_view statement) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    std::size_t at = statement.find("usemtl") + 6;
+    while (at < statement.size() && blank(statement[at])) ++at;
+    std::size_t end = at;
+    while (end < statement.size() && !blank(statement[end])) ++end;
+    return std::string(statement.substr(at, end - at));
+}
+
+std::string first_face_material(std::string_view text) {
+    std::string material;
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t, std::string_view line) {
+        const std::string_view keyword = keyword_of(line);
+        if (keyword == "f") return false;
+        if (keyword == "usemtl") material = used_material_name(line);
+        return true;
+    });
+    return material;
 }
 
 std::string mtl_statements_used(std::string_view text) {
@@ -248,11 +309,12 @@ std::string mtl_statements_used(std::string_view text) {
 ObjTextProblem check_mtl_text(std::string_view text) {
     ObjTextProblem problem;
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
-        const std::vector<std::string_view> tokens = tokens_of(statement_of(line));
+        const std::string_view statement = statement_of(line);
+        const std::vector<std::string_view> tokens = tokens_of(statement, 5);
         if (tokens.empty() || tokens[0] != "Kd") return true;
         std::string detail;
         if (tokens.size() != 4) {
-            detail = "'Kd' needs 3 numbers (r g b), the line has " + std::to_string(tokens.size() - 1);
+            detail = "'Kd' needs 3 numbers (r g b), the line has " + std::to_string(token_count(statement) - 1);
         } else {
             detail = check_numbers(tokens, 3, false);
         }
@@ -292,16 +354,6 @@ std::vector<std::string_view> cut_at_lines(std::string_view text, std::size_t pa
     return pieces;
 }
 
-std::uint64_t token_count(std::string_view line) {
-    std::uint64_t count = 0;
-    for (std::size_t at = find_not_blank(line, 0); at != std::string_view::npos; at = find_not_blank(line, at)) {
-        ++count;
-        at = find_blank(line, at);
-        if (at == std::string_view::npos) break;
-    }
-    return count;
-}
-
 // What a piece holds: its lines, and the entries, faces and triangles of its lines (every `f`
 // line of three corners or more counted, as the check counts them when the line is good).
 struct PieceCounts {
@@ -334,19 +386,23 @@ ObjTextProblem check_piece(std::string_view piece, std::uint64_t lines_before, O
                            const ObjTextCounts& total, std::uint64_t max_triangles) {
     ObjTextProblem problem;
     for_each_line(piece, [&](std::uint64_t number, std::string_view line) {
-        const std::vector<std::string_view> tokens = tokens_of(statement_of(line));
+        const std::string_view statement = statement_of(line);
+        const std::vector<std::string_view> tokens = tokens_of(statement, kMaxStatementWords + 1);
         if (tokens.empty()) return true;
         const std::string_view keyword = tokens[0];
         std::string detail;
-        if (keyword == "v") detail = check_numbers(tokens, 3, true);
+        if (tokens.size() > kMaxStatementWords && (keyword == "v" || keyword == "vn" || keyword == "vt")) {
+            detail = "'" + std::string(keyword) + "' has at most " + std::to_string(kMaxStatementWords - 1) +
+                     " numbers, this line has " + std::to_string(token_count(statement) - 1);
+        } else if (keyword == "v") detail = check_numbers(tokens, 3, true);
         else if (keyword == "vn") detail = check_numbers(tokens, 3, false);
         else if (keyword == "vt") detail = check_numbers(tokens, 1, false);
         else if (keyword == "f") {
             if (tokens.size() < 4) {
                 detail = "a face needs 3 corners or more, this one has " + std::to_string(tokens.size() - 1);
-            } else if (tokens.size() - 1 > kMaxFaceCorners) {
+            } else if (tokens.size() > kMaxStatementWords) {
                 detail = "a face has at most " + std::to_string(kMaxFaceCorners) + " corners (tinyobjloader's limit), "
-                         "this one has " + std::to_string(tokens.size() - 1) + ": split it into smaller faces";
+                         "this one has " + std::to_string(token_count(statement) - 1) + ": split it into smaller faces";
             }
             for (std::size_t i = 1; detail.empty() && i < tokens.size(); ++i) {
                 detail = check_corner(tokens[i], counts, total);

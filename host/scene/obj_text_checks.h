@@ -10,6 +10,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace clr {
 
@@ -64,7 +65,7 @@ void for_each_statement(std::string_view text, std::string_view keyword,
                         const std::function<void(std::uint64_t, std::string_view)>& visit);
 
 // `text` with only the statements clrender uses kept for tinyobjloader (`v`, `vn`, `vt`, `f`,
-// `o`, `g`, `s`, `usemtl`, `mtllib`); every other line (comments, lines, points, skin weights,
+// `o`, `g`, `s`); every other line (comments, lines, points, skin weights,
 // tags, curves) is left empty, so that lines keep their numbers and the library never parses
 // what clrender ignores (its `vw` parser turns an out-of-range number into an int, undefined
 // behaviour); a comment after the numbers of a `v`, `vn`, `vt`, `f` or `Kd` line is cut.
@@ -73,5 +74,20 @@ std::string obj_statements_used(std::string_view text);
 
 // The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.
 std::string mtl_statements_used(std::string_view text);
+
+// The .mtl files the OBJ `text` names: every name of every `mtllib` statement, in the file's
+// order, as tinyobjloader cuts a statement into names (the text after "mtllib" and one blank,
+// cut at spaces; a backslash keeps the next character, so "a\ b.mtl" is one name).
+// clrender reads them all before the faces, so a `usemtl` finds a material whichever line
+// names its file (tinyobjloader itself reads only the first name of a statement that it can
+// read, and a `usemtl` only among the files named above it).
+std::vector<std::string> material_library_names(std::string_view text);
+
+// The material name of a `usemtl` statement, as tinyobjloader reads it: its first word.
+std::string used_material_name(std::string_view statement);
+
+// The material of the OBJ's first face: the name of the last `usemtl` before the first `f`
+// line ("" where there is none).
+std::string first_face_material(std::string_view text);
 
 }  // namespace clr

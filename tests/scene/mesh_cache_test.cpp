@@ -74,6 +74,21 @@ TEST_F(MeshCacheTest, AnEditedObjOrMaterialIsAMiss) {
     EXPECT_EQ(read_obj_through_cache(obj_, cache_).triangles.size(), 2u * 161 * 161);
 }
 
+// A .mtl named a second way (a link to one named before, read once) is checked under that name
+// too: once the name points at another file, or at none, the entry is a miss and the reader's
+// verdict stands.
+TEST_F(MeshCacheTest, AMaterialNamedASecondWayIsCheckedUnderThatName) {
+    const std::string obj = folder_.write("aliased.obj", "mtllib alias.mtl\n" + testing::read_bytes(obj_));
+    fs::create_symlink("grid.mtl", folder_.file("alias.mtl"));
+    ASSERT_EQ(read_obj_through_cache(obj, cache_).material_files.size(), 2u);
+    ASSERT_TRUE(cache_.load(MeshCache::key(obj, testing::read_bytes(obj))).has_value());
+    fs::remove(folder_.file("alias.mtl"));
+    folder_.write("alias.mtl", "newmtl green\nKd nan 0 0\n");
+    EXPECT_THROW(read_obj_through_cache(obj, cache_), ObjError) << "the entry stood for the link's target";
+    fs::remove(folder_.file("alias.mtl"));
+    EXPECT_THROW(read_obj_through_cache(obj, cache_), ObjError) << "the entry stood for a missing .mtl";
+}
+
 TEST_F(MeshCacheTest, ADamagedEntryIsNotUsedAndIsReplaced) {
     read_obj_through_cache(obj_, cache_);
     std::string bytes = testing::read_bytes(entry());

@@ -5,11 +5,14 @@
 // than three corners, too many triangles, files that are missing, folders or FIFOs.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -246,8 +249,88 @@ TEST(ObjReader, AMaterialFileNamedSeveralWaysIsReadOnce) {
     ::mkdir(folder.file("sub").c_str(), 0755);
     const ObjMesh mesh = read_obj(folder.write(
         "mesh.obj", "mtllib a.mtl\nmtllib ./a.mtl\nmtllib .//a.mtl\nmtllib sub/../a.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
-    EXPECT_EQ(mesh.material_files.size(), 1u);
     EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_TRUE(mesh.warnings.empty()) << "its materials were read again: " << mesh.warnings.front();
+    // Listed under each name, with the one digest, for the mesh cache's check of each name.
+    ASSERT_EQ(mesh.material_files.size(), 4u);
+    ASSERT_EQ(mesh.material_digests.size(), 4u);
+    for (const Sha256Digest& digest : mesh.material_digests) EXPECT_EQ(digest, mesh.material_digests[0]);
+}
+
+// Every name of an `mtllib` statement is a .mtl file the OBJ reads, however they are spelt
+// (tinyobjloader reads only the first it can), and a usemtl finds a material of a file
+// named on a later line; a missing file is an error wherever it is named.
+TEST(ObjReader, EveryMaterialFileIsReadBeforeTheFaces) {
+    TempFolder folder;
+    folder.write("a.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("b.mtl", "newmtl blue\nKd 0 0 1\n");
+    const std::optional<Vec3> blue{Vec3{0, 0, 1}};
+    for (const std::string libraries : {"mtllib a.mtl b.mtl\n", "mtllib ./a.mtl b.mtl\n", "mtllib  a.mtl   b.mtl\n"}) {
+        const ObjMesh mesh = read_obj(folder.write("two.obj", libraries + kSquare + "usemtl blue\nf 1 2 3\n"));
+        EXPECT_EQ(mesh.diffuse, blue) << libraries;
+        EXPECT_TRUE(mesh.warnings.empty()) << libraries << mesh.warnings.front();
+        EXPECT_EQ(mesh.material_files.size(), 2u) << libraries;
+    }
+    const ObjMesh later = read_obj(folder.write("later.obj", kSquare + "usemtl blue\nf 1 2 3\nmtllib a.mtl b.mtl\n"));
+    EXPECT_EQ(later.diffuse, blue);
+    EXPECT_TRUE(later.warnings.empty()) << later.warnings.front();
+    folder.write("a b.mtl", "newmtl green\nKd 0 1 0\n");
+    EXPECT_EQ(read_obj(folder.write("space.obj", "mtllib a\\ b.mtl\n" + kSquare + "usemtl green\nf 1 2 3\n")).diffuse,
+              (std::optional<Vec3>{Vec3{0, 1, 0}}));
+    for (const std::string libraries : {"mtllib a.mtl gone.mtl\n", "mtllib gone.mtl a.mtl\n"}) {
+        try {
+            read_obj(folder.write("gone.obj", libraries + kSquare + "f 1 2 3\n"));
+            ADD_FAILURE() << libraries << "read without its missing .mtl";
+        } catch (const ObjError& error) {
+            EXPECT_EQ(std::string(error.what()).rfind("mtllib gone.mtl: ", 0), 0u) << libraries << error.what();
+        }
+    }
+}
+
+// A line of millions of words is refused at the words it may have, without a list of them
+// all (about 17 times the line's size): checked in a child whose address space may grow by
+// 400 MiB, with a 64 MiB line whose list of words alone would take 512 MiB.
+TEST(ObjReader, ALineOfMillionsOfWordsIsRefusedWithoutHoldingThem) {
+#ifdef __SANITIZE_ADDRESS__
+    GTEST_SKIP() << "AddressSanitizer's allocator reserves address space of its own";
+#endif
+    for (const std::string keyword : {"f", "v"}) {
+        std::string text = kSquare + keyword;
+        constexpr std::size_t kWords = std::size_t(32) << 20;
+        text.reserve(text.size() + 2 * kWords + 1);
+        for (std::size_t i = 0; i < kWords; ++i) text += " 1";
+        text += "\n";
+        const std::string expected = keyword == "f" ? "line 5: a face has at most 255 corners (tinyobjloader's limit), this "
+                                                      "one has 33554432: split it into smaller faces"
+                                                    : "line 5: 'v' has at most 255 numbers, this line has 33554432";
+        const pid_t child = ::fork();
+        if (child == 0) {
+            long pages = 0;
+            std::FILE* statm = std::fopen("/proc/self/statm", "r");
+            const bool measured = statm && std::fscanf(statm, "%ld", &pages) == 1;
+            if (statm) std::fclose(statm);
+            const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + (rlim_t(400) << 20);
+            rlimit bounded{limit, limit};
+            bool refused = false;
+            if (measured && ::setrlimit(RLIMIT_AS, &bounded) == 0) {
+                try {
+                    parse_obj(text, "mesh.obj");
+                } catch (const ObjError& error) {
+                    refused = error.what() == expected;
+                } catch (...) {
+                }
+            }
+            ::_exit(refused ? 0 : 1);
+        }
+        int status = 0;
+        ::waitpid(child, &status, 0);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << keyword << ": not refused with \"" << expected
+                                                                  << "\" within the bound";
+    }
+    std::string numbers;
+    for (int i = 0; i < 255; ++i) numbers += " 1";
+    EXPECT_EQ(error_for(kSquare + "v" + numbers + "\nf 1 2 3\n"), "");
+    EXPECT_EQ(error_for(kSquare + "v" + numbers + " 1\nf 1 2 3\n"), "line 5: 'v' has at most 255 numbers, this line has 256");
 }
 
 // More .mtl files than kMaxMtlFiles are refused at the first one past the limit.
