@@ -32,6 +32,16 @@
 #define CLR_TRIANGLE_SELF_GAP 1.5e-5f
 #endif
 
+/* The hit's weights u, v, w (signed volumes, the squares of lengths times a length) and their
+ * products with the corners' distances along the ray (cubes) overflow float for a triangle
+ * about 1e13 from the ray's origin and underflow near 1e-13; the coordinate and length ranges
+ * (docs/scene-format.md, Numeric ranges) reach further. Where their sum det lies outside
+ * [2^-60, 2^60] the weights are first scaled by a power of two that brings det near 1: t is a
+ * ratio of sums of equal degree, so the scale changes no bit of it, and a det within the
+ * bounds keeps every product far inside float's range. Nothing changes for any other det. */
+#define CLR_TRIANGLE_SCALED_BELOW 8.6736174e-19f /* 2^-60 */
+#define CLR_TRIANGLE_SCALED_ABOVE 1.1529215e18f  /* 2^60 */
+
 real triangle_nearest_t(real3 origin)
 {
     return (real)CLR_TRIANGLE_SELF_GAP * (fabs(origin.x) + fabs(origin.y) + fabs(origin.z));
@@ -68,8 +78,29 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     real det = u + v + w;
     if (!inside || det == 0.0f)
         return INFINITY;
+    if (!(fabs(det) >= CLR_TRIANGLE_SCALED_BELOW && fabs(det) <= CLR_TRIANGLE_SCALED_ABOVE)) {
+        real scale = ldexp((real)1.0f, -ilogb(det));
+        u *= scale;
+        v *= scale;
+        w *= scale;
+        det *= scale;
+    }
     real t = (u * dot3(k.a, direction) + v * dot3(k.b, direction) + w * dot3(k.c, direction)) / det;
     return t > triangle_nearest_t(origin) && t < t_max ? t : INFINITY;
+}
+
+/* triangle_distance()'s scaling of the weights of the lanes in `hit` whose det is out of its
+ * bounds, lane by lane the same operations. */
+CLR_PACKET_INLINE void scale_weights16(mask16 hit, real16* u, real16* v, real16* w, real16* det)
+{
+    mask16 scaled = hit && !(fabs(*det) >= CLR_TRIANGLE_SCALED_BELOW && fabs(*det) <= CLR_TRIANGLE_SCALED_ABOVE);
+    if (!any_lanes16(scaled))
+        return;
+    real16 scale = select((real16)(1.0f), ldexp((real16)(1.0f), -ilogb(*det)), scaled);
+    *u *= scale;
+    *v *= scale;
+    *w *= scale;
+    *det *= scale;
 }
 
 /* triangle_distance() for 16 rays from one origin (t_max = infinity): the edges' cross
@@ -85,6 +116,7 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     mask16 hit = inside && det != 0.0f;
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
+    scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * dot16(k.a, d) + v * dot16(k.b, d) + w * dot16(k.c, d)) / det;
     hit = hit && t > triangle_nearest_t(origin);
     return select((real16)(INFINITY), t, hit);
@@ -112,6 +144,7 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     mask16 hit = inside && det != 0.0f;
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
+    scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * (ax * d.x + ay * d.y + az * d.z) + v * (bx * d.x + by * d.y + bz * d.z) +
                 w * (cx * d.x + cy * d.y + cz * d.z)) /
                det;
@@ -142,11 +175,23 @@ real3 triangle_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
     real3 c0 = convert_real3(triangle->corner0.xyz);
     real3 e1 = convert_real3(triangle->corner1.xyz) - c0;
     real3 e2 = convert_real3(triangle->corner2.xyz) - c0;
+    real3 p = point - c0;
+    /* n.n below is an edge to the fourth power, which overflows float for edges beyond about
+     * 4e9 and underflows below about 1e-10: the edges (and p) are first scaled by a power of
+     * two that brings the longest near 1. Each result below is a ratio of products of equal
+     * degree, so the scale changes no bit where nothing overflowed; edges within [2^-24, 2^24]
+     * are left as they are. */
+    real size = fmax(fmax(fmax(fabs(e1.x), fabs(e1.y)), fmax(fabs(e1.z), fabs(e2.x))), fmax(fabs(e2.y), fabs(e2.z)));
+    if (!(size >= 5.9604645e-8f && size <= 16777216.0f)) {
+        real scale = ldexp((real)1.0f, -ilogb(size));
+        e1 *= scale;
+        e2 *= scale;
+        p *= scale;
+    }
     real3 geometric = edge_cross(e1, e2);
     real3 normal = geometric;
     if (triangle->normals >= 0) {
         /* p - c0 = b1 e1 + b2 e2: b1 = ((p - c0) x e2).n / n.n, b2 = (e1 x (p - c0)).n / n.n */
-        real3 p = point - c0;
         real area2 = dot3(geometric, geometric);
         real b1 = dot3(edge_cross(p, e2), geometric) / area2;
         real b2 = dot3(edge_cross(e1, p), geometric) / area2;

@@ -252,6 +252,38 @@ TEST(Stress, SmallWorldAtTheSmallestAndLargestSupportedScales) {
     expect_close_to_reference(huge, "world of scale 2e13 at 4e14");
 }
 
+// small_world's meshes: a smooth sphere mesh (corner normals) shadowing a floor grid, and a
+// faceted one (geometric normals), placed and sized as small_world places its spheres; the
+// smallest triangle edge is about 0.06 scale.
+Scene mesh_world(const Vec3& origin, double scale = 1) {
+    const auto at = [&](double x, double y, double z) { return origin + Vec3{x, y, z} * scale; };
+    Scene scene = testing::make_scene(at(0.5, 1.2, 8), origin, {0, 1, 0}, 50, 160, 120);
+    scene.has_sun = true;
+    scene.sun_location = at(20, 30, 15);
+    testing::add_mesh(scene, testing::sphere_mesh(origin, 1 * scale, 24, 12, true), {0.9, 0.4, 0.2});
+    testing::add_mesh(scene, testing::sphere_mesh(at(0.7, 1.6, 0.6), 0.4 * scale, 10, 6, false), {0.2, 0.9, 0.4});
+    testing::add_mesh(scene, testing::grid_mesh(at(-4, -1.2, -3), Vec3{8, 0, 0} * scale, Vec3{0, 0.3, 6} * scale, 8, 6),
+                      {0.3, 0.5, 0.9});
+    return scene;
+}
+
+// mesh_world at scales whose weights and squared areas leave float's range unless rescaled
+// (triangle.cl: edges near 1e-16 and 1e12, weights near 1e-30 and 1e28, their products with
+// distances beyond 1e38): the same picture as at scale 1, and the kernels the reference's.
+TEST(Stress, MeshWorldAtTheSmallestAndLargestSupportedScales) {
+    const Image expected = testing::render_with_reference(mesh_world({0, 0, 0}));
+    for (const double scale : {2.5e-15, 1e-12, 1e10}) {
+        std::ostringstream what;
+        what << "mesh world of scale " << scale;
+        const Scene scene = mesh_world({0, 0, 0}, scale);
+        expect_same_picture(testing::render_with_reference(scene), expected, what.str() + " (reference)");
+        expect_close_to_reference(scene, what.str());
+    }
+    const Scene huge = mesh_world({4e14, 4e14, -4e14}, 2e13);
+    expect_same_picture(testing::render_with_reference(huge), expected, "mesh world of scale 2e13 at 4e14 (reference)");
+    expect_close_to_reference(huge, "mesh world of scale 2e13 at 4e14");
+}
+
 // Whether the ray through (x, y, -1) (camera looking along -z, up +y) clearly meets a shape:
 // 1 inside, 0 outside, -1 too close to its outline to say.
 using Coverage = std::function<int(double x, double y)>;
