@@ -93,6 +93,24 @@ bool transformed_normal(const Vec3& normal, const Vec3& scale, Vec3& out) {
     return true;
 }
 
+// The longest edge of the triangles `corners` names among `positions`.
+double longest_edge(const std::vector<Vec3>& positions, const std::vector<std::array<std::uint32_t, 3>>& corners) {
+    double longest = 0;
+    for (const auto& triangle : corners)
+        for (int k = 0; k < 3; ++k)
+            longest = std::max(longest, length(positions[triangle[(k + 1) % 3]] - positions[triangle[k]]));
+    return longest;
+}
+
+// Why triangles whose longest edge is `longest` have no area in double: corners so close that
+// the square of their distance underflows (1e-160 apart), or repeated or collinear ones.
+std::string no_area_reason(double longest, const std::string& collinear) {
+    if (longest > 0 && longest < kMinLength)
+        return "its longest edge is " + number_text(longest) +
+               " long, outside the range clrender renders exactly enough: " + length_range_text();
+    return collinear;
+}
+
 // Whether any triangle of `model` has an area: a mesh whose faces all have repeated or collinear
 // corners draws nothing, which is never the model a scene means.
 bool any_triangle_has_area(const ObjMesh& model) {
@@ -155,8 +173,9 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
     }
     mesh.triangle_count = scene.triangles.size() - mesh.first_triangle;
     if (mesh.triangle_count == 0)
-        filename.fail(what + ": all its faces have zero area once scaled and placed: "
-                      "it draws nothing");
+        filename.fail(what + ": all its faces have zero area once scaled and placed (" +
+                      no_area_reason(longest_edge(placed, model.triangles), "repeated or collinear corners") +
+                      "): it draws nothing");
     scene.meshes.push_back(std::move(mesh));
 }
 
@@ -164,7 +183,11 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
 
 void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, const Node& node) {
     const Vec3 area = cross(corners[1] - corners[0], corners[2] - corners[0]);
-    if (!(dot(area, area) > 0)) node.fail("triangle has no area: its vertices are collinear or repeated");
+    if (!(dot(area, area) > 0)) {
+        const std::vector<Vec3> positions(corners.begin(), corners.end());
+        node.fail("triangle has no area: " +
+                  no_area_reason(longest_edge(positions, {{0, 1, 2}}), "its vertices are collinear or repeated"));
+    }
     ObjMesh model;
     model.positions.assign(corners.begin(), corners.end());
     model.triangles.push_back({0, 1, 2});
@@ -220,7 +243,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             if (model->triangles.empty())
                 throw ObjError("it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
             if (!any_triangle_has_area(*model))
-                throw ObjError("all its faces have zero area (repeated or collinear corners): it draws nothing");
+                throw ObjError("all its faces have zero area (" +
+                               no_area_reason(longest_edge(model->positions, model->triangles),
+                                              "repeated or collinear corners") +
+                               "): it draws nothing");
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);

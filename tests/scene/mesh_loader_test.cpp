@@ -124,8 +124,17 @@ TEST(MeshLoader, AMeshWhoseFacesAllHaveZeroAreaIsRefused) {
     folder.write("tiny.obj", "v 0 0 0\nv 1e-10 0 0\nv 0 1e-10 0\nf 1 2 3\n");
     EXPECT_EQ(load_in(folder, with_obj({{"filename", "tiny.obj"}})).triangles.size(), 1u);
     const std::string placed = error_of(folder, with_obj({{"filename", "tiny.obj"}, {"position", {1e10, 1e10, 0}}}));
-    EXPECT_EQ(placed, "/obj/filename: mesh 'tiny.obj': all its faces have zero area once scaled and placed: it draws "
-                      "nothing") << placed;
+    EXPECT_EQ(placed, "/obj/filename: mesh 'tiny.obj': all its faces have zero area once scaled and placed (repeated or "
+                      "collinear corners): it draws nothing") << placed;
+    // Corners 1e-160 apart are not collinear: the square of their distance underflows double,
+    // and the message says the edge is below the lengths clrender renders.
+    folder.write("tinier.obj", "v 0 0 0\nv 1e-160 0 0\nv 0 1e-160 0\nf 1 2 3\n");
+    const std::string tinier = error_of(folder, with_obj({{"filename", "tinier.obj"}}));
+    EXPECT_NE(tinier.find("tinier.obj': all its faces have zero area (its longest edge is 1.414213562373095e-160 long, "
+                          "outside the range clrender renders exactly enough: lengths must be from 1e-15 to 1e16): it "
+                          "draws nothing"),
+              std::string::npos)
+        << tinier;
 }
 
 // The reader's warnings are the scene's, at the mesh's "filename" (so --strict refuses them).

@@ -135,7 +135,10 @@ TEST(Fall2019Format, TrianglesAndMeshesAreMeshesWithTheirMaterial) {
 
     json = fall2019_scene();
     json["surfaces"][0] = Json::parse(R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "ambient": [1, 1, 1]})");
-    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices", "triangle has no area"));
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices", "triangle has no area: its vertices are collinear or repeated"));
+    json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1e-160, 0, 0], [0, 1e-160, 0]]");
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices",
+                        "triangle has no area: its longest edge is 1.414213562373095e-160 long, outside the range"));
     json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1, 0, 0]]");
     EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices", "vertices must be 3 positions"));
     json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1, 0, 0], [0, 1e16, 0]]");
