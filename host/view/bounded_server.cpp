@@ -9,11 +9,16 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <string>
 
 namespace clr {
 namespace {
+
+// The connection this thread serves: the post-routing handler, which cpp-httplib gives only the
+// request and its answer, asks it what was read.
+thread_local const RequestStream* stream_of_this_thread = nullptr;
 
 // Waits up to `ms` for `events` on `socket`: > 0 when ready, 0 when the time ran out, < 0 on
 // an error.
@@ -68,6 +73,28 @@ void linger_before_close(int socket) {
     }
 }
 
+// The length a request's body says it has: none without a Content-Length, nullopt where the
+// header is given twice or is not a plain number.
+std::optional<std::size_t> declared_body_length(const httplib::Request& request) {
+    const std::size_t given = request.get_header_value_count("Content-Length");
+    if (given == 0) return 0;
+    if (given > 1) return std::nullopt;
+    const std::string text = request.get_header_value("Content-Length");
+    std::size_t length = 0;
+    const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), length);
+    if (text.empty() || error != std::errc() || stop != text.data() + text.size()) return std::nullopt;
+    return length;
+}
+
+// Makes `answer` say Connection: close (once) and no Keep-Alive.
+void say_connection_closes(httplib::Response& answer) {
+    if (answer.get_header_value("Connection") != "close") {
+        answer.headers.erase("Connection");
+        answer.set_header("Connection", "close");
+    }
+    answer.headers.erase("Keep-Alive");
+}
+
 }  // namespace
 
 RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
@@ -99,6 +126,19 @@ void RequestStream::start_request() {
     head_done_ = false;
     head_end_matched_ = 0;
     head_bytes_ = body_bytes_ = 0;
+    head_parsed_ = false;
+    declared_body_ = 0;
+}
+
+void RequestStream::head_parsed(std::optional<std::size_t> declared_body) {
+    head_parsed_ = true;
+    declared_body_ = declared_body;
+}
+
+// cpp-httplib reads a body exactly to its length, and reads none where no route reads it (a
+// refusal before routing, a GET): the bytes it was handed after the head tell.
+bool RequestStream::body_left_unread() const {
+    return !head_parsed_ || !declared_body_ || *declared_body_ > body_bytes_;
 }
 
 int RequestStream::wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const {
@@ -209,6 +249,16 @@ void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
         numeric_address(address, length, ip, port);
 }
 
+// An answer to a request whose body was not read says Connection: close, and the connection
+// closes after it. cpp-httplib would keep it open and parse the body as the next request, one
+// that no refusal had seen: the body of a request refused for its Host or Origin could carry a
+// request with the Host and Origin the refusal was about.
+BoundedServer::BoundedServer() {
+    httplib::Server::set_post_routing_handler([](const httplib::Request&, httplib::Response& answer) {
+        if (stream_of_this_thread != nullptr && stream_of_this_thread->body_left_unread()) say_connection_closes(answer);
+    });
+}
+
 // cpp-httplib's own loop over a connection's requests (process_server_socket in 0.11.4), with
 // one RequestStream for the whole connection: bytes of a next request that arrived with the
 // last one stay in its buffer.
@@ -217,15 +267,18 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
     RequestStream stream(socket, milliseconds(read_timeout_sec_ * 1000 + read_timeout_usec_ / 1000),
                          milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_,
                          svr_sock_);
+    stream_of_this_thread = &stream;
+    const auto parsed = [&stream](httplib::Request& request) { stream.head_parsed(declared_body_length(request)); };
     bool served = false;
     for (std::size_t left = keep_alive_max_count_; left > 0; --left) {
         if (!stream.has_buffered_bytes() && !next_request_arrives(socket, milliseconds(keep_alive_timeout_sec_ * 1000), svr_sock_))
             break;
         stream.start_request();
         bool connection_closed = false;
-        served = process_request(stream, left == 1, connection_closed, nullptr);
+        served = process_request(stream, left == 1, connection_closed, parsed);
         if (!served || connection_closed || stream.limit_reached() || stream.answer_closes()) break;
     }
+    stream_of_this_thread = nullptr;
     if (stream.limit_reached() || stream.answer_closes()) linger_before_close(socket);
     ::shutdown(socket, SHUT_RDWR);
     ::close(socket);

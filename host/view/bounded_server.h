@@ -7,6 +7,8 @@
 //   - ends a request that has not arrived whole within kRequestSeconds of its first byte,
 //     answering 408;
 //   - ends an answer that the client has not taken within kAnswerSeconds;
+//   - closes the connection after an answer to a request whose body it did not read, since
+//     cpp-httplib would take that body for the next request;
 // and otherwise serves the connection as cpp-httplib does (keep-alive, its timeouts).
 // docs/command-line.md (Viewer, Limits) lists the figures.
 #pragma once
@@ -16,6 +18,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace clr {
@@ -45,6 +48,12 @@ public:
     // Whether the last answer's head said `Connection: close` (a refusal whose body, if the
     // client sends it, is never read): the connection ends after it.
     bool answer_closes() const { return answer_closes_; }
+    // cpp-httplib has parsed the request's head; its body is `declared_body` bytes long
+    // (nullopt where its Content-Length is unclear).
+    void head_parsed(std::optional<std::size_t> declared_body);
+    // Whether bytes of the request may be left unread: a body not read (whole), or a request
+    // refused before its head was parsed. What follows would be read as the next request.
+    bool body_left_unread() const;
 
     bool is_readable() const override;
     bool is_writable() const override;
@@ -78,6 +87,8 @@ private:
     bool head_done_ = false;
     int head_end_matched_ = 0;  // 1: after a line feed; 2: after LF CR; 3: the head's end
     std::size_t head_bytes_ = 0, body_bytes_ = 0;
+    bool head_parsed_ = false;
+    std::optional<std::size_t> declared_body_;
     bool limit_reached_ = false;
     std::string answer_head_;  // the answer's head as written, until its empty line
     bool answer_head_done_ = false, answer_closes_ = false;
@@ -85,7 +96,13 @@ private:
 
 // httplib::Server whose connections are read through RequestStream.
 class BoundedServer : public httplib::Server {
+public:
+    BoundedServer();
+
 private:
+    // Its own post-routing handler closes connections (see the constructor): not replaceable.
+    using httplib::Server::set_post_routing_handler;
+
     bool process_and_close_socket(socket_t socket) override;
 };
 

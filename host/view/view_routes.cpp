@@ -257,8 +257,11 @@ RequestFacts request_facts(const Request& request) {
 void add_view_routes(httplib::Server& server, ViewSession& session) {
     server.set_pre_routing_handler([&session](const Request& request, Response& response) {
         const RequestVerdict verdict = session.guard.check(request_facts(request));
+        // A refused request's body is never read, so the connection ends with the answer: its
+        // body must not be taken for a next request, past the checks that refused it.
         if (verdict == RequestVerdict::Forbidden) {
             response.status = 403;
+            response.set_header("Connection", "close");
             return httplib::Server::HandlerResponse::Handled;
         }
         // cpp-httplib limits a body by its Content-Length only: a chunked body would be read

@@ -197,6 +197,44 @@ TEST_F(ViewSecurity, PostsMustComeFromTheViewersOwnPage) {
     fs::remove(folder_->file("origin_check.json"));
 }
 
+// A body the server does not read is never taken for the next request: the connection ends
+// with the answer. Here each body is itself a request with this server's Host and Origin, as a
+// foreign page can send it (a text/plain body), refused for its Host or Origin, to a route that
+// reads no body, to no route, or with a Range header that cannot be parsed.
+TEST_F(ViewSecurity, ABodyNotReadIsNeverTakenForTheNextRequest) {
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "smuggled"})";
+    const std::string smuggled = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                                 "\r\nOrigin: " + own_origin() + "\r\nContent-Type: application/json\r\nContent-Length: " +
+                                 std::to_string(body.size()) + "\r\n\r\n" + body;
+    const std::string carrying =
+        " HTTP/1.1\r\nContent-Type: text/plain\r\nContent-Length: " + std::to_string(smuggled.size()) + "\r\n";
+    const std::string own = "Host: " + own_host() + "\r\n";
+    const std::string foreign_host = "Host: evil.example:" + std::to_string(viewer_->port()) + "\r\n";
+    const std::vector<std::pair<std::string, std::string>> requests = {
+        {"POST " + viewer_->with_token("/export") + carrying + own + "Origin: http://evil.example\r\n\r\n", "HTTP/1.1 403"},
+        {"POST " + viewer_->with_token("/export") + carrying + foreign_host + "Origin: http://evil.example\r\n\r\n",
+         "HTTP/1.1 403"},
+        {"GET " + viewer_->with_token("/scene.json") + carrying + own + "\r\n", "HTTP/1.1 200"},
+        {"GET " + viewer_->with_token("/nothing") + carrying + own + "\r\n", "HTTP/1.1 404"},
+        {"GET " + viewer_->with_token("/scene.json") + carrying + own + "Range: bytes=oops\r\n\r\n", "HTTP/1.1 416"},
+    };
+    for (const auto& [request, status] : requests) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        const std::string both = request + smuggled;
+        ASSERT_EQ(::send(socket, both.data(), both.size(), MSG_NOSIGNAL), static_cast<ssize_t>(both.size()));
+        const std::string answer = read_one_answer(socket, 5);
+        pollfd ready{socket, POLLIN, 0};
+        char next[64] = {};
+        const ssize_t after = ::poll(&ready, 1, 5000) > 0 ? ::recv(socket, next, sizeof next - 1, 0) : -2;
+        ::close(socket);
+        EXPECT_EQ(answer.rfind(status, 0), 0u) << request << "\n" << answer.substr(0, 200);
+        EXPECT_NE(answer.find("Connection: close\r\n"), std::string::npos) << request << "\n" << answer.substr(0, 300);
+        EXPECT_EQ(after, 0) << request << "\nthen: " << next;
+    }
+    EXPECT_FALSE(fs::exists(folder_->file("smuggled.json")));
+}
+
 TEST_F(ViewSecurity, NoPathReachesTheFileSystem) {
     auto client = viewer_->client();
     folder_->write("secret.txt", "secret");
