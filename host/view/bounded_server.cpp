@@ -268,7 +268,13 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
                          milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_,
                          svr_sock_);
     stream_of_this_thread = &stream;
-    const auto parsed = [&stream](httplib::Request& request) { stream.head_parsed(declared_body_length(request)); };
+    const auto parsed = [&stream](httplib::Request& request) {
+        stream.head_parsed(declared_body_length(request));
+        // Every answer is sent whole: a Range header is ignored, as HTTP lets a server do.
+        // cpp-httplib would build the answer to each range in memory, a thousand ranges of a
+        // frame a thousand copies of it, without bound.
+        request.ranges.clear();
+    };
     bool served = false;
     for (std::size_t left = keep_alive_max_count_; left > 0; --left) {
         if (!stream.has_buffered_bytes() && !next_request_arrives(socket, milliseconds(keep_alive_timeout_sec_ * 1000), svr_sock_))

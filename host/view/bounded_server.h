@@ -9,6 +9,8 @@
 //   - ends an answer that the client has not taken within kAnswerSeconds;
 //   - closes the connection after an answer to a request whose body it did not read, since
 //     cpp-httplib would take that body for the next request;
+//   - sends every answer whole, ignoring a Range header (cpp-httplib would build a part for
+//     each range in memory);
 // and otherwise serves the connection as cpp-httplib does (keep-alive, its timeouts).
 // docs/command-line.md (Viewer, Limits) lists the figures.
 #pragma once

@@ -278,6 +278,7 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         response.set_header("X-Content-Type-Options", "nosniff");
         response.set_header("X-Frame-Options", "DENY");
         response.set_header("Referrer-Policy", "no-referrer");
+        response.set_header("Accept-Ranges", "none");  // a Range header is ignored (view/bounded_server.h)
         response.set_header("Content-Security-Policy",
                             "default-src 'self' 'unsafe-inline' blob: data:; frame-ancestors 'none'; base-uri 'none'; "
                             "form-action 'self'");

@@ -235,6 +235,23 @@ TEST_F(ViewSecurity, ABodyNotReadIsNeverTakenForTheNextRequest) {
     EXPECT_FALSE(fs::exists(folder_->file("smuggled.json")));
 }
 
+// No route serves part of an answer: a Range header, of one range or of a thousand, is ignored
+// and the whole frame is sent once. cpp-httplib would answer each range with its part, built in
+// memory: a thousand ranges of a large frame ran the viewer out of memory.
+TEST_F(ViewSecurity, ARangeHeaderIsIgnored) {
+    auto client = viewer_->client();
+    std::string thousand = "bytes=0-";
+    for (int k = 1; k < 1000; ++k) thousand += ",0-";
+    for (const std::string& ranges : {std::string("bytes=0-9"), thousand}) {
+        const httplib::Result frame = client->Get(viewer_->with_token("/frame.rgba?size=16x9").c_str(), {{"Range", ranges}});
+        ASSERT_TRUE(frame) << ranges.substr(0, 20);
+        EXPECT_EQ(frame->status, 200) << ranges.substr(0, 20);
+        EXPECT_EQ(frame->body.size(), 16u * 9 * 4) << ranges.substr(0, 20);
+        EXPECT_FALSE(frame->has_header("Content-Range"));
+        EXPECT_EQ(frame->get_header_value("Accept-Ranges"), "none");
+    }
+}
+
 TEST_F(ViewSecurity, NoPathReachesTheFileSystem) {
     auto client = viewer_->client();
     folder_->write("secret.txt", "secret");
