@@ -26,9 +26,23 @@ VideoJobs::VideoJobs(std::vector<std::string> render_arguments) : render_argumen
 
 VideoJobs::~VideoJobs() { stop(); }
 
-std::optional<int> VideoJobs::start(const std::string& scene_path, const std::string& video_path) {
+VideoJobs::Place::~Place() {
+    if (!owner_) return;
+    std::lock_guard<std::mutex> lock(owner_->mutex_);
+    owner_->reserved_ = false;
+}
+
+std::optional<VideoJobs::Place> VideoJobs::reserve() {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (running_) return std::nullopt;
+    if (running_ || reserved_) return std::nullopt;
+    reserved_ = true;
+    return Place(*this);
+}
+
+int VideoJobs::start(Place&& place, const std::string& scene_path, const std::string& video_path) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    place.owner_ = nullptr;  // taken here: the job runs, or the render could not start
+    reserved_ = false;
     if (watcher_.joinable()) watcher_.join();  // the last job's, finished
     child_.reset();
     std::vector<std::string> arguments{clrender_program_path(), scene_path, "--video", video_path, "--progress", "json", "-q"};
@@ -99,11 +113,6 @@ void VideoJobs::watch(int read_fd) {
         running_ = false;
         return;
     }
-}
-
-bool VideoJobs::busy() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return running_;
 }
 
 std::optional<VideoJobState> VideoJobs::state(int id) const {

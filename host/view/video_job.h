@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace clr {
@@ -31,12 +32,27 @@ public:
     VideoJobs(const VideoJobs&) = delete;
     VideoJobs& operator=(const VideoJobs&) = delete;
 
-    // Starts rendering `scene_path` to `video_path`; returns the job's id, or nullopt while
-    // another video renders. Throws OutputError when the render cannot start.
-    std::optional<int> start(const std::string& scene_path, const std::string& video_path);
+    // The one video's place, held from before its scene is written until its render starts,
+    // so that a second request meanwhile is refused before it writes anything. Given back
+    // when dropped unstarted (the scene could not be written, say).
+    class Place {
+    public:
+        Place(Place&& other) noexcept : owner_(std::exchange(other.owner_, nullptr)) {}
+        Place& operator=(Place&&) = delete;
+        ~Place();
 
-    // Whether a video is rendering now.
-    bool busy() const;
+    private:
+        friend class VideoJobs;
+        explicit Place(VideoJobs& owner) : owner_(&owner) {}
+        VideoJobs* owner_;  // null once started or moved from
+    };
+
+    // The place for a video; nullopt while another renders or holds its place.
+    std::optional<Place> reserve();
+
+    // Starts rendering `scene_path` to `video_path` in `place`; returns the job's id. Throws
+    // OutputError when the render cannot start (the place is given back).
+    int start(Place&& place, const std::string& scene_path, const std::string& video_path);
 
     // The job's state; nullopt for an id that names no job.
     std::optional<VideoJobState> state(int id) const;
@@ -53,6 +69,7 @@ private:
     std::unique_ptr<class ChildProcess> child_;
     std::thread watcher_;
     bool running_ = false;
+    bool reserved_ = false;  // a Place is held
     bool stopping_ = false;
 };
 

@@ -184,7 +184,9 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/render-video", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const CameraKeysRequest keys = parse_camera_keys(request.body);
-            if (session.videos.busy()) {
+            // The place is taken before the scene is written: a refused request writes nothing.
+            std::optional<VideoJobs::Place> place = session.videos.reserve();
+            if (!place) {
                 send_error(response, 409, "a video is rendering already; one at a time");
                 return;
             }
@@ -192,12 +194,8 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             const ExportedScene exported = session.exporter.export_keys(keys, {".mp4"});
             const std::string video = session.exporter.output_dir() + "/" + exported.name + ".mp4";
             session.exporter.check_output("video", video);
-            const std::optional<int> job = session.videos.start(exported.path, video);
-            if (!job) {
-                send_error(response, 409, "a video is rendering already; one at a time");
-                return;
-            }
-            send_json(response, 200, {{"job", *job}, {"file", video}, {"scene", exported.path}, {"name", exported.name}});
+            const int job = session.videos.start(std::move(*place), exported.path, video);
+            send_json(response, 200, {{"job", job}, {"file", video}, {"scene", exported.path}, {"name", exported.name}});
         });
     });
     server.Get("/job", [&session](const Request& request, Response& response) {

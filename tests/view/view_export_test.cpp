@@ -3,11 +3,13 @@
 // images; and its video, rendered in the background through the normal render path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <vector>
 
 #include "support/command.h"
 #include "support/temp_folder.h"
@@ -275,6 +277,31 @@ TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
     ASSERT_TRUE(busy);
     EXPECT_EQ(busy->status, 409) << "one video at a time";
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
+    for (const auto& entry : fs::directory_iterator(folder.path())) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_TRUE(name == "long.json" || name == "view-stderr.txt") << "left behind: " << name;
+    }
+}
+
+// Clicks on "Render video" while a video is being started or rendered are refused (409) before
+// they write anything: four at once leave one scene, the video's.
+TEST(ViewExport, ARefusedVideoWritesNothing) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const std::string many_frames = R"({"keys": [{"eye": [-3, 2, 12], "lookat": [0, 1, 0]}, {"eye": [3, 1.5, 10], "lookat": [0, 1, 0]},
+        {"eye": [5, 1.5, 10], "lookat": [0, 1, 0]}, {"eye": [7, 1.5, 10], "lookat": [0, 1, 0]}], "name": "long"})";
+    std::vector<int> statuses(4, 0);
+    std::vector<std::thread> clicks;
+    for (std::size_t c = 0; c < statuses.size(); ++c)
+        clicks.emplace_back([&, c] {
+            const httplib::Result result = post(viewer, "/render-video", many_frames);
+            statuses[c] = result ? result->status : -1;
+        });
+    for (std::thread& click : clicks) click.join();
+    EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 200), 1);
+    EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 409), 3);
     EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
     for (const auto& entry : fs::directory_iterator(folder.path())) {
         const std::string name = entry.path().filename().string();
