@@ -266,7 +266,7 @@ TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {
 
 TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
     TempFolder folder;
-    ViewerProcess viewer("'" + kDemo + "demo.json' --size 320x180 --spp 16", folder.path());
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
     ASSERT_TRUE(viewer.started()) << viewer.output();
     const std::string many_frames = R"({"keys": [{"eye": [-3, 2, 12], "lookat": [0, 1, 0]}, {"eye": [3, 1.5, 10], "lookat": [0, 1, 0]},
         {"eye": [5, 1.5, 10], "lookat": [0, 1, 0]}, {"eye": [7, 1.5, 10], "lookat": [0, 1, 0]}], "name": "long"})";
