@@ -22,6 +22,14 @@ std::string clrender_program_path() {
     return self.string();
 }
 
+namespace {
+
+// A path as the render's command line must get it: one that begins with '-' (under an
+// --output-dir named "-out") would be read as an option, so it is given as "./-out/...".
+std::string never_an_option(const std::string& path) { return !path.empty() && path[0] == '-' ? "./" + path : path; }
+
+}  // namespace
+
 VideoJobs::VideoJobs(std::vector<std::string> render_arguments) : render_arguments_(std::move(render_arguments)) {}
 
 VideoJobs::~VideoJobs() { stop(); }
@@ -45,7 +53,8 @@ int VideoJobs::start(Place&& place, const std::string& scene_path, const std::st
     reserved_ = false;
     if (watcher_.joinable()) watcher_.join();  // the last job's, finished
     child_.reset();
-    std::vector<std::string> arguments{clrender_program_path(), scene_path, "--video", video_path, "--progress", "json", "-q"};
+    std::vector<std::string> arguments{clrender_program_path(), never_an_option(scene_path), "--video",
+                                       never_an_option(video_path), "--progress", "json", "-q"};
     arguments.insert(arguments.end(), render_arguments_.begin(), render_arguments_.end());
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw OutputError(std::string("cannot create a pipe for the video render: ") + std::strerror(errno));

@@ -34,6 +34,19 @@ httplib::Result post(const ViewerProcess& viewer, const std::string& path, const
     return viewer.client()->Post(viewer.with_token(path).c_str(), origin, body, "application/json");
 }
 
+// The state of job `id` once it no longer runs (or after a minute).
+json finished_job(const ViewerProcess& viewer, int id) {
+    json state;
+    for (int i = 0; i < 600; ++i) {
+        const httplib::Result polled = viewer.client()->Get(viewer.with_token("/job?id=" + std::to_string(id)).c_str());
+        if (!polled || polled->status != 200) return json();
+        state = json::parse(polled->body);
+        if (state["state"] != "running") break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return state;
+}
+
 TEST(ViewExport, WritesTheKeysAsACameraPathThatClrenderRenders) {
     TempFolder folder;
     fs::create_directories(folder.file("out"));
@@ -307,6 +320,23 @@ TEST(ViewExport, ARefusedVideoWritesNothing) {
         const std::string name = entry.path().filename().string();
         EXPECT_TRUE(name == "long.json" || name == "view-stderr.txt") << "left behind: " << name;
     }
+}
+
+// An --output-dir whose name begins with '-': the video's render gets its scene and video as
+// paths, never as options.
+TEST(ViewExport, AVideoRendersIntoAFolderNamedLikeAnOption) {
+    TempFolder folder;
+    fs::create_directories(folder.file("-out"));
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18 --output-dir=-out", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    EXPECT_EQ(json::parse(started->body)["file"], "-out/tour.mp4");
+    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    EXPECT_EQ(state["state"], "done") << state.dump();
+    EXPECT_GT(fs::exists(folder.file("-out/tour.mp4")) ? fs::file_size(folder.file("-out/tour.mp4")) : 0u, 0u);
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
 }  // namespace
