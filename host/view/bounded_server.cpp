@@ -10,8 +10,14 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <condition_variable>
 #include <cstring>
+#include <deque>
+#include <functional>
+#include <mutex>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace clr {
 namespace {
@@ -19,6 +25,67 @@ namespace {
 // The connection this thread serves: the post-routing handler, which cpp-httplib gives only the
 // request and its answer, asks it what was read.
 thread_local const RequestStream* stream_of_this_thread = nullptr;
+
+// When the connection this thread is given was accepted (set by ConnectionQueue).
+thread_local std::optional<std::chrono::steady_clock::time_point> accepted_for_this_thread;
+
+// cpp-httplib's ThreadPool, which also counts the connections waiting for a thread and tells
+// each thread when its connection was accepted.
+class ConnectionQueue : public httplib::TaskQueue {
+public:
+    ConnectionQueue(std::size_t threads, std::atomic<std::size_t>& waiting) : waiting_(waiting) {
+        for (std::size_t k = 0; k < threads; ++k) threads_.emplace_back([this] { work(); });
+    }
+
+    void enqueue(std::function<void()> serve) override {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            connections_.push_back({std::move(serve), std::chrono::steady_clock::now()});
+            waiting_ = connections_.size();
+        }
+        ready_.notify_one();
+    }
+
+    // Serves the connections still waiting, then joins the threads.
+    void shutdown() override {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            shutting_down_ = true;
+        }
+        ready_.notify_all();
+        for (std::thread& thread : threads_) thread.join();
+    }
+
+private:
+    struct Connection {
+        std::function<void()> serve;
+        std::chrono::steady_clock::time_point accepted;
+    };
+
+    void work() {
+        for (;;) {
+            Connection next;
+            {
+                std::unique_lock<std::mutex> lock(mutex_);
+                ready_.wait(lock, [this] { return !connections_.empty() || shutting_down_; });
+                if (connections_.empty()) return;  // shutting down
+                next = std::move(connections_.front());
+                connections_.pop_front();
+                waiting_ = connections_.size();
+            }
+            accepted_for_this_thread = next.accepted;
+            next.serve();
+            accepted_for_this_thread.reset();
+        }
+    }
+
+    std::atomic<std::size_t>& waiting_;
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::deque<Connection> connections_;
+    bool shutting_down_ = false;
+    std::vector<std::thread> threads_;
+};
 
 // Waits up to `ms` for `events` on `socket`: > 0 when ready, 0 when the time ran out, < 0 on
 // an error.
@@ -44,14 +111,18 @@ void numeric_address(const sockaddr_storage& address, socklen_t length, std::str
 }
 
 // Waits, as cpp-httplib does between the requests of a kept-alive connection, until the next
-// request's first bytes arrive (true), or the connection is idle for `idle` or the server
-// stops (false).
-bool next_request_arrives(int socket, std::chrono::milliseconds idle, const std::atomic<socket_t>& listening) {
-    const auto give_up = std::chrono::steady_clock::now() + idle;
+// request's first bytes arrive (true), or the connection has been idle since `idle_since` for
+// `idle` (for kIdleWhileOthersWait while other connections wait for a thread) or the server
+// stops (false). Ten thousand connections that send nothing then cost the others a fraction
+// of a second, not the keep-alive wait each.
+bool next_request_arrives(int socket, std::chrono::steady_clock::time_point idle_since, std::chrono::milliseconds idle,
+                          const std::atomic<socket_t>& listening, const std::atomic<std::size_t>& waiting) {
     while (listening != INVALID_SOCKET) {
-        const int ready = wait_for(socket, POLLIN, 50);
+        const auto limit = waiting > 0 ? std::min(idle, kIdleWhileOthersWait) : idle;
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(idle_since + limit - std::chrono::steady_clock::now());
+        const int ready = wait_for(socket, POLLIN, static_cast<int>(std::clamp<std::chrono::milliseconds::rep>(left.count(), 0, 50)));
         if (ready != 0) return ready > 0;  // bytes, or the client's end (read as such)
-        if (std::chrono::steady_clock::now() >= give_up) return false;
+        if (left.count() <= 0) return false;
     }
     return false;
 }
@@ -253,7 +324,8 @@ void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
 // closes after it. cpp-httplib would keep it open and parse the body as the next request, one
 // that no refusal had seen: the body of a request refused for its Host or Origin could carry a
 // request with the Host and Origin the refusal was about.
-BoundedServer::BoundedServer() {
+BoundedServer::BoundedServer(std::size_t threads) {
+    new_task_queue = [this, threads] { return new ConnectionQueue(threads, waiting_connections_); };
     httplib::Server::set_post_routing_handler([](const httplib::Request&, httplib::Response& answer) {
         if (stream_of_this_thread != nullptr && stream_of_this_thread->body_left_unread()) say_connection_closes(answer);
     });
@@ -276,13 +348,16 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
         request.ranges.clear();
     };
     bool served = false;
+    auto idle_since = accepted_for_this_thread.value_or(std::chrono::steady_clock::now());
     for (std::size_t left = keep_alive_max_count_; left > 0; --left) {
-        if (!stream.has_buffered_bytes() && !next_request_arrives(socket, milliseconds(keep_alive_timeout_sec_ * 1000), svr_sock_))
+        if (!stream.has_buffered_bytes() && !next_request_arrives(socket, idle_since, milliseconds(keep_alive_timeout_sec_ * 1000),
+                                                                  svr_sock_, waiting_connections_))
             break;
         stream.start_request();
         bool connection_closed = false;
         served = process_request(stream, left == 1, connection_closed, parsed);
         if (!served || connection_closed || stream.limit_reached() || stream.answer_closes()) break;
+        idle_since = std::chrono::steady_clock::now();
     }
     stream_of_this_thread = nullptr;
     if (stream.limit_reached() || stream.answer_closes()) linger_before_close(socket);

@@ -11,6 +11,10 @@
 //     cpp-httplib would take that body for the next request;
 //   - sends every answer whole, ignoring a Range header (cpp-httplib would build a part for
 //     each range in memory);
+//   - closes a connection that has not started its next request within kIdleWhileOthersWait
+//     (from its acceptance, or from its last answer) while other connections wait for a
+//     thread: cpp-httplib's pool queues connections without bound, and each connection that
+//     sends nothing would hold a thread for the whole keep-alive wait;
 // and otherwise serves the connection as cpp-httplib does (keep-alive, its timeouts).
 // docs/command-line.md (Viewer, Limits) lists the figures.
 #pragma once
@@ -31,6 +35,8 @@ constexpr std::size_t kMostHeadBytes = 64 * 1024;
 constexpr int kRequestSeconds = 10;
 // Longest an answer may take to leave, from its first byte.
 constexpr int kAnswerSeconds = 60;
+// Longest a connection keeps its thread without starting a request while others wait for one.
+constexpr std::chrono::milliseconds kIdleWhileOthersWait{100};
 
 // One connection's bytes as cpp-httplib reads and writes them, within the limits above.
 // `read_timeout` and `write_timeout` bound each wait, as cpp-httplib's own stream does.
@@ -99,13 +105,17 @@ private:
 // httplib::Server whose connections are read through RequestStream.
 class BoundedServer : public httplib::Server {
 public:
-    BoundedServer();
+    // Connections are served by `threads` threads of the server's own pool (new_task_queue is
+    // set here and must stay), which counts the connections waiting for one.
+    explicit BoundedServer(std::size_t threads);
 
 private:
     // Its own post-routing handler closes connections (see the constructor): not replaceable.
     using httplib::Server::set_post_routing_handler;
 
     bool process_and_close_socket(socket_t socket) override;
+
+    std::atomic<std::size_t> waiting_connections_{0};  // accepted, not yet taken by a thread
 };
 
 }  // namespace clr

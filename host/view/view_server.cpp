@@ -67,7 +67,6 @@ void reap_browser_opener(pid_t& pid) {
 
 // `listening` gets the listening socket, for the backlog (see serve_view).
 void configure(httplib::Server& server, int& listening) {
-    server.new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
     server.set_read_timeout(kClientTimeoutSeconds, 0);
     server.set_write_timeout(kClientTimeoutSeconds, 0);
     server.set_keep_alive_timeout(kKeepAliveSeconds);
@@ -109,7 +108,7 @@ void warn_about_bind(const std::string& bind) {
 void serve_view(const ServerSettings& settings, const std::string& token, const Scene& scene, RenderService& renderer,
                 const PathExporter& exporter, VideoJobs& videos) {
     warn_about_bind(settings.bind);
-    BoundedServer server;  // cpp-httplib's, with limits on a request's head and time
+    BoundedServer server(kServerThreads);  // cpp-httplib's, with limits on a request's head and time
     int listening = -1;
     configure(server, listening);
     const std::string bind_address =

@@ -409,6 +409,30 @@ TEST_F(ViewSecurity, ATrickledRequestEndsAtItsDeadline) {
     EXPECT_LT(seconds, 30.0);
 }
 
+// Connections that send nothing (no token needed) give their threads up while others wait:
+// three hundred of them delay the page's next request by a fraction of a second, rather than
+// holding the 32 threads for the 2 s keep-alive wait each (20 s in all).
+TEST_F(ViewSecurity, ConnectionsThatSendNothingDoNotStallTheOthers) {
+    std::vector<int> idle;
+    for (int k = 0; k < 320; ++k) {
+        const int socket = connect_to_viewer(viewer_->port());
+        if (socket < 0) break;
+        idle.push_back(socket);
+    }
+    EXPECT_EQ(idle.size(), 320u);
+    const auto start = std::chrono::steady_clock::now();
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    const std::string request = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
+    ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+    const std::string answer = read_one_answer(socket, 10);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ::close(socket);
+    for (const int connection : idle) ::close(connection);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << answer.substr(0, 200);
+    EXPECT_LT(seconds, 5.0);
+}
+
 // Two requests sent together on one connection: both are answered, in order.
 TEST_F(ViewSecurity, PipelinedRequestsAreEachAnswered) {
     const int socket = connect_to_viewer(viewer_->port());
