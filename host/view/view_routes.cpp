@@ -6,6 +6,7 @@
 #include <regex>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/interruption.h"
@@ -218,22 +219,56 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     });
 }
 
-// Every other method on a route's path: 405 naming the methods it answers, rather than 404
-// (the path exists).
-void refuse_other_methods(httplib::Server& server, const std::string& pattern, bool answers_get) {
-    const std::string allowed = answers_get ? "GET, HEAD" : "POST";
-    const auto refuse = [allowed](const Request& request, Response& response) {
-        response.set_header("Allow", allowed);
-        send_error(response, 405, request.method + " is not answered here; " + allowed + " is");
-    };
-    if (answers_get)
-        server.Post(pattern, refuse);
-    else
+// A route's path: its pattern, and the methods it answers (GET and HEAD, or POST).
+struct RoutePath {
+    std::string pattern;
+    std::string allowed;
+};
+
+std::vector<RoutePath> route_paths() {
+    std::vector<RoutePath> paths;
+    for (const EmbeddedAsset& asset : embedded_viewer_assets()) paths.push_back({asset_pattern(asset.path), "GET, HEAD"});
+    for (const char* pattern : {"/", "/frame\\.png", "/frame\\.rgba", "/explain", "/scene\\.json", "/job"})
+        paths.push_back({pattern, "GET, HEAD"});
+    for (const char* pattern : {"/export", "/render-video"}) paths.push_back({pattern, "POST"});
+    return paths;
+}
+
+// 405 naming the methods the path answers, rather than 404 (the path exists).
+void refuse_method(const Request& request, Response& response, const std::string& allowed) {
+    response.set_header("Allow", allowed);
+    send_error(response, 405, request.method + " is not answered here; " + allowed + " is");
+}
+
+// Every other method cpp-httplib routes, on a route's path: 405.
+void refuse_other_methods(httplib::Server& server, const std::string& pattern, const std::string& allowed) {
+    const auto refuse = [allowed](const Request& request, Response& response) { refuse_method(request, response, allowed); };
+    if (allowed == "POST")
         server.Get(pattern, refuse);
+    else
+        server.Post(pattern, refuse);
     server.Put(pattern, refuse);
     server.Patch(pattern, refuse);
     server.Delete(pattern, refuse);
     server.Options(pattern, refuse);
+}
+
+// A method that cpp-httplib parses but routes nowhere (TRACE, CONNECT, PRI), which it would
+// answer 400 with nothing: 405 on a route's path, 404 elsewhere, as for any other method.
+bool routed_method(const std::string& method) {
+    for (const char* routed : {"GET", "HEAD", "POST", "PUT", "PATCH", "DELETE", "OPTIONS"})
+        if (method == routed) return true;
+    return false;
+}
+
+void refuse_unrouted_method(const Request& request, Response& response, const std::vector<RoutePath>& paths) {
+    for (const RoutePath& path : paths) {
+        if (std::regex_match(request.path, std::regex(path.pattern))) {
+            refuse_method(request, response, path.allowed);
+            return;
+        }
+    }
+    response.status = 404;
 }
 
 }  // namespace
@@ -253,7 +288,8 @@ RequestFacts request_facts(const Request& request) {
 }
 
 void add_view_routes(httplib::Server& server, ViewSession& session) {
-    server.set_pre_routing_handler([&session](const Request& request, Response& response) {
+    const std::vector<RoutePath> paths = route_paths();
+    server.set_pre_routing_handler([&session, paths](const Request& request, Response& response) {
         const RequestVerdict verdict = session.guard.check(request_facts(request));
         // A refused request's body is never read, so the connection ends with the answer: its
         // body must not be taken for a next request, past the checks that refused it.
@@ -280,15 +316,16 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         response.set_header("Content-Security-Policy",
                             "default-src 'self' 'unsafe-inline' blob: data:; frame-ancestors 'none'; base-uri 'none'; "
                             "form-action 'self'");
+        if (!routed_method(request.method)) {
+            refuse_unrouted_method(request, response, paths);
+            return httplib::Server::HandlerResponse::Handled;
+        }
         return httplib::Server::HandlerResponse::Unhandled;
     });
     add_assets(server, session.guard.token());
     add_frame_routes(server, session);
     add_path_routes(server, session);
-    for (const EmbeddedAsset& asset : embedded_viewer_assets()) refuse_other_methods(server, asset_pattern(asset.path), true);
-    for (const char* pattern : {"/", "/frame\\.png", "/frame\\.rgba", "/explain", "/scene\\.json", "/job"})
-        refuse_other_methods(server, pattern, true);
-    for (const char* pattern : {"/export", "/render-video"}) refuse_other_methods(server, pattern, false);
+    for (const RoutePath& path : paths) refuse_other_methods(server, path.pattern, path.allowed);
 }
 
 }  // namespace clr

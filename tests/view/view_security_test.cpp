@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <regex>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "support/temp_folder.h"
@@ -517,6 +518,33 @@ TEST_F(ViewSecurity, WrongMethodsGet405WithAllow) {
     EXPECT_EQ(nothing->status, 404) << "a path the viewer does not answer";
     // Without the token the method changes nothing: 403.
     EXPECT_EQ(client->Delete("/scene.json", origin)->status, 403);
+}
+
+// Methods that cpp-httplib parses but routes nowhere get the answer of any other method: 405
+// with Allow on a route's path, 404 elsewhere.
+TEST_F(ViewSecurity, TraceAndConnectGet405WithAllow) {
+    const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+        {"TRACE", "/frame.png", "GET, HEAD"}, {"CONNECT", "/frame.png", "GET, HEAD"},
+        {"TRACE", "/export", "POST"},         {"CONNECT", "/export", "POST"},
+        {"TRACE", "/nothing", ""},
+    };
+    for (const auto& [method, path, allow] : cases) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        const std::string request = method + " " + viewer_->with_token(path) + " HTTP/1.1\r\nHost: " + own_host() +
+                                    "\r\nOrigin: " + own_origin() + "\r\n\r\n";
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        const std::string answer = read_one_answer(socket, 5);
+        ::close(socket);
+        const std::string what = method + " " + path + "\n" + answer.substr(0, 300);
+        if (allow.empty()) {
+            EXPECT_EQ(answer.rfind("HTTP/1.1 404", 0), 0u) << what;
+            continue;
+        }
+        EXPECT_EQ(answer.rfind("HTTP/1.1 405", 0), 0u) << what;
+        EXPECT_NE(answer.find("\r\nAllow: " + allow + "\r\n"), std::string::npos) << what;
+        EXPECT_NE(answer.find("\"error\":"), std::string::npos) << what;
+    }
 }
 
 TEST_F(ViewSecurity, AJobIsNamedByItsWholeNumber) {
