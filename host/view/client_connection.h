@@ -17,7 +17,9 @@ public:
     ClientConnection(const std::string& local_addr, int local_port, const std::string& remote_addr, int remote_port);
 
     bool found() const { return socket_ >= 0; }
-    // Whether the client closed its side or the connection broke (it reads no answer now).
+    // Whether the client closed its side or the connection broke (it reads no answer now). A
+    // client that only stopped sending (a half-close) counts as gone: until the server writes,
+    // its end looks the same as a close (docs/robustness.md, Limits).
     bool gone() const;
 
 private:
