@@ -19,7 +19,7 @@ public:
     bool found() const { return socket_ >= 0; }
     // Whether the client closed its side or the connection broke (it reads no answer now). A
     // client that only stopped sending (a half-close) counts as gone: until the server writes,
-    // its end looks the same as a close (docs/robustness.md, Limits).
+    // its end looks the same as a close (docs/robustness.md, Limits and what is left).
     bool gone() const;
 
 private:
