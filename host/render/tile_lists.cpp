@@ -1,9 +1,6 @@
 #include "render/tile_lists.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <new>
@@ -11,6 +8,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/memory_budget.h"
 #include "core/parallel_for.h"
 #include "render/screen_tiles.h"
 
@@ -40,23 +38,14 @@ std::uint32_t entry_count(std::uint64_t count) {
 
 TileLister::TileLister(std::uint64_t memory_budget) : memory_budget_(memory_budget) {}
 
-std::uint64_t TileLister::default_tile_memory_budget() {
-    const long pages = ::sysconf(_SC_PHYS_PAGES), page_size = ::sysconf(_SC_PAGESIZE);
-    if (pages <= 0 || page_size <= 0) return std::numeric_limits<std::uint64_t>::max();
-    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size) / 2;
-}
+std::uint64_t TileLister::default_tile_memory_budget() { return default_memory_budget(); }
 
 void TileLister::check_budget(std::uint64_t entries, std::uint64_t row_entries, std::uint64_t tiles) const {
     constexpr std::uint64_t kEntryBytes = sizeof(std::uint32_t) + sizeof(float) + sizeof(std::uint32_t);
     const std::uint64_t bytes = entries * kEntryBytes + row_entries * sizeof(RowEntry);
     if (bytes <= memory_budget_) return;
-    auto gib = [](std::uint64_t b) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.1f GiB", static_cast<double>(b) / (1024.0 * 1024.0 * 1024.0));
-        return std::string(text);
-    };
     throw Error("out of memory: the screen tiles of this frame would list " + std::to_string(entries) +
-                    " objects (" + gib(bytes) + ", more than the " + gib(memory_budget_) +
+                    " objects (" + gib_text(bytes) + ", more than the " + gib_text(memory_budget_) +
                     " they may take: half of this machine's memory): its objects overlap on the screen " +
                     std::to_string(entries / std::max<std::uint64_t>(1, tiles)) +
                     " deep on average (docs/robustness.md, Memory)",

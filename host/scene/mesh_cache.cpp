@@ -229,9 +229,9 @@ void MeshCache::store(const Key& key, const ObjMesh& mesh) const {
     entries_.store(key, {0, 0}, out.bytes().data(), out.bytes().size());
 }
 
-ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache) {
+ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache, std::uint64_t memory_budget) {
     const std::string text = read_obj_text(path);
-    if (!cache.enabled() || text.size() < MeshCache::kSmallestStoredBytes) return parse_obj(text, path);
+    if (!cache.enabled() || text.size() < MeshCache::kSmallestStoredBytes) return parse_obj(text, path, memory_budget);
     std::optional<MeshCache::Key> key;
     try {
         key = MeshCache::key(path, text);
@@ -239,7 +239,7 @@ ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache) 
     } catch (const std::exception&) {  // no hashing (libcrypto refused), or no memory for the entry: no caching
         key.reset();
     }
-    ObjMesh mesh = parse_obj(text, path);
+    ObjMesh mesh = parse_obj(text, path, memory_budget);
     if (key && !mesh.triangles.empty() && mesh.warnings.empty()) {  // an entry does not keep warnings
         try {
             cache.store(*key, mesh);

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -70,6 +71,7 @@ private:
 
 // read_obj(path) through `cache`: the same mesh, and the same ObjError for a file that cannot
 // be read (failures are never stored).
-ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache);
+ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache,
+                               std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 
 }  // namespace clr

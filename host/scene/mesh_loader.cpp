@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <new>
 #include <vector>
 
+#include "core/errors.h"
+#include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/file_names.h"
 #include "scene/mesh_cache.h"
@@ -122,6 +125,11 @@ bool any_triangle_has_area(const ObjMesh& model) {
     return false;
 }
 
+// Ends the run with exit 6 and a message at `node`, as a scene error names its place.
+[[noreturn]] void fail_out_of_memory(const Node& node, const std::string& detail) {
+    throw Error(SceneError(node.diagnostics().file, node.location(), "out of memory: " + detail).what(), kExitOutOfMemory);
+}
+
 // Makes room for `extra` more elements, at least doubling the capacity when it grows.
 template <typename T>
 void reserve_more(std::vector<T>& values, std::size_t extra) {
@@ -131,7 +139,15 @@ void reserve_more(std::vector<T>& values, std::size_t extra) {
 // Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
 // once placed are left out: no ray can hit them, and their plane has no normal. `what` names
 // the model in messages ("mesh 'bunny.obj'").
-void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename, const std::string& what) {
+void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename, const std::string& what,
+              std::uint64_t memory_budget) {
+    const std::uint64_t triangles = scene.triangles.size() + model.triangles.size();
+    if (triangles > memory_budget / kPlacedTriangleBytes)
+        fail_out_of_memory(filename, what + " brings the scene's triangles to " + std::to_string(triangles) +
+                                         ", about " + gib_text(triangles * kPlacedTriangleBytes) +
+                                         " to load and render, more than the " + gib_text(memory_budget) +
+                                         " a scene's meshes may take: half of this machine's memory "
+                                         "(docs/robustness.md, Memory)");
     std::vector<Vec3> placed(model.positions.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {
         const Vec3& p = model.positions[i];
@@ -194,7 +210,7 @@ void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, c
     model.triangle_normals.push_back({-1, -1, -1});
     model.faces = 1;
     const std::string what = "mesh '" + printable(mesh.filename) + "'";
-    add_mesh(scene, std::move(mesh), model, node, what);
+    add_mesh(scene, std::move(mesh), model, node, what, std::numeric_limits<std::uint64_t>::max());
 }
 
 std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
@@ -209,7 +225,7 @@ std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
     return meshes;
 }
 
-void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders) {
+void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders, std::uint64_t memory_budget) {
     const fs::path folder = fs::path(scene.path).parent_path();
     const MeshCache cache = MeshCache::from_environment();
     std::vector<std::string> paths;
@@ -234,7 +250,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         try {
             auto found = kept.find(path);
             if (found == kept.end()) {
-                read = read_obj_through_cache(path, cache);
+                read = read_obj_through_cache(path, cache, memory_budget);
                 if (used_again) found = kept.emplace(path, std::move(read)).first;
             }
             if (found != kept.end()) model = &found->second;
@@ -247,6 +263,8 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
                                no_area_reason(longest_edge(model->positions, model->triangles),
                                               "repeated or collinear corners") +
                                "): it draws nothing");
+        } catch (const MeshMemoryError& error) {
+            fail_out_of_memory(each.filename, "OBJ '" + printable(path) + "': " + error.what());
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
@@ -264,7 +282,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         mesh.path = path;
         if (!mesh.placeholder) mesh.material_paths = model->material_files;
         if (!each.ambient_given) mesh.ambient = model->diffuse && !mesh.placeholder ? *model->diffuse : kDefaultMeshColor;
-        add_mesh(scene, std::move(mesh), *model, each.filename, what);
+        add_mesh(scene, std::move(mesh), *model, each.filename, what, memory_budget);
         if (!used_again) kept.erase(path);
     }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "scene/json_reader.h"
@@ -15,6 +16,11 @@ namespace clr {
 // Most triangles all of a scene's meshes may hold together: the renderer keeps about 250
 // bytes a triangle on the host and the device (scene model, device struct, normals, BVH).
 constexpr std::size_t kMaxSceneTriangles = std::size_t(1) << 24;
+
+// What a placed triangle takes to load and render, as measured (docs/robustness.md, Memory):
+// the peak of a still of terrains of 1M and 2M triangles grew by 590-620 MB a million, the
+// OBJ's text included; a margin on top for corner normals.
+constexpr std::uint64_t kPlacedTriangleBytes = 700;
 
 // A mesh whose file is still to be read: its settings, and its "filename" value.
 struct PendingMesh {
@@ -37,7 +43,9 @@ std::vector<PendingMesh> read_mesh_objects(ObjectReader& file);
 
 // Reads each mesh's OBJ (relative to the scene's folder) into `scene`'s meshes, triangles and
 // corner normals. A file that cannot be read is the scene's error at its "filename", or, with
-// `placeholders`, a warning and a unit cube in its place.
-void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders);
+// `placeholders`, a warning and a unit cube in its place. A file whose parse, or a scene whose
+// triangles at kPlacedTriangleBytes each, would take more than `memory_budget` bytes ends the
+// run with exit 6 (kExitOutOfMemory) at the "filename" that brings it there.
+void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders, std::uint64_t memory_budget);
 
 }  // namespace clr

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/obj_text_checks.h"
@@ -340,11 +341,17 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
 
 }  // namespace
 
-ObjMesh parse_obj(const std::string& text, const std::string& path) {
+ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget) {
     if (const std::string encoding = encoding_problem(text); !encoding.empty()) throw ObjError(encoding);
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
+    const std::uint64_t needed = text.size() + counts.triangles * kParsedTriangleBytes;
+    if (needed > memory_budget) {
+        throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles would take about " +
+                              gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +
+                              " a scene's meshes may take: half of this machine's memory (docs/robustness.md, Memory)");
+    }
     MaterialFiles material_files(std::filesystem::path(path).parent_path());
     try {
         return parse_checked(text, counts, material_files);
@@ -362,6 +369,8 @@ std::string read_obj_text(const std::string& path) {
     }
 }
 
-ObjMesh read_obj(const std::string& path) { return parse_obj(read_obj_text(path), path); }
+ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget) {
+    return parse_obj(read_obj_text(path), path, memory_budget);
+}
 
 }  // namespace clr

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,18 @@ public:
     // of the run (never replaced by an output) even when a placeholder stands in for the mesh.
     std::vector<std::string> material_files;
 };
+
+// Thrown where reading a mesh would take more memory than it may (parse_obj's budget): an
+// exit 6 of the run, not a file that a placeholder may stand in for.
+class MeshMemoryError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// What parsing a mesh takes a triangle, as measured (docs/robustness.md, Memory): the peak of
+// `clrender --check` on terrains of 1M and 2M triangles grew by 240 MB a million, besides the
+// text; a margin on top.
+constexpr std::uint64_t kParsedTriangleBytes = 300;
 
 // Largest OBJ file and largest .mtl file read, and most triangles a file may fan into: a
 // triangle costs the reader about 48 bytes (three position and three normal indices) besides
@@ -59,12 +72,15 @@ struct ObjMesh {
 // Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a
 // missing or unreadable .mtl is an error too). Throws ObjError with a one-line reason:
 // missing, not a regular file, too large, a bad line (with its number), too many triangles.
-// Throws std::bad_alloc when memory runs out.
-ObjMesh read_obj(const std::string& path);
+// Throws MeshMemoryError, before the parse, when the text and its triangles at
+// kParsedTriangleBytes each would take more than `memory_budget` bytes; std::bad_alloc when
+// memory runs out all the same.
+ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 
 // The same for the file's content already read; `path` names the file in messages and
 // locates its .mtl files.
-ObjMesh parse_obj(const std::string& text, const std::string& path);
+ObjMesh parse_obj(const std::string& text, const std::string& path,
+                  std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 
 // The whole text of the OBJ at `path`, with read_obj's limits; ObjError when it cannot be read.
 std::string read_obj_text(const std::string& path);

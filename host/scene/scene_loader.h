@@ -41,6 +41,9 @@ struct LoadOptions {
     // Most bytes all the scene's images may take while they are decoded (scene/image_budget.h);
     // unset: CLRENDER_IMAGE_MEMORY_MIB, else kDefaultImageMemoryBytes.
     std::optional<std::uint64_t> image_memory_limit;
+    // Most bytes the scene's meshes may take to read and render (scene/mesh_loader.h); unset:
+    // default_memory_budget(), half of the machine's memory.
+    std::optional<std::uint64_t> mesh_memory_budget;
 };
 
 // Reads and validates the scene file at `path`. Relative image paths are resolved against

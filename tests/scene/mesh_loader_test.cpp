@@ -13,6 +13,7 @@
 
 #include "core/errors.h"
 #include "scene/mesh_loader.h"
+#include "scene/obj_reader.h"
 #include "scene/scene_loader.h"
 #include "support/scene_json.h"
 #include "support/temp_folder.h"
@@ -135,6 +136,45 @@ TEST(MeshLoader, AMeshWhoseFacesAllHaveZeroAreaIsRefused) {
                           "draws nothing"),
               std::string::npos)
         << tinier;
+}
+
+// The message and exit code of the Error loading `scene` in `folder` with a mesh memory budget
+// of `budget` bytes; "" when it loads.
+std::pair<std::string, int> memory_error_of(const TempFolder& folder, const Json& scene, std::uint64_t budget) {
+    LoadOptions options;
+    options.mesh_memory_budget = budget;
+    options.placeholder_images = true;  // a mesh too large is no missing file: no cube stands in
+    try {
+        load_in(folder, scene, options);
+    } catch (const Error& error) {
+        return {error.what(), error.code()};
+    }
+    return {"", 0};
+}
+
+// A mesh that would take more memory than the scene's meshes may is refused with exit 6 at its
+// "filename": before its parse (its text and triangles at kParsedTriangleBytes), or once the
+// scene's triangles at kPlacedTriangleBytes each pass the budget, counted across its meshes.
+TEST(MeshLoader, MeshesBeyondTheMemoryBudgetEndTheRunWithExit6) {
+    TempFolder folder;
+    const std::string text = folder.write("square.obj", kSquareObj);
+    const std::uint64_t text_bytes = kSquareObj.size(), parse = text_bytes + 2 * kParsedTriangleBytes;
+    const Json two = with_obj(Json::array({{{"filename", "square.obj"}}, {{"filename", "square.obj"}, {"position", {0, 0, 1}}}}));
+    EXPECT_EQ(memory_error_of(folder, two, 4 * kPlacedTriangleBytes).first, "") << "four triangles fit";
+    const auto [placed, placed_code] = memory_error_of(folder, two, 4 * kPlacedTriangleBytes - 1);
+    EXPECT_EQ(placed_code, kExitOutOfMemory);
+    EXPECT_NE(placed.find("scene.json: /obj/1/filename: out of memory: mesh 'square.obj' brings the scene's triangles to 4, "
+                          "about 0.0 GiB to load and render"),
+              std::string::npos)
+        << placed;
+    ASSERT_LT(parse, 2 * kPlacedTriangleBytes);
+    const auto [parsed, parsed_code] = memory_error_of(folder, two, parse - 1);
+    EXPECT_EQ(parsed_code, kExitOutOfMemory);
+    EXPECT_NE(parsed.find("scene.json: /obj/0/filename: out of memory: OBJ '" + text +
+                          "': its 2 triangles would take about 0.0 GiB to read"),
+              std::string::npos)
+        << parsed;
+    EXPECT_EQ(memory_error_of(folder, with_obj({{"filename", "square.obj"}}), 2 * kPlacedTriangleBytes).first, "");
 }
 
 // The reader's warnings are the scene's, at the mesh's "filename" (so --strict refuses them).
