@@ -166,6 +166,27 @@ CLR_PACKET_INLINE real16 triangle_hit_distance16(int index, real3 origin, Direct
     return triangle_distance16(&triangles[index], origin, d);
 }
 
+/* A triangle's geometric normal n = e1 x e2 (its edges from corner 0), n.n, and where
+ * `weights`, the barycentric weights b1, b2 of the point p - c0 = b1 e1 + b2 e2:
+ * b1 = ((p - c0) x e2).n / n.n, b2 = (e1 x (p - c0)).n / n.n. */
+typedef struct {
+    real3 geometric;
+    real area2, b1, b2;
+} TriangleFrame;
+
+TriangleFrame triangle_frame(real3 e1, real3 e2, real3 p, bool weights)
+{
+    TriangleFrame frame;
+    frame.geometric = edge_cross(e1, e2);
+    frame.area2 = dot3(frame.geometric, frame.geometric);
+    frame.b1 = frame.b2 = 0.0f;
+    if (weights) {
+        frame.b1 = dot3(edge_cross(p, e2), frame.geometric) / frame.area2;
+        frame.b2 = dot3(edge_cross(e1, p), frame.geometric) / frame.area2;
+    }
+    return frame;
+}
+
 /* The unit normal at `point`, turned to face the ray that arrives along `direction` (a mesh
  * has no back): the corner normals interpolated with the point's barycentric coordinates
  * where the mesh gives them, else the geometric normal. */
@@ -176,28 +197,26 @@ real3 triangle_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
     real3 e1 = convert_real3(triangle->corner1.xyz) - c0;
     real3 e2 = convert_real3(triangle->corner2.xyz) - c0;
     real3 p = point - c0;
-    /* n.n below is an edge to the fourth power, which overflows float for edges beyond about
-     * 4e9 and underflows below about 1e-10: the edges (and p) are first scaled by a power of
-     * two that brings the longest near 1. Each result below is a ratio of products of equal
-     * degree, so the scale changes no bit where nothing overflowed; edges within [2^-24, 2^24]
-     * are left as they are. */
-    real size = fmax(fmax(fmax(fabs(e1.x), fabs(e1.y)), fmax(fabs(e1.z), fabs(e2.x))), fmax(fabs(e2.y), fabs(e2.z)));
-    if (!(size >= 5.9604645e-8f && size <= 16777216.0f)) {
+    bool weights = triangle->normals >= 0;
+    TriangleFrame frame = triangle_frame(e1, e2, p, weights);
+    /* n.n is an edge to the fourth power, which overflows float for edges beyond about 4e9 and
+     * underflows below about 1e-10 (and a weight's numerator may overflow for a long sliver).
+     * Where n.n leaves [2^-100, 2^100] or a weight is not finite, the frame is made again from
+     * the edges and p scaled by a power of two that brings the longest edge near 1: each of its
+     * values is a ratio of products of equal degree, so the scale changes no bit of what did
+     * not overflow, and any other triangle keeps the first frame. */
+    if (!(frame.area2 >= 7.8886091e-31f && frame.area2 <= 1.2676506e30f) || !isfinite(frame.b1) ||
+        !isfinite(frame.b2)) {
+        real size = fmax(fmax(fmax(fabs(e1.x), fabs(e1.y)), fmax(fabs(e1.z), fabs(e2.x))), fmax(fabs(e2.y), fabs(e2.z)));
         real scale = ldexp((real)1.0f, -ilogb(size));
-        e1 *= scale;
-        e2 *= scale;
-        p *= scale;
+        frame = triangle_frame(e1 * scale, e2 * scale, p * scale, weights);
     }
-    real3 geometric = edge_cross(e1, e2);
-    real3 normal = geometric;
-    if (triangle->normals >= 0) {
-        /* p - c0 = b1 e1 + b2 e2: b1 = ((p - c0) x e2).n / n.n, b2 = (e1 x (p - c0)).n / n.n */
-        real area2 = dot3(geometric, geometric);
-        real b1 = dot3(edge_cross(p, e2), geometric) / area2;
-        real b2 = dot3(edge_cross(e1, p), geometric) / area2;
-        real b0 = 1.0f - b1 - b2;
+    real3 normal = frame.geometric;
+    if (weights) {
+        real b0 = 1.0f - frame.b1 - frame.b2;
         __global const float4* n = &triangle_normals[triangle->normals];
-        real3 blended = b0 * convert_real3(n[0].xyz) + b1 * convert_real3(n[1].xyz) + b2 * convert_real3(n[2].xyz);
+        real3 blended =
+            b0 * convert_real3(n[0].xyz) + frame.b1 * convert_real3(n[1].xyz) + frame.b2 * convert_real3(n[2].xyz);
         if (dot3(blended, blended) > 0.0f)
             normal = blended;
     }
