@@ -46,10 +46,29 @@ ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, c
     return out;
 }
 
+namespace {
+
+// Whether corner p comes before corner q by x, then y, then z, compared as the kernel
+// compares the same floats.
+bool corner_before(const cl_float4& p, const cl_float4& q) {
+    return p.s[0] < q.s[0] || (p.s[0] == q.s[0] && (p.s[1] < q.s[1] || (p.s[1] == q.s[1] && p.s[2] < q.s[2])));
+}
+
+// ClrTriangle::edge_order of corners as stored: both triangles that share an edge find its
+// order from the same floats, so both compute its volume from the same corner first.
+cl_uint edge_order(const ClrTriangle& device) {
+    return (corner_before(device.corner2, device.corner1) ? 1u : 0u) |
+           (corner_before(device.corner0, device.corner2) ? 2u : 0u) |
+           (corner_before(device.corner1, device.corner0) ? 4u : 0u);
+}
+
+}  // namespace
+
 void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
     device.corner0 = to_float4(triangle.corners[0] - origin);
     device.corner1 = to_float4(triangle.corners[1] - origin);
     device.corner2 = to_float4(triangle.corners[2] - origin);
+    device.edge_order = edge_order(device);
 }
 
 }  // namespace clr

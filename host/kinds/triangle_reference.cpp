@@ -1,7 +1,12 @@
 // The triangle kind in the double-precision reference renderer (triangle_kind.h), from the
 // lecture's formulas: the ray meets the triangle's plane at t = (c0 - o).n / d.n, and the
-// point P there lies inside when the orientation test puts it on the inner side of each edge
-// (((c_{i+1} - c_i) x (P - c_i)).n >= 0 for all three edges, counter-clockwise about n).
+// point P there has the barycentric coordinates of the orientation test
+// (((c_{i+1} - c_i) x (P - c_i)).n / n.n for each edge, counter-clockwise about n). Whether
+// the ray passes inside is decided by the sides of the edges as seen along the ray, the signed
+// volumes d.((p - o) x (q - o)) (the same sides: each is d.n times its coordinate), made so that
+// the triangle on the other side of a shared edge gets exactly the negated volume: a ray
+// through a shared edge is inside one of them. Each triangle's own orientation test rounds
+// in its own plane, and both neighbours could refuse a point on their edge (a crack).
 #include <algorithm>
 #include <cmath>
 
@@ -24,6 +29,23 @@ namespace {
 // (kernels/kinds/triangle.cl, whose float share is larger).
 constexpr double kSelfGap = 1e-9;
 
+// Whether corner p comes before corner q in the order that makes an edge's volume the same
+// operations in both triangles that share it: by x, then y, then z.
+bool corner_before(const Vec3& p, const Vec3& q) {
+    return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z)));
+}
+
+// d.((p - o) x (q - o)) for the ray and the edge (p, q), computed as d.((s - o) x (t - s)) from
+// the corners in corner_before() order and negated for (q, p): the triangle on the other side
+// of the edge makes the same operations and negates them, so its value is exactly the negation.
+double edge_volume(const Vec3& p, const Vec3& q, const reference::Ray& ray) {
+    const bool negated = corner_before(q, p);
+    const Vec3& s = negated ? q : p;
+    const Vec3& t = negated ? p : q;
+    const double volume = dot(ray.direction, cross(s - ray.origin, t - s));
+    return negated ? -volume : volume;
+}
+
 reference::detail::TriangleTest test_triangle(const Triangle& triangle, const reference::Ray& ray) {
     reference::detail::TriangleTest test;
     const auto& c = triangle.corners;
@@ -39,7 +61,8 @@ reference::detail::TriangleTest test_triangle(const Triangle& triangle, const re
     test.weights[0] = dot(cross(c[2] - c[1], p - c[1]), n) / area2;
     test.weights[1] = dot(cross(c[0] - c[2], p - c[2]), n) / area2;
     test.weights[2] = dot(cross(c[1] - c[0], p - c[0]), n) / area2;
-    test.inside = test.weights[0] >= 0 && test.weights[1] >= 0 && test.weights[2] >= 0;
+    const double u = edge_volume(c[1], c[2], ray), v = edge_volume(c[2], c[0], ray), w = edge_volume(c[0], c[1], ray);
+    test.inside = (u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0);
     const double gap = kSelfGap * (std::fabs(ray.origin.x) + std::fabs(ray.origin.y) + std::fabs(ray.origin.z));
     test.ahead = test.t > gap;
     return test;

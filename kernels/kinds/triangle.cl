@@ -2,11 +2,12 @@
  * meets it, one ray and 16 at a time, its normal and its colour, as kinds/kinds.cl asks
  * every kind.
  *
- * The test is watertight: a ray through an edge that two triangles share, or through a
- * vertex, hits at least one of them, never neither (docs/scene-format.md, Meshes). Each
- * edge's side test is the signed volume d.((p - o) x (q - o)) of the ray and the edge's
- * corners p, q relative to the ray's origin o; the triangle on the other side of the edge
- * computes it from the same corners in the other order, which in IEEE arithmetic without
+ * The test is watertight: a ray through an edge that two triangles share hits at least one
+ * of them, never neither (docs/scene-format.md, Meshes). Each edge's side test is the signed
+ * volume d.((p - o) x (q - o)) of the ray and the edge's corners p, q relative to the ray's
+ * origin o, computed as d.((s - o) x (t - s)) with the edge's corners in a fixed order (s
+ * before t by x, then y, then z: edge_volume_normal()). The triangle on the other side of the edge makes the same
+ * operations on the same corners and negates the result, which in IEEE arithmetic without
  * fused multiply-adds (common/math.cl) is exactly the negated value. So no rounding can put
  * the ray outside both triangles: either one of them sees it inside, or the value is exactly
  * zero and both do. The three volumes are also the hit's barycentric weights (Woop, Benthin
@@ -67,13 +68,38 @@ real3 edge_cross(real3 p, real3 q)
     return (real3)(p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x);
 }
 
+/* X such that d.X is the volume d.((p - o) x (q - o)) of a ray from `origin` and the edge
+ * (p, q), for every direction d, or its negation where `reversed`: (s - o) x (t - s) from the
+ * edge's corners in the order of x, then y, then z ((q, p) where `reversed`, the bit of
+ * ClrTriangle::edge_order that the host found from the same floats). The same vector
+ * mathematically as (p - o) x (q - o), but without its products of the corners' distances
+ * from o with each other: for a triangle a thousand times its size away those are a million
+ * times its area, and their rounding swamped the volume (a far mesh's silhouette broke into
+ * blocks). */
+real3 edge_volume_normal(real3 p, real3 q, bool reversed, real3 origin)
+{
+    real3 s = reversed ? q : p, t = reversed ? p : q;
+    return edge_cross(s - origin, t - s);
+}
+
+/* d.((p - o) x (q - o)): see edge_volume_normal(). */
+real edge_volume(real3 p, real3 q, bool reversed, real3 origin, real3 direction)
+{
+    real volume = dot3(edge_volume_normal(p, q, reversed, origin), direction);
+    return reversed ? -volume : volume;
+}
+
 /* Distance along the unit direction to the triangle with t_min < t < t_max, or +inf. */
 real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3 direction, real t_max)
 {
     TriangleCorners k = triangle_corners(triangle, origin);
-    real u = dot3(edge_cross(k.b, k.c), direction); /* weight of corner 0 */
-    real v = dot3(edge_cross(k.c, k.a), direction); /* weight of corner 1 */
-    real w = dot3(edge_cross(k.a, k.b), direction); /* weight of corner 2 */
+    real3 c0 = convert_real3(triangle->corner0.xyz);
+    real3 c1 = convert_real3(triangle->corner1.xyz);
+    real3 c2 = convert_real3(triangle->corner2.xyz);
+    uint order = triangle->edge_order;
+    real u = edge_volume(c1, c2, (order & 1u) != 0u, origin, direction); /* weight of corner 0 */
+    real v = edge_volume(c2, c0, (order & 2u) != 0u, origin, direction); /* weight of corner 1 */
+    real w = edge_volume(c0, c1, (order & 4u) != 0u, origin, direction); /* weight of corner 2 */
     bool inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
     real det = u + v + w;
     if (!inside || det == 0.0f)
@@ -103,14 +129,35 @@ CLR_PACKET_INLINE void scale_weights16(mask16 hit, real16* u, real16* v, real16*
     *det *= scale;
 }
 
+/* edge_volume() for 16 directions from one origin. */
+CLR_PACKET_INLINE real16 edge_volume16(real3 p, real3 q, bool reversed, real3 origin, Directions16 d)
+{
+    real16 volume = dot16(edge_volume_normal(p, q, reversed, origin), d);
+    return reversed ? -volume : volume;
+}
+
+/* edge_volume() for 16 rays from 16 origins, lane by lane the same operations. */
+CLR_PACKET_INLINE real16 edge_volume16_from(real3 p, real3 q, bool reversed, Points16 o, Directions16 d)
+{
+    real3 s = reversed ? q : p, e = (reversed ? p : q) - s;
+    real16 sx = s.x - o.x, sy = s.y - o.y, sz = s.z - o.z;
+    /* dot3(edge_cross(s - o, e), d) written out */
+    real16 volume = (sy * e.z - sz * e.y) * d.x + (sz * e.x - sx * e.z) * d.y + (sx * e.y - sy * e.x) * d.z;
+    return reversed ? -volume : volume;
+}
+
 /* triangle_distance() for 16 rays from one origin (t_max = infinity): the edges' cross
  * products do not depend on the direction, so they are made once for the 16 lanes. */
 CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangle, real3 origin, Directions16 d)
 {
     TriangleCorners k = triangle_corners(triangle, origin);
-    real16 u = dot16(edge_cross(k.b, k.c), d);
-    real16 v = dot16(edge_cross(k.c, k.a), d);
-    real16 w = dot16(edge_cross(k.a, k.b), d);
+    real3 c0 = convert_real3(triangle->corner0.xyz);
+    real3 c1 = convert_real3(triangle->corner1.xyz);
+    real3 c2 = convert_real3(triangle->corner2.xyz);
+    uint order = triangle->edge_order;
+    real16 u = edge_volume16(c1, c2, (order & 1u) != 0u, origin, d);
+    real16 v = edge_volume16(c2, c0, (order & 2u) != 0u, origin, d);
+    real16 w = edge_volume16(c0, c1, (order & 4u) != 0u, origin, d);
     mask16 inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
     real16 det = u + v + w;
     mask16 hit = inside && det != 0.0f;
@@ -135,10 +182,10 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     real16 ax = c0.x - o.x, ay = c0.y - o.y, az = c0.z - o.z;
     real16 bx = c1.x - o.x, by = c1.y - o.y, bz = c1.z - o.z;
     real16 cx = c2.x - o.x, cy = c2.y - o.y, cz = c2.z - o.z;
-    /* dot3(edge_cross(p, q), d) written out, for (p, q) = (b, c), (c, a), (a, b) */
-    real16 u = (by * cz - bz * cy) * d.x + (bz * cx - bx * cz) * d.y + (bx * cy - by * cx) * d.z;
-    real16 v = (cy * az - cz * ay) * d.x + (cz * ax - cx * az) * d.y + (cx * ay - cy * ax) * d.z;
-    real16 w = (ay * bz - az * by) * d.x + (az * bx - ax * bz) * d.y + (ax * by - ay * bx) * d.z;
+    uint order = triangle->edge_order;
+    real16 u = edge_volume16_from(c1, c2, (order & 1u) != 0u, o, d);
+    real16 v = edge_volume16_from(c2, c0, (order & 2u) != 0u, o, d);
+    real16 w = edge_volume16_from(c0, c1, (order & 4u) != 0u, o, d);
     mask16 inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
     real16 det = u + v + w;
     mask16 hit = inside && det != 0.0f;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render/feature_set.h"
 #include "render/renderer.h"
@@ -183,6 +185,63 @@ TEST(Meshes, RaysThroughSharedEdgesAndVerticesFindNoCrack) {
     Scene tilted = testing::make_scene({3, -2, 30}, {0.5, 0.25, 0}, {0, 1, 0}, 90, 64, 64);
     add_mesh(tilted, grid_mesh({-100.5, -100.5, 0}, {201, 0, 0}, {0, 201, 0}, 201, 201), {1, 1, 1});
     EXPECT_EQ(background_pixels(tilted, {}), 0) << "tilted grid";
+}
+
+// A grid mesh on an oblique plane whose vertices lie on the camera's rays through the pixels'
+// corners (every pixel-centre ray crosses a shared diagonal) or through the pixel centres
+// (every one passes through a shared vertex). It fills the image: a pixel of the background
+// is a crack, in the reference as in the kernels.
+Scene pixel_ray_grid(const Vec3& eye, const Vec3& lookat, double fov, int width, int height, const Vec3& plane_normal,
+                     bool through_corners) {
+    Scene scene = testing::make_scene(eye, lookat, {0, 1, 0}, fov, width, height);
+    const Vec3 w = normalize(eye - lookat), u = normalize(cross(Vec3{0, 1, 0}, w)), v = cross(w, u);
+    const double half = std::tan(fov * 3.14159265358979323846 / 360);
+    const double half_w = width >= height ? half : half * width / height;
+    const double half_h = width >= height ? half * height / width : half;
+    const Vec3 n = normalize(plane_normal);
+    const int columns = through_corners ? width + 1 : width, rows = through_corners ? height + 1 : height;
+    std::vector<Vec3> points;
+    for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < columns; ++j) {
+            const double x = through_corners ? 2.0 * j / width - 1 : 2 * (j + 0.5) / width - 1;
+            const double y = through_corners ? 1 - 2.0 * i / height : 1 - 2 * (i + 0.5) / height;
+            const Vec3 d = normalize(u * (x * half_w) + v * (y * half_h) - w);
+            points.push_back(eye + d * (dot(lookat - eye, n) / dot(d, n)));
+        }
+    testing::TestMesh grid;
+    for (int i = 0; i + 1 < rows; ++i)
+        for (int j = 0; j + 1 < columns; ++j) {
+            const Vec3 &a = points[i * columns + j], &b = points[i * columns + j + 1];
+            const Vec3 &c = points[(i + 1) * columns + j], &e = points[(i + 1) * columns + j + 1];
+            grid.triangles.push_back({a, b, e});
+            grid.triangles.push_back({a, e, c});
+        }
+    add_mesh(scene, grid, {1, 1, 1});
+    return scene;
+}
+
+long long interior_background_pixels(const Image& image, bool interior) {
+    long long count = 0;
+    for (int row = interior; row < image.height - interior; ++row)
+        for (int col = interior; col < image.width - interior; ++col) count += image.at(col, row, 1) == 0;
+    return count;
+}
+
+TEST(Meshes, AGridOnThePixelRaysHasNoCrackInTheReferenceNorInTheKernels) {
+    const Scene edges = pixel_ray_grid({-0.9, 0.4, 3.6}, {-0.6, -0.5, -0.9}, 40, 12, 9, {0.1, -0.8, 0.5}, true);
+    const Scene vertices = pixel_ray_grid({-2.7, 4.6, -3.7}, {0.4, -0.8, -0.5}, 90, 40, 30, {-0.6, 0.3, -0.1}, false);
+    for (const auto& [scene, what] : {std::pair{&edges, "edges"}, std::pair{&vertices, "vertices"}}) {
+        // The vertex grid's outer pixels reach past its last vertices: only the inner ones count.
+        const bool interior = scene == &vertices;
+        EXPECT_EQ(interior_background_pixels(testing::render_with_reference(*scene), interior), 0)
+            << what << ": cracks in the reference";
+        for (bool double_precision : {false, true}) {
+            RendererOptions options;
+            options.double_precision = double_precision;
+            EXPECT_EQ(interior_background_pixels(testing::render_with_kernels(*scene, options), interior), 0)
+                << what << ": cracks in the kernels" << (double_precision ? " (double)" : "");
+        }
+    }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "support/image_compare.h"
 #include "support/render_helpers.h"
@@ -282,6 +283,22 @@ TEST(Stress, MeshWorldAtTheSmallestAndLargestSupportedScales) {
     const Scene huge = mesh_world({4e14, 4e14, -4e14}, 2e13);
     expect_same_picture(testing::render_with_reference(huge), expected, "mesh world of scale 2e13 at 4e14 (reference)");
     expect_close_to_reference(huge, "mesh world of scale 2e13 at 4e14");
+}
+
+// A ball mesh a thousand and ten thousand times its size away, through a lens narrow enough to
+// show it at the size it has from ten: the edge volumes of its triangles must not be made of
+// products of their corners' long distances (kernels/kinds/triangle.cl, edge_volume_normal),
+// whose rounding broke the silhouette into blocks and put false shadows on the ball.
+TEST(Stress, AMeshFarAwayThroughANarrowLens) {
+    for (const auto& [distance, fov] : {std::pair{1000.0, 0.4}, std::pair{10000.0, 0.04}}) {
+        Scene scene = testing::make_scene(Vec3{0.6, 0.5, 0.8} * distance, {0, 0.75, 0}, {0, 1, 0}, fov, 160, 120);
+        scene.has_sun = true;
+        scene.sun_location = {-50, 60, 20};
+        testing::add_mesh(scene, testing::sphere_mesh({0, 0.75, 0}, 0.7, 24, 12, true), {1, 0.8, 0.2});
+        std::ostringstream what;
+        what << "ball mesh at " << distance;
+        expect_close_to_reference(scene, what.str());
+    }
 }
 
 // Whether the ray through (x, y, -1) (camera looking along -z, up +y) clearly meets a shape:
