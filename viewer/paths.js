@@ -4,7 +4,7 @@
 "use strict";
 
 class ClrenderPaths {
-  // viewer: {token, camera(), setCamera(camera, frame), sceneName}
+  // viewer: {token, camera(), setCamera(camera, frame), settled(), sceneName}
   constructor(viewer) {
     this.viewer = viewer;
     this.keys = [];
@@ -23,7 +23,9 @@ class ClrenderPaths {
     document.getElementById("render-video").addEventListener("click", () => this.renderVideo());
   }
 
-  record() {
+  // The camera shown: a path frame's camera still on its way from the server is waited for.
+  async record() {
+    if (this.viewer.settled) await this.viewer.settled();
     this.keys.push(this.viewer.camera());
     this.showKeys();
   }

@@ -230,13 +230,34 @@
       timeValue.textContent = "0";
       api.setCamera(sceneCamera, sceneFrame);
     });
-    timeInput.addEventListener("input", (event) => {
-      const k = Number(timeInput.value);
-      timeValue.textContent = String(k);
-      // The page's own idea of the frame's camera (linear between keys) is what a drag starts
-      // from; the image itself is the server's frame k, placed as clrender places it.
-      api.setCamera(ClrenderCamera.alongKeys(scene.path.map(fromScene), k, frames), k, event.timeStamp);
-    });
+    timeInput.addEventListener("input", (event) => placeFrame(Number(timeInput.value), event.timeStamp));
+  }
+
+  // Frame k of the scene's path: its camera is asked of the server, which places it as a batch
+  // render does (the scene's interpolation, Catmull-Rom too), so that the camera a key records
+  // and a drag starts from is the one shown, never a guess of the page's. Until it is here the
+  // view is held: not still, and a key recorded meanwhile waits for it (api.settled).
+  let placingSerial = 0;
+  let placing = Promise.resolve();
+  api.settled = () => placing;
+
+  function placeFrame(k, inputTime) {
+    timeValue.textContent = String(k);
+    const serial = ++placingSerial;
+    const version = live.version;  // a move meanwhile (a drag, Reset) wins over the late answer
+    live.hold();
+    placing = (async () => {
+      try {
+        const response = await fetch(clrenderAddress("camera.json", token, { frame: k }), { cache: "no-store" });
+        if (!response.ok) throw new Error(await clrenderErrorText(response));
+        const camera = fromScene(await response.json());
+        if (serial === placingSerial && live.version === version) api.setCamera(camera, k, inputTime);
+      } catch (error) {
+        if (serial === placingSerial) setStatus(`Cannot place frame ${k}: ${error.message}`, true);
+      } finally {
+        live.release();
+      }
+    })();
   }
 
   start();

@@ -33,4 +33,11 @@ std::string scene_summary_json(const Scene& scene) {
     return summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+std::string frame_camera_json(const Scene& scene, int frame) {
+    nlohmann::json camera = camera_json(scene, camera_at_frame(scene, frame));
+    camera["frame"] = frame;
+    // Doubles are written in their shortest exact form: the page reads back the very camera.
+    return camera.dump();
+}
+
 }  // namespace clr

@@ -173,6 +173,15 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/scene\\.json", [&session](const Request&, Response& response) {
         response.set_content(scene_summary_json(session.scene), "application/json");
     });
+    server.Get("/camera\\.json", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            // Only frame= counts: the answer is the frame's own camera, checked as /frame.png's.
+            ViewQuery frame_only;
+            frame_only.frame = parse_view_query(request.params).frame;
+            const ViewCamera view = resolve_view_camera(session.scene, frame_only);
+            response.set_content(frame_camera_json(session.scene, view.frame), "application/json");
+        });
+    });
 }
 
 void add_path_routes(httplib::Server& server, ViewSession& session) {
@@ -228,7 +237,7 @@ struct RoutePath {
 std::vector<RoutePath> route_paths() {
     std::vector<RoutePath> paths;
     for (const EmbeddedAsset& asset : embedded_viewer_assets()) paths.push_back({asset_pattern(asset.path), "GET, HEAD"});
-    for (const char* pattern : {"/", "/frame\\.png", "/frame\\.rgba", "/explain", "/scene\\.json", "/job"})
+    for (const char* pattern : {"/", "/frame\\.png", "/frame\\.rgba", "/explain", "/scene\\.json", "/camera\\.json", "/job"})
         paths.push_back({pattern, "GET, HEAD"});
     for (const char* pattern : {"/export", "/render-video"}) paths.push_back({pattern, "POST"});
     return paths;

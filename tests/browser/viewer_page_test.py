@@ -386,6 +386,19 @@ class ViewerPage(unittest.TestCase):
                 "const keys = arguments[0].map((eye) => ({eye, lookat: [0, 1, 0], up: [0, 1, 0], fov: 60}));"
                 "return ClrenderCamera.alongKeys(keys, arguments[1], 21, 'linear').eye", scene["eyeLocations"], frame)
             self.assertGreater(max(abs(a - b) for a, b in zip(linear, eye)), 1e-3, "the check cannot tell the curves apart")
+            # Record key there records the camera shown: the server's frame 7, bit for bit, not
+            # the page's guess of it; the export holds it.
+            served = json.loads(viewer.get("camera.json", frame=str(frame)))
+            self.driver.find_element("id", "clear-keys").click()
+            self.driver.find_element("id", "record").click()
+            self.wait_until("return document.getElementById('keys').children.length === 1", what="the recorded key")
+            self.assertEqual(self.camera(), {k: served[k] for k in ("eye", "lookat", "up", "fov")})
+            self.driver.find_element("id", "export").click()
+            text = self.wait_until("return document.getElementById('path-json').value", what="the exported scene")
+            self.assertEqual(json.loads(text)["eyeLocations"], [served["eye"]])
+            for a, b in zip(served["eye"], eye):
+                self.assertAlmostEqual(a, b, delta=1e-7 * max(1.0, abs(b)))
+            self.driver.find_element("id", "clear-keys").click()
         finally:
             self.load(self.viewer)
             viewer.stop()

@@ -1,7 +1,7 @@
 // /frame.png against the batch render with the same camera as -D values, byte for byte:
 // spheres, billboards with transparent holes, the sun's shadows, mirrors, several samples per
 // pixel, and a frame of a camera path; /frame.rgba carries the same pixels raw; /explain is
-// --explain-pixel's text.
+// --explain-pixel's text; /camera.json is the camera of a path frame as a batch render places it.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -9,7 +9,9 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "scene/camera_path.h"
 #include "scene/image_loader.h"
+#include "scene/scene_loader.h"
 #include "support/command.h"
 #include "support/temp_folder.h"
 #include "view/viewer_process.h"
@@ -90,6 +92,36 @@ TEST(ViewFrames, PngEqualsTheBatchRenderOfAPathFrameWithSunAndMirrors) {
                        batch_frame(folder, "'" + kDemo + "showcase.json' --size 96x54 --spp 2 "
                                            "-D 'eyeLocations=[[4,3,8]]' -D 'lookatLocations=[[0,1,-3]]'"),
                        "own camera");
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
+// A key recorded at a path frame is this camera: it must be the batch render's, to the last bit,
+// between the keys of a Catmull-Rom path too (which straight lines would miss).
+TEST(ViewFrames, CameraJsonIsThePathFramesCameraAsTheBatchRenderPlacesIt) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "showcase.json' --size 96x54", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    LoadOptions header_only;
+    header_only.decode_images = false;
+    const Scene scene = load_scene(kDemo + "showcase.json", header_only);
+    for (int frame : {0, 37, 95}) {
+        const httplib::Result result = viewer.client()->Get(viewer.with_token("/camera.json?frame=" + std::to_string(frame)));
+        ASSERT_TRUE(result);
+        ASSERT_EQ(result->status, 200) << result->body;
+        EXPECT_EQ(result->get_header_value("Content-Type"), "application/json");
+        const nlohmann::json camera = nlohmann::json::parse(result->body);
+        const CameraKey placed = camera_at_frame(scene, frame);
+        EXPECT_EQ(camera["frame"], frame);
+        EXPECT_EQ(camera["eye"], nlohmann::json::array({placed.eye.x, placed.eye.y, placed.eye.z})) << frame;
+        EXPECT_EQ(camera["lookat"], nlohmann::json::array({placed.lookat.x, placed.lookat.y, placed.lookat.z})) << frame;
+        EXPECT_EQ(camera["up"], nlohmann::json::parse("[0, 1, 0]"));
+        EXPECT_EQ(camera["fov"], 65);
+    }
+    // A frame the animation does not have is refused as /frame.png refuses it.
+    const httplib::Result outside = viewer.client()->Get(viewer.with_token("/camera.json?frame=96"));
+    ASSERT_TRUE(outside);
+    EXPECT_EQ(outside->status, 400);
+    EXPECT_NE(outside->body.find("\"parameter\":\"frame\""), std::string::npos) << outside->body;
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
