@@ -42,10 +42,21 @@ void make_image_paths_absolute(nlohmann::json& value, const fs::path& scene_fold
     }
 }
 
+// The scene's folder as the loader found it, by its physical absolute path. Taken once, at
+// start: the folder the viewer was started in may be gone by the time of an export (getcwd
+// fails then), and a name through it ("START/../scenes") would break with it.
+fs::path absolute_scene_folder(const std::string& scene_path) {
+    return fs::canonical(fs::absolute(fs::path(scene_path)).parent_path());
+}
+
 }  // namespace
 
 PathExporter::PathExporter(const Scene& scene, std::string scene_text, const Options& options, std::string output_dir)
-    : scene_(scene), scene_text_(std::move(scene_text)), options_(options), output_dir_(std::move(output_dir)) {}
+    : scene_(scene),
+      scene_text_(std::move(scene_text)),
+      options_(options),
+      output_dir_(std::move(output_dir)),
+      scene_folder_(absolute_scene_folder(scene.path)) {}
 
 std::string PathExporter::scene_text_for(const CameraKeysRequest& request) const {
     std::vector<std::string> warnings;
@@ -67,8 +78,7 @@ std::string PathExporter::scene_text_for(const CameraKeysRequest& request) const
     if (options_.height) document["height"] = *options_.height;
     if (options_.samples_per_pixel) document["clrender"]["spp"] = *options_.samples_per_pixel;
     if (options_.seed) document["clrender"]["seed"] = *options_.seed;
-    const fs::path scene_folder = fs::absolute(fs::path(scene_.path)).parent_path();
-    make_image_paths_absolute(document, scene_folder);
+    make_image_paths_absolute(document, scene_folder_);
     return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 

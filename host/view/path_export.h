@@ -6,6 +6,7 @@
 // never over any file: a name that is taken is skipped for the next free one (NAME-2, ...).
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,8 @@ struct ExportedScene {
 class PathExporter {
 public:
     // `scene_text` is the scene file as read when the viewer started (the scene was loaded
-    // from it), `options` the command line's.
+    // from it), `options` the command line's. The scene's folder is resolved here, once: later
+    // exports need neither the current folder nor the name it was reached by.
     PathExporter(const Scene& scene, std::string scene_text, const Options& options, std::string output_dir);
 
     // Makes, checks and writes the exported scene, under the first name of the request's
@@ -49,6 +51,7 @@ private:
     std::string scene_text_;
     const Options& options_;
     std::string output_dir_;
+    std::filesystem::path scene_folder_;  // absolute, physical: relative image names are found from it
 };
 
 }  // namespace clr

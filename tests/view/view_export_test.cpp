@@ -67,7 +67,7 @@ TEST(ViewExport, WritesTheKeysAsACameraPathThatClrenderRenders) {
     EXPECT_EQ(scene["MaxDepth"], 3) << "the -D values are the scene the page showed";
     EXPECT_EQ(scene["width"], 48);
     // Image names are absolute, so the scene finds its images wherever it is saved.
-    EXPECT_EQ(scene["billboards"][0]["filename"], fs::path(kDemo + "backdrop.png").lexically_normal().string());
+    EXPECT_EQ(scene["billboards"][0]["filename"], (fs::canonical(kDemo) / "backdrop.png").string());
     // The exported scene renders: frame 0 is the viewer's frame of the first key.
     const auto render = run_clrender("out/tour.json -q --frames 0 -o first.png", folder.path());
     ASSERT_EQ(render.exit_code, 0) << render.output;
@@ -155,7 +155,33 @@ TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
     ASSERT_TRUE(saved);
     ASSERT_EQ(saved->status, 200) << saved->body;
     const json scene = json::parse(read_bytes(folder.file("saved.json")));
-    EXPECT_EQ(scene["obj"]["filename"], fs::path(folder.file("model.json")).lexically_normal().string());
+    EXPECT_EQ(scene["obj"]["filename"], (fs::canonical(folder.path()) / "model.json").string());
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
+// The folder the viewer was started in may go while it runs: the scene's folder was resolved
+// at start, so the export still works, and names its images by their own folder, never
+// through the one that went ("START/../scene/backdrop.png").
+TEST(ViewExport, ExportsOnceTheStartFolderIsGone) {
+    TempFolder folder;
+    fs::create_directories(folder.file("scene"));
+    fs::create_directories(folder.file("start"));
+    fs::create_directories(folder.file("out"));
+    for (const char* name : {"demo.json", "backdrop.png", "checker.png", "cutout.png", "sign.ppm"})
+        fs::copy_file(kDemo + name, folder.file(std::string("scene/") + name));
+    ViewerProcess viewer("../scene/demo.json --size 32x18 --output-dir '" + folder.file("out") + "'", folder.file("start"));
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    fs::remove_all(folder.file("start"));  // with the viewer's view-stderr.txt: its output is not read after this
+    const httplib::Result result = post(viewer, "/export", kTwoKeys);
+    ASSERT_TRUE(result);
+    ASSERT_EQ(result->status, 200) << result->body;
+    const json scene = json::parse(read_bytes(folder.file("out/tour.json")));
+    EXPECT_EQ(scene["billboards"][0]["filename"], (fs::canonical(folder.path()) / "scene/backdrop.png").string());
+    const auto render = run_clrender("out/tour.json -q --frames 0 -o first.png", folder.path());
+    EXPECT_EQ(render.exit_code, 0) << render.output;
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
