@@ -526,6 +526,28 @@ class ViewerPage(unittest.TestCase):
                             what="the still frame at the scene's samples")
 
     def test_n_the_page_loads_nothing_from_elsewhere(self):
+        # Markup that reached the page (an inline handler, a data: or blob: script, a
+        # javascript: link) runs nothing under the viewer's Content-Security-Policy.
+        outcome = self.driver.execute_async_script("""
+            const done = arguments[arguments.length - 1];
+            window.injectedRan = [];
+            const refused = [];
+            document.addEventListener('securitypolicyviolation', (e) => refused.push(e.effectiveDirective));
+            const box = document.createElement('div');
+            box.hidden = true;
+            box.innerHTML = '<img src="data:image/png;base64,AAAA" onerror="window.injectedRan.push(1)">' +
+                            '<a id="injected-link" href="javascript:window.injectedRan.push(2)">x</a>';
+            document.body.append(box);
+            for (const source of ['data:text/javascript,window.injectedRan.push(3)',
+                                  URL.createObjectURL(new Blob(['window.injectedRan.push(4)'], {type: 'text/javascript'}))]) {
+              const script = document.createElement('script');
+              script.src = source;
+              document.body.append(script);
+            }
+            document.getElementById('injected-link').click();
+            setTimeout(() => { box.remove(); done([window.injectedRan, refused]); }, 500);""")
+        self.assertEqual(outcome[0], [], "injected script ran")
+        self.assertTrue({"script-src-attr", "script-src-elem"} <= set(outcome[1]), outcome[1])
         resources = self.driver.execute_script(
             "return performance.getEntriesByType('resource').map((e) => e.name)"
             ".concat(Array.from(document.querySelectorAll('[src], [href]'), (e) => e.src || e.href))")

@@ -138,6 +138,25 @@ TEST_F(ViewSecurity, NoCookieThePageNamesItsFilesWithTheToken) {
         EXPECT_EQ(client->Get(path, with_cookie)->status, 403) << path;
 }
 
+// The policy lets the page run its own scripts and nothing else: no inline script or handler,
+// no script from data: or blob:, so markup that ever reached the page could run nothing. The
+// page itself needs no more: no inline script, handler or style in it.
+TEST_F(ViewSecurity, TheContentSecurityPolicyRunsOnlyThePagesOwnScripts) {
+    auto client = viewer_->client();
+    const httplib::Result page = client->Get(viewer_->with_token("/").c_str());
+    ASSERT_TRUE(page);
+    ASSERT_EQ(page->status, 200);
+    EXPECT_EQ(page->get_header_value("Content-Security-Policy"),
+              "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; connect-src 'self'; "
+              "frame-ancestors 'none'; base-uri 'none'; form-action 'none'");
+    EXPECT_FALSE(std::regex_search(page->body, std::regex(R"(<script(?![^>]*\bsrc=)[^>]*>)"))) << "an inline script";
+    EXPECT_FALSE(std::regex_search(page->body, std::regex(R"(\s(on[a-z]+|style)\s*=)", std::regex::icase)))
+        << "a handler or style attribute";
+    const httplib::Result frame = client->Get(viewer_->with_token("/scene.json").c_str());
+    ASSERT_TRUE(frame);
+    EXPECT_EQ(frame->get_header_value("Content-Security-Policy"), page->get_header_value("Content-Security-Policy"));
+}
+
 TEST_F(ViewSecurity, HostHeaderMustNameThisServer) {
     auto client = viewer_->client();
     const std::string port = std::to_string(viewer_->port());
