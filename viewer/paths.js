@@ -20,7 +20,9 @@ class ClrenderPaths {
     document.getElementById("clear-keys").addEventListener("click", () => this.clear());
     document.getElementById("play").addEventListener("click", () => this.togglePlay());
     document.getElementById("export").addEventListener("click", () => this.exportScene());
-    document.getElementById("render-video").addEventListener("click", () => this.renderVideo());
+    this.videoButton = document.getElementById("render-video");
+    this.videoButton.addEventListener("click", () => this.renderVideo());
+    this.showKeys();
   }
 
   // The camera shown: a path frame's camera still on its way from the server is waited for.
@@ -43,6 +45,9 @@ class ClrenderPaths {
       item.textContent = `eye [${format(key.eye)}]  look-at [${format(key.lookat)}]`;
       return item;
     }));
+    // A video moves from key to key: with fewer than two there is none to render.
+    this.videoButton.disabled = this.keys.length < 2;
+    this.videoButton.title = this.keys.length < 2 ? "record two or more keys for a video" : "";
   }
 
   body() {
@@ -62,9 +67,9 @@ class ClrenderPaths {
     return response.json();
   }
 
-  needKeys(status) {
-    if (this.keys.length > 0) return true;
-    status.textContent = "Record at least one key first.";
+  needKeys(status, least) {
+    if (this.keys.length >= least) return true;
+    status.textContent = least === 1 ? "Record at least one key first." : `Record at least ${least} keys first.`;
     status.className = "error";
     return false;
   }
@@ -102,7 +107,7 @@ class ClrenderPaths {
   }
 
   async exportScene() {
-    if (!this.needKeys(this.exportStatus)) return;
+    if (!this.needKeys(this.exportStatus, 1)) return;
     this.exportStatus.className = "";
     this.exportStatus.textContent = "exporting…";
     try {
@@ -125,7 +130,7 @@ class ClrenderPaths {
   }
 
   async renderVideo() {
-    if (!this.needKeys(this.videoStatus)) return;
+    if (!this.needKeys(this.videoStatus, 2)) return;
     this.videoStatus.className = "";
     this.videoStatus.textContent = "starting the video…";
     this.progress.hidden = false;

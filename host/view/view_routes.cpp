@@ -202,6 +202,10 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/render-video", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const CameraKeysRequest keys = parse_camera_keys(request.body);
+            // A video moves from key to key: one key is a still, whose render would fail after
+            // its scene was written. Refused before anything is written.
+            if (keys.keys.size() < 2)
+                throw ParameterError("keys", "a video needs two or more keys; one key is a still (Export scene writes it)");
             // The place is taken before the scene is written: a refused request writes nothing.
             std::optional<VideoJobs::Place> place = session.videos.reserve();
             if (!place) {

@@ -216,11 +216,16 @@ class ViewerPage(unittest.TestCase):
     def test_h_render_video_shows_progress_and_writes_the_video(self):
         self.reset()
         self.driver.find_element("id", "clear-keys").click()
+        button = self.driver.find_element("id", "render-video")
         first = self.camera()
         self.driver.find_element("id", "record").click()
+        # One key is a still: no video is offered until there are two.
+        self.wait_until("return document.getElementById('keys').children.length === 1", what="the first key")
+        self.assertFalse(button.is_enabled(), "Render video is offered with one key")
         self.set_camera(dict(first, eye=[first["eye"][0] - 2.0, first["eye"][1], first["eye"][2]]))
         self.driver.find_element("id", "record").click()
-        self.driver.find_element("id", "render-video").click()
+        self.wait_until("return !document.getElementById('render-video').disabled", what="Render video with two keys")
+        button.click()
         text = self.wait_until("const t = document.getElementById('video-status').textContent;"
                                "return t.startsWith('Video') ? t : ''", timeout=240, what="the video")
         self.assertTrue(text.startswith("Video written to"), text)

@@ -241,7 +241,9 @@ TEST(ViewExport, NeverReplacesAnExistingFile) {
     }
     EXPECT_EQ(files, (std::vector<std::string>{"./demo_path.json", "./demo_path-2.json", "./demo_path-3.json"}));
     // clip.json is free but clip.mp4 is not: the video takes clip-2 for both.
-    const httplib::Result video = post(viewer, "/render-video", export_body("clip"));
+    const httplib::Result video = post(viewer, "/render-video",
+                                       R"({"keys": [{"eye": [0, 1.5, 14], "lookat": [0, 1, 0]}, {"eye": [1, 1.5, 14], "lookat": [0, 1, 0]}],
+                                           "name": "clip"})");
     ASSERT_TRUE(video);
     ASSERT_EQ(video->status, 200) << video->body;
     EXPECT_EQ(json::parse(video->body)["file"], "./clip-2.mp4");
@@ -346,6 +348,24 @@ TEST(ViewExport, ARefusedVideoWritesNothing) {
         const std::string name = entry.path().filename().string();
         EXPECT_TRUE(name == "long.json" || name == "view-stderr.txt") << "left behind: " << name;
     }
+}
+
+// One key makes a still, not a video: refused naming the keys, with nothing written, rather
+// than a scene written for a job that then fails.
+TEST(ViewExport, AVideoOfOneKeyIsRefusedAndWritesNothing) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result result =
+        post(viewer, "/render-video", R"({"keys": [{"eye": [-3, 2, 12], "lookat": [0, 1, 0]}], "name": "still"})");
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->status, 400) << result->body;
+    const json answer = json::parse(result->body);
+    EXPECT_EQ(answer["parameter"], "keys");
+    EXPECT_NE(answer["error"].get<std::string>().find("two or more keys"), std::string::npos) << result->body;
+    EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
+    for (const auto& entry : fs::directory_iterator(folder.path()))
+        EXPECT_EQ(entry.path().filename(), "view-stderr.txt") << "left behind: " << entry.path();
 }
 
 // An --output-dir whose name begins with '-': the video's render gets its scene and video as
