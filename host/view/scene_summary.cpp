@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "core/printable_text.h"
 #include "scene/camera_path.h"
 
 namespace clr {
@@ -17,6 +18,8 @@ nlohmann::json camera_json(const Scene& scene, const CameraKey& key) {
 
 }  // namespace
 
+std::string shown_name(const std::string& name) { return printable(name); }
+
 std::string scene_summary_json(const Scene& scene) {
     nlohmann::json path = nlohmann::json::array();
     for (const CameraKey& key : scene.camera_path) path.push_back(camera_json(scene, key));
@@ -27,9 +30,8 @@ std::string scene_summary_json(const Scene& scene) {
         {"frames", animation_frame_count(scene)},
         {"fps", scene.animation.fps},
         {"path", path},
-        {"name", std::filesystem::path(scene.path).filename().string()},
+        {"name", shown_name(std::filesystem::path(scene.path).filename().string())},
     };
-    // A file name need not be UTF-8: invalid bytes become U+FFFD instead of failing the request.
     return summary.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 

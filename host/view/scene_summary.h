@@ -8,6 +8,13 @@
 
 namespace clr {
 
+// A file name as the page shows it: escaped by printable() (core/printable_text.h), as on the
+// terminal, so that a bidirectional override, an invisible or a control character, or invalid
+// UTF-8 in the name is seen as \xNN rather than reordering or hiding what the reader sees.
+// Escaped here, where the names leave the server, rather than in the page: one escaper for
+// every message, the page's text the same as the terminal's.
+std::string shown_name(const std::string& name);
+
 // {"camera": {"eye", "lookat", "up", "fov"}, "size": [w, h], "spp": n, "frames": count,
 //  "fps": f, "path": [{"eye", "lookat", "up", "fov"} per key], "name": "scene.json"}
 std::string scene_summary_json(const Scene& scene);

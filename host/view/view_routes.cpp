@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/interruption.h"
+#include "core/printable_text.h"
 #include "output/image_writer.h"
 #include "view/camera_keys.h"
 #include "view/client_connection.h"
@@ -196,7 +197,9 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/export", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
-            send_json(response, 200, {{"scene", exported.text}, {"file", exported.path}, {"name", exported.name}});
+            // Names are for the reader: escaped as clrender's messages escape them (shown_name).
+            send_json(response, 200,
+                      {{"scene", exported.text}, {"file", shown_name(exported.path)}, {"name", shown_name(exported.name)}});
         });
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {
@@ -217,7 +220,10 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             const std::string video = session.exporter.output_dir() + "/" + exported.name + ".mp4";
             session.exporter.check_output("video", video);
             const int job = session.videos.start(std::move(*place), exported.path, video);
-            send_json(response, 200, {{"job", job}, {"file", video}, {"scene", exported.path}, {"name", exported.name}});
+            send_json(response, 200, {{"job", job},
+                                      {"file", shown_name(video)},
+                                      {"scene", shown_name(exported.path)},
+                                      {"name", shown_name(exported.name)}});
         });
     });
     server.Get("/job", [&session](const Request& request, Response& response) {
@@ -233,7 +239,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
                 send_error(response, 404, "no such job", "id");
                 return;
             }
-            nlohmann::json body = {{"state", job->state}, {"done", job->done}, {"total", job->total}, {"file", job->file}};
+            nlohmann::json body = {{"state", job->state}, {"done", job->done}, {"total", job->total}, {"file", shown_name(job->file)}};
             body["error"] = job->error.empty() ? nlohmann::json(nullptr) : nlohmann::json(job->error);
             send_json(response, 200, body);
         });

@@ -182,6 +182,28 @@ TEST(ViewExport, ExportsOnceTheStartFolderIsGone) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// A right-to-left override (U+202E) in the scene's file name would reverse what follows it on
+// screen: the names the page shows come escaped, as clrender's messages escape them; the file
+// written keeps its name.
+TEST(ViewExport, NamesForThePageAreEscapedAsOnTheTerminal) {
+    TempFolder folder;
+    const std::string name = "report\u202Enosj";  // U+202E RIGHT-TO-LEFT OVERRIDE
+    const std::string shown = "report\\xE2\\x80\\xAEnosj";
+    fs::copy_file(kDemo + "demo.json", folder.file(name + ".json"));
+    for (const char* image : {"backdrop.png", "checker.png", "cutout.png", "sign.ppm"})
+        fs::copy_file(kDemo + image, folder.file(image));
+    ViewerProcess viewer("'" + name + ".json' --size 32x18", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result summary = viewer.client()->Get(viewer.with_token("/scene.json"));
+    ASSERT_TRUE(summary);
+    EXPECT_EQ(json::parse(summary->body)["name"], shown + ".json");
+    const httplib::Result result = post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 1, 0]}]})");
+    ASSERT_TRUE(result);
+    ASSERT_EQ(result->status, 200) << result->body;
+    const json answer = json::parse(result->body);
+    EXPECT_EQ(answer["file"], "./" + shown + "_path.json");
+    EXPECT_EQ(answer["name"], shown + "_path");
+    EXPECT_TRUE(fs::exists(folder.file(name + "_path.json")));
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
