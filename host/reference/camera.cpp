@@ -39,7 +39,7 @@ CameraFrame make_camera(const Vec3& eye, const Vec3& lookat, const Vec3& up, dou
 CameraFrame camera_of(const Scene& scene, const CameraKey& key) {
     CameraFrame camera = make_camera(key.eye, key.lookat, scene.up, scene.fov_degrees, scene.width, scene.height);
     camera.clip_near = scene.clip_near;
-    camera.clip_far = scene.clip_far;
+    camera.clip_far = scene.kept_far();
     return camera;
 }
 

@@ -61,7 +61,7 @@ FrameCamera frame_camera(const Scene& scene, const CameraKey& key, int frame) {
     camera.samples = scene.sampling.samples_per_pixel;
     camera.frame_seed = clr_frame_seed(scene.sampling.seed, static_cast<unsigned>(frame));
     camera.clip_near = scene.clip_near;
-    camera.clip_far = scene.clip_far;
+    camera.clip_far = scene.kept_far();
     return camera;
 }
 

@@ -174,6 +174,11 @@ struct Scene {
     double clip_near = 0;
     double clip_far = std::numeric_limits<double>::infinity();
     bool clips() const { return clip_near > 0 || clip_far < std::numeric_limits<double>::infinity(); }
+    // The depth the renderers keep hits below: clip_far lowered by one part in 2^20, so that a
+    // surface lying exactly on the far plane (a wall at the far distance) is dropped by the
+    // kernels and the reference alike, not kept or dropped pixel by pixel as their different
+    // roundings of its depth fall (docs/scene-format.md, Near and far clipping).
+    double kept_far() const { return clip_far * (1 - 0x1p-20); }
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;         // "surfaces" of type "plane"

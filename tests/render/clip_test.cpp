@@ -66,5 +66,25 @@ TEST(Clipping, ObjectsOutsideTheDepthsVanishFromTheImage) {
     EXPECT_NE(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(without).rgba);
 }
 
+// A wall lying exactly on the far plane, behind a sphere: its depth rounds to either side of
+// `far` from pixel to pixel, so it is dropped whole (Scene::kept_far), in the kernels as in the
+// reference; a hair nearer, it is drawn whole.
+TEST(Clipping, AWallOnTheFarPlaneIsDroppedWhole) {
+    Scene scene = testing::make_scene({0, 0, 20}, {0, 0, 0}, {0, 1, 0}, 60, 100, 100);
+    scene.background = {1, 0.9, 0.9};
+    scene.spheres.push_back(testing::make_sphere({0, 0, 5}, 2, {0, 1, 0}));
+    scene.billboards.push_back(testing::make_billboard({-30, 30, 0}, {-30, -30, 0}, {30, 30, 0}, {0, 0.2, 1}));
+    scene.clip_far = 20;
+    Scene without = scene;
+    without.billboards.clear();
+    EXPECT_EQ(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(without).rgba);
+    EXPECT_EQ(testing::render_with_reference(scene).rgba, testing::render_with_reference(without).rgba);
+    testing::expect_kernels_match_reference(scene, "wall on the far plane");
+    scene.clip_far = 20.001;
+    const Image kept = testing::render_with_kernels(scene);
+    EXPECT_EQ(kept.at(2, 2, 2), 255) << "the wall, a hair nearer than far, is drawn";
+    testing::expect_kernels_match_reference(scene, "wall a hair nearer");
+}
+
 }  // namespace
 }  // namespace clr
