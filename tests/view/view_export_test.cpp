@@ -327,24 +327,33 @@ TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
-TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
-    TempFolder folder;
-    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
-    ASSERT_TRUE(viewer.started()) << viewer.output();
-    const std::string many_frames = R"({"keys": [{"eye": [-3, 2, 12], "lookat": [0, 1, 0]}, {"eye": [3, 1.5, 10], "lookat": [0, 1, 0]},
+// Four keys of a video that takes seconds at 640x360 and 64 samples: still rendering when the
+// tests below act.
+const std::string kLongVideo =
+    R"({"keys": [{"eye": [-3, 2, 12], "lookat": [0, 1, 0]}, {"eye": [3, 1.5, 10], "lookat": [0, 1, 0]},
         {"eye": [5, 1.5, 10], "lookat": [0, 1, 0]}, {"eye": [7, 1.5, 10], "lookat": [0, 1, 0]}], "name": "long"})";
-    const httplib::Result started = post(viewer, "/render-video", many_frames);
-    ASSERT_TRUE(started);
-    ASSERT_EQ(started->status, 200) << started->body;
-    const httplib::Result busy = post(viewer, "/render-video", many_frames);
-    ASSERT_TRUE(busy);
-    EXPECT_EQ(busy->status, 409) << "one video at a time";
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
+
+// The folder holds only kLongVideo's scene and the viewer's log: no video, no other scene.
+void expect_only_the_long_videos_scene(const TempFolder& folder) {
     for (const auto& entry : fs::directory_iterator(folder.path())) {
         const std::string name = entry.path().filename().string();
         EXPECT_TRUE(name == "long.json" || name == "view-stderr.txt") << "left behind: " << name;
     }
+}
+
+TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result started = post(viewer, "/render-video", kLongVideo);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    const httplib::Result busy = post(viewer, "/render-video", kLongVideo);
+    ASSERT_TRUE(busy);
+    EXPECT_EQ(busy->status, 409) << "one video at a time";
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
+    expect_only_the_long_videos_scene(folder);
 }
 
 // Clicks on "Render video" while a video is being started or rendered are refused (409) before
@@ -353,23 +362,18 @@ TEST(ViewExport, ARefusedVideoWritesNothing) {
     TempFolder folder;
     ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
     ASSERT_TRUE(viewer.started()) << viewer.output();
-    const std::string many_frames = R"({"keys": [{"eye": [-3, 2, 12], "lookat": [0, 1, 0]}, {"eye": [3, 1.5, 10], "lookat": [0, 1, 0]},
-        {"eye": [5, 1.5, 10], "lookat": [0, 1, 0]}, {"eye": [7, 1.5, 10], "lookat": [0, 1, 0]}], "name": "long"})";
     std::vector<int> statuses(4, 0);
     std::vector<std::thread> clicks;
     for (std::size_t c = 0; c < statuses.size(); ++c)
         clicks.emplace_back([&, c] {
-            const httplib::Result result = post(viewer, "/render-video", many_frames);
+            const httplib::Result result = post(viewer, "/render-video", kLongVideo);
             statuses[c] = result ? result->status : -1;
         });
     for (std::thread& click : clicks) click.join();
     EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 200), 1);
     EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 409), 3);
     EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
-    for (const auto& entry : fs::directory_iterator(folder.path())) {
-        const std::string name = entry.path().filename().string();
-        EXPECT_TRUE(name == "long.json" || name == "view-stderr.txt") << "left behind: " << name;
-    }
+    expect_only_the_long_videos_scene(folder);
 }
 
 // One key makes a still, not a video: refused naming the keys, with nothing written, rather
