@@ -224,19 +224,19 @@ void check_values_read(const ObjMesh& mesh) {
 // A `usemtl` that names no material of the .mtl files leaves the mesh without the colour its
 // author chose (tinyobjloader only warns): a warning naming the first such line, and how many
 // more there are.
-void warn_about_undefined_materials(const std::string& text, const MaterialFiles& material_files, ObjMesh& mesh) {
+void warn_about_undefined_materials(const ObjMaterialStatements& statements, const MaterialFiles& material_files,
+                                    ObjMesh& mesh) {
     std::uint64_t first_line = 0, more = 0;
     std::string first_name;
-    for_each_statement(text, "usemtl", [&](std::uint64_t line, std::string_view statement) {
-        const std::string name = used_material_name(statement);
-        if (material_files.defines(name)) return;
+    for (const auto& [line, name] : statements.uses) {
+        if (material_files.defines(name)) continue;
         if (first_line != 0) {
             ++more;
-            return;
+            continue;
         }
         first_line = line;
         first_name = name;
-    });
+    }
     if (first_line == 0) return;
     mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
                             ": no .mtl file of the OBJ defines this material" +
@@ -244,21 +244,22 @@ void warn_about_undefined_materials(const std::string& text, const MaterialFiles
                             "; its faces take the scene's ambient, else 0.8 grey");
 }
 
-// Reads every .mtl file the OBJ `text` names, each name once, in order, with the first
+// Reads every .mtl file the OBJ names, each name once, in order, with the first
 // problem kept by `material_files`; `materials` and `names` as tinyobjloader's LoadMtl fills them.
-void read_material_libraries(const std::string& text, MaterialFiles& material_files,
+void read_material_libraries(const ObjMaterialStatements& statements, MaterialFiles& material_files,
                              std::vector<tinyobj::material_t>& materials, std::map<std::string, int>& names) {
     std::set<std::string> named;
-    for (const std::string& name : material_library_names(text)) {
+    for (const std::string& name : statements.libraries) {
         if (!named.insert(name).second) continue;
         if (!material_files.read(name, &materials, &names)) return;
     }
 }
 
 // The `Kd` of the first face's material, where a .mtl file gives it one.
-std::optional<Vec3> first_face_diffuse(const std::string& text, const std::vector<tinyobj::material_t>& materials,
+std::optional<Vec3> first_face_diffuse(const ObjMaterialStatements& statements,
+                                       const std::vector<tinyobj::material_t>& materials,
                                        const std::map<std::string, int>& names, const MaterialFiles& material_files) {
-    const auto material = names.find(first_face_material(text));
+    const auto material = names.find(statements.first_face_material);
     if (material == names.end() || material->second < 0 ||
         static_cast<std::size_t>(material->second) >= materials.size() || !material_files.gives_diffuse(material->second))
         return std::nullopt;
@@ -270,9 +271,10 @@ std::optional<Vec3> first_face_diffuse(const std::string& text, const std::vecto
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
 ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
+    const ObjMaterialStatements statements = material_statements(text);
     std::vector<tinyobj::material_t> materials;
     std::map<std::string, int> material_names;
-    read_material_libraries(text, material_files, materials, material_names);
+    read_material_libraries(statements, material_files, materials, material_names);
     if (!material_files.problem().empty()) throw ObjError(material_files.problem());
 
     tinyobj::attrib_t attributes;
@@ -331,11 +333,11 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(mesh.triangles.size()) + " triangles where the file has " +
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
-    mesh.diffuse = first_face_diffuse(text, materials, material_names, material_files);
+    mesh.diffuse = first_face_diffuse(statements, materials, material_names, material_files);
     check_values_read(mesh);
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);
-    warn_about_undefined_materials(text, material_files, mesh);
+    warn_about_undefined_materials(statements, material_files, mesh);
     return mesh;
 }
 

@@ -257,31 +257,32 @@ std::string obj_statements_used(std::string_view text) {
     });
 }
 
-std::vector<std::string> material_library_names(std::string_view text) {
-    std::vector<std::string> names;
-    for_each_statement(text, "mtllib", [&](std::uint64_t, std::string_view line) {
-        std::size_t at = line.find("mtllib") + 6;
-        if (at >= line.size()) return;  // "mtllib" alone
-        std::string name;
-        bool escaped = false;
-        for (const char c : line.substr(at + 1)) {
-            if (!escaped && c == '\\') {
-                escaped = true;
-                continue;
-            }
-            if (!escaped && c == ' ') {
-                if (!name.empty()) names.push_back(name);
-                name.clear();
-                continue;
-            }
-            escaped = false;
-            name += c;
+namespace {
+
+// The names of an `mtllib` statement, as tinyobjloader cuts them: the text after "mtllib" and
+// one blank, cut at spaces, a backslash keeping the next character; empty names dropped.
+void add_library_names(std::string_view line, std::vector<std::string>& names) {
+    const std::size_t at = line.find("mtllib") + 6;
+    if (at >= line.size()) return;  // "mtllib" alone
+    std::string name;
+    bool escaped = false;
+    for (const char c : line.substr(at + 1)) {
+        if (!escaped && c == '\\') {
+            escaped = true;
+            continue;
         }
-        if (!name.empty()) names.push_back(name);
-    });
-    return names;
+        if (!escaped && c == ' ') {
+            if (!name.empty()) names.push_back(name);
+            name.clear();
+            continue;
+        }
+        escaped = false;
+        name += c;
+    }
+    if (!name.empty()) names.push_back(name);
 }
 
+// The material name of a `usemtl` statement, as tinyobjloader reads it: its first word.
 std::string used_material_name(std::string_view statement) {
     const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
     std::size_t at = statement.find("usemtl") + 6;
@@ -291,15 +292,24 @@ std::string used_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
-std::string first_face_material(std::string_view text) {
-    std::string material;
-    for_each_line(without_byte_order_mark(text), [&](std::uint64_t, std::string_view line) {
+}  // namespace
+
+ObjMaterialStatements material_statements(std::string_view text) {
+    ObjMaterialStatements found;
+    bool faces_begun = false;
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         const std::string_view keyword = keyword_of(line);
-        if (keyword == "f") return false;
-        if (keyword == "usemtl") material = used_material_name(line);
+        if (keyword == "mtllib") {
+            add_library_names(line, found.libraries);
+        } else if (keyword == "usemtl") {
+            found.uses.push_back({number, used_material_name(line)});
+            if (!faces_begun) found.first_face_material = found.uses.back().second;
+        } else if (keyword == "f") {
+            faces_begun = true;
+        }
         return true;
     });
-    return material;
+    return found;
 }
 
 std::string mtl_statements_used(std::string_view text) {

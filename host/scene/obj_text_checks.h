@@ -10,6 +10,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace clr {
@@ -75,19 +76,22 @@ std::string obj_statements_used(std::string_view text);
 // The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.
 std::string mtl_statements_used(std::string_view text);
 
-// The .mtl files the OBJ `text` names: every name of every `mtllib` statement, in the file's
-// order, as tinyobjloader cuts a statement into names (the text after "mtllib" and one blank,
-// cut at spaces; a backslash keeps the next character, so "a\ b.mtl" is one name).
-// clrender reads them all before the faces, so a `usemtl` finds a material whichever line
-// names its file (tinyobjloader itself reads only the first name of a statement that it can
-// read, and a `usemtl` only among the files named above it).
-std::vector<std::string> material_library_names(std::string_view text);
-
-// The material name of a `usemtl` statement, as tinyobjloader reads it: its first word.
-std::string used_material_name(std::string_view statement);
-
-// The material of the OBJ's first face: the name of the last `usemtl` before the first `f`
-// line ("" where there is none).
-std::string first_face_material(std::string_view text);
+// What the OBJ `text` says of materials, read in one pass:
+struct ObjMaterialStatements {
+    // The .mtl files it names: every name of every `mtllib` statement, in the file's order, as
+    // tinyobjloader cuts a statement into names (the text after "mtllib" and one blank, cut at
+    // spaces; a backslash keeps the next character, so "a\ b.mtl" is one name). clrender reads
+    // them all before the faces, so a `usemtl` finds a material whichever line names its file
+    // (tinyobjloader itself reads only the first name of a statement that it can read, and a
+    // `usemtl` only among the files named above it).
+    std::vector<std::string> libraries;
+    // Each `usemtl` statement: its line and the name it uses (its first word, as tinyobjloader
+    // reads it).
+    std::vector<std::pair<std::uint64_t, std::string>> uses;
+    // The material of the first face: the name of the last `usemtl` before the first `f` line
+    // ("" where there is none).
+    std::string first_face_material;
+};
+ObjMaterialStatements material_statements(std::string_view text);
 
 }  // namespace clr

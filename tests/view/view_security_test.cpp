@@ -347,6 +347,18 @@ TEST_F(ViewSecurity, AChunkedBodyIsRefusedBeforeItIsRead) {
     EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200) << "still serving";
 }
 
+// Sends `block` again and again until `total` bytes are sent or the server stops taking them
+// (it closed the connection, or a send failed); the bytes it took.
+std::size_t send_until_refused(int socket, const std::string& block, std::size_t total) {
+    std::size_t sent = 0;
+    while (sent < total) {
+        const ssize_t wrote = ::send(socket, block.data(), block.size(), MSG_NOSIGNAL);
+        if (wrote <= 0) break;
+        sent += static_cast<std::size_t>(wrote);
+    }
+    return sent;
+}
+
 // A request line that never ends: the server stops reading it at the head's limit (64 KiB,
 // view/bounded_server.h) and closes the connection, answering 431, instead of keeping it
 // all in memory. Without the limit the server would read all 32 MB.
@@ -354,12 +366,7 @@ TEST_F(ViewSecurity, AnEndlessRequestLineIsCutAtTheHeadsLimit) {
     const int socket = connect_to_viewer(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string block(64 * 1024, 'G');
-    std::size_t sent = 0;
-    while (sent < 32u * 1024 * 1024) {
-        const ssize_t wrote = ::send(socket, block.data(), block.size(), MSG_NOSIGNAL);
-        if (wrote <= 0) break;
-        sent += static_cast<std::size_t>(wrote);
-    }
+    const std::size_t sent = send_until_refused(socket, block, 32u * 1024 * 1024);
     const std::string answer = read_one_answer(socket, 5);
     ::close(socket);
     EXPECT_LT(sent, 16u * 1024 * 1024) << "the server went on reading";
@@ -381,12 +388,7 @@ TEST_F(ViewSecurity, ABodyOverTheLimitIsNotReadToItsEnd) {
                              std::to_string(32u * 1024 * 1024) + "\r\n\r\n";
     ASSERT_EQ(::send(socket, head.data(), head.size(), MSG_NOSIGNAL), static_cast<ssize_t>(head.size()));
     const std::string block(64 * 1024, ' ');
-    std::size_t sent = 0;
-    while (sent < 32u * 1024 * 1024) {
-        const ssize_t wrote = ::send(socket, block.data(), block.size(), MSG_NOSIGNAL);
-        if (wrote <= 0) break;
-        sent += static_cast<std::size_t>(wrote);
-    }
+    const std::size_t sent = send_until_refused(socket, block, 32u * 1024 * 1024);
     const std::string answer = read_one_answer(socket, 5);
     ::close(socket);
     EXPECT_LT(sent, 16u * 1024 * 1024) << "the server went on reading";
