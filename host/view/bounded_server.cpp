@@ -144,19 +144,6 @@ void linger_before_close(int socket) {
     }
 }
 
-// The length a request's body says it has: none without a Content-Length, nullopt where the
-// header is given twice or is not a plain number.
-std::optional<std::size_t> declared_body_length(const httplib::Request& request) {
-    const std::size_t given = request.get_header_value_count("Content-Length");
-    if (given == 0) return 0;
-    if (given > 1) return std::nullopt;
-    const std::string text = request.get_header_value("Content-Length");
-    std::size_t length = 0;
-    const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), length);
-    if (text.empty() || error != std::errc() || stop != text.data() + text.size()) return std::nullopt;
-    return length;
-}
-
 // Makes `answer` say Connection: close (once) and no Keep-Alive.
 void say_connection_closes(httplib::Response& answer) {
     if (answer.get_header_value("Connection") != "close") {
@@ -167,6 +154,17 @@ void say_connection_closes(httplib::Response& answer) {
 }
 
 }  // namespace
+
+std::optional<std::size_t> declared_body_length(const httplib::Request& request) {
+    const std::size_t given = request.get_header_value_count("Content-Length");
+    if (given == 0) return 0;
+    if (given > 1) return std::nullopt;
+    const std::string text = request.get_header_value("Content-Length");
+    std::size_t length = 0;
+    const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), length);
+    if (text.empty() || error != std::errc() || stop != text.data() + text.size()) return std::nullopt;
+    return length;
+}
 
 RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
                              std::chrono::milliseconds write_timeout, std::size_t most_body_bytes,

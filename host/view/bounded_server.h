@@ -38,6 +38,10 @@ constexpr int kAnswerSeconds = 60;
 // Longest a connection keeps its thread without starting a request while others wait for one.
 constexpr std::chrono::milliseconds kIdleWhileOthersWait{100};
 
+// The length a request's body says it has: 0 without a Content-Length, nullopt where the
+// header is given twice or is not a plain number.
+std::optional<std::size_t> declared_body_length(const httplib::Request& request);
+
 // One connection's bytes as cpp-httplib reads and writes them, within the limits above.
 // `read_timeout` and `write_timeout` bound each wait, as cpp-httplib's own stream does.
 class RequestStream : public httplib::Stream {

@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -84,12 +83,11 @@ void configure(httplib::Server& server, int& listening) {
     });
 }
 
-// Whether a Content-Length (digits, at most kMostRequestBytes) is one the server reads.
-bool body_length_allowed(const std::string& length) {
-    std::size_t value = 0;
-    const char* end = length.data() + length.size();
-    const auto [stop, error] = std::from_chars(length.data(), end, value);
-    return !length.empty() && error == std::errc() && stop == end && value <= kMostRequestBytes;
+// Whether the request's Content-Length (given once, digits, at most kMostRequestBytes) is one
+// the server reads.
+bool body_length_allowed(const httplib::Request& request) {
+    const std::optional<std::size_t> length = declared_body_length(request);
+    return request.has_header("Content-Length") && length && *length <= kMostRequestBytes;
 }
 
 void warn_about_bind(const std::string& bind) {
@@ -136,7 +134,7 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
             response.status = 403;
         else if (request.has_header("Transfer-Encoding"))
             response.status = 411;  // as the routes answer it (view_routes.cpp)
-        else if (!body_length_allowed(request.get_header_value("Content-Length")))
+        else if (!body_length_allowed(request))
             response.status = 413;
         else
             return 100;
