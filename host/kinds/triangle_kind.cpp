@@ -1,5 +1,6 @@
 #include "kinds/triangle_kind.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/device_structs.h"
@@ -62,6 +63,28 @@ cl_uint edge_order(const ClrTriangle& device) {
            (corner_before(device.corner1, device.corner0) ? 4u : 0u);
 }
 
+Vec3 xyz(const cl_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
+
+// The plane's normal (c1 - c0) x (c2 - c0) of the corners as stored, into the corners' w:
+// the kernels' t is the plane's (c0 - o).n / d.n, as the reference's. Made from the edges
+// scaled by the power of two that brings the longest near 1, so that it stays well inside
+// float's range at every supported size (docs/scene-format.md, Numeric ranges); only its
+// direction matters to t.
+void store_plane_normal(ClrTriangle& device) {
+    const Vec3 c0 = xyz(device.corner0);
+    const Vec3 e1 = xyz(device.corner1) - c0, e2 = xyz(device.corner2) - c0;
+    const double size = std::max({std::fabs(e1.x), std::fabs(e1.y), std::fabs(e1.z), std::fabs(e2.x),
+                                  std::fabs(e2.y), std::fabs(e2.z)});
+    Vec3 normal;
+    if (size > 0) {
+        const double scale = std::ldexp(1.0, -std::ilogb(size));
+        normal = cross(e1 * scale, e2 * scale);
+    }
+    device.corner0.s[3] = static_cast<float>(normal.x);
+    device.corner1.s[3] = static_cast<float>(normal.y);
+    device.corner2.s[3] = static_cast<float>(normal.z);
+}
+
 }  // namespace
 
 void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
@@ -69,6 +92,7 @@ void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec
     device.corner1 = to_float4(triangle.corners[1] - origin);
     device.corner2 = to_float4(triangle.corners[2] - origin);
     device.edge_order = edge_order(device);
+    store_plane_normal(device);
 }
 
 }  // namespace clr

@@ -11,7 +11,16 @@
  * fused multiply-adds (common/math.cl) is exactly the negated value. So no rounding can put
  * the ray outside both triangles: either one of them sees it inside, or the value is exactly
  * zero and both do. The three volumes are also the hit's barycentric weights (Woop, Benthin
- * and Wald 2013 use the same edge functions, after a shear). */
+ * and Wald 2013 use the same edge functions, after a shear).
+ *
+ * The hit's t blends the corners' distances along the ray by those weights: a convex blend,
+ * accurate even where the ray grazes a far triangle. Where the origin lies in the
+ * triangle's plane, though, t is 0 and the blend rounds to noise of either sign: an eye at
+ * the height of a floor saw the floor over random pixels. So the side of the plane decides
+ * first: the ray meets the triangle only where (c0 - o).n and d.n have one sign, n the
+ * plane's normal that the host stores in the corners' w, as the reference finds it ((c0 - o).n
+ * is exactly 0 for an eye on a floor along the axes); and where the plane says ahead but the
+ * blend does not, t is the plane's (c0 - o).n / d.n. */
 #ifndef CLR_KINDS_TRIANGLE_CL
 #define CLR_KINDS_TRIANGLE_CL
 
@@ -46,6 +55,19 @@
 real triangle_nearest_t(real3 origin)
 {
     return (real)CLR_TRIANGLE_SELF_GAP * (fabs(origin.x) + fabs(origin.y) + fabs(origin.z));
+}
+
+/* The plane's normal the host stored in the corners' w (ClrTriangle). */
+real3 triangle_plane_normal(__global const ClrTriangle* triangle)
+{
+    return convert_real3((float3)(triangle->corner0.w, triangle->corner1.w, triangle->corner2.w));
+}
+
+/* Whether a ray whose origin is `offset` = (c0 - o).n from the plane and whose direction has
+ * `facing` = d.n meets the plane ahead of its origin. */
+bool plane_ahead(real offset, real facing)
+{
+    return (offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f);
 }
 
 /* The triangle's corners relative to `origin`. */
@@ -104,6 +126,10 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     real det = u + v + w;
     if (!inside || det == 0.0f)
         return INFINITY;
+    real3 n = triangle_plane_normal(triangle);
+    real offset = dot3(k.a, n), facing = dot3(direction, n);
+    if (!plane_ahead(offset, facing))
+        return INFINITY;
     if (!(fabs(det) >= CLR_TRIANGLE_SCALED_BELOW && fabs(det) <= CLR_TRIANGLE_SCALED_ABOVE)) {
         real scale = ldexp((real)1.0f, -ilogb(det));
         u *= scale;
@@ -112,7 +138,10 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
         det *= scale;
     }
     real t = (u * dot3(k.a, direction) + v * dot3(k.b, direction) + w * dot3(k.c, direction)) / det;
-    return t > triangle_nearest_t(origin) && t < t_max ? t : INFINITY;
+    real nearest = triangle_nearest_t(origin);
+    if (!(t > nearest))
+        t = offset / facing;
+    return t > nearest && t < t_max ? t : INFINITY;
 }
 
 /* triangle_distance()'s scaling of the weights of the lanes in `hit` whose det is out of its
@@ -163,9 +192,17 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     mask16 hit = inside && det != 0.0f;
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
+    real3 n = triangle_plane_normal(triangle);
+    real offset = dot3(k.a, n);
+    real16 facing = dot16(n, d);
+    hit = hit && ((offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f)); /* plane_ahead() */
     scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * dot16(k.a, d) + v * dot16(k.b, d) + w * dot16(k.c, d)) / det;
-    hit = hit && t > triangle_nearest_t(origin);
+    real nearest = triangle_nearest_t(origin);
+    mask16 behind = hit && !(t > nearest);
+    if (any_lanes16(behind))
+        t = select(t, offset / facing, behind);
+    hit = hit && t > nearest;
     return select((real16)(INFINITY), t, hit);
 }
 
@@ -191,10 +228,16 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     mask16 hit = inside && det != 0.0f;
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
+    real3 n = triangle_plane_normal(triangle);
+    real16 offset = ax * n.x + ay * n.y + az * n.z, facing = d.x * n.x + d.y * n.y + d.z * n.z;
+    hit = hit && ((offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f)); /* plane_ahead() */
     scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * (ax * d.x + ay * d.y + az * d.z) + v * (bx * d.x + by * d.y + bz * d.z) +
                 w * (cx * d.x + cy * d.y + cz * d.z)) /
                det;
+    mask16 behind = hit && !(t > nearest);
+    if (any_lanes16(behind))
+        t = select(t, offset / facing, behind);
     hit = hit && t > nearest;
     return select((real16)(INFINITY), t, hit);
 }

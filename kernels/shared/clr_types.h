@@ -100,9 +100,11 @@ typedef struct {
  * normal is the corner normals (triangle_normals[normals + 0..2], xyz) interpolated by the
  * hit's barycentric coordinates where the OBJ gives them, else (c1 - c0) x (c2 - c0). */
 typedef struct {
-    clr_float4 corner0; /* xyz = c0; w unused */
-    clr_float4 corner1; /* xyz = c1; w unused */
-    clr_float4 corner2; /* xyz = c2; w unused */
+    /* The corners' w hold the plane's normal (c1 - c0) x (c2 - c0) from edges scaled by a power
+     * of two (host: TriangleKind::move): corner0.w, corner1.w, corner2.w = x, y, z. */
+    clr_float4 corner0; /* xyz = c0; w = the plane normal's x */
+    clr_float4 corner1; /* xyz = c1; w = its y */
+    clr_float4 corner2; /* xyz = c2; w = its z */
     clr_float4 color;   /* xyz = its mesh's ambient colour; w unused */
     clr_uint flags;     /* CLR_SURFACE_* */
     clr_int normals;    /* first of its three corner normals in triangle_normals, or -1 */

@@ -244,5 +244,56 @@ TEST(Meshes, AGridOnThePixelRaysHasNoCrackInTheReferenceNorInTheKernels) {
     }
 }
 
+
+// An eye that lies in a triangle's plane meets it at t = 0, which is no hit: the floor of a
+// scene whose camera stands at floor height is not seen, nor are the faces of a cube whose
+// face or edge holds the eye; an eye just above the floor sees it below the horizon only.
+// (The kernels' t blends the corners' distances, which for such an eye rounded to noise of
+// either sign: 37-90% of the pixels showed a speckled surface.)
+TEST(Meshes, AnEyeInATrianglesPlaneSeesNothingOfItThere) {
+    auto scene_from = [](const Vec3& eye, const Vec3& look_at, bool sun) {
+        Scene scene = testing::make_scene(eye, look_at, {0, 1, 0}, 60, 96, 72);
+        scene.background = {0.2, 0.2, 0.3};
+        scene.has_sun = sun;
+        scene.sun_location = {3, 9, 6};
+        scene.spheres.push_back(testing::make_sphere({0, 0.5, 0}, 0.5, {1, 0, 0}));
+        return scene;
+    };
+    auto with_floor = [&](double eye_height, bool sun) {
+        Scene scene = scene_from({0.3, eye_height, 4}, {0, eye_height, 0}, sun);
+        add_mesh(scene, grid_mesh({-10, 0, 10}, {20, 0, 0}, {0, 0, -20}, 3, 3), {0.2, 0.8, 0.2});
+        return scene;
+    };
+    // A cube of side 2 from (-1, -1, -1) to (1, 1, 1), each face a grid of 2 x 2 squares.
+    auto with_cube = [&](const Vec3& eye, const Vec3& look_at) {
+        Scene scene = scene_from(eye, look_at, true);
+        scene.spheres.clear();
+        scene.spheres.push_back(testing::make_sphere({-3, 0, -4}, 1, {1, 0, 0}));
+        for (double side : {-1.0, 1.0}) {
+            add_mesh(scene, grid_mesh({-1, -1, side}, {2, 0, 0}, {0, 2, 0}, 2, 2), {0.8, 0.8, 0.2});
+            add_mesh(scene, grid_mesh({side, -1, -1}, {0, 0, 2}, {0, 2, 0}, 2, 2), {0.2, 0.8, 0.8});
+            add_mesh(scene, grid_mesh({-1, side, -1}, {2, 0, 0}, {0, 0, 2}, 2, 2), {0.8, 0.2, 0.8});
+        }
+        return scene;
+    };
+    const std::vector<std::pair<Scene, std::string>> cases = {
+        {with_floor(0, false), "eye on the floor"},
+        {with_floor(0, true), "eye on the floor, sunlit"},
+        {with_floor(1e-9, false), "eye 1e-9 above the floor"},
+        {with_cube({1, 1, 0.3}, {-3, 0, -4}), "eye on the cube's edge"},
+        {with_cube({0.4, 1, 0.3}, {-3, 0, -4}), "eye on the cube's face"},
+    };
+    for (const auto& [scene, what] : cases) {
+        testing::expect_kernels_match_reference(scene, what, {}, 0.0001);
+        RendererOptions double_precision;
+        double_precision.double_precision = true;
+        testing::expect_kernels_match_reference(scene, what + " (double)", double_precision, 0.0001);
+    }
+    // The eye just above the floor sees it below the horizon, as the reference does.
+    const Image above = testing::render_with_reference(with_floor(1e-9, false));
+    EXPECT_EQ(above.at(2, above.height - 3, 1), 204) << "the floor's green below the horizon";
+    EXPECT_NE(above.at(2, 2, 1), 204) << "no floor above the horizon";
+}
+
 }  // namespace
 }  // namespace clr
