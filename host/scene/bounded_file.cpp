@@ -37,7 +37,13 @@ std::string kind_of(mode_t mode) {
 }
 
 std::string too_large(std::uint64_t size, std::uint64_t max_bytes) {
-    return "the file is " + describe_bytes(size) + ", more than the limit of " + describe_bytes(max_bytes);
+    std::string size_text = describe_bytes(size), limit_text = describe_bytes(max_bytes);
+    // Rounded alike ("1 GiB, more than the limit of 1 GiB"), the figures are given in bytes.
+    if (size_text == limit_text) {
+        size_text = std::to_string(size) + " bytes";
+        limit_text += " (" + std::to_string(max_bytes) + " bytes)";
+    }
+    return "the file is " + size_text + ", more than the limit of " + limit_text;
 }
 
 }  // namespace

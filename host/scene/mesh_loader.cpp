@@ -265,6 +265,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
                                "): it draws nothing");
         } catch (const MeshMemoryError& error) {
             fail_out_of_memory(each.filename, "OBJ '" + printable(path) + "': " + error.what());
+        } catch (const std::bad_alloc&) {
+            // Memory ran out all the same (a limit below the budget, such as `ulimit -v`).
+            fail_out_of_memory(each.filename, "OBJ '" + printable(path) + "': reading it took more memory than the "
+                                              "system gives (docs/robustness.md, Memory)");
         } catch (const ObjError& error) {
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);

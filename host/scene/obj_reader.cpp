@@ -228,14 +228,15 @@ void warn_about_undefined_materials(const ObjMaterialStatements& statements, con
                                     ObjMesh& mesh) {
     std::uint64_t first_line = 0, more = 0;
     std::string first_name;
-    for (const auto& [line, name] : statements.uses) {
-        if (material_files.defines(name)) continue;
+    for (const auto& use : statements.uses) {  // in the order of their first lines
+        if (material_files.defines(use.name)) continue;
         if (first_line != 0) {
-            ++more;
+            more += use.lines;
             continue;
         }
-        first_line = line;
-        first_name = name;
+        first_line = use.first_line;
+        first_name = use.name;
+        more += use.lines - 1;
     }
     if (first_line == 0) return;
     mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
@@ -265,6 +266,36 @@ std::optional<Vec3> first_face_diffuse(const ObjMaterialStatements& statements,
         return std::nullopt;
     const auto& kd = materials[material->second].diffuse;
     return Vec3{kd[0], kd[1], kd[2]};
+}
+
+// A mesh takes one colour (docs/scene-format.md, Meshes): a `usemtl` whose material's Kd is not
+// the first face's is a warning naming the first such line and how many more there are.
+void warn_about_unused_materials(const ObjMaterialStatements& statements, const std::vector<tinyobj::material_t>& materials,
+                                 const std::map<std::string, int>& names, const MaterialFiles& material_files,
+                                 ObjMesh& mesh) {
+    std::uint64_t first_line = 0, more = 0;
+    std::string first_name;
+    for (const auto& use : statements.uses) {  // in the order of their first lines
+        const auto material = names.find(use.name);
+        if (use.name == statements.first_face_material || material == names.end() || material->second < 0 ||
+            static_cast<std::size_t>(material->second) >= materials.size() ||
+            !material_files.gives_diffuse(material->second))
+            continue;
+        const auto& kd = materials[material->second].diffuse;
+        if (mesh.diffuse && Vec3{kd[0], kd[1], kd[2]} == *mesh.diffuse) continue;
+        if (first_line != 0) {
+            more += use.lines;
+            continue;
+        }
+        first_line = use.first_line;
+        first_name = use.name;
+        more += use.lines - 1;
+    }
+    if (first_line == 0) return;
+    mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
+                            ": a mesh takes one colour, the scene's ambient or else its first face's material's Kd; "
+                            "this material's Kd is not used" +
+                            (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : ""));
 }
 
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
@@ -338,6 +369,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);
     warn_about_undefined_materials(statements, material_files, mesh);
+    warn_about_unused_materials(statements, materials, material_names, material_files, mesh);
     return mesh;
 }
 
@@ -348,7 +380,8 @@ ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
-    const std::uint64_t needed = text.size() + counts.triangles * kParsedTriangleBytes;
+    const std::uint64_t needed =
+        2 * text.size() + counts.triangles * kParsedTriangleBytes + counts.named_statements * kStatementBytes;
     if (needed > memory_budget) {
         throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles would take about " +
                               gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +

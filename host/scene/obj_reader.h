@@ -39,6 +39,11 @@ public:
 // `clrender --check` on terrains of 1M and 2M triangles grew by 240 MB a million, besides the
 // text; a margin on top.
 constexpr std::uint64_t kParsedTriangleBytes = 300;
+// What an `o`, `g`, `usemtl` or `mtllib` line may take: tinyobjloader makes a shape (a name and
+// several arrays) at each `o` or `g`, which for a file of one face per object took about 230
+// bytes a triangle besides the 300; a material name is kept once. A margin on top. The text
+// counts twice: the checks read it, tinyobjloader its copy without the lines it must not see.
+constexpr std::uint64_t kStatementBytes = 512;
 
 // Largest OBJ file and largest .mtl file read, and most triangles a file may fan into: a
 // triangle costs the reader about 48 bytes (three position and three normal indices) besides
@@ -72,8 +77,9 @@ struct ObjMesh {
 // Reads the OBJ at `path` (a regular file; `mtllib` names are relative to its folder, and a
 // missing or unreadable .mtl is an error too). Throws ObjError with a one-line reason:
 // missing, not a regular file, too large, a bad line (with its number), too many triangles.
-// Throws MeshMemoryError, before the parse, when the text and its triangles at
-// kParsedTriangleBytes each would take more than `memory_budget` bytes; std::bad_alloc when
+// Throws MeshMemoryError, before the parse, when twice the text, its triangles at
+// kParsedTriangleBytes each and its `o`, `g`, `usemtl` and `mtllib` lines at kStatementBytes
+// each would take more than `memory_budget` bytes; std::bad_alloc when
 // memory runs out all the same.
 ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/parallel_for.h"
@@ -95,6 +98,18 @@ bool parse_number(std::string_view token, double& value) {
     return result.ec == std::errc() && result.ptr == end && std::isfinite(value);
 }
 
+// Whether `token` is a number too close to zero for a double ("1e-400"): from_chars refuses it
+// as it refuses one too large, but it is finite. Read as a long double, of a wider range.
+bool underflows_double(std::string_view token) {
+    token = without_plus(token);
+    const char* end = token.data() + token.size();
+    double unused = 0;
+    if (std::from_chars(token.data(), end, unused).ec != std::errc::result_out_of_range) return false;
+    long double value = 0;
+    const auto wide = std::from_chars(token.data(), end, value);
+    return wide.ec == std::errc() && wide.ptr == end && std::fabs(value) < 1.0L;
+}
+
 // tinyobjloader computes a number as mantissa * 5^e * 2^e from its digits, which gives NaN or
 // infinity for finite numbers such as "0e500" (0 * infinity) or a 400-digit "1000...0e-400".
 // Within kMaxNumberCharacters and an exponent of at most kMaxNumberExponent in magnitude,
@@ -136,10 +151,10 @@ std::string check_numbers(const std::vector<std::string_view>& tokens, std::size
     }
     for (std::size_t i = 1; i < tokens.size(); ++i) {
         double value = 0;
-        if (!parse_number(tokens[i], value)) {
+        if (!parse_number(tokens[i], value) && !underflows_double(tokens[i])) {
             return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is not a finite number";
         }
-        if (!within_reader_limits(tokens[i])) {
+        if (!within_reader_limits(tokens[i]) || underflows_double(tokens[i])) {
             return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is too long or its exponent too large (" +
                    number_limits_text() + ")";
         }
@@ -199,6 +214,7 @@ void count_entry(std::string_view keyword, ObjTextCounts& counts) {
     if (keyword == "v") ++counts.positions;
     else if (keyword == "vn") ++counts.normals;
     else if (keyword == "vt") ++counts.texcoords;
+    else if (keyword == "o" || keyword == "g" || keyword == "usemtl" || keyword == "mtllib") ++counts.named_statements;
 }
 
 // The statement of a line: the text before a '#', which starts a comment ("f 1 2 3 # tri").
@@ -294,16 +310,27 @@ std::string used_material_name(std::string_view statement) {
 
 }  // namespace
 
+// Each name once, however many lines repeat it: a file of millions of `usemtl` or `mtllib`
+// lines holds one entry per name.
 ObjMaterialStatements material_statements(std::string_view text) {
     ObjMaterialStatements found;
+    std::unordered_set<std::string> libraries;
+    std::unordered_map<std::string, std::size_t> uses;  // a name's entry in found.uses
+    std::vector<std::string> names;
     bool faces_begun = false;
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         const std::string_view keyword = keyword_of(line);
         if (keyword == "mtllib") {
-            add_library_names(line, found.libraries);
+            names.clear();
+            add_library_names(line, names);
+            for (std::string& name : names)
+                if (libraries.insert(name).second) found.libraries.push_back(std::move(name));
         } else if (keyword == "usemtl") {
-            found.uses.push_back({number, used_material_name(line)});
-            if (!faces_begun) found.first_face_material = found.uses.back().second;
+            std::string name = used_material_name(line);
+            if (!faces_begun) found.first_face_material = name;
+            const auto [entry, added] = uses.try_emplace(name, found.uses.size());
+            if (added) found.uses.push_back({std::move(name), number, 0});
+            ++found.uses[entry->second].lines;
         } else if (keyword == "f") {
             faces_begun = true;
         }
@@ -443,6 +470,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
     sum.texcoords += more.texcoords;
     sum.faces += more.faces;
     sum.triangles += more.triangles;
+    sum.named_statements += more.named_statements;
 }
 
 }  // namespace

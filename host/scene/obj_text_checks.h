@@ -30,6 +30,9 @@ struct ObjTextCounts {
     std::uint64_t texcoords = 0;  // `vt` lines
     std::uint64_t faces = 0;      // `f` lines
     std::uint64_t triangles = 0;  // a face of n corners fans into n - 2
+    // `o`, `g`, `usemtl` and `mtllib` lines: each may start a shape of tinyobjloader's or name a
+    // material or a .mtl file, memory beside the triangles' (obj_reader.h, kStatementBytes).
+    std::uint64_t named_statements = 0;
 };
 
 // A line the checks refuse: its number (from 1) and why, in a user's terms.
@@ -84,10 +87,15 @@ struct ObjMaterialStatements {
     // them all before the faces, so a `usemtl` finds a material whichever line names its file
     // (tinyobjloader itself reads only the first name of a statement that it can read, and a
     // `usemtl` only among the files named above it).
-    std::vector<std::string> libraries;
-    // Each `usemtl` statement: its line and the name it uses (its first word, as tinyobjloader
-    // reads it).
-    std::vector<std::pair<std::uint64_t, std::string>> uses;
+    std::vector<std::string> libraries;  // each name once, where it first appears
+    // Each material name that `usemtl` statements use (its first word, as tinyobjloader reads
+    // it), once, in the order of first use: the line of its first use and how many lines use it.
+    struct Use {
+        std::string name;
+        std::uint64_t first_line = 0;
+        std::uint64_t lines = 0;
+    };
+    std::vector<Use> uses;
     // The material of the first face: the name of the last `usemtl` before the first `f` line
     // ("" where there is none).
     std::string first_face_material;

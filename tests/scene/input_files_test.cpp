@@ -130,6 +130,20 @@ TEST(InputFiles, FileWhoseSizeIsUnknownIsReadOnlyToTheLimit) {
     EXPECT_FALSE(read_bounded_file("/proc/self/maps", 1 << 20).empty());
 }
 
+// A file just over its limit, whose size rounds to the limit's, is named in bytes (it said
+// "the file is 1 GiB, more than the limit of 1 GiB").
+TEST(InputFiles, AFileJustOverItsLimitIsNamedInBytes) {
+    TempFolder folder;
+    const std::string path = folder.write("scene.json", "{");
+    fs::resize_file(path, (std::uint64_t(1) << 20) + 1);
+    try {
+        read_bounded_file(path, std::uint64_t(1) << 20);
+        ADD_FAILURE() << "read";
+    } catch (const BoundedFileError& error) {
+        EXPECT_EQ(std::string(error.what()), "the file is 1048577 bytes, more than the limit of 1 MiB (1048576 bytes)");
+    }
+}
+
 TEST(InputFiles, ByteCountsForMessages) {
     EXPECT_EQ(describe_bytes(1), "1 byte");
     EXPECT_EQ(describe_bytes(1023), "1023 bytes");

@@ -5,8 +5,13 @@
 // settings are refused where they are written.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -153,12 +158,12 @@ std::pair<std::string, int> memory_error_of(const TempFolder& folder, const Json
 }
 
 // A mesh that would take more memory than the scene's meshes may is refused with exit 6 at its
-// "filename": before its parse (its text and triangles at kParsedTriangleBytes), or once the
+// "filename": before its parse (twice its text and its triangles at kParsedTriangleBytes), or once the
 // scene's triangles at kPlacedTriangleBytes each pass the budget, counted across its meshes.
 TEST(MeshLoader, MeshesBeyondTheMemoryBudgetEndTheRunWithExit6) {
     TempFolder folder;
     const std::string text = folder.write("square.obj", kSquareObj);
-    const std::uint64_t text_bytes = kSquareObj.size(), parse = text_bytes + 2 * kParsedTriangleBytes;
+    const std::uint64_t text_bytes = kSquareObj.size(), parse = 2 * text_bytes + 2 * kParsedTriangleBytes;
     const Json two = with_obj(Json::array({{{"filename", "square.obj"}}, {{"filename", "square.obj"}, {"position", {0, 0, 1}}}}));
     EXPECT_EQ(memory_error_of(folder, two, 4 * kPlacedTriangleBytes).first, "") << "four triangles fit";
     const auto [placed, placed_code] = memory_error_of(folder, two, 4 * kPlacedTriangleBytes - 1);
@@ -175,6 +180,53 @@ TEST(MeshLoader, MeshesBeyondTheMemoryBudgetEndTheRunWithExit6) {
               std::string::npos)
         << parsed;
     EXPECT_EQ(memory_error_of(folder, with_obj({{"filename", "square.obj"}}), 2 * kPlacedTriangleBytes).first, "");
+}
+
+// Memory that runs out all the same while a mesh is read (a limit below the budget, such as
+// `ulimit -v`) ends the run with exit 6 and one line at the mesh's "filename", naming the OBJ
+// (it said only "out of memory"). Checked in a child whose address space may grow by 8 MiB,
+// reading an OBJ of 100k triangles (the parse alone takes about 25 MB).
+TEST(MeshLoader, MemoryThatRunsOutWhileReadingAMeshIsNamedAtItsFilename) {
+#ifdef __SANITIZE_ADDRESS__
+    GTEST_SKIP() << "AddressSanitizer's allocator reserves address space of its own";
+#endif
+    TempFolder folder;
+    std::string text;
+    constexpr int kCells = 224;  // 2 * 224^2 = 100,352 triangles
+    for (int j = 0; j <= kCells; ++j)
+        for (int i = 0; i <= kCells; ++i) text += "v " + std::to_string(i) + " " + std::to_string(j) + " 0\n";
+    for (int j = 0; j < kCells; ++j)
+        for (int i = 0; i < kCells; ++i) {
+            const int a = j * (kCells + 1) + i + 1, b = a + 1, c = a + kCells + 2, d = a + kCells + 1;
+            text += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+        }
+    const std::string obj = folder.write("grid.obj", text);
+    const Json scene = with_obj({{"filename", "grid.obj"}});
+    const std::string expected = "scene.json: /obj/filename: out of memory: OBJ '" + obj +
+                                 "': reading it took more memory than the system gives";
+    const pid_t child = ::fork();
+    if (child == 0) {
+        long pages = 0;
+        std::FILE* statm = std::fopen("/proc/self/statm", "r");
+        const bool measured = statm && std::fscanf(statm, "%ld", &pages) == 1;
+        if (statm) std::fclose(statm);
+        const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + (rlim_t(8) << 20);
+        rlimit bounded{limit, limit};
+        bool named = false;
+        if (measured && ::setrlimit(RLIMIT_AS, &bounded) == 0) {
+            try {
+                ::setenv("CLRENDER_CACHE_DIR", "off", 1);  // read, not taken from the mesh cache
+                load_in(folder, scene);
+            } catch (const Error& error) {
+                named = error.code() == kExitOutOfMemory && std::string(error.what()).find(expected) != std::string::npos;
+            } catch (...) {
+            }
+        }
+        ::_exit(named ? 0 : 1);
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "not ended with \"" << expected << "\"";
 }
 
 // The reader's warnings are the scene's, at the mesh's "filename" (so --strict refuses them).

@@ -215,7 +215,9 @@ TEST(ObjReader, AMaterialThatNoMtlDefinesIsAWarning) {
     EXPECT_FALSE(mesh.diffuse.has_value());
     EXPECT_EQ(mesh.warnings, (std::vector<std::string>{
                                  "line 8: usemtl blue: no .mtl file of the OBJ defines this material (nor those of 1 "
-                                 "more usemtl lines); its faces take the scene's ambient, else 0.8 grey"}));
+                                 "more usemtl lines); its faces take the scene's ambient, else 0.8 grey",
+                                 "line 11: usemtl rde: a mesh takes one colour, the scene's ambient or else its first "
+                                 "face's material's Kd; this material's Kd is not used"}));
     const ObjMesh none = read_obj(folder.write("none.obj", kSquare + "usemtl red\nf 1 2 3\n"));
     ASSERT_EQ(none.warnings.size(), 1u);
     EXPECT_EQ(none.warnings[0].rfind("line 5: usemtl red: no .mtl file", 0), 0u) << none.warnings[0];
@@ -428,6 +430,10 @@ TEST(ObjReader, NumbersMustBeFiniteAndInRange) {
 TEST(ObjReader, NumbersTheLibraryCannotReadAreRefused) {
     const std::string limits = "(clrender reads numbers of at most 64 characters with an exponent from -300 to 300)";
     EXPECT_EQ(error_for("v -1 1 0e500\n"), "line 1: 'v': '0e500' is too long or its exponent too large " + limits);
+    // Too close to zero for a double is finite, and beyond the exponents read ("not a finite
+    // number" before).
+    EXPECT_EQ(error_for("v 1e-400 0 0\n"), "line 1: 'v': '1e-400' is too long or its exponent too large " + limits);
+    EXPECT_EQ(error_for("v 1e-4000 0 0\n"), "line 1: 'v': '1e-4000' is too long or its exponent too large " + limits);
     EXPECT_EQ(error_for("v 0 0 0\nvn 0 0 0E+301\n"), "line 2: 'vn': '0E+301' is too long or its exponent too large " + limits);
     const std::string one = "1" + std::string(400, '0') + "e-400";
     EXPECT_EQ(error_for("v 0 " + one + " 0\n"),
@@ -605,6 +611,56 @@ TEST(ObjReader, AnEmptyFileIsAnEmptyMesh) {
     const ObjMesh mesh = read_obj(folder.write("empty.obj", "# nothing\n"));
     EXPECT_EQ(mesh.faces, 0u);
     EXPECT_TRUE(mesh.triangles.empty());
+}
+
+// A mesh takes one colour: a later material whose Kd differs from the first face's is a
+// warning with its line, counting the other lines that use such materials; one of the same Kd,
+// or without a Kd, is none.
+TEST(ObjReader, AMaterialWhoseColourTheMeshDoesNotTakeIsAWarning) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\nnewmtl crimson\nKd 1 0 0\nnewmtl plain\n");
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\nusemtl red\nf 1 2 4\n"
+                    "usemtl blue\nf 2 3 4\n"));
+    EXPECT_EQ(mesh.diffuse, (Vec3{1, 0, 0}));
+    EXPECT_EQ(mesh.warnings, (std::vector<std::string>{
+                                 "line 8: usemtl blue: a mesh takes one colour, the scene's ambient or else its first "
+                                 "face's material's Kd; this material's Kd is not used (nor those of 1 more usemtl "
+                                 "lines)"}));
+    EXPECT_TRUE(read_obj(folder.write("same.obj", "mtllib m.mtl\n" + kSquare +
+                                                      "usemtl red\nf 1 2 3\nusemtl crimson\nf 1 3 4\nusemtl plain\nf 1 2 4\n"))
+                    .warnings.empty());
+}
+
+// Each material and .mtl name is kept once however many lines repeat it: a file of millions of
+// `usemtl` lines took 400 MB for 48 MiB of text.
+TEST(ObjReader, RepeatedMaterialStatementsAreKeptOnce) {
+    std::string text = "mtllib a.mtl b.mtl\n";
+    for (int i = 0; i < 1000; ++i) text += "usemtl x\nmtllib b.mtl a.mtl\nusemtl y\n";
+    text += "f 1 2 3\nusemtl x\n";
+    const ObjMaterialStatements statements = material_statements(text);
+    EXPECT_EQ(statements.libraries, (std::vector<std::string>{"a.mtl", "b.mtl"}));
+    ASSERT_EQ(statements.uses.size(), 2u);
+    EXPECT_EQ(statements.uses[0].name, "x");
+    EXPECT_EQ(statements.uses[0].first_line, 2u);
+    EXPECT_EQ(statements.uses[0].lines, 1001u);
+    EXPECT_EQ(statements.uses[1].name, "y");
+    EXPECT_EQ(statements.uses[1].first_line, 4u);
+    EXPECT_EQ(statements.uses[1].lines, 1000u);
+    EXPECT_EQ(statements.first_face_material, "y");
+}
+
+// The parse's memory check counts twice the text, the triangles and each line that may make a
+// shape or name a material (tinyobjloader makes a shape at each `o` or `g`: a file of one face
+// per object took 530 bytes a triangle, not the 300 counted before).
+TEST(ObjReader, ShapesAndMaterialLinesCountTowardsTheParseBudget) {
+    TempFolder folder;
+    const std::string text = kSquare + "o a\nf 1 2 3\ng b\nf 1 3 4\nusemtl c\nmtllib m.mtl\n";
+    folder.write("m.mtl", "newmtl c\nKd 1 0 0\n");
+    const std::string path = folder.write("mesh.obj", text);
+    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes;
+    EXPECT_EQ(parse_obj(text, path, needed).triangles.size(), 2u);
+    EXPECT_THROW(parse_obj(text, path, needed - 1), MeshMemoryError);
 }
 
 }  // namespace
