@@ -41,6 +41,17 @@
 #else
 #define CLR_TRIANGLE_SELF_GAP 1.5e-5f
 #endif
+/* Only triangles whose plane passes within rounding of the ray's origin are such neighbours:
+ * the origin lies nearer the plane than CLR_TRIANGLE_PLANE_SLACK times its distance from the
+ * eye (|x| + |y| + |z|, as the gap). Any other triangle counts at every t > 0: a mirror or
+ * shadow ray leaving a floor next to a wall meets the wall however near (the gap alone let rays
+ * through a concave crease: a line of background along a mirror corner seen through a narrow
+ * lens). */
+#if CLR_FEATURE_DOUBLE
+#define CLR_TRIANGLE_PLANE_SLACK 1e-12
+#else
+#define CLR_TRIANGLE_PLANE_SLACK 9.5367432e-7f /* 2^-20 */
+#endif
 
 /* The hit's weights u, v, w (signed volumes, the squares of lengths times a length) and their
  * products with the corners' distances along the ray (cubes) overflow float for a triangle
@@ -55,6 +66,19 @@
 real triangle_nearest_t(real3 origin)
 {
     return (real)CLR_TRIANGLE_SELF_GAP * (fabs(origin.x) + fabs(origin.y) + fabs(origin.z));
+}
+
+real triangle_plane_slack(real3 origin)
+{
+    return (real)CLR_TRIANGLE_PLANE_SLACK * (fabs(origin.x) + fabs(origin.y) + fabs(origin.z));
+}
+
+/* The least t of a hit: `nearest` (triangle_nearest_t()) where the origin lies within the
+ * plane's slack (triangle_plane_slack(), times |n.x| + |n.y| + |n.z|) of the plane, from which
+ * it is `offset` = (c0 - o).n, else 0. */
+real triangle_least_t(real offset, real3 n, real nearest, real slack)
+{
+    return fabs(offset) <= slack * (fabs(n.x) + fabs(n.y) + fabs(n.z)) ? nearest : 0.0f;
 }
 
 /* The plane's normal the host stored in the corners' w (ClrTriangle). */
@@ -138,10 +162,10 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
         det *= scale;
     }
     real t = (u * dot3(k.a, direction) + v * dot3(k.b, direction) + w * dot3(k.c, direction)) / det;
-    real nearest = triangle_nearest_t(origin);
-    if (!(t > nearest))
+    real least = triangle_least_t(offset, n, triangle_nearest_t(origin), triangle_plane_slack(origin));
+    if (!(t > least))
         t = offset / facing;
-    return t > nearest && t < t_max ? t : INFINITY;
+    return t > least && t < t_max ? t : INFINITY;
 }
 
 /* triangle_distance()'s scaling of the weights of the lanes in `hit` whose det is out of its
@@ -209,9 +233,10 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
 /* triangle_distance() for 16 rays from 16 origins (t_max = infinity), the shadow rays of a
  * packet's hit points (packet/shadows16.cl): lane by lane the same operations in the same
  * order, so each lane's t is the one triangle_distance() gives its ray, to the last bit.
- * `nearest` is triangle_nearest_t() of each lane's origin. */
+ * `nearest` and `slack` are triangle_nearest_t() and triangle_plane_slack() of each lane's
+ * origin. */
 CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* triangle, Points16 o, real16 nearest,
-                                                  Directions16 d)
+                                                  real16 slack, Directions16 d)
 {
     real3 c0 = convert_real3(triangle->corner0.xyz);
     real3 c1 = convert_real3(triangle->corner1.xyz);
@@ -235,10 +260,12 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     real16 t = (u * (ax * d.x + ay * d.y + az * d.z) + v * (bx * d.x + by * d.y + bz * d.z) +
                 w * (cx * d.x + cy * d.y + cz * d.z)) /
                det;
-    mask16 behind = hit && !(t > nearest);
+    /* triangle_least_t() lane by lane */
+    real16 least = select((real16)(0.0f), nearest, fabs(offset) <= slack * (fabs(n.x) + fabs(n.y) + fabs(n.z)));
+    mask16 behind = hit && !(t > least);
     if (any_lanes16(behind))
         t = select(t, offset / facing, behind);
-    hit = hit && t > nearest;
+    hit = hit && t > least;
     return select((real16)(INFINITY), t, hit);
 }
 

@@ -69,8 +69,9 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
 #if CLR_FEATURE_TRIANGLES
     Points16 origins = {ox, oy, oz};
     Directions16 d = {dx, dy, dz};
-    /* triangle_nearest_t() lane by lane */
+    /* triangle_nearest_t() and triangle_plane_slack() lane by lane */
     real16 nearest = (real)CLR_TRIANGLE_SELF_GAP * (fabs(ox) + fabs(oy) + fabs(oz));
+    real16 slack = (real)CLR_TRIANGLE_PLANE_SLACK * (fabs(ox) + fabs(oy) + fabs(oz));
     int16 skip_kind = vload16(0, rays->skip_kind), skip_index = vload16(0, rays->skip_index);
 #endif
     /* safe_inverse() lane by lane: no 0 * inf, so no NaN in the slab test. */
@@ -109,7 +110,7 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
             if (kind == CLR_HIT_TRIANGLE) {
                 /* A mesh's leaves hold triangles: all 16 lanes at once, as lane_meets16(). */
                 mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
-                real16 t = triangle_distance16_from(&triangles[index], origins, nearest, d);
+                real16 t = triangle_distance16_from(&triangles[index], origins, nearest, slack, d);
                 met |= convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
                 continue;
             }

@@ -295,5 +295,26 @@ TEST(Meshes, AnEyeInATrianglesPlaneSeesNothingOfItThere) {
     EXPECT_NE(above.at(2, 2, 1), 204) << "no floor above the horizon";
 }
 
+// A mirror or shadow ray that leaves a floor beside a wall meets the wall however near: the
+// self gap that keeps a point from meeting its coplanar neighbours (kernels/kinds/triangle.cl)
+// let rays through the concave crease, a line of background along a mirror corner seen
+// through a narrow lens (1% of the pixels), and a lit line where the wall shades the floor.
+TEST(Meshes, AConcaveCreaseHoldsMirrorAndShadowRays) {
+    auto corner = [](bool mirror, bool sun) {
+        Scene scene = testing::make_scene({0, 3, 5}, {0, 0, -5}, {0, 1, 0}, 0.05, 200, 200);
+        scene.background = {0, 0, 0.3};
+        scene.has_sun = sun;
+        scene.sun_location = {0, 30, -60};  // behind the wall: the floor by the crease is in shade
+        scene.max_depth = 4;
+        const Color colour = mirror ? Color{0, 0, 0} : Color{0.8, 0.8, 0.8};
+        add_mesh(scene, grid_mesh({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, 1, 1), colour, mirror);
+        add_mesh(scene, grid_mesh({-5, 0, -5}, {10, 0, 0}, {0, 5, 0}, 1, 1), colour, mirror);
+        scene.spheres.push_back(testing::make_sphere({0, 15, 43}, 10, {1, 0.8, 0}));
+        return scene;
+    };
+    testing::expect_kernels_match_reference(corner(true, false), "mirror corner", {}, 0.0001);
+    testing::expect_kernels_match_reference(corner(false, true), "shaded corner", {}, 0.0001);
+}
+
 }  // namespace
 }  // namespace clr
