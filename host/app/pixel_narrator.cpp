@@ -1,5 +1,7 @@
 #include "app/pixel_narrator.h"
 
+#include <cmath>
+
 #include <cstdio>
 
 #include "kinds/kinds.h"
@@ -79,6 +81,7 @@ void PixelNarrator::sample_finished(int sample, const Color& colour) {
 void PixelNarrator::ray_cast(RayRole role, int depth, const reference::Ray& ray, double t_max) {
     role_ = role;
     ray_ = ray;
+    clip_start_ = 0;
     found_in_search_ = false;
     out_ << "\n-- " << role_name(role);
     if (role == RayRole::Reflected)
@@ -88,6 +91,16 @@ void PixelNarrator::ray_cast(RayRole role, int depth, const reference::Ray& ray,
         out_ << ", 0 < t < " << explain_number(t_max)
              << (scene_.lit_by_lights() ? " (the light's distance)" : " (the sun's distance)");
     out_ << "\n";
+}
+
+void PixelNarrator::search_clipped(const reference::Ray& kept, double t_start, double t_end) {
+    ray_ = kept;
+    clip_start_ = t_start;
+    out_ << "the camera keeps depths from near to far: t from " << explain_number(t_start)
+         << (std::isfinite(t_end) ? " to " + explain_number(t_end) : std::string(" on (no far)"))
+         << " along this ray; the search starts on the near plane at o' = o + "
+         << explain_number(t_start) << " d = " << position(kept.origin)
+         << "; in the tests below, o is o' and t counts from it\n";
 }
 
 void PixelNarrator::sphere_tested(int index, const SphereRoots& roots, double t_max, double t) {
@@ -236,7 +249,8 @@ void PixelNarrator::nearest_found(const reference::Hit& hit) {
     if (hit.kind == HitKind::None)
         out_ << "nearest: nothing\n";
     else
-        out_ << "nearest: " << surface_name(hit.kind, hit.index) << " at t = " << explain_number(hit.t) << "\n";
+        out_ << "nearest: " << surface_name(hit.kind, hit.index) << " at t = " << explain_number(hit.t + clip_start_)
+             << (clip_start_ > 0 ? " from the eye (t = " + explain_number(hit.t) + " from o')" : "") << "\n";
 }
 
 void PixelNarrator::surface_reached(const reference::Hit& hit, const reference::detail::SurfacePoint& surface) {

@@ -31,6 +31,7 @@ public:
                         const reference::Ray& ray) override;
     void sample_finished(int sample, const Color& colour) override;
     void ray_cast(reference::RayRole role, int depth, const reference::Ray& ray, double t_max) override;
+    void search_clipped(const reference::Ray& kept, double t_start, double t_end) override;
     void sphere_tested(int index, const reference::detail::SphereRoots& roots, double t_max, double t) override;
     void billboard_tested(int index, const reference::detail::PlaneHit& plane, double t_max, bool accepted) override;
     void triangle_tested(int index, const reference::detail::TriangleTest& test, double t_max, bool accepted) override;
@@ -60,7 +61,8 @@ private:
     std::ostream& out_;
 
     reference::RayRole role_ = reference::RayRole::Primary;
-    reference::Ray ray_;
+    reference::Ray ray_;             // the ray the search runs along (clipped: from the near plane)
+    double clip_start_ = 0;          // where a clipped search starts along the primary ray, else 0
     bool found_in_search_ = false;   // some surface already became the nearest in this search
     reference::Hit surface_hit_;     // the last surface a traced ray landed on
     reference::detail::SurfacePoint surface_;

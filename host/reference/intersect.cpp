@@ -23,6 +23,7 @@ Hit intersect(const Scene& scene, const Ray& ray, double t_max, SurfaceId leavin
 Hit intersect_in_view(const Scene& scene, const Ray& ray, TraceObserver* observer) {
     if (ray.t_start == 0 && ray.t_end == kInfinity) return intersect(scene, ray, kInfinity, {}, observer);
     const Ray kept{ray.origin + ray.direction * ray.t_start, ray.direction};
+    if (observer) observer->search_clipped(kept, ray.t_start, ray.t_end);
     Hit hit = intersect(scene, kept, ray.t_end - ray.t_start, {}, observer);
     if (hit.kind != HitKind::None) hit.t += ray.t_start;
     return hit;

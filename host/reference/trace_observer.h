@@ -43,6 +43,10 @@ public:
 
     // A nearest-hit search over (0, t_max) begins; `depth` counts the reflections so far.
     virtual void ray_cast(RayRole /*role*/, int /*depth*/, const Ray& /*ray*/, double /*t_max*/) {}
+    // The primary ray sees only the depths from t_start to t_end that the camera's clip
+    // distances keep: the search runs along `kept`, from the ray's point at t_start on the near
+    // plane, over (0, t_end - t_start); its t count from there (intersect_in_view()).
+    virtual void search_clipped(const Ray& /*kept*/, double /*t_start*/, double /*t_end*/) {}
     // Sphere `index` tested against a nearest distance of `t_max`: the quadratic's roots and
     // the t intersect() took from them (kInfinity: rejected).
     virtual void sphere_tested(int /*index*/, const detail::SphereRoots& /*roots*/, double /*t_max*/,

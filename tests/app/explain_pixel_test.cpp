@@ -470,5 +470,30 @@ TEST(ExplainPixel, PlaneLitByAPointLightPrintsTheBlinnPhongTerms) {
         << text;
 }
 
+// A camera with a near clip distance searches from the near plane: the story says where that
+// search starts, and every point it prints lies on its surface (they were the points of t
+// measured from the near plane applied to the eye's ray: 2.1 above the floor they named).
+TEST(ExplainPixel, ANearPlaneSearchSaysWhereItStarts) {
+    TempFolder folder;
+    folder.write("floor.obj", "v -10 0 -10\nv 10 0 -10\nv 10 0 10\nv -10 0 10\nf 1 2 3 4\n");
+    folder.write("near.json", R"({"eye": [0, 2, 8], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 50,
+        "width": 80, "height": 60, "near": 5,
+        "obj": {"filename": "floor.obj", "position": [0, -0.5, 0], "ambient": [0.7, 0.7, 0.7]}})");
+    const auto result = run_clrender("near.json --reference --explain-pixel 40,45", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const std::string& text = result.output;
+    const Vec3 eye{0, 2, 8};
+    const Vec3 d = lecture_ray_direction(eye, {0, 0, 0}, {0, 1, 0}, 50, 80, 60, 40, 45);
+    // The near plane lies 5 along the view direction -w: t_start = near / (d.-w).
+    const double t_start = 5 / dot(d, normalize(Vec3{0, 0, 0} - eye));
+    EXPECT_NEAR(number_after(text, "t from "), t_start, kClose * 10) << text;
+    expect_close(vector_after(text, " d = ", text.find("o' = o + ")), eye + d * t_start, "the near plane's point");
+    // Wherever it is printed, the floor's point lies on the floor, at the eye's t along d.
+    const double t = (-0.5 - eye.y) / d.y;
+    expect_close(vector_after(text, ", point "), eye + d * t, "the triangle's point");
+    EXPECT_NEAR(number_after(text, "nearest: triangle 1 of mesh 0 ('floor.obj') at t = "), t, kClose * 10) << text;
+    expect_close(vector_after(text, "hit point o + t d = "), eye + d * t, "the hit point");
+}
+
 }  // namespace
 }  // namespace clr
