@@ -952,6 +952,12 @@ TEST(SceneSchema, AcceptsScenesClrenderRenders) {
         "ambient": [0.5, 0, 0], "diffuse": [0.5, 0, 0], "specular": [1, 1, 1], "phong_exponent": 20, "mirror": [0.1, 0.1, 0.1]},
         {"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "ambient": [0.1, 0.1, 0.1]}],
         "lights": [{"position": [5, 5, 5], "color": [0.8, 0.8, 0.8]}])"));
+    // Meshes of both formats, scaled by one factor or per axis (the schema refused a per-axis
+    // scale on a `surfaces` mesh, which clrender reads as the `obj` one).
+    folder.write("meshes.json", scene_with(R"("surfaces": [{"type": "mesh", "filename": "m.obj", "ambient": [1, 0, 0],
+        "scale": [1, 2, 1]}, {"type": "mesh", "filename": "m.obj", "ambient": [1, 0, 0], "scale": 2}],
+        "obj": [{"type": "obj", "filename": "m.obj", "scale": [1, 2, 3], "position": [0, 0, 1]},
+        {"filename": "m.obj", "scale": 0.5}])"));
     for (const auto& [name, verdict] : schema_verdicts(folder.path()))
         EXPECT_EQ(verdict, "accepted") << name << " " << sources[name];
 }
