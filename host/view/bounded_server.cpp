@@ -1,12 +1,10 @@
 #include "view/bounded_server.h"
 
-#include <netdb.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cerrno>
 #include <charconv>
@@ -18,6 +16,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "view/socket_address.h"
 
 namespace clr {
 namespace {
@@ -95,19 +95,6 @@ int wait_for(int socket, short events, int ms) {
     do ready = ::poll(&entry, 1, ms);
     while (ready < 0 && errno == EINTR);
     return ready;
-}
-
-// The numeric address and port of a socket address, as cpp-httplib gives them to a request
-// (ClientConnection finds the socket by them).
-void numeric_address(const sockaddr_storage& address, socklen_t length, std::string& ip, int& port) {
-    if (address.ss_family == AF_INET)
-        port = ntohs(reinterpret_cast<const sockaddr_in*>(&address)->sin_port);
-    else if (address.ss_family == AF_INET6)
-        port = ntohs(reinterpret_cast<const sockaddr_in6*>(&address)->sin6_port);
-    std::array<char, NI_MAXHOST> text{};
-    if (::getnameinfo(reinterpret_cast<const sockaddr*>(&address), length, text.data(), text.size(), nullptr, 0,
-                      NI_NUMERICHOST) == 0)
-        ip = text.data();
 }
 
 // Waits, as cpp-httplib does between the requests of a kept-alive connection, until the next
@@ -305,17 +292,17 @@ ssize_t RequestStream::write(const char* ptr, std::size_t size) {
 }
 
 void RequestStream::get_remote_ip_and_port(std::string& ip, int& port) const {
-    sockaddr_storage address{};
-    socklen_t length = sizeof address;
-    if (::getpeername(socket_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-        numeric_address(address, length, ip, port);
+    if (const std::optional<SocketAddress> remote = remote_address_of(socket_)) {
+        ip = remote->ip;
+        port = remote->port;
+    }
 }
 
 void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
-    sockaddr_storage address{};
-    socklen_t length = sizeof address;
-    if (::getsockname(socket_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-        numeric_address(address, length, ip, port);
+    if (const std::optional<SocketAddress> local = local_address_of(socket_)) {
+        ip = local->ip;
+        port = local->port;
+    }
 }
 
 // An answer to a request whose body was not read says Connection: close, and the connection

@@ -61,9 +61,9 @@ bool is_loopback_address(const std::string& bind) {
     return inet_pton(AF_INET6, address.c_str(), buffer) == 1 && std::equal(buffer, buffer + 16, loopback6);
 }
 
-std::string url_host(const std::string& bind) {
-    if (is_wildcard(bind)) return "127.0.0.1";
-    const std::string address = without_brackets(bind);
+std::string url_host(const std::string& bound) {
+    if (is_wildcard(bound)) return "127.0.0.1";
+    const std::string address = without_brackets(bound);
     unsigned char buffer[16];
     if (inet_pton(AF_INET6, address.c_str(), buffer) == 1) return "[" + address + "]";
     return address;

@@ -54,9 +54,11 @@ private:
     std::set<std::string> hosts_;  // lowercase "name:port" forms of the server's own names
 };
 
-// The address for the printed URL: the bound address, or 127.0.0.1 where the server listens
-// on every address ("0.0.0.0", "::"); an IPv6 address in brackets.
-std::string url_host(const std::string& bind);
+// The address for the printed URL, given the numeric address the server is bound to: that
+// address, or 127.0.0.1 where the server listens on every address ("0.0.0.0", "::"); an IPv6
+// address in brackets. Never a name: a browser looks a name up itself (localhost as ::1, say)
+// and could reach another program listening on the same port there.
+std::string url_host(const std::string& bound);
 
 // Whether `text` is an IPv4 address in dotted form or an IPv6 address (without brackets).
 bool is_ip_address(const std::string& text);

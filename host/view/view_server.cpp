@@ -19,6 +19,7 @@
 #include "core/printable_text.h"
 #include "view/bounded_server.h"
 #include "view/opener_page.h"
+#include "view/socket_address.h"
 
 extern char** environ;
 
@@ -64,7 +65,8 @@ void reap_browser_opener(pid_t& pid) {
         std::cerr << "clrender: warning: xdg-open could not open the browser; open the address above yourself\n";
 }
 
-// `listening` gets the listening socket, for the backlog (see serve_view).
+// `listening` gets the listening socket, for the backlog and the address it is bound to (see
+// serve_view).
 void configure(httplib::Server& server, int& listening) {
     server.set_read_timeout(kClientTimeoutSeconds, 0);
     server.set_write_timeout(kClientTimeoutSeconds, 0);
@@ -90,9 +92,13 @@ bool body_length_allowed(const httplib::Request& request) {
     return request.has_header("Content-Length") && length && *length <= kMostRequestBytes;
 }
 
-void warn_about_bind(const std::string& bind) {
+// `host` is the address the printed line names (url_host).
+void warn_about_bind(const std::string& bind, const std::string& host) {
     if (bind == "127.0.0.1") return;
-    if (is_loopback_address(bind))
+    if (bind == "localhost")
+        std::cerr << "clrender: warning: --bind localhost: listening on " << printable(host)
+                  << " only, the address printed (a browser may look localhost up as another address)\n";
+    else if (is_loopback_address(bind))
         std::cerr << "clrender: warning: --bind " << printable(bind) << ": listening on " << printable(bind)
                   << " rather than 127.0.0.1\n";
     else
@@ -105,7 +111,6 @@ void warn_about_bind(const std::string& bind) {
 
 void serve_view(const ServerSettings& settings, const std::string& token, const Scene& scene, RenderService& renderer,
                 const PathExporter& exporter, VideoJobs& videos) {
-    warn_about_bind(settings.bind);
     BoundedServer server(kServerThreads);  // cpp-httplib's, with limits on a request's head and time
     int listening = -1;
     configure(server, listening);
@@ -123,6 +128,11 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     // cpp-httplib listens with a backlog of 5: ten tabs connecting at once would see their
     // connections dropped and retried a second later. The backlog is raised on the same socket.
     if (listening >= 0) ::listen(listening, SOMAXCONN);
+    // The line names the address bound, not the --bind value: cpp-httplib binds a name's first
+    // address only (localhost: 127.0.0.1), and a browser given the name may try another first.
+    const std::optional<SocketAddress> bound = listening >= 0 ? local_address_of(listening) : std::nullopt;
+    const std::string host = url_host(bound ? bound->ip : bind_address);
+    warn_about_bind(settings.bind, host);
     const RequestGuard guard(token, settings.bind, port);
     ViewSession session{scene, renderer, exporter, videos, guard};
     add_view_routes(server, session);
@@ -154,7 +164,7 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
         listener.join();
         throw UsageError("cannot listen on " + printable(settings.bind) + " port " + std::to_string(port));
     }
-    const std::string url = "http://" + url_host(settings.bind) + ":" + std::to_string(port) + "/?token=" + token;
+    const std::string url = "http://" + host + ":" + std::to_string(port) + "/?token=" + token;
     std::cout << "clrender: view at " << url << std::endl;
     // xdg-open gets a page that only this user can read, which forwards the browser to the
     // address: never the address itself, whose token every user could read in its arguments.

@@ -142,6 +142,26 @@ TEST(ViewLifetime, BindMustBeAnAddress) {
     }
 }
 
+// Installs a stand-in for xdg-open in `folder` that records what it was asked to open; returns
+// the environment that makes the viewer use it (and write its page under `folder`).
+std::string stand_in_browser_opener(const TempFolder& folder) {
+    fs::create_directories(folder.file("bin"));
+    folder.write("bin/xdg-open", "#!/bin/sh\necho \"$1\" > '" + folder.file("opened.txt") + "'\n");
+    fs::permissions(folder.file("bin/xdg-open"), fs::perms::owner_all);
+    fs::create_directories(folder.file("run"));
+    fs::permissions(folder.file("run"), fs::perms::owner_all);
+    return "PATH='" + folder.file("bin") + "' XDG_RUNTIME_DIR='" + folder.file("run") + "'";
+}
+
+// What the stand-in was asked to open (waiting up to 5 s for it), "" when nothing.
+std::string opened_by_stand_in(const TempFolder& folder) {
+    for (int i = 0; i < 500 && read_bytes(folder.file("opened.txt")).empty(); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::string opened = read_bytes(folder.file("opened.txt"));
+    if (!opened.empty()) opened.pop_back();  // the newline
+    return opened;
+}
+
 TEST(ViewLifetime, OpensTheBrowserWithTheAddressAndGoesOnWithoutOne) {
     TempFolder folder;
     fs::create_directories(folder.file("bin"));
@@ -244,6 +264,27 @@ TEST(ViewLifetime, AnotherLoopbackAddressIsNotBeyondThisMachine) {
               std::string::npos)
         << viewer.output();
     EXPECT_EQ(viewer.output().find("beyond this machine"), std::string::npos) << viewer.output();
+}
+
+// localhost is a name: the viewer listens on its first address only, and a browser looks the
+// name up itself (Chromium tries ::1 first), where another user's program could hold the same
+// port and receive the token. The line, and the page that opens the browser, name the address
+// the viewer listens on.
+TEST(ViewLifetime, BindLocalhostNamesTheAddressItListensOn) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemoScene + "' --size 16x9 --bind localhost", folder.path(),
+                         stand_in_browser_opener(folder), true);
+    std::smatch line;
+    const std::string address_line = viewer.address_line();
+    ASSERT_TRUE(std::regex_match(address_line, line,
+                                 std::regex(R"(clrender: view at (http://(127\.0\.0\.1|\[::1\]):\d+/\?token=[0-9a-f]{32}))")))
+        << viewer.output();
+    const std::string opened = opened_by_stand_in(folder);
+    ASSERT_FALSE(opened.empty());
+    EXPECT_NE(read_bytes(opened).find("url=" + line[1].str() + "\""), std::string::npos) << read_bytes(opened);
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_NE(viewer.output().find("warning: --bind localhost: listening on " + line[2].str() + " only"), std::string::npos)
+        << viewer.output();
 }
 
 }  // namespace
