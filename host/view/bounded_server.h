@@ -3,7 +3,8 @@
 // not its head: a request line that never ends grows in memory as fast as a client sends it,
 // and a client that trickles a byte every few seconds keeps one of the server's threads for
 // ever. BoundedServer reads every connection through a stream of its own (RequestStream) that
-//   - ends the head of a request (request line and headers) at kMostHeadBytes, answering 431;
+//   - ends the head of a request (request line and headers, every byte until cpp-httplib has
+//     parsed them, whatever their lines end with) at kMostHeadBytes, answering 431;
 //   - ends a request that has not arrived whole within kRequestSeconds of its first byte,
 //     answering 408;
 //   - ends an answer that the client has not taken within kAnswerSeconds;
@@ -83,9 +84,9 @@ private:
     ssize_t refuse(const char* status_line);
     // Waits up to `ms` for bytes to read, as wait_for() answers, or -1 once the server stops.
     int wait_readable(int ms) const;
-    // Counts bytes handed to cpp-httplib against the head's and the body's limits; false
-    // beyond one of them.
-    bool take(const char* bytes, std::size_t count);
+    // Counts `count` bytes handed to cpp-httplib against the head's limit until the head is
+    // parsed, then against the body's; false beyond one of them.
+    bool take(std::size_t count);
 
     int socket_;
     std::chrono::milliseconds read_timeout_, write_timeout_;
@@ -96,8 +97,6 @@ private:
     // This request's progress.
     Clock::time_point request_deadline_, answer_deadline_;
     bool answering_ = false;
-    bool head_done_ = false;
-    int head_end_matched_ = 0;  // 1: after a line feed; 2: after LF CR; 3: the head's end
     std::size_t head_bytes_ = 0, body_bytes_ = 0;
     bool head_parsed_ = false;
     std::optional<std::size_t> declared_body_;

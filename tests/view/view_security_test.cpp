@@ -410,6 +410,22 @@ TEST_F(ViewSecurity, EndlessHeadersGet431) {
     EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
 }
 
+// A bare line feed after the request line is no end of the head: cpp-httplib ends it only at
+// an empty line ending in CR LF and parses every header line before it. The limit counts
+// those lines as head too, whatever the line ends: 431, where the whole 100 KB was parsed
+// and served before.
+TEST_F(ViewSecurity, ABareLineFeedDoesNotLiftTheHeadsLimit) {
+    const int socket = connect_to_viewer(viewer_->port());
+    ASSERT_GE(socket, 0);
+    std::string request = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\n\n";
+    while (request.size() < 100 * 1024) request += "a:b\r\n";
+    request += "Host: " + own_host() + "\r\n\r\n";
+    (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);  // the server drains what it refuses
+    const std::string answer = read_one_answer(socket, 5);
+    ::close(socket);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
+}
+
 // A client that sends its request a byte at a time, each byte well within the read timeout:
 // its request ends kRequestSeconds (10 s) after it began, with 408, rather than holding one
 // of the server's threads for as long as it goes on.
