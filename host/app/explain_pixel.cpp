@@ -88,6 +88,25 @@ void describe_kernel_bytes(const std::optional<KernelPixel>& kernel, const std::
 
 std::string mebibytes(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
+// The narrator, which gives its caller a word before each sample: the one step of the
+// reference that an explanation repeats without bound.
+class NarratorAskingBeforeSamples : public PixelNarrator {
+public:
+    NarratorAskingBeforeSamples(const BeforeEachSample& before_each_sample, const Scene& placed, int own_billboards,
+                                const reference::CameraFrame& camera, const Vec3& eye, int col, int row,
+                                std::ostream& out)
+        : PixelNarrator(placed, own_billboards, camera, eye, col, row, out), before_each_sample_(before_each_sample) {}
+
+    void sample_started(int sample, int samples, double ox, double oy, const Vec3& witness_direction,
+                        const reference::Ray& ray) override {
+        if (before_each_sample_) before_each_sample_();
+        PixelNarrator::sample_started(sample, samples, ox, oy, witness_direction, ray);
+    }
+
+private:
+    const BeforeEachSample& before_each_sample_;
+};
+
 }  // namespace
 
 void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
@@ -98,7 +117,8 @@ void explain_pixel(const Options& options, const Scene& scene, const KernelRende
 }
 
 void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& scene, const CameraKey& key, int frame,
-                             const KernelRendererFactory& kernel_renderer, std::ostream& out) {
+                             const KernelRendererFactory& kernel_renderer, std::ostream& out,
+                             const BeforeEachSample& before_each_sample) {
     check_inside(pixel, scene);
     const reference::CameraFrame camera = reference::camera_of(scene, key);
     // The reference traces relative to the eye, with impostors placed as billboards for this
@@ -120,8 +140,8 @@ void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& s
              "as the kernels do; they are shown in scene coordinates (Eye + the relative position).\n";
     describe_camera(scene, key, camera, steps);
 
-    PixelNarrator narrator(placed, static_cast<int>(scene.billboards.size()), relative.camera, relative.eye, pixel.x,
-                           pixel.y, steps);
+    NarratorAskingBeforeSamples narrator(before_each_sample, placed, static_cast<int>(scene.billboards.size()),
+                                         relative.camera, relative.eye, pixel.x, pixel.y, steps);
     const Color colour = reference::pixel_colour(placed, relative.camera, frame, pixel.x, pixel.y, &narrator);
     const std::uint8_t bytes[3] = {reference::to_byte(colour.x), reference::to_byte(colour.y),
                                    reference::to_byte(colour.z)};

@@ -29,10 +29,15 @@ constexpr std::uint64_t kExplanationStepsLimit = std::uint64_t(16) << 20;
 void explain_pixel(const Options& options, const Scene& scene, const KernelRendererFactory& kernel_renderer,
                    std::ostream& out);
 
+// Called before each of the reference's samples; it may throw to stop the explanation (the
+// viewer stops one at a signal, or when its client has gone: many samples take minutes).
+using BeforeEachSample = std::function<void()>;
+
 // The same for pixel `pixel` of frame `frame` (which seeds the samples) seen from `key`, with the
 // scene's up vector, field of view, size and sampling (`clrender view` explains the camera the
 // page shows).
 void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& scene, const CameraKey& key, int frame,
-                             const KernelRendererFactory& kernel_renderer, std::ostream& out);
+                             const KernelRendererFactory& kernel_renderer, std::ostream& out,
+                             const BeforeEachSample& before_each_sample = {});
 
 }  // namespace clr

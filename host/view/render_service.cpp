@@ -83,13 +83,23 @@ void RenderService::recycle(Image&& image) {
     renderer_->recycle(std::move(image));
 }
 
-std::string RenderService::explain(const ViewCamera& view, int x, int y) {
+std::string RenderService::explain(const ViewCamera& view, int x, int y, std::function<bool()> abandoned) {
     const Scene seen = scene_seen_by(scene_, view);
-    KernelRendererFactory kernels = [this, &view, x, y] {
-        return std::make_unique<PixelOfFrame>([this, &view] { return render(view); }, device_name_, x, y);
+    KernelRendererFactory kernels = [this, &view, &abandoned, x, y] {
+        return std::make_unique<PixelOfFrame>([this, &view, &abandoned] { return render(view, abandoned); }, device_name_,
+                                              x, y);
+    };
+    // The reference's samples stop as a frame's bands do: many samples among deep mirrors take
+    // minutes, which neither a signal nor a client that left should wait for.
+    auto next_look = std::chrono::steady_clock::now();
+    const BeforeEachSample between_samples = [&abandoned, &next_look] {
+        throw_if_interrupted();
+        if (!abandoned || std::chrono::steady_clock::now() < next_look) return;
+        next_look = std::chrono::steady_clock::now() + kAbandonmentLookInterval;
+        if (abandoned()) throw FrameAbandoned();
     };
     std::ostringstream text;
-    explain_pixel_of_camera(Options::PixelPosition{x, y}, seen, view.key, view.frame, kernels, text);
+    explain_pixel_of_camera(Options::PixelPosition{x, y}, seen, view.key, view.frame, kernels, text, between_samples);
     std::string explanation = text.str();
     if (explanation.size() > kMostExplanationBytes) {
         explanation.resize(kMostExplanationBytes);

@@ -5,6 +5,7 @@
 // fastest, and each request waits its turn.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -36,8 +37,11 @@ public:
 
     // The --explain-pixel text for `pixel` of the frame `view` sees, at most
     // kMostExplanationBytes long. Throws UsageError for a pixel outside the frame,
-    // DeviceError from the kernels.
-    std::string explain(const ViewCamera& view, int x, int y);
+    // DeviceError from the kernels, and, as render() does, Interrupted after a signal or
+    // FrameAbandoned once `abandoned` says that nobody waits for it (asked between the
+    // kernels' bands and between the reference's samples, at most every
+    // kAbandonmentLookInterval there).
+    std::string explain(const ViewCamera& view, int x, int y, std::function<bool()> abandoned = {});
 
     const std::string& device_name() const { return device_name_; }
     // Programs taken from the program cache and from the program store (the rest compiled).
@@ -61,6 +65,10 @@ class FrameAbandoned : public std::runtime_error {
 public:
     FrameAbandoned() : std::runtime_error("the client went away before the frame was finished") {}
 };
+
+// How often an explanation's reference asks whether its client is still there: a sample
+// takes microseconds, the question a system call.
+constexpr std::chrono::milliseconds kAbandonmentLookInterval{50};
 
 // An explanation longer than this (many samples, deep mirrors) is cut, with a note.
 constexpr std::size_t kMostExplanationBytes = 256 * 1024;

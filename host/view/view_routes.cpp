@@ -115,8 +115,9 @@ void add_assets(httplib::Server& server, const std::string& token) {
     }
 }
 
-// Whether the request's client is gone: asked between the bands of its frame. The connection is
-// looked up at the second band, so that the live view's frames of one band never look.
+// Whether the request's client is gone: asked between the bands of its frame (and the samples of
+// an explanation). The connection is looked up at the second question, so that the live view's
+// frames of one band never look.
 std::function<bool()> abandonment_of(const Request& request) {
     struct Watch {
         std::string local_addr, remote_addr;
@@ -176,7 +177,8 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
             if (pixel.y >= view.height)
                 throw ParameterError("y", "y " + std::to_string(pixel.y) + " is outside the " + std::to_string(view.height) +
                                               "-pixel-high frame (0 to " + std::to_string(view.height - 1) + ")");
-            response.set_content(session.renderer.explain(view, pixel.x, pixel.y), "text/plain; charset=utf-8");
+            response.set_content(session.renderer.explain(view, pixel.x, pixel.y, abandonment_of(request)),
+                                 "text/plain; charset=utf-8");
         });
     });
     server.Get("/scene\\.json", [&session](const Request&, Response& response) {

@@ -23,6 +23,7 @@ public:
     ~ViewerProcess();  // SIGKILLs it if it still runs
 
     bool started() const { return port_ > 0; }
+    pid_t pid() const { return pid_; }  // -1 once stopped
     int port() const { return port_; }
     const std::string& token() const { return token_; }
     const std::string& address_line() const { return line_; }

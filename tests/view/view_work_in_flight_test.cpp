@@ -1,0 +1,120 @@
+// Work the viewer is doing when its client leaves or a signal arrives: it ends within a
+// fraction of a second, so that no core works for nobody, and the stop is the orderly one
+// (128 + signal, "view stopped by ...", every thread joined), never the watchdog's, which
+// would leave the page that opens the browser behind.
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include "support/temp_folder.h"
+#include "view/viewer_process.h"
+
+namespace clr {
+namespace {
+
+using testing::TempFolder;
+using testing::ViewerProcess;
+
+// Two mirrors facing each other and 40 spheres tested on every ray: a sample of 64 reflections
+// takes milliseconds to explain, so 4096 samples take seconds to minutes.
+void write_deep_mirrors(const TempFolder& folder) {
+    std::string spheres;
+    for (int i = 0; i < 40; ++i)
+        spheres += std::string(i ? ", " : "") + "{\"center\": [" + std::to_string(-20 + i) +
+                   ", 6, 0], \"radius\": 0.3, \"ambient\": [0.5, 0.5, 0.5]}";
+    folder.write("mirrors.json", R"({
+      "eye": [0, 0, 0], "lookat": [0, 0, -1], "up": [0, 1, 0], "fov_angle": 30,
+      "width": 8, "height": 8, "MaxDepth": 64, "DefaultColor": [0.1, 0.1, 0.1],
+      "billboards": [
+        {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
+        {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
+      "spheres": [)" + spheres + "]}");
+}
+
+// A connection to the viewer that has sent `path`'s GET; -1 when it cannot connect.
+int send_request(const ViewerProcess& viewer, const std::string& path) {
+    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(viewer.port()));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        ::close(socket);
+        return -1;
+    }
+    const std::string request = "GET " + viewer.with_token(path) + " HTTP/1.1\r\nHost: 127.0.0.1:" +
+                                std::to_string(viewer.port()) + "\r\n\r\n";
+    (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
+    return socket;
+}
+
+// The processor time `pid` has used so far, in seconds.
+double processor_seconds(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    std::istringstream fields(text.substr(text.rfind(')') + 2));  // after the command's name
+    std::string field;
+    unsigned long long user = 0, system = 0;
+    for (int k = 3; k <= 15 && fields >> field; ++k) {
+        if (k == 14) user = std::stoull(field);
+        if (k == 15) system = std::stoull(field);
+    }
+    return static_cast<double>(user + system) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+}
+
+// Sends `signal` and returns the exit code and the seconds the viewer took to end.
+std::pair<int, double> timed_stop(ViewerProcess& viewer, int signal) {
+    const auto signalled = std::chrono::steady_clock::now();
+    const int code = viewer.stop(signal, 30);
+    return {code, std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count()};
+}
+
+constexpr const char* kLongExplanation = "/explain?x=4&y=4&spp=4096";
+
+TEST(ViewWorkInFlight, AnExplanationStopsWhenItsClientLeaves) {
+    TempFolder folder;
+    write_deep_mirrors(folder);
+    ViewerProcess viewer("mirrors.json", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const int socket = send_request(viewer, kLongExplanation);
+    ASSERT_GE(socket, 0);
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // explaining
+    ::close(socket);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // a look at the client, 50 ms apart
+    const double before = processor_seconds(viewer.pid());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    const double used = processor_seconds(viewer.pid()) - before;
+    EXPECT_LT(used, 0.3) << "the explanation went on for a client that is gone";
+    EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
+}
+
+TEST(ViewWorkInFlight, AnExplanationStopsAtASignal) {
+    TempFolder folder;
+    write_deep_mirrors(folder);
+    ViewerProcess viewer("mirrors.json", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const int socket = send_request(viewer, kLongExplanation);
+    ASSERT_GE(socket, 0);
+    std::this_thread::sleep_for(std::chrono::seconds(1));  // explaining; the client waits
+    const auto [code, seconds] = timed_stop(viewer, SIGTERM);
+    ::close(socket);
+    EXPECT_EQ(code, 143);
+    EXPECT_LT(seconds, 3.0) << "the watchdog ended it (5 s), not the orderly stop";
+    EXPECT_NE(viewer.output().find("clrender: view stopped by SIGTERM"), std::string::npos) << viewer.output();
+    EXPECT_EQ(viewer.output().find("cannot be interrupted"), std::string::npos) << viewer.output();
+}
+
+}  // namespace
+}  // namespace clr
