@@ -164,13 +164,15 @@ RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
     start_request();
 }
 
-int RequestStream::wait_readable(int ms) const {
+int RequestStream::wait_while_serving(short events, int ms) const {
     const auto give_up = Clock::now() + std::chrono::milliseconds(ms);
     for (;;) {
-        if (serving_ == INVALID_SOCKET) return -1;
+        const bool stopping = serving_ == INVALID_SOCKET;
         const auto left = std::chrono::ceil<std::chrono::milliseconds>(give_up - Clock::now()).count();
-        const int ready = wait_for(socket_, POLLIN, static_cast<int>(std::clamp<decltype(left)>(left, 0, 50)));
-        if (ready != 0 || left <= 50) return ready;
+        const int ready = wait_for(socket_, events, stopping ? 0 : static_cast<int>(std::clamp<decltype(left)>(left, 0, 50)));
+        if (ready != 0) return ready;
+        if (stopping) return -1;
+        if (left <= 50) return 0;
     }
 }
 
@@ -201,12 +203,12 @@ int RequestStream::wait_ms(std::chrono::milliseconds timeout, Clock::time_point 
 }
 
 bool RequestStream::is_readable() const {
-    return buffer_at_ < buffered_ || wait_readable(wait_ms(read_timeout_, request_deadline_)) > 0;
+    return buffer_at_ < buffered_ || wait_while_serving(POLLIN, wait_ms(read_timeout_, request_deadline_)) > 0;
 }
 
 bool RequestStream::is_writable() const {
     const auto deadline = answering_ ? answer_deadline_ : Clock::now() + std::chrono::seconds(kAnswerSeconds);
-    return wait_for(socket_, POLLOUT, wait_ms(write_timeout_, deadline)) > 0;
+    return wait_while_serving(POLLOUT, wait_ms(write_timeout_, deadline)) > 0;
 }
 
 // A byte is the head's until cpp-httplib has parsed the head, whatever its lines end with:
@@ -242,7 +244,7 @@ ssize_t RequestStream::read(char* ptr, std::size_t size) {
         if (now >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
         // A wait that the deadline cuts short and that ends with nothing is the deadline.
         const bool deadline_first = request_deadline_ - now <= read_timeout_;
-        const int ready = wait_readable(wait_ms(read_timeout_, request_deadline_));
+        const int ready = wait_while_serving(POLLIN, wait_ms(read_timeout_, request_deadline_));
         if (ready == 0 && deadline_first) return refuse("HTTP/1.1 408 Request Timeout");
         if (ready <= 0) return -1;
         ssize_t got;
@@ -277,11 +279,17 @@ ssize_t RequestStream::write(const char* ptr, std::size_t size) {
             answer_closes_ = head.find("\r\nConnection: close\r\n") != std::string::npos;
         }
     }
-    if (wait_for(socket_, POLLOUT, wait_ms(write_timeout_, answer_deadline_)) <= 0) return -1;
-    ssize_t sent;
-    do sent = ::send(socket_, ptr, size, MSG_NOSIGNAL);
-    while (sent < 0 && errno == EINTR);
-    return sent;
+    // Never a send that blocks: a blocking one waits inside the system for a client that does
+    // not read (up to the write timeout each time), where a stop could not end the wait.
+    for (std::size_t sent = 0; sent < size;) {
+        if (wait_while_serving(POLLOUT, wait_ms(write_timeout_, answer_deadline_)) <= 0) return -1;
+        const ssize_t now = ::send(socket_, ptr + sent, size - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (now >= 0)
+            sent += static_cast<std::size_t>(now);
+        else if (errno != EINTR && errno != EAGAIN && errno != EWOULDBLOCK)
+            return -1;
+    }
+    return static_cast<ssize_t>(size);
 }
 
 void RequestStream::get_remote_ip_and_port(std::string& ip, int& port) const {

@@ -48,7 +48,8 @@ std::optional<std::size_t> declared_body_length(const httplib::Request& request)
 class RequestStream : public httplib::Stream {
 public:
     // While `serving` names the listening socket, the server runs; once the server stops, a
-    // request still arriving is dropped at once (within 50 ms), not waited for.
+    // request still arriving is dropped, and an answer still leaving given up, at once (within
+    // 50 ms), not waited for.
     RequestStream(int socket, std::chrono::milliseconds read_timeout, std::chrono::milliseconds write_timeout,
                   std::size_t most_body_bytes, const std::atomic<socket_t>& serving);
 
@@ -82,8 +83,11 @@ private:
     int wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const;
     // Answers `status_line` with an empty body and fails: the connection closes.
     ssize_t refuse(const char* status_line);
-    // Waits up to `ms` for bytes to read, as wait_for() answers, or -1 once the server stops.
-    int wait_readable(int ms) const;
+    // Waits up to `ms` for `events` (POLLIN: bytes to read; POLLOUT: room to write), as
+    // wait_for() answers, in slices of 50 ms: -1 once the server stops and the socket is not
+    // ready at once. A request still arriving is then dropped, and an answer that the client
+    // does not take is given up, rather than waited for: the stop joins this thread.
+    int wait_while_serving(short events, int ms) const;
     // Counts `count` bytes handed to cpp-httplib against the head's limit until the head is
     // parsed, then against the body's; false beyond one of them.
     bool take(std::size_t count);

@@ -6,6 +6,7 @@
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -43,9 +44,11 @@ void write_deep_mirrors(const TempFolder& folder) {
       "spheres": [)" + spheres + "]}");
 }
 
-// A connection to the viewer that has sent `path`'s GET; -1 when it cannot connect.
-int send_request(const ViewerProcess& viewer, const std::string& path) {
+// A connection to the viewer that has sent `path`'s GET; -1 when it cannot connect. With
+// `receive_buffer`, the connection's receive buffer is that small.
+int send_request(const ViewerProcess& viewer, const std::string& path, int receive_buffer = 0) {
     const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (receive_buffer > 0) ::setsockopt(socket, SOL_SOCKET, SO_RCVBUF, &receive_buffer, sizeof receive_buffer);
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(static_cast<std::uint16_t>(viewer.port()));
@@ -114,6 +117,25 @@ TEST(ViewWorkInFlight, AnExplanationStopsAtASignal) {
     EXPECT_LT(seconds, 3.0) << "the watchdog ended it (5 s), not the orderly stop";
     EXPECT_NE(viewer.output().find("clrender: view stopped by SIGTERM"), std::string::npos) << viewer.output();
     EXPECT_EQ(viewer.output().find("cannot be interrupted"), std::string::npos) << viewer.output();
+}
+
+// A client that asked for a large frame and does not read it (a frozen tab, a stopped script):
+// the answer waits for room, and the stop does not wait with it.
+TEST(ViewWorkInFlight, AnAnswerNobodyReadsDoesNotHoldUpTheStop) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json'", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    // 8 MB of RGBA, far more than the two ends' buffers hold.
+    const int socket = send_request(viewer, "/frame.rgba?size=1920x1080&spp=1", 4096);
+    ASSERT_GE(socket, 0);
+    pollfd answer_begun{socket, POLLIN, 0};
+    ASSERT_GT(::poll(&answer_begun, 1, 60000), 0) << "the frame is rendered and its answer begun";
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the buffers fill
+    const auto [code, seconds] = timed_stop(viewer, SIGTERM);
+    ::close(socket);
+    EXPECT_EQ(code, 143);
+    EXPECT_LT(seconds, 3.0) << "the watchdog ended it (5 s), not the orderly stop";
+    EXPECT_NE(viewer.output().find("clrender: view stopped by SIGTERM"), std::string::npos) << viewer.output();
 }
 
 }  // namespace
