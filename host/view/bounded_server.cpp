@@ -264,6 +264,9 @@ ssize_t RequestStream::read(char* ptr, std::size_t size) {
 }
 
 ssize_t RequestStream::write(const char* ptr, std::size_t size) {
+    // A refusal has answered the request: cpp-httplib, whose read failed, answers it again (400,
+    // or its own 413), and a second answer would be paired with the client's next request.
+    if (limit_reached_) return static_cast<ssize_t>(size);
     if (!answering_) {
         answering_ = true;
         answer_deadline_ = Clock::now() + std::chrono::seconds(kAnswerSeconds);

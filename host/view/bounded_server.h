@@ -81,7 +81,8 @@ private:
     using Clock = std::chrono::steady_clock;
     // Milliseconds to wait for the socket: `timeout`, or less where `deadline` comes first.
     int wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const;
-    // Answers `status_line` with an empty body and fails: the connection closes.
+    // Answers `status_line` with an empty body and fails: the connection closes, and nothing
+    // more is written to it (write() drops cpp-httplib's own answer to the failed read).
     ssize_t refuse(const char* status_line);
     // Waits up to `ms` for `events` (POLLIN: bytes to read; POLLOUT: room to write), as
     // wait_for() answers, in slices of 50 ms: -1 once the server stops and the socket is not

@@ -410,6 +410,46 @@ TEST_F(ViewSecurity, EndlessHeadersGet431) {
     EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
 }
 
+// Everything the server sends until it closes the connection (or `seconds` pass).
+std::string read_until_closed(int socket, int seconds) {
+    std::string text;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (std::chrono::steady_clock::now() < give_up) {
+        pollfd ready{socket, POLLIN, 0};
+        if (::poll(&ready, 1, 100) <= 0) continue;
+        char buffer[4096];
+        const ssize_t got = ::read(socket, buffer, sizeof buffer);
+        if (got <= 0) break;
+        text.append(buffer, static_cast<std::size_t>(got));
+    }
+    return text;
+}
+
+// A request that a limit ends gets the limit's answer and nothing after it: cpp-httplib, whose
+// read of the request failed, would answer it again (431 then 400, 413 then its own 413), and a
+// client that sent its next request meanwhile would take the second answer for that one's.
+TEST_F(ViewSecurity, ARequestEndedByALimitGetsOneAnswer) {
+    const std::string own = "Host: " + own_host() + "\r\n";
+    std::string endless_headers = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\n" + own;
+    for (int i = 0; endless_headers.size() < 70 * 1024; ++i) endless_headers += "X-" + std::to_string(i) + ": b\r\n";
+    endless_headers += "\r\n";
+    // Just over the body's limit of 2 MiB, all of which the server reads or drains: nothing is
+    // left unread to reset the connection before its answer is read.
+    const std::string over_the_limit = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\n" + own + "Origin: " +
+                                       own_origin() + "\r\nContent-Length: 3145728\r\n\r\n" +
+                                       std::string(2 * 1024 * 1024 + 4096, ' ');
+    for (const auto& [request, status] :
+         {std::pair{endless_headers, std::string("HTTP/1.1 431")}, std::pair{over_the_limit, std::string("HTTP/1.1 413")}}) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
+        const std::string answers = read_until_closed(socket, 10);
+        ::close(socket);
+        EXPECT_EQ(answers.rfind(status, 0), 0u) << answers.substr(0, 300);
+        EXPECT_EQ(answers.find("HTTP/1.1 ", 1), std::string::npos) << status << ", then:\n" << answers.substr(0, 600);
+    }
+}
+
 // A bare line feed after the request line is no end of the head: cpp-httplib ends it only at
 // an empty line ending in CR LF and parses every header line before it. The limit counts
 // those lines as head too, whatever the line ends: 431, where the whole 100 KB was parsed
