@@ -91,7 +91,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const bool has_token = facts.query_tokens.size() == 1 && facts.query_tokens[0] == kToken;
         if (!has_token) report_bug("allowed without the token in the query", lines[4]);
         if (!facts.host || !guard.host_allowed(*facts.host)) report_bug("allowed with a foreign Host", "");
-        if (facts.method != "GET" && facts.method != "HEAD" && (!facts.origin || !guard.origin_allowed(*facts.origin)))
+        if (facts.method != "GET" && facts.method != "HEAD" && (!facts.origin || !guard.origin_allowed(*facts.origin, facts.arrived_on)))
             report_bug("allowed a change from a foreign Origin", "");
     }
 

@@ -45,6 +45,18 @@ std::optional<std::string> host_of(const std::string& host_and_port, int port) {
     return host_and_port.substr(0, host_and_port.size() - suffix.size());
 }
 
+// The 4 or 16 bytes of a numeric address; an IPv4 address mapped into IPv6 (::ffff:a.b.c.d, as
+// a socket bound to :: reports an IPv4 client) gives its IPv4 bytes. Empty for no address.
+std::string address_bytes(std::string text) {
+    text = text.substr(0, text.find('%'));  // an IPv6 zone ("fe80::1%eth0") names no other address
+    unsigned char buffer[16];
+    if (inet_pton(AF_INET, text.c_str(), buffer) == 1) return std::string(reinterpret_cast<char*>(buffer), 4);
+    if (inet_pton(AF_INET6, text.c_str(), buffer) != 1) return "";
+    static const unsigned char mapped[12] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0xff, 0xff};
+    if (std::equal(mapped, mapped + 12, buffer)) return std::string(reinterpret_cast<char*>(buffer + 12), 4);
+    return std::string(reinterpret_cast<char*>(buffer), 16);
+}
+
 }  // namespace
 
 bool is_ip_address(const std::string& text) {
@@ -94,17 +106,28 @@ bool RequestGuard::host_allowed(const std::string& host) const {
     return inet_pton(AF_INET, address->c_str(), buffer) == 1;
 }
 
-bool RequestGuard::origin_allowed(const std::string& origin) const {
+bool RequestGuard::origin_allowed(const std::string& origin, const std::string& arrived_on) const {
     const std::string scheme = "http://";
     if (origin.size() <= scheme.size() || lowercase(origin.substr(0, scheme.size())) != scheme) return false;
-    return host_allowed(origin.substr(scheme.size()));
+    const std::string host = lowercase(origin.substr(scheme.size()));
+    if (hosts_.count(host) > 0) return true;
+    if (!wildcard_) return false;
+    const std::optional<std::string> address = host_of(host, port_);
+    if (!address || address->empty()) return false;
+    // An IPv6 address only in brackets, as a URL writes it; an IPv4 address without.
+    const bool bracketed = address->front() == '[' && address->back() == ']';
+    const std::string inner = without_brackets(*address);
+    if (bracketed != (inner.find(':') != std::string::npos)) return false;
+    const std::string bytes = address_bytes(inner);
+    return !bytes.empty() && bytes == address_bytes(arrived_on);
 }
 
 RequestVerdict RequestGuard::check(const RequestFacts& request) const {
     if (!request.host || !host_allowed(*request.host)) return RequestVerdict::Forbidden;
     // Every method but GET and HEAD may change something: it must come from the page itself.
     const bool reads_only = request.method == "GET" || request.method == "HEAD";
-    if (!reads_only && (!request.origin || !origin_allowed(*request.origin))) return RequestVerdict::Forbidden;
+    if (!reads_only && (!request.origin || !origin_allowed(*request.origin, request.arrived_on)))
+        return RequestVerdict::Forbidden;
     // Exactly one token=, the right one (given twice: which one would count?).
     if (request.query_tokens.size() != 1 || !token_matches(request.query_tokens.front(), token_))
         return RequestVerdict::Forbidden;

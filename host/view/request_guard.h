@@ -8,7 +8,8 @@
 //   of them could have the browser load frames with it. The page passes the token itself
 //   (view/view_routes.cpp writes it into the page's own file names);
 // - a request that changes something (POST) comes from the viewer's own page: its Origin
-//   header is the server's own origin, so another web site cannot drive the viewer.
+//   header is the server's own origin, so another web site cannot drive the viewer (bound to
+//   every address, an address in it must be the one the request arrived on).
 // Nothing here knows HTTP's wire format (cpp-httplib parses requests): the checks take the
 // facts of a request, so that the fuzz target and the tests can drive them directly.
 #pragma once
@@ -26,6 +27,7 @@ struct RequestFacts {
     std::optional<std::string> host;    // the Host header
     std::optional<std::string> origin;  // the Origin header
     std::vector<std::string> query_tokens;  // every token=... of the query
+    std::string arrived_on;             // the numeric address the request came in on ("192.168.1.20")
 };
 
 enum class RequestVerdict {
@@ -43,9 +45,13 @@ public:
     // The token, for the page's own addresses.
     const std::string& token() const { return token_; }
 
-    // Whether `host` (a Host header) names this server; `origin` (an Origin header) is its own.
+    // Whether `host` (a Host header) names this server.
     bool host_allowed(const std::string& host) const;
-    bool origin_allowed(const std::string& origin) const;
+    // Whether `origin` (an Origin header) is the server's own, for a request that came in on
+    // the address `arrived_on`. Bound to every address, the server's pages are served from
+    // whichever address a browser reached: the one its requests arrive on. Any other address
+    // in an Origin is another machine's, another site, even where a Host may name it.
+    bool origin_allowed(const std::string& origin, const std::string& arrived_on) const;
 
 private:
     std::string token_;

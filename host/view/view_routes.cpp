@@ -311,6 +311,7 @@ RequestFacts request_facts(const Request& request) {
     if (request.get_header_value_count("Host") == 1) facts.host = request.get_header_value("Host");
     if (request.has_header("Origin"))
         facts.origin = request.get_header_value_count("Origin") == 1 ? request.get_header_value("Origin") : "";
+    facts.arrived_on = request.local_addr;
     const auto [first, last] = request.params.equal_range("token");
     for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
     return facts;

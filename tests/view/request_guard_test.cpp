@@ -101,6 +101,33 @@ TEST(RequestGuard, WildcardBindAdmitsAddressesButNoNames) {
     EXPECT_EQ(guard.check(get("/scene.json", "192.168.1.20:8000")), RequestVerdict::Forbidden);
 }
 
+// Bound to every address, the page is served from whichever address the browser reached, and
+// its requests arrive on that address. An Origin naming another address is another machine's
+// page, another site, although a Host may name any address.
+TEST(RequestGuard, WildcardBindAdmitsAsOriginOnlyTheAddressTheRequestArrivedOn) {
+    for (const char* bind : {"0.0.0.0", "::"}) {
+        const RequestGuard guard(kToken, bind, 8123);
+        RequestFacts post = get("/export", "192.168.1.20:8123");
+        post.method = "POST";
+        const auto verdict = [&guard, &post](const std::string& origin, const std::string& arrived_on) {
+            post.origin = origin;
+            post.arrived_on = arrived_on;
+            return guard.check(post);
+        };
+        for (const char* origin : {"http://192.168.1.20:8123", "http://127.0.0.1:8123", "http://localhost:8123"})
+            EXPECT_EQ(verdict(origin, "192.168.1.20"), RequestVerdict::Allowed) << bind << " " << origin;
+        for (const char* origin : {"http://203.0.113.5:8123", "http://[2001:db8::1]:8123", "http://192.168.1.21:8123",
+                                   "http://192.168.1.20:8124", "http://[192.168.1.20]:8123", "http://evil.example:8123"})
+            EXPECT_EQ(verdict(origin, "192.168.1.20"), RequestVerdict::Forbidden) << bind << " " << origin;
+        // A socket bound to :: reports an IPv4 client's address mapped into IPv6.
+        EXPECT_EQ(verdict("http://192.168.1.20:8123", "::ffff:192.168.1.20"), RequestVerdict::Allowed) << bind;
+        EXPECT_EQ(verdict("http://[2001:db8::7]:8123", "2001:db8::7"), RequestVerdict::Allowed) << bind;
+        EXPECT_EQ(verdict("http://2001:db8::7:8123", "2001:db8::7"), RequestVerdict::Forbidden) << bind << " no brackets";
+        EXPECT_EQ(verdict("http://[2001:db8::1]:8123", "2001:db8::7"), RequestVerdict::Forbidden) << bind;
+        EXPECT_EQ(verdict("http://192.168.1.20:8123", ""), RequestVerdict::Forbidden) << bind << " arrived on no address";
+    }
+}
+
 TEST(RequestGuard, ChangesNeedTheServersOwnOrigin) {
     const RequestGuard guard(kToken, "127.0.0.1", 8123);
     RequestFacts post = get("/export");
