@@ -282,6 +282,12 @@ void refuse_other_methods(httplib::Server& server, const std::string& pattern, c
     server.Options(pattern, refuse);
 }
 
+// Whether cpp-httplib 0.11.4 reads a body for `method` before routing: as long as its
+// Content-Length says, or without one, to the end of the connection.
+bool body_read_before_routing(const std::string& method) {
+    return method == "POST" || method == "PUT" || method == "PATCH";
+}
+
 // A method that cpp-httplib parses but routes nowhere (TRACE, CONNECT, PRI), which it would
 // answer 400 with nothing: 405 on a route's path, 404 elsewhere, as for any other method.
 bool routed_method(const std::string& method) {
@@ -344,6 +350,14 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         response.set_header("Referrer-Policy", "no-referrer");
         response.set_header("Accept-Ranges", "none");  // a Range header is ignored (view/bounded_server.h)
         response.set_header("Content-Security-Policy", kContentSecurityPolicy);
+        // Such a request has no body (RFC 9112), but cpp-httplib reads one to the end of the
+        // connection: the client waited out the read timeout, or its half-close made whatever
+        // it had sent the body. The page always says its body's length.
+        if (body_read_before_routing(request.method) && !request.has_header("Content-Length")) {
+            response.set_header("Connection", "close");
+            send_error(response, 411, "a " + request.method + " must give its body's length (Content-Length: 0 for none)");
+            return httplib::Server::HandlerResponse::Handled;
+        }
         if (!routed_method(request.method)) {
             refuse_unrouted_method(request, response, paths);
             return httplib::Server::HandlerResponse::Handled;

@@ -450,6 +450,31 @@ TEST_F(ViewSecurity, ARequestEndedByALimitGetsOneAnswer) {
     }
 }
 
+// A POST with neither Content-Length nor Transfer-Encoding has no body (RFC 9112; `curl -X POST`
+// sends one), but cpp-httplib would read one to the end of the connection: the client waited
+// out the 5 s read timeout for a bare 400, or its half-close made what it sent the body. It is
+// answered at once with JSON, and the connection closes without reading on.
+TEST_F(ViewSecurity, APostWithoutALengthIsAnsweredAtOnce) {
+    const std::string head = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                             "\r\nOrigin: " + own_origin() + "\r\n\r\n";
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "lengthless_check"})";
+    for (const std::string& request : {head, head + body}) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        if (request != head) ::shutdown(socket, SHUT_WR);  // as `nc -N` ends what it sends
+        const auto start = std::chrono::steady_clock::now();
+        const std::string answer = read_until_closed(socket, 4);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ::close(socket);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 411", 0), 0u) << answer.substr(0, 300);
+        EXPECT_NE(answer.find("\r\n\r\n{\"error\":\"a POST must give its body's length"), std::string::npos) << answer;
+        EXPECT_EQ(answer.find("HTTP/1.1 ", 1), std::string::npos) << "one answer:\n" << answer;
+        EXPECT_LT(seconds, 2.5) << "the server waited for a body";
+    }
+    EXPECT_FALSE(fs::exists(folder_->file("lengthless_check.json")));
+}
+
 // A bare line feed after the request line is no end of the head: cpp-httplib ends it only at
 // an empty line ending in CR LF and parses every header line before it. The limit counts
 // those lines as head too, whatever the line ends: 431, where the whole 100 KB was parsed
@@ -527,7 +552,7 @@ TEST_F(ViewSecurity, PipelinedRequestsAreEachAnswered) {
 }
 
 // A client that asks before sending its body (Expect: 100-continue) is invited only when the
-// request may be served: no token, a chunked body or a Content-Length over the limit get their
+// request may be served: no token, a chunked body, no length or one over the limit get their
 // refusal at once, and the connection closes, instead of "100 Continue" and a read of the body.
 TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
     const std::string head = " HTTP/1.1\r\nHost: " + own_host() + "\r\nOrigin: " + own_origin() +
@@ -539,6 +564,7 @@ TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
         {exporting + head + "Content-Length: 99999999\r\n\r\n", "HTTP/1.1 413"},
         {exporting + head + "Content-Length: 12abc\r\n\r\n", "HTTP/1.1 413"},
         {exporting + head + "Transfer-Encoding: chunked\r\n\r\n", "HTTP/1.1 411"},
+        {exporting + head + "\r\n", "HTTP/1.1 411"},  // no length at all
     };
     for (const auto& [request, status] : refused) {
         const int socket = connect_to_viewer(viewer_->port());
