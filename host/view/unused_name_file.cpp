@@ -35,7 +35,13 @@ std::string series_name(const std::string& base, int n) { return n <= 1 ? base :
 
 bool entry_exists(const std::string& path) {
     struct stat status;
-    return ::lstat(path.c_str(), &status) == 0 || errno != ENOENT;  // unknown (EACCES, ...): taken
+    if (::lstat(path.c_str(), &status) == 0) return true;
+    if (errno == ENOENT) return false;
+    // The folder is at fault (a file in its place, no permission to search it): no name of the
+    // series would do, and "every name is taken" would send the user looking for files.
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    throw OutputError(printable(folder.empty() ? "." : folder) + ": cannot look for a free name in the folder: " +
+                      std::strerror(errno));
 }
 
 UnusedNameFile write_under_unused_name(const std::string& folder, const std::string& base, const std::string& extension,

@@ -25,7 +25,8 @@ struct UnusedNameFile {
 // Writes `text` to FOLDER/NAME + `extension` for the first NAME of `base`'s series whose file
 // does not exist and for which no FOLDER/NAME + e exists for any e of `also_unused` (the
 // outputs that will follow under the same name). `check(path)` may refuse a name by
-// throwing. Throws OutputError when the file cannot be written or every name is taken.
+// throwing. Throws OutputError when the file cannot be written, the folder cannot be looked
+// in, or every name is taken.
 UnusedNameFile write_under_unused_name(const std::string& folder, const std::string& base, const std::string& extension,
                                        const std::vector<std::string>& also_unused, const std::string& text,
                                        const std::function<void(const std::string& path)>& check);
@@ -33,7 +34,9 @@ UnusedNameFile write_under_unused_name(const std::string& folder, const std::str
 // The n-th name (from 1) of `base`'s series: "base", "base-2", "base-3", ...
 std::string series_name(const std::string& base, int n);
 
-// Whether `path` names a directory entry of any kind (a link is not followed).
+// Whether `path` names a directory entry of any kind (a link is not followed). Throws
+// OutputError, naming the folder and the reason, where that cannot be told (the folder is not a
+// folder, or may not be searched).
 bool entry_exists(const std::string& path);
 
 }  // namespace clr

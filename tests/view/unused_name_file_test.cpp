@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/errors.h"
 #include "support/temp_folder.h"
@@ -62,5 +65,28 @@ TEST(UnusedNameFile, RefusesWhenEveryNameIsTakenOrTheFolderIsMissing) {
     EXPECT_EQ(folder.entry_count(), kMostNameTries);
 }
 
+// A folder that cannot be looked in (a file in its place, a link that leads round in a circle,
+// one that may not be searched) is named with the reason, rather than its 1000 names reported
+// taken.
+TEST(UnusedNameFile, AFolderThatCannotBeLookedInIsNamedWithTheReason) {
+    TempFolder folder;
+    folder.write("file", "a file where the folder was");
+    fs::create_symlink("circle", folder.file("circle"));
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"file", "Not a directory"}, {"circle", "Too many levels of symbolic links"}};
+    for (const auto& [name, reason] : cases) {
+        std::string message = "written";
+        try {
+            write_under_unused_name(folder.file(name), "tour", ".json", {}, "x", kAnyName);
+        } catch (const OutputError& error) {
+            message = error.what();
+        }
+        EXPECT_NE(message.find(folder.file(name) + ": cannot look for a free name in the folder: " + reason),
+                  std::string::npos)
+            << message;
+        EXPECT_EQ(message.find("taken"), std::string::npos) << message;
+    }
+    EXPECT_EQ(folder.entry_count(), 2);
+}
 }  // namespace
 }  // namespace clr
