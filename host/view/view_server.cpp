@@ -14,6 +14,7 @@
 #include <optional>
 #include <thread>
 
+#include "app/standard_output.h"
 #include "core/errors.h"
 #include "core/interruption.h"
 #include "core/printable_text.h"
@@ -165,11 +166,24 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
         throw UsageError("cannot listen on " + printable(settings.bind) + " port " + std::to_string(port));
     }
     const std::string url = "http://" + host + ":" + std::to_string(port) + "/?token=" + token;
-    std::cout << "clrender: view at " << url << std::endl;
+    std::cout << "clrender: view at " << url << "\n";
+    const std::string unprinted = flush_standard_output();  // "" when the line was written
     // xdg-open gets a page that only this user can read, which forwards the browser to the
     // address: never the address itself, whose token every user could read in its arguments.
     std::string why;
     const std::optional<OpenerPage> page = settings.open_browser ? OpenerPage::write(url, why) : std::nullopt;
+    // The line lost (a full disk, a closed pipe or standard output) and no browser given the
+    // address: nothing could ever reach the viewer, so it does not serve on in silence.
+    if (!unprinted.empty() && !page) {
+        server.stop();
+        listener.join();
+        throw OutputError("standard output: cannot write the viewer's address (" + unprinted + ")" +
+                          (settings.open_browser ? "; the browser cannot be opened with it either (" + printable(why) + ")"
+                                                 : "; with --no-browser nothing else would show it"));
+    }
+    if (!unprinted.empty())
+        std::cerr << "clrender: warning: standard output: cannot write the viewer's address (" << unprinted
+                  << "); the browser is opened with it all the same\n";
     pid_t opener = -1;
     if (settings.open_browser) {
         if (page)

@@ -31,9 +31,10 @@ constexpr std::size_t kKeepAliveRequests = 10000;
 // Largest request body (the camera keys of an export: about 100 bytes a key).
 constexpr std::size_t kMostRequestBytes = 2 * 1024 * 1024;
 
-// Serves until a signal arrives, then throws Interrupted (exit 128 + signal). `make_session`
-// gets the guard for the port actually bound. Throws UsageError when the address cannot be
-// bound.
+// Serves until a signal arrives, then throws Interrupted (exit 128 + signal); the requests are
+// guarded for the port actually bound. Throws UsageError when the address cannot be
+// bound, OutputError when the line with the address cannot be printed and no browser is
+// opened with it.
 [[noreturn]] void serve_view(const ServerSettings& settings, const std::string& token, const Scene& scene,
                              RenderService& renderer, const PathExporter& exporter, VideoJobs& videos);
 

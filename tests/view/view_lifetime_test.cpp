@@ -7,10 +7,13 @@
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -285,6 +288,26 @@ TEST(ViewLifetime, BindLocalhostNamesTheAddressItListensOn) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
     EXPECT_NE(viewer.output().find("warning: --bind localhost: listening on " + line[2].str() + " only"), std::string::npos)
         << viewer.output();
+}
+
+// The printed line is the one way to the viewer with --no-browser: standard output full or
+// closed is an output error (exit 4, one line), never a viewer that serves on unreachable.
+TEST(ViewLifetime, AnAddressThatCannotBePrintedIsAnOutputError) {
+    TempFolder folder;
+    for (const std::string redirection : {">/dev/full", ">&-"}) {
+        // (timeout: a viewer that served on would otherwise keep the test waiting)
+        const std::string command = "cd '" + folder.path() + "' && timeout 60 '" + CLRENDER_BINARY + "' view '" +
+                                    kDemoScene + "' --size 16x9 -q --no-browser --port 0 " + redirection +
+                                    " 2>stderr.txt";
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << redirection;
+        EXPECT_EQ(WEXITSTATUS(status), 4) << redirection << ": " << read_bytes(folder.file("stderr.txt"));
+        const std::string message = read_bytes(folder.file("stderr.txt"));
+        EXPECT_EQ(message.rfind("clrender: error: standard output: cannot write the viewer's address (", 0), 0u)
+            << redirection << ": " << message;
+        EXPECT_NE(message.find("; with --no-browser nothing else would show it\n"), std::string::npos) << message;
+        EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
+    }
 }
 
 }  // namespace
