@@ -9,6 +9,7 @@
 #include "app/frame_selection.h"
 #include "app/pixel_narrator.h"
 #include "core/errors.h"
+#include "core/interruption.h"
 #include "core/printable_text.h"
 #include "reference/eye_relative.h"
 #include "reference/impostors.h"
@@ -113,7 +114,9 @@ void explain_pixel(const Options& options, const Scene& scene, const KernelRende
                    std::ostream& out) {
     check_inside(*options.explain_pixel, scene);
     const int frame = explained_frame(options, scene);
-    explain_pixel_of_camera(*options.explain_pixel, scene, camera_at_frame(scene, frame), frame, kernel_renderer, out);
+    // Ctrl-C ends a long explanation (many samples) between two samples, as a render between bands.
+    explain_pixel_of_camera(*options.explain_pixel, scene, camera_at_frame(scene, frame), frame, kernel_renderer, out,
+                            throw_if_interrupted);
 }
 
 void explain_pixel_of_camera(const Options::PixelPosition& pixel, const Scene& scene, const CameraKey& key, int frame,

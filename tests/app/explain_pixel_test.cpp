@@ -495,5 +495,33 @@ TEST(ExplainPixel, ANearPlaneSearchSaysWhereItStarts) {
     expect_close(vector_after(text, "hit point o + t d = "), eye + d * t, "the hit point");
 }
 
+// Ctrl-C ends a long explanation between two samples: exit 130 and the run's own message, not
+// the watchdog that ends a run whose work ignores the signal.
+TEST(ExplainPixel, CtrlCEndsALongExplanation) {
+    TempFolder folder;
+    std::string spheres;  // in the corridor of mirrors: each of the 4096 samples' 64 bounces tests them
+    for (int i = 0; i < 40; ++i)
+        spheres += std::string(i ? ", " : "") + "{\"center\": [" + std::to_string(-20 + i) + ", 6, 0], \"radius\": 0.3, \"ambient\": [0.5, 0.5, 0.5]}";
+    folder.write("mirrors.json", R"({
+      "eye": [0, 0, 0], "lookat": [0, 0, -1], "up": [0, 1, 0], "fov_angle": 30,
+      "width": 8, "height": 8, "MaxDepth": 64, "DefaultColor": [0.1, 0.1, 0.1], "clrender": {"spp": 4096},
+      "billboards": [
+        {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
+        {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
+      "spheres": [)" + spheres + "]}");
+    folder.write("interrupt.sh", "cd '" + folder.path() + "'\n'" + CLRENDER_BINARY +
+                                     "' mirrors.json --reference --explain-pixel 4,4 > /dev/null 2> stderr.txt &\n"
+                                     "pid=$!\n"
+                                     "sleep 1\n"
+                                     "kill -INT $pid\n"
+                                     "wait $pid\n"
+                                     "echo $? > code.txt\n");
+    ASSERT_EQ(std::system(("bash '" + folder.file("interrupt.sh") + "'").c_str()), 0);
+    const std::string errors = testing::read_bytes(folder.file("stderr.txt"));
+    EXPECT_EQ(testing::read_bytes(folder.file("code.txt")), "130\n") << errors;
+    EXPECT_NE(errors.find("interrupted by SIGINT"), std::string::npos) << errors;
+    EXPECT_EQ(errors.find("cannot be interrupted"), std::string::npos) << "the watchdog ended it: " << errors;
+}
+
 }  // namespace
 }  // namespace clr
