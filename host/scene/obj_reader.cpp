@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -221,28 +222,32 @@ void check_values_read(const ObjMesh& mesh) {
     if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
 }
 
+// A warning about the `usemtl` lines whose names `concerns` picks: the first such line and
+// `problem` with its name, how many more such lines there are, then `consequence`. None where
+// no line is picked.
+void warn_about_uses(const ObjMaterialStatements& statements, const std::function<bool(const std::string&)>& concerns,
+                     const std::string& problem, const std::string& consequence, ObjMesh& mesh) {
+    const ObjMaterialStatements::Use* first = nullptr;
+    std::uint64_t more = 0;
+    for (const auto& use : statements.uses) {  // in the order of their first lines
+        if (!concerns(use.name)) continue;
+        more += first ? use.lines : use.lines - 1;
+        if (!first) first = &use;
+    }
+    if (!first) return;
+    mesh.warnings.push_back("line " + std::to_string(first->first_line) + ": usemtl " +
+                            printable(shortened(first->name, 200)) + ": " + problem +
+                            (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : "") +
+                            consequence);
+}
+
 // A `usemtl` that names no material of the .mtl files leaves the mesh without the colour its
-// author chose (tinyobjloader only warns): a warning naming the first such line, and how many
-// more there are.
+// author chose (tinyobjloader only warns).
 void warn_about_undefined_materials(const ObjMaterialStatements& statements, const MaterialFiles& material_files,
                                     ObjMesh& mesh) {
-    std::uint64_t first_line = 0, more = 0;
-    std::string first_name;
-    for (const auto& use : statements.uses) {  // in the order of their first lines
-        if (material_files.defines(use.name)) continue;
-        if (first_line != 0) {
-            more += use.lines;
-            continue;
-        }
-        first_line = use.first_line;
-        first_name = use.name;
-        more += use.lines - 1;
-    }
-    if (first_line == 0) return;
-    mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
-                            ": no .mtl file of the OBJ defines this material" +
-                            (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : "") +
-                            "; its faces take the scene's ambient, else 0.8 grey");
+    warn_about_uses(
+        statements, [&](const std::string& name) { return !material_files.defines(name); },
+        "no .mtl file of the OBJ defines this material", "; its faces take the scene's ambient, else 0.8 grey", mesh);
 }
 
 // Reads every .mtl file the OBJ names, each name once, in order, with the first
@@ -256,11 +261,10 @@ void read_material_libraries(const ObjMaterialStatements& statements, MaterialFi
     }
 }
 
-// The `Kd` of the first face's material, where a .mtl file gives it one.
-std::optional<Vec3> first_face_diffuse(const ObjMaterialStatements& statements,
-                                       const std::vector<tinyobj::material_t>& materials,
-                                       const std::map<std::string, int>& names, const MaterialFiles& material_files) {
-    const auto material = names.find(statements.first_face_material);
+// The `Kd` of material `name`, where a .mtl file gives it one.
+std::optional<Vec3> diffuse_of(const std::string& name, const std::vector<tinyobj::material_t>& materials,
+                               const std::map<std::string, int>& names, const MaterialFiles& material_files) {
+    const auto material = names.find(name);
     if (material == names.end() || material->second < 0 ||
         static_cast<std::size_t>(material->second) >= materials.size() || !material_files.gives_diffuse(material->second))
         return std::nullopt;
@@ -269,33 +273,18 @@ std::optional<Vec3> first_face_diffuse(const ObjMaterialStatements& statements,
 }
 
 // A mesh takes one colour (docs/scene-format.md, Meshes): a `usemtl` whose material's Kd is not
-// the first face's is a warning naming the first such line and how many more there are.
+// the first face's (mesh.diffuse) is a warning.
 void warn_about_unused_materials(const ObjMaterialStatements& statements, const std::vector<tinyobj::material_t>& materials,
                                  const std::map<std::string, int>& names, const MaterialFiles& material_files,
                                  ObjMesh& mesh) {
-    std::uint64_t first_line = 0, more = 0;
-    std::string first_name;
-    for (const auto& use : statements.uses) {  // in the order of their first lines
-        const auto material = names.find(use.name);
-        if (use.name == statements.first_face_material || material == names.end() || material->second < 0 ||
-            static_cast<std::size_t>(material->second) >= materials.size() ||
-            !material_files.gives_diffuse(material->second))
-            continue;
-        const auto& kd = materials[material->second].diffuse;
-        if (mesh.diffuse && Vec3{kd[0], kd[1], kd[2]} == *mesh.diffuse) continue;
-        if (first_line != 0) {
-            more += use.lines;
-            continue;
-        }
-        first_line = use.first_line;
-        first_name = use.name;
-        more += use.lines - 1;
-    }
-    if (first_line == 0) return;
-    mesh.warnings.push_back("line " + std::to_string(first_line) + ": usemtl " + printable(shortened(first_name, 200)) +
-                            ": a mesh takes one colour, the scene's ambient or else its first face's material's Kd; "
-                            "this material's Kd is not used" +
-                            (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : ""));
+    const auto unused = [&](const std::string& name) {
+        const std::optional<Vec3> diffuse = diffuse_of(name, materials, names, material_files);
+        return name != statements.first_face_material && diffuse && diffuse != mesh.diffuse;
+    };
+    warn_about_uses(statements, unused,
+                    "a mesh takes one colour, the scene's ambient or else its first face's material's Kd; this "
+                    "material's Kd is not used",
+                    "", mesh);
 }
 
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
@@ -364,7 +353,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(mesh.triangles.size()) + " triangles where the file has " +
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
-    mesh.diffuse = first_face_diffuse(statements, materials, material_names, material_files);
+    mesh.diffuse = diffuse_of(statements.first_face_material, materials, material_names, material_files);
     check_values_read(mesh);
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);

@@ -5,9 +5,7 @@
 // settings are refused where they are written.
 #include <gtest/gtest.h>
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include <cstdlib>
 
 #include <cmath>
 #include <cstdint>
@@ -20,6 +18,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/obj_reader.h"
 #include "scene/scene_loader.h"
+#include "support/address_space_child.h"
 #include "support/scene_json.h"
 #include "support/temp_folder.h"
 
@@ -204,29 +203,16 @@ TEST(MeshLoader, MemoryThatRunsOutWhileReadingAMeshIsNamedAtItsFilename) {
     const Json scene = with_obj({{"filename", "grid.obj"}});
     const std::string expected = "scene.json: /obj/filename: out of memory: OBJ '" + obj +
                                  "': reading it took more memory than the system gives";
-    const pid_t child = ::fork();
-    if (child == 0) {
-        long pages = 0;
-        std::FILE* statm = std::fopen("/proc/self/statm", "r");
-        const bool measured = statm && std::fscanf(statm, "%ld", &pages) == 1;
-        if (statm) std::fclose(statm);
-        const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + (rlim_t(8) << 20);
-        rlimit bounded{limit, limit};
-        bool named = false;
-        if (measured && ::setrlimit(RLIMIT_AS, &bounded) == 0) {
-            try {
-                ::setenv("CLRENDER_CACHE_DIR", "off", 1);  // read, not taken from the mesh cache
-                load_in(folder, scene);
-            } catch (const Error& error) {
-                named = error.code() == kExitOutOfMemory && std::string(error.what()).find(expected) != std::string::npos;
-            } catch (...) {
-            }
+    const bool named = testing::passes_with_address_space_to_spare(std::uint64_t(8) << 20, [&] {
+        ::setenv("CLRENDER_CACHE_DIR", "off", 1);  // read, not taken from the mesh cache
+        try {
+            load_in(folder, scene);
+        } catch (const Error& error) {
+            return error.code() == kExitOutOfMemory && std::string(error.what()).find(expected) != std::string::npos;
         }
-        ::_exit(named ? 0 : 1);
-    }
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "not ended with \"" << expected << "\"";
+        return false;
+    });
+    EXPECT_TRUE(named) << "not ended with \"" << expected << "\"";
 }
 
 // The reader's warnings are the scene's, at the mesh's "filename" (so --strict refuses them).

@@ -5,9 +5,7 @@
 // than three corners, too many triangles, files that are missing, folders or FIFOs.
 #include <gtest/gtest.h>
 
-#include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -18,6 +16,7 @@
 
 #include "scene/obj_reader.h"
 #include "scene/obj_text_checks.h"
+#include "support/address_space_child.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -305,28 +304,15 @@ TEST(ObjReader, ALineOfMillionsOfWordsIsRefusedWithoutHoldingThem) {
         const std::string expected = keyword == "f" ? "line 5: a face has at most 255 corners (tinyobjloader's limit), this "
                                                       "one has 33554432: split it into smaller faces"
                                                     : "line 5: 'v' has at most 255 numbers, this line has 33554432";
-        const pid_t child = ::fork();
-        if (child == 0) {
-            long pages = 0;
-            std::FILE* statm = std::fopen("/proc/self/statm", "r");
-            const bool measured = statm && std::fscanf(statm, "%ld", &pages) == 1;
-            if (statm) std::fclose(statm);
-            const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + (rlim_t(400) << 20);
-            rlimit bounded{limit, limit};
-            bool refused = false;
-            if (measured && ::setrlimit(RLIMIT_AS, &bounded) == 0) {
-                try {
-                    parse_obj(text, "mesh.obj");
-                } catch (const ObjError& error) {
-                    refused = error.what() == expected;
-                } catch (...) {
-                }
+        const bool refused = testing::passes_with_address_space_to_spare(std::uint64_t(400) << 20, [&] {
+            try {
+                parse_obj(text, "mesh.obj");
+            } catch (const ObjError& error) {
+                return error.what() == expected;
             }
-            ::_exit(refused ? 0 : 1);
-        }
-        int status = 0;
-        ::waitpid(child, &status, 0);
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << keyword << ": not refused with \"" << expected
+            return false;
+        });
+        EXPECT_TRUE(refused) << keyword << ": not refused with \"" << expected
                                                                   << "\" within the bound";
     }
     std::string numbers;
