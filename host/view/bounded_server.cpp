@@ -1,6 +1,8 @@
 #include "view/bounded_server.h"
 
+#include <linux/sockios.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -95,6 +97,13 @@ int wait_for(int socket, short events, int ms) {
     do ready = ::poll(&entry, 1, ms);
     while (ready < 0 && errno == EINTR);
     return ready;
+}
+
+// The bytes queued on `socket` that its peer has not yet taken (SIOCOUTQ); -1 where the system
+// does not say.
+int queued_bytes(int socket) {
+    int queued = 0;
+    return ::ioctl(socket, SIOCOUTQ, &queued) == 0 ? queued : -1;
 }
 
 // Waits, as cpp-httplib does between the requests of a kept-alive connection, until the next
@@ -207,8 +216,8 @@ bool RequestStream::is_readable() const {
 }
 
 bool RequestStream::is_writable() const {
-    const auto deadline = answering_ ? answer_deadline_ : Clock::now() + std::chrono::seconds(kAnswerSeconds);
-    return wait_while_serving(POLLOUT, wait_ms(write_timeout_, deadline)) > 0;
+    if (answering_) return wait_for_room();
+    return wait_while_serving(POLLOUT, wait_ms(write_timeout_, Clock::now() + std::chrono::seconds(kAnswerSeconds))) > 0;
 }
 
 // A byte is the head's until cpp-httplib has parsed the head, whatever its lines end with:
@@ -271,6 +280,7 @@ ssize_t RequestStream::write(const char* ptr, std::size_t size) {
         answering_ = true;
         answer_deadline_ = Clock::now() + std::chrono::seconds(kAnswerSeconds);
     }
+    bool interim = false;
     if (!answer_head_done_) {
         // cpp-httplib writes a head in pieces, and writes `Connection: close` as set.
         constexpr std::size_t kMostAnswerHead = 16 * 1024;
@@ -280,19 +290,46 @@ ssize_t RequestStream::write(const char* ptr, std::size_t size) {
             answer_head_done_ = true;
             const std::string head = answer_head_.substr(0, end == std::string::npos ? end : end + 2);
             answer_closes_ = head.find("\r\nConnection: close\r\n") != std::string::npos;
+            // "100 Continue" (written whole, in one piece) only invites the body: the answer
+            // proper, its head and its deadline, follow.
+            interim = head.rfind("HTTP/1.1 1", 0) == 0 || head.rfind("HTTP/1.0 1", 0) == 0;
         }
     }
     // Never a send that blocks: a blocking one waits inside the system for a client that does
     // not read (up to the write timeout each time), where a stop could not end the wait.
     for (std::size_t sent = 0; sent < size;) {
-        if (wait_while_serving(POLLOUT, wait_ms(write_timeout_, answer_deadline_)) <= 0) return -1;
+        if (!wait_for_room()) return -1;
         const ssize_t now = ::send(socket_, ptr + sent, size - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
         if (now >= 0)
             sent += static_cast<std::size_t>(now);
         else if (errno != EINTR && errno != EAGAIN && errno != EWOULDBLOCK)
             return -1;
     }
+    if (interim) {
+        answering_ = answer_head_done_ = answer_closes_ = false;
+        answer_head_.clear();
+    }
     return static_cast<ssize_t>(size);
+}
+
+// The system says a socket is writable only once a third of its send buffer is free, which a
+// client reading a large answer slowly but steadily (200 KB/s against 4 MB of buffer) takes
+// longer than the write timeout to make: the client is given up only when it has taken nothing
+// (the bytes queued for it have not shrunk) for the write timeout.
+bool RequestStream::wait_for_room() const {
+    int queued = queued_bytes(socket_);
+    auto taken_at = Clock::now();
+    for (;;) {
+        const int ms = std::min(wait_ms(write_timeout_, answer_deadline_), 250);
+        const int ready = wait_while_serving(POLLOUT, ms);
+        if (ready != 0) return ready > 0;
+        const auto now = Clock::now();
+        if (now >= answer_deadline_) return false;
+        const int still = queued_bytes(socket_);
+        if (still >= 0 && still < queued) taken_at = now;
+        queued = still;
+        if (now - taken_at >= write_timeout_) return false;
+    }
 }
 
 void RequestStream::get_remote_ip_and_port(std::string& ip, int& port) const {

@@ -89,6 +89,9 @@ private:
     // ready at once. A request still arriving is then dropped, and an answer that the client
     // does not take is given up, rather than waited for: the stop joins this thread.
     int wait_while_serving(short events, int ms) const;
+    // Waits for room to write more of the answer: false once the server stops, the answer's
+    // deadline passes, or the client has taken nothing of it for the write timeout.
+    bool wait_for_room() const;
     // Counts `count` bytes handed to cpp-httplib against the head's limit until the head is
     // parsed, then against the body's; false beyond one of them.
     bool take(std::size_t count);

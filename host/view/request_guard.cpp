@@ -16,11 +16,18 @@ std::string lowercase(std::string text) {
     return text;
 }
 
-bool is_wildcard(const std::string& bind) { return bind == "0.0.0.0" || bind == "::" || bind == "[::]"; }
-
 std::string without_brackets(const std::string& address) {
     if (address.size() >= 2 && address.front() == '[' && address.back() == ']') return address.substr(1, address.size() - 2);
     return address;
+}
+
+// Every address, however spelt ("0.0.0.0", "::", "[::]", "0:0::0").
+bool is_wildcard(const std::string& bind) {
+    const std::string address = without_brackets(bind);
+    unsigned char buffer[16];
+    if (inet_pton(AF_INET, address.c_str(), buffer) == 1) return std::all_of(buffer, buffer + 4, [](unsigned char b) { return b == 0; });
+    return inet_pton(AF_INET6, address.c_str(), buffer) == 1 &&
+           std::all_of(buffer, buffer + 16, [](unsigned char b) { return b == 0; });
 }
 
 // HTTP's default port, which browsers leave out of Host and Origin ("127.0.0.1", not
@@ -57,6 +64,16 @@ std::string address_bytes(std::string text) {
     return std::string(reinterpret_cast<char*>(buffer), 16);
 }
 
+// The bytes of the IP address a Host or Origin names (without its port): an IPv6 address only in
+// brackets, as a URL writes it, an IPv4 address without. Empty for a name or anything else.
+std::string named_address_bytes(const std::string& address) {
+    if (address.empty()) return "";
+    const bool bracketed = address.front() == '[' && address.back() == ']';
+    const std::string inner = without_brackets(address);
+    if (bracketed != (inner.find(':') != std::string::npos)) return "";
+    return address_bytes(inner);
+}
+
 }  // namespace
 
 bool is_ip_address(const std::string& text) {
@@ -66,11 +83,10 @@ bool is_ip_address(const std::string& text) {
 
 bool is_loopback_address(const std::string& bind) {
     if (bind == "localhost") return true;
-    const std::string address = without_brackets(bind);
-    unsigned char buffer[16];
-    if (inet_pton(AF_INET, address.c_str(), buffer) == 1) return buffer[0] == 127;
-    static const unsigned char loopback6[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
-    return inet_pton(AF_INET6, address.c_str(), buffer) == 1 && std::equal(buffer, buffer + 16, loopback6);
+    const std::string bytes = address_bytes(without_brackets(bind));  // an IPv4-mapped address as IPv4
+    if (bytes.size() == 4) return static_cast<unsigned char>(bytes[0]) == 127;
+    static const char loopback6[16] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+    return bytes == std::string(loopback6, 16);
 }
 
 std::string url_host(const std::string& bound) {
@@ -82,7 +98,8 @@ std::string url_host(const std::string& bound) {
 }
 
 RequestGuard::RequestGuard(std::string token, std::string bind, int port)
-    : token_(std::move(token)), port_(port), wildcard_(is_wildcard(bind)) {
+    : token_(std::move(token)), port_(port), wildcard_(is_wildcard(bind)),
+      bound_bytes_(wildcard_ ? std::string() : address_bytes(without_brackets(bind))) {
     const std::string suffix = ":" + std::to_string(port);
     for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), url_host(bind)}) {
         hosts_.insert(lowercase(name) + suffix);
@@ -90,9 +107,14 @@ RequestGuard::RequestGuard(std::string token, std::string bind, int port)
     }
 }
 
+bool RequestGuard::names_bound_address(const std::string& host_and_port) const {
+    const std::optional<std::string> address = host_of(host_and_port, port_);
+    return address && !bound_bytes_.empty() && named_address_bytes(*address) == bound_bytes_;
+}
+
 bool RequestGuard::host_allowed(const std::string& host) const {
     const std::string name = lowercase(host);
-    if (hosts_.count(name) > 0) return true;
+    if (hosts_.count(name) > 0 || names_bound_address(name)) return true;
     if (!wildcard_) return false;
     // Bound to every address: the machine's own addresses, but still no names.
     const std::optional<std::string> address = host_of(name, port_);
@@ -110,7 +132,7 @@ bool RequestGuard::origin_allowed(const std::string& origin, const std::string& 
     const std::string scheme = "http://";
     if (origin.size() <= scheme.size() || lowercase(origin.substr(0, scheme.size())) != scheme) return false;
     const std::string host = lowercase(origin.substr(scheme.size()));
-    if (hosts_.count(host) > 0) return true;
+    if (hosts_.count(host) > 0 || names_bound_address(host)) return true;
     if (!wildcard_) return false;
     const std::optional<std::string> address = host_of(host, port_);
     if (!address || address->empty()) return false;

@@ -54,9 +54,14 @@ public:
     bool origin_allowed(const std::string& origin, const std::string& arrived_on) const;
 
 private:
+    // Whether `host_and_port` names the bound address by its IP address, however spelt
+    // ("[fd00::2]" for a bind of fd00:0::2, "[::ffff:7f00:1]" for ::ffff:127.0.0.1).
+    bool names_bound_address(const std::string& host_and_port) const;
+
     std::string token_;
     int port_ = 0;
     bool wildcard_ = false;  // bound to every address: any IP address names the server
+    std::string bound_bytes_;  // the bytes of the bound address where --bind gives one (IPv4-mapped: 4)
     std::set<std::string> hosts_;  // lowercase "name:port" forms of the server's own names
 };
 

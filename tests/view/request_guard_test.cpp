@@ -156,5 +156,25 @@ TEST(RequestGuard, PrintedHostIsTheBoundAddress) {
     EXPECT_EQ(url_host("192.168.1.20"), "192.168.1.20");
 }
 
+// The printed address is the one bound, as the system spells it: a Host or Origin naming it
+// with another spelling of the same address is this server (it was refused: 403 on the very
+// address the viewer printed). Every address spelt otherwise ("0:0::0") is every address.
+TEST(RequestGuard, TheBoundAddressIsRecognisedHoweverSpelt) {
+    const RequestGuard v6("tok", "fd00:0::2", 8000);
+    EXPECT_TRUE(v6.host_allowed("[fd00::2]:8000"));
+    EXPECT_TRUE(v6.host_allowed("[FD00:0:0:0:0:0:0:2]:8000"));
+    EXPECT_TRUE(v6.origin_allowed("http://[fd00::2]:8000", "fd00::2"));
+    EXPECT_FALSE(v6.host_allowed("[fd00::3]:8000"));
+    EXPECT_FALSE(v6.host_allowed("fd00::2:8000")) << "an IPv6 address without brackets";
+    EXPECT_FALSE(v6.host_allowed("[fd00::2]:8001"));
+    const RequestGuard mapped("tok", "::ffff:127.0.0.1", 8000);
+    EXPECT_TRUE(mapped.host_allowed("[::ffff:7f00:1]:8000"));
+    EXPECT_TRUE(mapped.origin_allowed("http://[::ffff:7f00:1]:8000", "::ffff:127.0.0.1"));
+    EXPECT_TRUE(is_loopback_address("::ffff:127.0.0.1"));
+    const RequestGuard every("tok", "0:0::0", 8000);
+    EXPECT_TRUE(every.host_allowed("192.168.1.20:8000")) << "bound to every address";
+    EXPECT_EQ(url_host("0:0::0"), "127.0.0.1");
+}
+
 }  // namespace
 }  // namespace clr

@@ -255,6 +255,40 @@ TEST_F(ViewSecurity, ABodyNotReadIsNeverTakenForTheNextRequest) {
     EXPECT_FALSE(fs::exists(folder_->file("smuggled.json")));
 }
 
+// The same with `Expect: 100-continue`: the interim "100 Continue" is not the answer, so the
+// answer proper still says Connection: close and the connection ends after it (the interim
+// head was taken for the answer: the body was then served as a second request).
+TEST_F(ViewSecurity, AnInterimContinueIsNotTakenForTheAnswer) {
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "smuggled"})";
+    const std::string smuggled = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                                 "\r\nOrigin: " + own_origin() + "\r\nContent-Type: application/json\r\nContent-Length: " +
+                                 std::to_string(body.size()) + "\r\n\r\n" + body;
+    for (const std::string path : {"/scene.json", "/nothing"}) {
+        const std::string request = "GET " + viewer_->with_token(path) + " HTTP/1.1\r\nHost: " + own_host() +
+                                    "\r\nExpect: 100-continue\r\nContent-Length: " + std::to_string(smuggled.size()) +
+                                    "\r\n\r\n" + smuggled;
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        std::string received;  // everything until the server closes, or 5 s
+        for (;;) {
+            pollfd ready{socket, POLLIN, 0};
+            char chunk[4096];
+            const ssize_t got = ::poll(&ready, 1, 5000) > 0 ? ::recv(socket, chunk, sizeof chunk, 0) : -1;
+            if (got <= 0) break;
+            received.append(chunk, static_cast<std::size_t>(got));
+        }
+        ::close(socket);
+        std::size_t answers = 0;
+        for (std::size_t at = received.find("HTTP/1.1 "); at != std::string::npos; at = received.find("HTTP/1.1 ", at + 1))
+            ++answers;
+        EXPECT_EQ(received.rfind("HTTP/1.1 100 Continue\r\n\r\n", 0), 0u) << path << "\n" << received.substr(0, 200);
+        EXPECT_EQ(answers, 2u) << path << ": the interim head and one answer, nothing for the body\n" << received.substr(0, 400);
+        EXPECT_NE(received.find("Connection: close\r\n"), std::string::npos) << path << "\n" << received.substr(0, 400);
+    }
+    EXPECT_FALSE(fs::exists(folder_->file("smuggled.json")));
+}
+
 // No route serves part of an answer: a Range header, of one range or of a thousand, is ignored
 // and the whole frame is sent once. cpp-httplib would answer each range with its part, built in
 // memory: a thousand ranges of a large frame ran the viewer out of memory.
