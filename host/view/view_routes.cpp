@@ -4,6 +4,7 @@
 #include <new>
 #include <optional>
 #include <regex>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ const char* const kContentSecurityPolicy =
     "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; connect-src 'self'; "
     "frame-ancestors 'none'; base-uri 'none'; form-action 'none'";
 
+// A frame refused because the answers still being sent hold the answer budget (503).
+class FramesInFlight : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 // Runs a route, turning every failure into a JSON answer: the server keeps serving whatever
 // one request did.
 template <typename Route>
@@ -55,6 +62,9 @@ void answer(Response& response, Route&& route) {
         send_error(response, 400, error.what(), error.parameter());
     } catch (const FrameAbandoned& error) {
         send_error(response, 503, error.what());  // nobody reads it
+    } catch (const FramesInFlight& error) {
+        response.set_header("Retry-After", "1");
+        send_error(response, 503, error.what());
     } catch (const Interrupted&) {
         send_error(response, 503, "the viewer is stopping");
     } catch (const DeviceError& error) {
@@ -145,26 +155,49 @@ ViewCamera camera_of(const ViewSession& session, const Request& request) {
     return view;
 }
 
+// A hold on the answer budget for a frame of `view`'s size (its RGBA bytes; its PNG is no
+// larger, give or take its headers), or ParameterError-like 503 when other answers hold it.
+std::shared_ptr<const void> hold_for_frame(ViewSession& session, const ViewCamera& view) {
+    const std::uint64_t bytes = std::uint64_t(view.width) * std::uint64_t(view.height) * 4 + 64 * 1024;
+    std::shared_ptr<const void> hold = session.answers.hold(bytes);
+    if (!hold)
+        throw FramesInFlight("frames of " + std::to_string(session.answers.in_flight() >> 20) +
+                             " MiB are still being sent to other clients; ask again when they have them");
+    return hold;
+}
+
+// Answers `bytes` from memory the answer keeps (with the budget's hold) until it is sent, in
+// pieces rather than copied whole into the answer.
+void send_held(Response& response, std::shared_ptr<const std::vector<std::uint8_t>> bytes, const char* content_type,
+               std::shared_ptr<const void> hold) {
+    const std::size_t size = bytes->size();
+    response.set_content_provider(
+        size, content_type, [bytes, hold](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+            return sink.write(reinterpret_cast<const char*>(bytes->data()) + offset, length);
+        });
+}
+
 void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.png", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ViewCamera view = camera_of(session, request);
+            std::shared_ptr<const void> hold = hold_for_frame(session, view);
             Image frame = session.renderer.render(view, abandonment_of(request));
-            const std::vector<std::uint8_t> png = png_bytes(frame);
+            auto png = std::make_shared<const std::vector<std::uint8_t>>(png_bytes(frame));
             session.renderer.recycle(std::move(frame));
-            response.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+            send_held(response, std::move(png), "image/png", std::move(hold));
         });
     });
     // The live channel: raw RGBA rows, top row first, no encoding on either side.
     server.Get("/frame\\.rgba", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             const ViewCamera view = camera_of(session, request);
+            std::shared_ptr<const void> hold = hold_for_frame(session, view);
             Image frame = session.renderer.render(view, abandonment_of(request));
             response.set_header("X-Width", std::to_string(frame.width));
             response.set_header("X-Height", std::to_string(frame.height));
-            response.set_content(reinterpret_cast<const char*>(frame.rgba.data()), frame.rgba.size(),
-                                 "application/octet-stream");
-            session.renderer.recycle(std::move(frame));
+            send_held(response, std::make_shared<const std::vector<std::uint8_t>>(std::move(frame.rgba)),
+                      "application/octet-stream", std::move(hold));
         });
     });
     server.Get("/explain", [&session](const Request& request, Response& response) {

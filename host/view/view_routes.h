@@ -12,6 +12,7 @@
 #include <httplib.h>
 
 #include "scene/scene.h"
+#include "view/answer_budget.h"
 #include "view/path_export.h"
 #include "view/render_service.h"
 #include "view/request_guard.h"
@@ -25,6 +26,7 @@ struct ViewSession {
     const PathExporter& exporter;
     VideoJobs& videos;
     const RequestGuard& guard;
+    AnswerBudget& answers;  // the frame answers' bytes held while clients take them
 };
 
 // Installs the guard and the routes on `server`. `session` must outlive the server's requests.

@@ -112,6 +112,7 @@ void warn_about_bind(const std::string& bind, const std::string& host) {
 
 void serve_view(const ServerSettings& settings, const std::string& token, const Scene& scene, RenderService& renderer,
                 const PathExporter& exporter, VideoJobs& videos) {
+    AnswerBudget answers;  // before the server: its answers hold parts of it until they are sent
     BoundedServer server(kServerThreads);  // cpp-httplib's, with limits on a request's head and time
     int listening = -1;
     configure(server, listening);
@@ -135,7 +136,7 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     const std::string host = url_host(bound ? bound->ip : bind_address);
     warn_about_bind(settings.bind, host);
     const RequestGuard guard(token, settings.bind, port);
-    ViewSession session{scene, renderer, exporter, videos, guard};
+    ViewSession session{scene, renderer, exporter, videos, guard, answers};
     add_view_routes(server, session);
     // A client that asks before sending its body (Expect: 100-continue) is invited only when
     // the request may be served: cpp-httplib would invite any, a foreign page's or one whose

@@ -138,5 +138,50 @@ TEST(ViewWorkInFlight, AnAnswerNobodyReadsDoesNotHoldUpTheStop) {
     EXPECT_NE(viewer.output().find("clrender: view stopped by SIGTERM"), std::string::npos) << viewer.output();
 }
 
+// The first line of the answer on `socket` (read within `seconds`), with its headers.
+std::string answer_head(int socket, int seconds) {
+    std::string head;
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    while (head.find("\r\n\r\n") == std::string::npos && std::chrono::steady_clock::now() < give_up) {
+        pollfd ready{socket, POLLIN, 0};
+        char byte = 0;
+        if (::poll(&ready, 1, 1000) <= 0) continue;
+        if (::recv(socket, &byte, 1, 0) != 1) break;
+        head += byte;
+    }
+    return head;
+}
+
+// Frames held for clients that take them slowly are bounded (view/answer_budget.h): while one
+// client holds the largest frame, another is answered 503 with Retry-After before anything is
+// rendered for it, and once the first has gone the next is served (8 slow clients held 3.9 GB).
+TEST(ViewWorkInFlight, FramesHeldForSlowClientsAreBounded) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json'", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const std::string largest = "/frame.rgba?size=8145x8145&spp=1";  // 265 MB of RGBA
+    const int holding = send_request(viewer, largest, 4096);
+    ASSERT_GE(holding, 0);
+    pollfd answer_begun{holding, POLLIN, 0};
+    ASSERT_GT(::poll(&answer_begun, 1, 60000), 0) << "the frame is rendered and its answer begun";
+    const int refused = send_request(viewer, largest);
+    ASSERT_GE(refused, 0);
+    const std::string head = answer_head(refused, 10);
+    ::close(refused);
+    EXPECT_EQ(head.rfind("HTTP/1.1 503", 0), 0u) << head;
+    EXPECT_NE(head.find("Retry-After: 1\r\n"), std::string::npos) << head;
+    ::close(holding);  // the answer is given up at its next write: the budget is free again
+    std::string served;
+    for (int attempt = 0; attempt < 20 && served.rfind("HTTP/1.1 200", 0) != 0; ++attempt) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(250));
+        const int next = send_request(viewer, largest, 4096);
+        ASSERT_GE(next, 0);
+        served = answer_head(next, 60);
+        ::close(next);
+    }
+    EXPECT_EQ(served.rfind("HTTP/1.1 200", 0), 0u) << served;
+    EXPECT_EQ(viewer.stop(SIGTERM), 143) << viewer.output();
+}
+
 }  // namespace
 }  // namespace clr
