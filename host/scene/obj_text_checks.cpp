@@ -151,10 +151,12 @@ std::string check_numbers(const std::vector<std::string_view>& tokens, std::size
     }
     for (std::size_t i = 1; i < tokens.size(); ++i) {
         double value = 0;
-        if (!parse_number(tokens[i], value) && !underflows_double(tokens[i])) {
+        const bool read = parse_number(tokens[i], value);
+        const bool underflows = !read && underflows_double(tokens[i]);  // read again only where the first read failed
+        if (!read && !underflows) {
             return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is not a finite number";
         }
-        if (!within_reader_limits(tokens[i]) || underflows_double(tokens[i])) {
+        if (underflows || !within_reader_limits(tokens[i])) {
             return "'" + std::string(keyword) + "': " + quoted(tokens[i]) + " is too long or its exponent too large (" +
                    number_limits_text() + ")";
         }

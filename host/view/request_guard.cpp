@@ -118,14 +118,7 @@ bool RequestGuard::host_allowed(const std::string& host) const {
     if (!wildcard_) return false;
     // Bound to every address: the machine's own addresses, but still no names.
     const std::optional<std::string> address = host_of(name, port_);
-    if (!address) return false;
-    if (address->size() >= 2 && address->front() == '[' && address->back() == ']') {
-        const std::string inner = without_brackets(*address);
-        unsigned char buffer[16];
-        return inet_pton(AF_INET6, inner.c_str(), buffer) == 1;
-    }
-    unsigned char buffer[4];
-    return inet_pton(AF_INET, address->c_str(), buffer) == 1;
+    return address && !named_address_bytes(*address).empty();
 }
 
 bool RequestGuard::origin_allowed(const std::string& origin, const std::string& arrived_on) const {
@@ -135,12 +128,7 @@ bool RequestGuard::origin_allowed(const std::string& origin, const std::string& 
     if (hosts_.count(host) > 0 || names_bound_address(host)) return true;
     if (!wildcard_) return false;
     const std::optional<std::string> address = host_of(host, port_);
-    if (!address || address->empty()) return false;
-    // An IPv6 address only in brackets, as a URL writes it; an IPv4 address without.
-    const bool bracketed = address->front() == '[' && address->back() == ']';
-    const std::string inner = without_brackets(*address);
-    if (bracketed != (inner.find(':') != std::string::npos)) return false;
-    const std::string bytes = address_bytes(inner);
+    const std::string bytes = address ? named_address_bytes(*address) : std::string();
     return !bytes.empty() && bytes == address_bytes(arrived_on);
 }
 

@@ -156,7 +156,8 @@ ViewCamera camera_of(const ViewSession& session, const Request& request) {
 }
 
 // A hold on the answer budget for a frame of `view`'s size (its RGBA bytes; its PNG is no
-// larger, give or take its headers), or ParameterError-like 503 when other answers hold it.
+// larger, give or take its headers); FramesInFlight (503) where the answers still being sent
+// leave no room for it.
 std::shared_ptr<const void> hold_for_frame(ViewSession& session, const ViewCamera& view) {
     const std::uint64_t bytes = std::uint64_t(view.width) * std::uint64_t(view.height) * 4 + 64 * 1024;
     std::shared_ptr<const void> hold = session.answers.hold(bytes);

@@ -279,18 +279,11 @@ TEST(CompareCli, InterruptedWhileRenderingLeavesNothing) {
     ppm.append(static_cast<std::size_t>(800) * 600 * 3, '\x40');
     folder.write("image.ppm", ppm);
     // The single-threaded reference at 64 samples a pixel takes many seconds for this size.
-    folder.write("interrupt.sh", "cd '" + folder.path() + "'\n'" + CLRENDER_BINARY +
-                                     "' compare scene.json image.ppm --reference --size 800x600 --spp 64 -o heat.png "
-                                     "2> stderr.txt &\n"
-                                     "pid=$!\n"
-                                     "sleep 1\n"
-                                     "kill -INT $pid\n"
-                                     "wait $pid\n"
-                                     "echo $? > code.txt\n");
-    ASSERT_EQ(std::system(("bash '" + folder.file("interrupt.sh") + "'").c_str()), 0);
-    EXPECT_EQ(read_bytes(folder.file("code.txt")), "130\n") << read_bytes(folder.file("stderr.txt"));
-    EXPECT_NE(read_bytes(folder.file("stderr.txt")).find("interrupted by SIGINT"), std::string::npos);
-    EXPECT_EQ(folder.entry_count(), 5);  // scene, image, script, stderr and code: no heat map, no temporary file
+    const auto run = testing::run_clrender_interrupted(
+        "compare scene.json image.ppm --reference --size 800x600 --spp 64 -o heat.png", folder.path(), 1);
+    EXPECT_EQ(run.exit_code, 130) << run.output;
+    EXPECT_NE(run.output.find("interrupted by SIGINT"), std::string::npos);
+    EXPECT_EQ(folder.entry_count(), 2);  // scene and image: no heat map, no temporary file
     EXPECT_EQ(read_bytes(folder.file("image.ppm")), ppm);
 }
 

@@ -509,16 +509,9 @@ TEST(ExplainPixel, CtrlCEndsALongExplanation) {
         {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
         {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
       "spheres": [)" + spheres + "]}");
-    folder.write("interrupt.sh", "cd '" + folder.path() + "'\n'" + CLRENDER_BINARY +
-                                     "' mirrors.json --reference --explain-pixel 4,4 > /dev/null 2> stderr.txt &\n"
-                                     "pid=$!\n"
-                                     "sleep 1\n"
-                                     "kill -INT $pid\n"
-                                     "wait $pid\n"
-                                     "echo $? > code.txt\n");
-    ASSERT_EQ(std::system(("bash '" + folder.file("interrupt.sh") + "'").c_str()), 0);
-    const std::string errors = testing::read_bytes(folder.file("stderr.txt"));
-    EXPECT_EQ(testing::read_bytes(folder.file("code.txt")), "130\n") << errors;
+    const auto run = testing::run_clrender_interrupted("mirrors.json --reference --explain-pixel 4,4", folder.path(), 1);
+    const std::string& errors = run.output;
+    EXPECT_EQ(run.exit_code, 130) << errors;
     EXPECT_NE(errors.find("interrupted by SIGINT"), std::string::npos) << errors;
     EXPECT_EQ(errors.find("cannot be interrupted"), std::string::npos) << "the watchdog ended it: " << errors;
 }

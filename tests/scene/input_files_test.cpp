@@ -3,20 +3,20 @@
 // memory, and with a message that says what the file is.
 #include <gtest/gtest.h>
 
-#include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "core/errors.h"
 #include "scene/bounded_file.h"
 #include "scene/image_loader.h"
 #include "scene/scene_loader.h"
+#include "support/address_space_child.h"
 #include "support/scene_json.h"
 #include "support/temp_folder.h"
 
@@ -27,29 +27,18 @@ namespace fs = std::filesystem;
 using testing::TempFolder;
 using namespace testing::scene_json;
 
-// Runs `check` in a child process that may use at most 4 GiB of address space and 10 seconds, so that a reader that waits forever or reads gigabytes fails the
-// test instead of hanging it or exhausting the machine. True when `check` returned true.
-// AddressSanitizer's process already holds terabytes of address space for its shadow memory,
-// so under it any new mapping would fail: there only the time is bounded, and the memory
-// bound is checked by the plain build.
+// Runs `check` in a child whose address space may grow by at most 4 GiB and which may take 10
+// seconds, so that a reader that waits forever or reads gigabytes fails the test instead of
+// hanging it or exhausting the machine. True when `check` returned true. Under
+// AddressSanitizer only the time is bounded (support/address_space_child.h); the plain build
+// checks the memory bound.
 bool passes_within_bounds(const std::function<bool()>& check) {
-    const pid_t child = ::fork();
-    if (child == 0) {
-        ::alarm(10);
-#ifndef __SANITIZE_ADDRESS__
-        rlimit bounded{std::uint64_t(4) << 30, std::uint64_t(4) << 30};
-        ::setrlimit(RLIMIT_AS, &bounded);
+#ifdef __SANITIZE_ADDRESS__
+    const testing::ChildBounds bounds{std::nullopt, 10};
+#else
+    const testing::ChildBounds bounds{std::uint64_t(4) << 30, 10};
 #endif
-        bool passed = false;
-        try {
-            passed = check();
-        } catch (...) {
-        }
-        ::_exit(passed ? 0 : 1);
-    }
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    return testing::passes_in_bounded_child(bounds, check);
 }
 
 // Whether loading the scene at `path` fails with a SceneError whose message holds `fragment`.

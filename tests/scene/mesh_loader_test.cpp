@@ -203,7 +203,7 @@ TEST(MeshLoader, MemoryThatRunsOutWhileReadingAMeshIsNamedAtItsFilename) {
     const Json scene = with_obj({{"filename", "grid.obj"}});
     const std::string expected = "scene.json: /obj/filename: out of memory: OBJ '" + obj +
                                  "': reading it took more memory than the system gives";
-    const bool named = testing::passes_with_address_space_to_spare(std::uint64_t(8) << 20, [&] {
+    const bool named = testing::passes_in_bounded_child({std::uint64_t(8) << 20}, [&] {
         ::setenv("CLRENDER_CACHE_DIR", "off", 1);  // read, not taken from the mesh cache
         try {
             load_in(folder, scene);

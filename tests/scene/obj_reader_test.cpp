@@ -304,7 +304,7 @@ TEST(ObjReader, ALineOfMillionsOfWordsIsRefusedWithoutHoldingThem) {
         const std::string expected = keyword == "f" ? "line 5: a face has at most 255 corners (tinyobjloader's limit), this "
                                                       "one has 33554432: split it into smaller faces"
                                                     : "line 5: 'v' has at most 255 numbers, this line has 33554432";
-        const bool refused = testing::passes_with_address_space_to_spare(std::uint64_t(400) << 20, [&] {
+        const bool refused = testing::passes_in_bounded_child({std::uint64_t(400) << 20}, [&] {
             try {
                 parse_obj(text, "mesh.obj");
             } catch (const ObjError& error) {

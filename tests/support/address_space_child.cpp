@@ -1,5 +1,6 @@
 #include "support/address_space_child.h"
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -7,18 +8,31 @@
 #include <cstdio>
 
 namespace clr::testing {
+namespace {
 
-bool passes_with_address_space_to_spare(std::uint64_t spare, const std::function<bool()>& check) {
+// Limits the address space to what the process holds now plus `spare` bytes; false where that
+// cannot be done.
+bool limit_address_space(std::uint64_t spare) {
+    // Memory that earlier tests of this process freed, but the allocator kept, would be room
+    // beyond `spare`: given back first.
+    ::malloc_trim(0);
+    long pages = 0;  // the address space the process holds now, from /proc/self/statm
+    std::FILE* statm = std::fopen("/proc/self/statm", "r");
+    const bool measured = statm && std::fscanf(statm, "%ld", &pages) == 1;
+    if (statm) std::fclose(statm);
+    const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + spare;
+    rlimit bounded{limit, limit};
+    return measured && ::setrlimit(RLIMIT_AS, &bounded) == 0;
+}
+
+}  // namespace
+
+bool passes_in_bounded_child(const ChildBounds& bounds, const std::function<bool()>& check) {
     const pid_t child = ::fork();
     if (child == 0) {
-        long pages = 0;  // the address space the child holds now, from /proc/self/statm
-        std::FILE* statm = std::fopen("/proc/self/statm", "r");
-        const bool measured = statm && std::fscanf(statm, "%ld", &pages) == 1;
-        if (statm) std::fclose(statm);
-        const rlim_t limit = static_cast<rlim_t>(pages) * ::sysconf(_SC_PAGESIZE) + spare;
-        rlimit bounded{limit, limit};
+        if (bounds.seconds > 0) ::alarm(bounds.seconds);
         bool passed = false;
-        if (measured && ::setrlimit(RLIMIT_AS, &bounded) == 0) {
+        if (!bounds.address_space_to_spare || limit_address_space(*bounds.address_space_to_spare)) {
             try {
                 passed = check();
             } catch (...) {

@@ -7,9 +7,10 @@
 
 namespace clr::testing {
 
-CommandResult run_clrender(const std::string& arguments, const std::string& folder, const std::string& environment) {
-    std::string command = (folder.empty() ? "" : "cd '" + folder + "' && ") + environment + " '" + CLRENDER_BINARY +
-                          "' " + arguments + " 2>&1";
+namespace {
+
+// The exit code and output of the shell command line `command`.
+CommandResult run_command(const std::string& command) {
     CommandResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -19,6 +20,21 @@ CommandResult run_clrender(const std::string& arguments, const std::string& fold
     int status = pclose(pipe);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+std::string in_folder(const std::string& folder) { return folder.empty() ? "" : "cd '" + folder + "' && "; }
+
+}  // namespace
+
+CommandResult run_clrender(const std::string& arguments, const std::string& folder, const std::string& environment) {
+    return run_command(in_folder(folder) + environment + " '" + CLRENDER_BINARY + "' " + arguments + " 2>&1");
+}
+
+CommandResult run_clrender_interrupted(const std::string& arguments, const std::string& folder, double seconds) {
+    // Standard error to the pipe, standard output dropped; the shell ends with clrender's code.
+    return run_command(in_folder(folder) + "{ '" + CLRENDER_BINARY + "' " + arguments +
+                       " 2>&1 >/dev/null & pid=$!; sleep " + std::to_string(seconds) +
+                       "; kill -INT $pid; wait $pid; }");
 }
 
 std::string frame_name(int frame) {

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <functional>
 #include <regex>
 #include <thread>
 #include <tuple>
@@ -44,19 +45,12 @@ int connect_to_viewer(int port) {
     return socket;
 }
 
-// One answer: its head and as many bytes of body as its Content-Length says, or what came
-// within `seconds`.
-std::string read_one_answer(int socket, int seconds) {
+// What the server sends on `socket` within `seconds`: until it closes the connection, or until
+// `whole` says that what came is whole.
+std::string read_from(int socket, int seconds, const std::function<bool(const std::string&)>& whole = {}) {
     std::string text;
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
-    while (std::chrono::steady_clock::now() < give_up) {
-        const std::size_t head_end = text.find("\r\n\r\n");
-        if (head_end != std::string::npos) {
-            const std::size_t length_at = text.find("Content-Length: ");
-            if (length_at != std::string::npos && length_at < head_end &&
-                text.size() >= head_end + 4 + std::stoul(text.substr(length_at + 16)))
-                break;
-        }
+    while (std::chrono::steady_clock::now() < give_up && !(whole && whole(text))) {
         pollfd ready{socket, POLLIN, 0};
         if (::poll(&ready, 1, 100) <= 0) continue;
         char buffer[4096];
@@ -66,6 +60,21 @@ std::string read_one_answer(int socket, int seconds) {
     }
     return text;
 }
+
+// One answer: its head and as many bytes of body as its Content-Length says, or what came
+// within `seconds`.
+std::string read_one_answer(int socket, int seconds) {
+    return read_from(socket, seconds, [](const std::string& text) {
+        const std::size_t head_end = text.find("\r\n\r\n");
+        if (head_end == std::string::npos) return false;
+        const std::size_t length_at = text.find("Content-Length: ");
+        return length_at != std::string::npos && length_at < head_end &&
+               text.size() >= head_end + 4 + std::stoul(text.substr(length_at + 16));
+    });
+}
+
+// Everything the server sends until it closes the connection (or `seconds` pass).
+std::string read_until_closed(int socket, int seconds) { return read_from(socket, seconds); }
 
 // One viewer for the whole suite: starting it is the slow part.
 class ViewSecurity : public ::testing::Test {
@@ -270,14 +279,7 @@ TEST_F(ViewSecurity, AnInterimContinueIsNotTakenForTheAnswer) {
         const int socket = connect_to_viewer(viewer_->port());
         ASSERT_GE(socket, 0);
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
-        std::string received;  // everything until the server closes, or 5 s
-        for (;;) {
-            pollfd ready{socket, POLLIN, 0};
-            char chunk[4096];
-            const ssize_t got = ::poll(&ready, 1, 5000) > 0 ? ::recv(socket, chunk, sizeof chunk, 0) : -1;
-            if (got <= 0) break;
-            received.append(chunk, static_cast<std::size_t>(got));
-        }
+        const std::string received = read_until_closed(socket, 5);
         ::close(socket);
         std::size_t answers = 0;
         for (std::size_t at = received.find("HTTP/1.1 "); at != std::string::npos; at = received.find("HTTP/1.1 ", at + 1))
@@ -442,21 +444,6 @@ TEST_F(ViewSecurity, EndlessHeadersGet431) {
     const std::string answer = read_one_answer(socket, 5);
     ::close(socket);
     EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
-}
-
-// Everything the server sends until it closes the connection (or `seconds` pass).
-std::string read_until_closed(int socket, int seconds) {
-    std::string text;
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
-    while (std::chrono::steady_clock::now() < give_up) {
-        pollfd ready{socket, POLLIN, 0};
-        if (::poll(&ready, 1, 100) <= 0) continue;
-        char buffer[4096];
-        const ssize_t got = ::read(socket, buffer, sizeof buffer);
-        if (got <= 0) break;
-        text.append(buffer, static_cast<std::size_t>(got));
-    }
-    return text;
 }
 
 // A request that a limit ends gets the limit's answer and nothing after it: cpp-httplib, whose
