@@ -8,6 +8,7 @@
 #include "core/printable_text.h"
 #include "device/cl_errors.h"
 #include "device/driver_limits.h"
+#include "device/exact_arithmetic.h"
 #include "device/program_cache.h"
 #include "device/stderr_capture.h"
 
@@ -48,7 +49,7 @@ std::optional<cl::Program> DeviceContext::build_from_cache(const ProgramCache& c
     if (!binary) return std::nullopt;
     try {
         cl::Program cached(context_, {entry_.device}, cl::Program::Binaries{*binary});
-        cached.build({entry_.device}, options.c_str());
+        cached.build({entry_.device}, with_exact_arithmetic(entry_.device, options).c_str());
         // Back under its name when this context ends, not now: the driver may still crash on it
         // when the kernels are made or run, and then it must not be found again.
         borrowed_.push_back({cache.cache_folder(), key, aside});
@@ -95,10 +96,11 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
     // Short of address space, PoCL's compiler hangs or crashes instead of failing.
     check_room_for_a_build();
     cl::Program program(context_, source);
+    const std::string all_options = with_exact_arithmetic(entry_.device, options);
     // The compiler's own output waits until clrender's error line, if any, is out.
     StderrCapture compiler_output;
     try {
-        program.build({entry_.device}, options.c_str());
+        program.build({entry_.device}, all_options.c_str());
         print_compiler_output(compiler_output.finish());
     } catch (const cl::Error& error) {
         const std::string printed = compiler_output.finish();
@@ -114,7 +116,7 @@ cl::Program DeviceContext::build_program(const std::string& source, const std::s
             log = "(no build log available)";
         }
         throw DeviceError(describe_cl_error(error, building) +
-                          "\nbuild options: " + options + "\nbuild log:\n" + log +
+                          "\nbuild options: " + all_options + "\nbuild log:\n" + log +
                           (printed.empty() ? "" : "\ncompiler output:\n" + printed));
     }
     // Asking PoCL for the binary compiles every kernel of the program, which takes longer than

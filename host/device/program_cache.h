@@ -22,7 +22,8 @@ namespace clr {
 class ProgramCache {
 public:
     // Part of every key and header: bump it when the entry's content changes meaning.
-    static constexpr std::uint32_t kFormatVersion = 2;
+    // 3: binaries built with with_exact_arithmetic()'s options, which keys do not hold.
+    static constexpr std::uint32_t kFormatVersion = 3;
     // A few programs per feature set of a scene, each a few MB on PoCL.
     static constexpr std::uint64_t kDefaultSizeLimit = std::uint64_t(256) << 20;
 

@@ -11,6 +11,7 @@
 
 #include "core/open_file.h"
 #include "core/cache_entry.h"
+#include "device/exact_arithmetic.h"
 
 namespace clr {
 namespace {
@@ -107,7 +108,7 @@ std::optional<cl::Program> build_from_store(const ProgramStore& store, const cl:
     if (!binary) return std::nullopt;
     try {
         cl::Program stored(context, {device}, cl::Program::Binaries{*binary});
-        stored.build({device}, options.c_str());
+        stored.build({device}, with_exact_arithmetic(device, options).c_str());
         return stored;
     } catch (const cl::Error&) {  // refused by the driver: built from source instead
         return std::nullopt;

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <set>
 
+#include "device/exact_arithmetic.h"
 #include "device/kernel_sources.h"
 #include "device/program_cache.h"
 #include "device/program_store.h"
@@ -55,7 +56,7 @@ ProgramStoreBuild build_program_store(const std::string& folder, const DeviceEnt
             // takes its binary: asking for it compiles the kernel's generic work-group function,
             // which the first frame of a run from the binary then reuses.
             cl::Program program(context, source);
-            program.build({device.device}, options.c_str());
+            program.build({device.device}, with_exact_arithmetic(device.device, options).c_str());
             const std::vector<std::vector<unsigned char>> binaries = program.getInfo<CL_PROGRAM_BINARIES>();
             if (binaries.size() != 1 || !store.write(key, binaries.front())) throw std::runtime_error("no binary written");
             ++result.built;
