@@ -40,6 +40,7 @@ struct Options {
     std::vector<std::string> scenes;  // empty: all
     std::string json_path;
     std::string images_dir;
+    std::optional<bool> per_pixel;  // --per-pixel, --screen-tiles; unset: as the device prefers
 };
 
 void parse_size(const std::string& text, RunSettings& settings) {
@@ -61,6 +62,12 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ->check(CLI::PositiveNumber);
     app.add_option("--device", options.device, "OpenCL device: index, platform:device or name (default: first CPU)");
     app.add_option("--scenes", options.scenes, "scenes to run, comma-separated (default: all)")->delimiter(',');
+    auto* per_pixel = app.add_flag_callback(
+        "--per-pixel", [&] { options.per_pixel = true; },
+        "clrender's primary rays one work-item a pixel through the BVH (a GPU's default; docs/benchmarks.md, A GPU)");
+    app.add_flag_callback("--screen-tiles", [&] { options.per_pixel = false; },
+                          "clrender's primary rays in screen tiles of 16-ray packets (a CPU's default)")
+        ->excludes(per_pixel);
     app.add_option("--json", options.json_path, "also write the results as JSON to this file");
     app.add_option("--images", options.images_dir, "write clrender's image of each scene as PNG into this folder");
     try {
@@ -161,7 +168,7 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     }
 
     std::cerr << "bench: " << spec.name << ": setting up" << std::endl;
-    ClrenderSide clr(device, scene);
+    ClrenderSide clr(device, scene, options.per_pixel);
     row.clr_setup_ms = clr.setup_ms();
     ClrenderFrame warmup = clr.render_frame();
     bool clr_done = keep_if_slow(warmup.wall_ms, row.clr_wall_ms);

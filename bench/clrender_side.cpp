@@ -5,9 +5,12 @@
 
 namespace clr::bench {
 
-ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene) : key_(scene.camera_path.front()) {
+ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, std::optional<bool> per_pixel)
+    : key_(scene.camera_path.front()) {
+    RendererOptions options;
+    options.per_pixel = per_pixel;
     const Stopwatch stopwatch;
-    renderer_.emplace(device, scene);
+    renderer_.emplace(device, scene, options);
     setup_ms_ = stopwatch.elapsed_ms();
     renderer_->warm_up();
 }

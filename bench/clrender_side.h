@@ -20,7 +20,9 @@ public:
     // Builds the program, uploads the scene (both timed as setup) and renders a thumbnail of
     // the view (Renderer::warm_up), so that PoCL's compile for the work-group size on first use
     // is out of the way.
-    ClrenderSide(DeviceContext& device, const Scene& scene);
+    // `per_pixel`: primary rays one work-item a pixel through the BVH, or in screen tiles of
+    // 16-ray packets; unset, as the device prefers (RendererOptions::per_pixel).
+    ClrenderSide(DeviceContext& device, const Scene& scene, std::optional<bool> per_pixel = std::nullopt);
 
     double setup_ms() const { return setup_ms_; }
     ClrenderFrame render_frame();

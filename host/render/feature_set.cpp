@@ -25,6 +25,10 @@ FeatureSet FeatureSet::general(const FeatureSet& specialised) {
     return features;
 }
 
+std::size_t FeatureSet::bvh_objects(const Scene& scene) {
+    return scene.spheres.size() + scene.billboards.size() + scene.impostors.size() + scene.triangles.size();
+}
+
 FeatureSet FeatureSet::of(const Scene& scene) {
     FeatureSet features;
     features.spheres = !scene.spheres.empty();
@@ -50,8 +54,7 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     for (const Image* image : shown) features.alpha |= image->has_transparency();
     // Primary rays are culled by screen tiles; shadow and mirror rays test every object
     // unless a BVH is compiled in, which pays from a few dozen objects on.
-    std::size_t objects = scene.spheres.size() + scene.billboards.size() + scene.impostors.size() + scene.triangles.size();
-    features.bvh = (features.sun || features.lights || features.mirrors) && objects > kBvhMinObjects;
+    features.bvh = (features.sun || features.lights || features.mirrors) && bvh_objects(scene) > kBvhMinObjects;
     return features;
 }
 

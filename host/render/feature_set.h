@@ -29,6 +29,8 @@ struct FeatureSet {
     // --alpha outputs (docs/command-line.md, HDR and alpha outputs), not a scene property.
     bool float_output = false;
 
+    // The objects that a BVH holds: spheres, billboards, impostors and triangles.
+    static std::size_t bvh_objects(const Scene& scene);
     // Every scene feature on: the general kernel that every specialised variant must match
     // (in the same precision).
     static FeatureSet all();

@@ -70,13 +70,21 @@ bool shares_host_memory(const cl::Device& device) {
     return device.getInfo<CL_DEVICE_TYPE>() == CL_DEVICE_TYPE_CPU && device.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>();
 }
 
+// Whether primary rays go one work-item a pixel (RendererOptions::per_pixel): on a GPU, 16-ray
+// packets in screen tiles kept its lanes idle (1M triangles: 23 Mrays/s in packets, 1,106 per
+// pixel through the BVH; docs/benchmarks.md, A GPU).
+bool per_pixel_on(const cl::Device& device, const std::optional<bool>& choice) {
+    if (choice) return *choice;
+    return (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) != 0;
+}
+
 }  // namespace
 
 Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOptions& options)
     : device_(device),
       scene_(scene),
       frame_(scene_),
-      screen_tiles_(options.screen_tiles),
+      screen_tiles_(options.screen_tiles && !per_pixel_on(device.device(), options.per_pixel)),
       band_sizer_(options.band_seconds),
       fixed_band_rows_(options.band_rows),
       between_bands_(options.between_bands),
@@ -93,6 +101,8 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     features_ = options.features.value_or(compiled_.features);
     features_.double_precision = options.double_precision;
     features_.float_output = options.float_output;
+    // Per pixel, primary rays search the BVH too: among enough objects, build one.
+    if (options.screen_tiles && !screen_tiles_ && FeatureSet::bvh_objects(scene_) > kBvhMinObjects) features_.bvh = true;
     if (options.double_precision && device_.device().getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() == 0)
         throw DeviceError("'" + device_.entry().device_name +
                           "' has no double precision (cl_khr_fp64); use --precision float or another device");

@@ -47,6 +47,11 @@ struct RendererOptions {
     // Cull primary rays by screen tiles, 16 rays at a time (render_packets); off: every pixel tests every object
     // (the brute-force kernel, which the tests use as the general reference).
     bool screen_tiles = true;
+    // Where screen_tiles is on: whether primary rays go one work-item a pixel through the BVH
+    // (the brute-force kernel with a BVH compiled in) instead of in screen tiles of 16-ray
+    // packets. Unset, the device decides: per pixel on a GPU, whose lanes each follow one ray,
+    // tiles elsewhere (docs/benchmarks.md, A GPU). Either way the same bytes.
+    std::optional<bool> per_pixel;
     // Intersect and shade in double (the device needs cl_khr_fp64; DeviceError otherwise).
     bool double_precision = false;
     // Frames also carry their linear colours and coverage (Image::linear), from kernels
