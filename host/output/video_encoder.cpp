@@ -31,6 +31,7 @@
 #include "core/errors.h"
 #include "core/interruption.h"
 #include "output/file_extension.h"
+#include "output/full_disk_note.h"
 #include "output/program_lookup.h"
 #include "output/temp_files.h"
 #include "output/video_probe.h"
@@ -445,7 +446,9 @@ void VideoEncoder::abandon() noexcept {
 }
 
 void VideoEncoder::fail(const std::string& reason) {
-    std::string message = settings_.path + ": video encoding failed: " + reason;
+    // Asked before abandon() frees the cut-off file: the space left is what the encoder met.
+    std::string message =
+        settings_.path + ": video encoding failed: " + reason + (temp_path_.empty() ? "" : full_disk_note(temp_path_));
     const std::string log = log_tail(log_path_, 10);
     if (!log.empty()) message += "; its log ends:" + log;
     abandon();

@@ -271,7 +271,8 @@ DiskRun run_on_small_disk(const TempFolder& work, const std::string& scene, long
 }
 
 // ffmpeg exits 0 with a broken file when the disk fills while it moves the MP4 index to the
-// front (+faststart), and 1 when it fills earlier: neither may replace the earlier video.
+// front (+faststart), and 1 when it fills earlier: neither may replace the earlier video, and
+// both messages say that the disk is full (ffmpeg's own log does not).
 TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
     if (!have_program("ffmpeg") || !have_program("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
     if (!testing::can_mount_small_disks()) GTEST_SKIP() << "cannot mount a tmpfs (needs root or unprivileged user namespaces)";
@@ -298,6 +299,9 @@ TEST(EncoderOnAFullDisk, FailsWith4AndKeepsTheEarlierVideo) {
         const DiskRun run = run_on_small_disk(work, scene, pages);
         EXPECT_EQ(run.exit_code, 4) << pages << " pages:\n" << run.errors;
         EXPECT_NE(run.errors.find("anim.mp4: video encoding failed: "), std::string::npos) << run.errors;
+        // Also where ffmpeg exited 0 and only the check found the file cut off: the disk is named.
+        EXPECT_NE(run.errors.find("it is likely full (No space left on device)"), std::string::npos)
+            << pages << " pages:\n" << run.errors;
         EXPECT_EQ(count_of(run.errors, "clrender: error: "), 1) << run.errors;
         EXPECT_TRUE(run.video == kEarlierVideo)  // no EXPECT_EQ: it would print a video's bytes
             << pages << " pages: the earlier video was replaced by " << run.video.size() << " bytes";
