@@ -369,10 +369,12 @@ ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
-    const std::uint64_t needed =
-        2 * text.size() + counts.triangles * kParsedTriangleBytes + counts.named_statements * kStatementBytes;
+    const std::uint64_t vertex_lines = counts.positions + counts.texcoords + counts.normals;
+    const std::uint64_t needed = 2 * text.size() + counts.triangles * kParsedTriangleBytes +
+                                 counts.named_statements * kStatementBytes + vertex_lines * kVertexLineBytes;
     if (needed > memory_budget) {
-        throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles would take about " +
+        throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles and " +
+                              std::to_string(vertex_lines) + " v, vt and vn lines would take about " +
                               gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +
                               " a scene's meshes may take: half of this machine's memory (docs/robustness.md, Memory)");
     }

@@ -44,6 +44,12 @@ constexpr std::uint64_t kParsedTriangleBytes = 300;
 // bytes a triangle besides the 300; a material name is kept once. A margin on top. The text
 // counts twice: the checks read it, tinyobjloader its copy without the lines it must not see.
 constexpr std::uint64_t kStatementBytes = 512;
+// What a `v`, `vt` or `vn` line may take besides twice its text: tinyobjloader keeps its
+// numbers as doubles (and a weight for each `v`), and clrender a copy of each position and
+// normal. A file of such lines and one face (a point cloud, a scan) took, text included, 61
+// bytes a `v 0 0 0` line, 63 a `vn 0 0 1` and 31 a `vt 0 0` (48 MiB of them: 380 MB where
+// twice the text had been counted). A margin on top.
+constexpr std::uint64_t kVertexLineBytes = 64;
 
 // Largest OBJ file and largest .mtl file read, and most triangles a file may fan into: a
 // triangle costs the reader about 48 bytes (three position and three normal indices) besides
@@ -78,8 +84,9 @@ struct ObjMesh {
 // missing or unreadable .mtl is an error too). Throws ObjError with a one-line reason:
 // missing, not a regular file, too large, a bad line (with its number), too many triangles.
 // Throws MeshMemoryError, before the parse, when twice the text, its triangles at
-// kParsedTriangleBytes each and its `o`, `g`, `usemtl` and `mtllib` lines at kStatementBytes
-// each would take more than `memory_budget` bytes; std::bad_alloc when
+// kParsedTriangleBytes each, its `o`, `g`, `usemtl` and `mtllib` lines at kStatementBytes
+// each and its `v`, `vt` and `vn` lines at kVertexLineBytes each would take more than
+// `memory_budget` bytes; std::bad_alloc when
 // memory runs out all the same.
 ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 

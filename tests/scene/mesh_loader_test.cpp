@@ -157,12 +157,13 @@ std::pair<std::string, int> memory_error_of(const TempFolder& folder, const Json
 }
 
 // A mesh that would take more memory than the scene's meshes may is refused with exit 6 at its
-// "filename": before its parse (twice its text and its triangles at kParsedTriangleBytes), or once the
+// "filename": before its parse (twice its text, its triangles at kParsedTriangleBytes and its
+// vertex lines at kVertexLineBytes), or once the
 // scene's triangles at kPlacedTriangleBytes each pass the budget, counted across its meshes.
 TEST(MeshLoader, MeshesBeyondTheMemoryBudgetEndTheRunWithExit6) {
     TempFolder folder;
     const std::string text = folder.write("square.obj", kSquareObj);
-    const std::uint64_t text_bytes = kSquareObj.size(), parse = 2 * text_bytes + 2 * kParsedTriangleBytes;
+    const std::uint64_t text_bytes = kSquareObj.size(), parse = 2 * text_bytes + 2 * kParsedTriangleBytes + 7 * kVertexLineBytes;
     const Json two = with_obj(Json::array({{{"filename", "square.obj"}}, {{"filename", "square.obj"}, {"position", {0, 0, 1}}}}));
     EXPECT_EQ(memory_error_of(folder, two, 4 * kPlacedTriangleBytes).first, "") << "four triangles fit";
     const auto [placed, placed_code] = memory_error_of(folder, two, 4 * kPlacedTriangleBytes - 1);
@@ -175,7 +176,7 @@ TEST(MeshLoader, MeshesBeyondTheMemoryBudgetEndTheRunWithExit6) {
     const auto [parsed, parsed_code] = memory_error_of(folder, two, parse - 1);
     EXPECT_EQ(parsed_code, kExitOutOfMemory);
     EXPECT_NE(parsed.find("scene.json: /obj/0/filename: out of memory: OBJ '" + text +
-                          "': its 2 triangles would take about 0.0 GiB to read"),
+                          "': its 2 triangles and 7 v, vt and vn lines would take about 0.0 GiB to read"),
               std::string::npos)
         << parsed;
     EXPECT_EQ(memory_error_of(folder, with_obj({{"filename", "square.obj"}}), 2 * kPlacedTriangleBytes).first, "");

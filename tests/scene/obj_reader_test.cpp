@@ -644,9 +644,25 @@ TEST(ObjReader, ShapesAndMaterialLinesCountTowardsTheParseBudget) {
     const std::string text = kSquare + "o a\nf 1 2 3\ng b\nf 1 3 4\nusemtl c\nmtllib m.mtl\n";
     folder.write("m.mtl", "newmtl c\nKd 1 0 0\n");
     const std::string path = folder.write("mesh.obj", text);
-    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes;
+    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes + 4 * kVertexLineBytes;
     EXPECT_EQ(parse_obj(text, path, needed).triangles.size(), 2u);
     EXPECT_THROW(parse_obj(text, path, needed - 1), MeshMemoryError);
+}
+
+// ... and each `v`, `vt` and `vn` line: a point cloud or scan with a face took about 60 bytes a
+// `v` line besides twice its text (48 MiB of `v 0 0 0` lines: 380 MB, where 96 MB were counted).
+TEST(ObjReader, VertexLinesCountTowardsTheParseBudget) {
+    std::string text = kSquare + "f 1 2 3\n";
+    for (int i = 0; i < 1000; ++i) text += "v 0 0 0\nvt 0 0\nvn 0 0 1\n";
+    const std::uint64_t needed = 2 * text.size() + kParsedTriangleBytes + (4 + 3000) * kVertexLineBytes;
+    EXPECT_EQ(parse_obj(text, "cloud.obj", needed).positions.size(), 1004u);
+    try {
+        parse_obj(text, "cloud.obj", needed - 1);
+        ADD_FAILURE() << "the parse passed a budget one byte short of its vertex lines";
+    } catch (const MeshMemoryError& error) {
+        EXPECT_NE(std::string(error.what()).find("its 1 triangles and 3004 v, vt and vn lines would take"), std::string::npos)
+            << error.what();
+    }
 }
 
 }  // namespace
