@@ -14,6 +14,7 @@
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
+#include "scene/mtl_texture_maps.h"
 #include "scene/obj_text_checks.h"
 #include "scene/text_encoding.h"
 #include "scene/value_ranges.h"
@@ -129,6 +130,9 @@ public:
             }
             return false;
         }
+        for (const auto& [material, map] : diffuse_texture_maps(text))
+            texture_maps_.emplace(material, "mtllib " + printable(shortened(name, 200)) + ": line " +
+                                                std::to_string(map.line) + ": " + printable(shortened(map.statement, 200)));
         text = mtl_statements_used(text);
         const std::vector<bool> gives_diffuse = materials_giving_diffuse(text);
         const std::size_t before = materials->size();
@@ -170,6 +174,11 @@ public:
     // Whether the material at `index` in tinyobjloader's list gives a `Kd` line.
     bool gives_diffuse(std::size_t index) const { return index < with_diffuse_.size() && with_diffuse_[index]; }
     bool defines(const std::string& material) const { return names_.count(material) != 0; }
+    // The first `map_Kd` line of `material` ("mtllib a.mtl: line 3: map_Kd wood.png"), or null.
+    const std::string* texture_map_of(const std::string& material) const {
+        const auto map = texture_maps_.find(material);
+        return map == texture_maps_.end() ? nullptr : &map->second;
+    }
 
 private:
     // Counts the `newmtl` lines of the .mtl `name` (its used statements, `text`) that define
@@ -197,6 +206,7 @@ private:
     std::map<std::pair<dev_t, ino_t>, std::size_t> read_;  // each .mtl read, by identity: its digest's index
     std::vector<bool> with_diffuse_;  // of each material in tinyobjloader's list
     std::set<std::string> names_;     // the materials defined, as usemtl names them
+    std::map<std::string, std::string> texture_maps_;  // material: its first map_Kd line, shown
 };
 
 Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
@@ -287,6 +297,23 @@ void warn_about_unused_materials(const ObjMaterialStatements& statements, const 
                     "", mesh);
 }
 
+// A mesh takes one colour (docs/scene-format.md, Meshes): the texture map (`map_Kd`) of a
+// material that a `usemtl` uses is not drawn, which a warning says, naming the first.
+void warn_about_texture_maps(const ObjMaterialStatements& statements, const MaterialFiles& material_files,
+                             ObjMesh& mesh) {
+    const std::string* first = nullptr;
+    std::uint64_t more = 0;
+    for (const auto& use : statements.uses) {
+        const std::string* map = material_files.texture_map_of(use.name);
+        if (map && first) ++more;
+        if (map && !first) first = map;
+    }
+    if (!first) return;
+    mesh.warnings.push_back(*first + ": a mesh takes one colour, the scene's ambient or else its first face's material's "
+                                     "Kd; this texture is not drawn" +
+                            (more > 0 ? " (nor those of " + std::to_string(more) + " more materials it uses)" : ""));
+}
+
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
@@ -359,6 +386,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
         mesh.warnings.push_back(redefined);
     warn_about_undefined_materials(statements, material_files, mesh);
     warn_about_unused_materials(statements, materials, material_names, material_files, mesh);
+    warn_about_texture_maps(statements, material_files, mesh);
     return mesh;
 }
 

@@ -618,6 +618,23 @@ TEST(ObjReader, AMaterialWhoseColourTheMeshDoesNotTakeIsAWarning) {
                     .warnings.empty());
 }
 
+// A mesh takes one colour: the texture map (map_Kd) of a material it uses is not drawn, which
+// a warning says with the .mtl's line (it was read past in silence), counting the other used
+// materials with one; a texture of a material no usemtl uses, or one before any newmtl, is none.
+TEST(ObjReader, ATextureMapTheMeshDoesNotDrawIsAWarning) {
+    TempFolder folder;
+    folder.write("m.mtl", "map_Kd stray.png\nnewmtl wood\nKd 1 1 1\nmap_Kd -s 2 2 1 wood.png\nmap_Kd again.png\n"
+                          "newmtl plain\nKd 1 0 0\nnewmtl stone\nmap_Kd stone.png\nnewmtl unused\nmap_Kd unused.png\n");
+    const ObjMesh mesh = read_obj(folder.write(
+        "mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl wood\nf 1 2 3\nusemtl stone\nf 1 3 4\n"));
+    EXPECT_EQ(mesh.diffuse, (Vec3{1, 1, 1}));
+    ASSERT_EQ(mesh.warnings.size(), 1u);
+    EXPECT_EQ(mesh.warnings[0], "mtllib m.mtl: line 4: map_Kd -s 2 2 1 wood.png: a mesh takes one colour, the scene's "
+                                "ambient or else its first face's material's Kd; this texture is not drawn (nor those "
+                                "of 1 more materials it uses)");
+    EXPECT_TRUE(read_obj(folder.write("plain.obj", "mtllib m.mtl\n" + kSquare + "usemtl plain\nf 1 2 3\n")).warnings.empty());
+}
+
 // Each material and .mtl name is kept once however many lines repeat it: a file of millions of
 // `usemtl` lines took 400 MB for 48 MiB of text.
 TEST(ObjReader, RepeatedMaterialStatementsAreKeptOnce) {
