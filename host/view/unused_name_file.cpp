@@ -37,6 +37,12 @@ bool entry_exists(const std::string& path) {
     struct stat status;
     if (::lstat(path.c_str(), &status) == 0) return true;
     if (errno == ENOENT) return false;
+    // The name is at fault, not the folder: a series' later name (NAME-2) is longer than its
+    // first, which may just fit (a scene's long name, with "_path" added).
+    if (errno == ENAMETOOLONG)
+        throw OutputError(printable(std::filesystem::path(path).filename().string()) +
+                          ": the name is longer than the folder's file system allows (" + std::strerror(errno) +
+                          "); give a shorter name");
     // The folder is at fault (a file in its place, no permission to search it): no name of the
     // series would do, and "every name is taken" would send the user looking for files.
     const std::string folder = std::filesystem::path(path).parent_path().string();

@@ -36,7 +36,7 @@ std::string series_name(const std::string& base, int n);
 
 // Whether `path` names a directory entry of any kind (a link is not followed). Throws
 // OutputError, naming the folder and the reason, where that cannot be told (the folder is not a
-// folder, or may not be searched).
+// folder, or may not be searched), or naming the entry where its name is too long.
 bool entry_exists(const std::string& path);
 
 }  // namespace clr

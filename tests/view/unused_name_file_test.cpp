@@ -88,5 +88,23 @@ TEST(UnusedNameFile, AFolderThatCannotBeLookedInIsNamedWithTheReason) {
     }
     EXPECT_EQ(folder.entry_count(), 2);
 }
+
+// A series whose first name just fits (a scene's long name with "_path") but whose next one
+// does not is refused naming the name as too long, not the folder, which is fine.
+TEST(UnusedNameFile, ANameTooLongForTheFolderIsNamedAsSuch) {
+    TempFolder folder;
+    const std::string base(250, 'a');  // base.json: 255 characters, the most a name may have
+    EXPECT_EQ(write_under_unused_name(folder.path(), base, ".json", {}, "first", kAnyName).name, base);
+    std::string message = "written";
+    try {
+        write_under_unused_name(folder.path(), base, ".json", {}, "second", kAnyName);
+    } catch (const OutputError& error) {
+        message = error.what();
+    }
+    EXPECT_NE(message.find(base + "-2.json: the name is longer than the folder's file system allows"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("cannot look for a free name in the folder"), std::string::npos) << message;
+    EXPECT_EQ(folder.entry_count(), 1) << "no temporary file is left";
+}
 }  // namespace
 }  // namespace clr
