@@ -152,6 +152,33 @@ void add_course_ball(Scene& scene, const BenchSceneSpec& spec) {
     scene.sun_location = kCourseSun;
 }
 
+// "100x100k triangles": rows of balls of one shape from above and in front, the sun behind the
+// viewer's left shoulder, each ball shading the one behind it. They are one file placed again
+// and again, as a scene's `obj` list would place it (Mesh::path alike: one tree shape).
+const Vec3 kInstancesEye{0, 9, 12};
+const Vec3 kInstancesLookat{0, 0, -6};
+const Vec3 kInstancesSun{-10, 14, 16};
+
+void add_instanced_balls(Scene& scene, const BenchSceneSpec& spec) {
+    const int stacks = std::max(2, static_cast<int>(std::lround(std::sqrt(spec.instance_triangles / 4.0))));
+    constexpr int kColumns = 10;
+    constexpr double kSpacing = 2.4;
+    // One ball, moved: each placement the same triangles shifted, as a file's are.
+    const testing::TestMesh ball = testing::sphere_mesh({0, 0, 0}, 1, 2 * stacks, stacks, true);
+    for (int i = 0; i < spec.instances; ++i) {
+        const Vec3 shift{((i % kColumns) - (kColumns - 1) / 2.0) * kSpacing, 0, -(i / kColumns) * kSpacing};
+        testing::TestMesh placed = ball;
+        for (auto& triangle : placed.triangles)
+            for (Vec3& corner : triangle) corner = corner + shift;
+        testing::add_mesh(scene, placed, id_color(mesh_id(0, 0, i)));
+        scene.meshes.back().path = "bench:ball.obj";
+    }
+    scene.camera_path.front() = CameraKey{kInstancesEye, kInstancesLookat};
+    scene.has_sun = true;
+    scene.only_ambient = false;
+    scene.sun_location = kInstancesSun;
+}
+
 // The half extents of the image plane at distance 1 from the eye: the field of view spans the
 // larger image dimension (docs/scene-format.md, Conventions: Camera).
 struct PlaneExtent {
@@ -278,6 +305,7 @@ std::vector<BenchSceneSpec> make_specs() {
         {"70k triangles flat", 1, 0, 0, 70000, 0, true},
         {"1M triangles", 1, 0, 0, 1000000},
         {"course + mesh", 3, 2, 0, 0, 25600},
+        {"100x100k triangles", 0, 0, 0, 0, 0, false, 100, 100000},
     };
 }
 
@@ -304,6 +332,8 @@ Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
     } else if (spec.ball_triangles > 0) {
         add_course_objects(scene);
         add_course_ball(scene, spec);
+    } else if (spec.instances > 0) {
+        add_instanced_balls(scene, spec);
     } else if (spec.terrain()) {
         scene.camera_path.front() = CameraKey{kTerrainEye, kTerrainLookat};
         scene.has_sun = true;

@@ -28,14 +28,22 @@ struct BenchSceneSpec {
     // sphere, less its poles' collapsed triangles), lit by the sun: "course + mesh".
     int ball_triangles = 0;
     bool unlit = false;  // a terrain scene in flat shading: its primary rays alone
+    // `instances` copies of one smooth ball of about `instance_triangles` triangles, placed as
+    // the same file placed again is (one tree shape, refitted: render/scene_bvh.h), in a 10-wide
+    // grid on the ground, lit by the sun: "100x100k triangles".
+    int instances = 0;
+    int instance_triangles = 0;
 
     int objects() const { return spheres + billboards + impostors; }
+    std::int64_t triangles() const {
+        return std::int64_t{terrain_triangles} + ball_triangles + std::int64_t{instances} * instance_triangles;
+    }
     bool terrain() const { return terrain_triangles > 0; }
-    bool lit() const { return (terrain() || ball_triangles > 0) && !unlit; }
+    bool lit() const { return (terrain() || ball_triangles > 0 || instances > 0) && !unlit; }
 };
 
 // course, 16+16, 256+256, 4096+4096, 100k spheres, 10k impostors, 70k triangles,
-// 70k triangles flat, 1M triangles, course + mesh, in that order.
+// 70k triangles flat, 1M triangles, course + mesh, 100x100k triangles, in that order.
 const std::vector<BenchSceneSpec>& bench_scene_specs();
 
 // The spec named `name`; throws std::invalid_argument listing the names when none matches.

@@ -48,12 +48,13 @@ TEST(BenchScenes, AdvertisedCounts) {
         {"course", {3, 2, 0}},         {"16+16", {16, 16, 0}},         {"256+256", {256, 256, 0}},
         {"4096+4096", {4096, 4096, 0}}, {"100k spheres", {100000, 0, 0}}, {"10k impostors", {0, 0, 10000}},
         {"70k triangles", {1, 0, 0}},   {"70k triangles flat", {1, 0, 0}}, {"1M triangles", {1, 0, 0}},
-        {"course + mesh", {3, 2, 0}},
+        {"course + mesh", {3, 2, 0}},   {"100x100k triangles", {0, 0, 0}},
     };
     ASSERT_EQ(bench_scene_specs().size(), advertised.size());
     for (std::size_t i = 0; i < advertised.size(); ++i) {
         const BenchSceneSpec& spec = bench_scene_specs()[i];
         EXPECT_EQ(spec.name, advertised[i].first);
+        if (spec.instances > 0) continue;  // 10M triangles: InstancedBallsAsDescribed, smaller
         Scene scene = make_bench_scene(spec, 192, 108);
         EXPECT_EQ(static_cast<int>(scene.spheres.size()), advertised[i].second[0]) << spec.name;
         EXPECT_EQ(static_cast<int>(scene.billboards.size()), advertised[i].second[1]) << spec.name;
@@ -81,6 +82,7 @@ TEST(BenchScenes, AdvertisedCounts) {
 
 TEST(BenchScenes, DeterministicFromFixedSeeds) {
     for (const BenchSceneSpec& spec : bench_scene_specs()) {
+        if (spec.instances > 0) continue;  // no random numbers; 10M triangles
         Scene first = make_bench_scene(spec, 1920, 1080);
         Scene second = make_bench_scene(spec, 1920, 1080);
         ASSERT_EQ(first.spheres.size(), second.spheres.size());
@@ -104,6 +106,42 @@ TEST(BenchScenes, DeterministicFromFixedSeeds) {
     EXPECT_NEAR(field.spheres[0].center.y, -2.9919200278935265, 1e-9);
     EXPECT_NEAR(field.spheres[0].center.z, -23.123776266171689, 1e-9);
     EXPECT_NEAR(field.spheres[0].radius, 4.31201634237389, 1e-9);
+}
+
+// "100x100k triangles": 100 placements of one ball of about 100k triangles, in a grid, each
+// one tree shape's placement (the same path and count), lit by the sun. Built here with balls of
+// about 400 triangles: the layout is the same at any size.
+TEST(BenchScenes, InstancedBallsAsDescribed) {
+    BenchSceneSpec spec = find_bench_scene("100x100k triangles");
+    EXPECT_EQ(spec.instances, 100);
+    EXPECT_EQ(spec.instance_triangles, 100000);
+    EXPECT_EQ(spec.triangles(), 10000000);
+    EXPECT_TRUE(spec.lit());
+    spec.instance_triangles = 400;
+    const Scene scene = make_bench_scene(spec, 192, 108);
+    ASSERT_EQ(scene.meshes.size(), 100u);
+    EXPECT_TRUE(scene.lit());
+    EXPECT_TRUE(scene.spheres.empty() && scene.billboards.empty());
+    std::set<std::pair<double, double>> places;
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        EXPECT_EQ(mesh.path, scene.meshes[0].path) << m;
+        EXPECT_EQ(mesh.triangle_count, scene.meshes[0].triangle_count) << m;
+        EXPECT_NEAR(static_cast<double>(mesh.triangle_count), 400, 40) << m;
+        EXPECT_EQ(mesh.ambient, id_color(mesh_id(0, 0, static_cast<int>(m)))) << m;
+        // Each is the first one moved: its corners differ from the first's by one shift.
+        const Vec3 shift = scene.triangles[mesh.first_triangle].corners[0] - scene.triangles[0].corners[0];
+        for (std::size_t t = 0; t < mesh.triangle_count; ++t)
+            for (int c = 0; c < 3; ++c) {
+                const Vec3 moved = scene.triangles[t].corners[c] + shift;
+                const Vec3& own = scene.triangles[mesh.first_triangle + t].corners[c];
+                ASSERT_NEAR(moved.x, own.x, 1e-12);
+                ASSERT_NEAR(moved.y, own.y, 1e-12);
+                ASSERT_NEAR(moved.z, own.z, 1e-12);
+            }
+        places.insert({shift.x, shift.z});
+    }
+    EXPECT_EQ(places.size(), 100u) << "each ball in a place of its own";
 }
 
 // The terrain scenes: about the advertised number of triangles, one mesh with smooth normals
