@@ -617,8 +617,9 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
     // Images last: reading them is the slow part, and pointless if the scene is invalid.
     if (!options.count_frames_only) {
         load_scene_images(scene, billboard_images, impostor_views, options);
-        load_meshes(scene, meshes, options.placeholder_images,
-                    options.mesh_memory_budget ? *options.mesh_memory_budget : default_memory_budget());
+        if (options.read_meshes)
+            load_meshes(scene, meshes, options.placeholder_images,
+                        options.mesh_memory_budget ? *options.mesh_memory_budget : default_memory_budget());
     }
     if (options.decode_images) scene.digest = scene_digest(text, options.overrides, scene);
     diagnostics.summarise_warnings();

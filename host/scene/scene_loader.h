@@ -38,6 +38,9 @@ struct LoadOptions {
     // true (--frame-count): only what the number of frames depends on matters; the image
     // size is neither required nor checked, and the images are not read at all.
     bool count_frames_only = false;
+    // false (the viewer's export check): the meshes' placements are checked as JSON, but their
+    // OBJ files are not read again; scene.meshes stays empty.
+    bool read_meshes = true;
     // Most bytes all the scene's images may take while they are decoded (scene/image_budget.h);
     // unset: CLRENDER_IMAGE_MEMORY_MIB, else kDefaultImageMemoryBytes.
     std::optional<std::uint64_t> image_memory_limit;

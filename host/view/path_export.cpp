@@ -102,9 +102,11 @@ ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const 
     exported.text = scene_text_for(request);
     // The loader's checks, as `clrender` will run them on the file: every key in range, a view
     // direction and a roll at every key and between keys, the animation's length. Images are
-    // checked from their headers only.
+    // checked from their headers only. The meshes, read at start, are not read again: the keys
+    // do not change them, and each export (several may come at once) would hold its own copy.
     LoadOptions check;
     check.decode_images = false;
+    check.read_meshes = false;
     check.placeholder_images = options_.placeholders;
     try {
         parse_scene(exported.text, checked_path, check);

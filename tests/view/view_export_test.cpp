@@ -159,6 +159,23 @@ TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// The meshes were read when the viewer started, and keys do not change them: an export's check
+// does not read the OBJ files again (exports sent at once held a copy of every mesh each, many
+// times the memory of the scene). An OBJ broken since the start does not stop the export.
+TEST(ViewExport, AnExportDoesNotReadTheMeshesAgain) {
+    TempFolder folder;
+    folder.write("model.obj", "v -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 16, "height": 12, "obj": {"filename": "model.obj"}})");
+    ViewerProcess viewer("scene.json", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    folder.write("model.obj", "v -1 0 0\nf 1 2 3\n");  // an index out of range: not read again
+    const httplib::Result result = post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 0, 0]}]})");
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->status, 200) << result->body;
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 // The folder the viewer was started in may go while it runs: the scene's folder was resolved
 // at start, so the export still works, and names its images by their own folder, never
 // through the one that went ("START/../scene/backdrop.png").
