@@ -84,6 +84,8 @@ void RenderService::recycle(Image&& image) {
 }
 
 std::string RenderService::explain(const ViewCamera& view, int x, int y, std::function<bool()> abandoned) {
+    // Taken before the copies: explanations asked at once would each hold theirs.
+    std::lock_guard<std::mutex> one_at_a_time(explain_mutex_);
     const Scene seen = scene_seen_by(scene_, view);
     KernelRendererFactory kernels = [this, &view, &abandoned, x, y] {
         return std::make_unique<PixelOfFrame>([this, &view, &abandoned] { return render(view, abandoned); }, device_name_,

@@ -40,7 +40,7 @@ public:
     // DeviceError from the kernels, and, as render() does, Interrupted after a signal or
     // FrameAbandoned once `abandoned` says that nobody waits for it (asked between the
     // kernels' bands and between the reference's samples, at most every
-    // kAbandonmentLookInterval there).
+    // kAbandonmentLookInterval there). Explanations run one at a time.
     std::string explain(const ViewCamera& view, int x, int y, std::function<bool()> abandoned = {});
 
     const std::string& device_name() const { return device_name_; }
@@ -55,6 +55,9 @@ private:
     const Scene& scene_;
     std::mutex mutex_;  // one frame at a time on the device
     std::function<bool()> abandoned_;  // the frame in progress's, under mutex_
+    // One explanation at a time: each holds copies of the scene (seen by its camera, relative
+    // to the eye, impostors placed) for as long as it runs, outside mutex_.
+    std::mutex explain_mutex_;
     std::unique_ptr<DeviceContext> device_;
     std::unique_ptr<Renderer> renderer_;
     std::string device_name_;

@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <sstream>
+#include <thread>
 
 #include "render/feature_set.h"
 #include "render/program_store_builder.h"
@@ -93,6 +96,37 @@ TEST(RenderService, AnAbandonedFrameStopsAndTheNextRendersWhole) {
     EXPECT_TRUE(service.render(view, [&asked_after] { return ++asked_after < 0; }).rgba == own.rgba);
     EXPECT_GE(asked_after, 1);
     EXPECT_TRUE(service.render(view).rgba == own.rgba);
+}
+
+// Each explanation holds copies of the scene while it runs: two asked at once run one after
+// the other, the second's kernels not started while the first's reference still samples.
+TEST(RenderService, ExplanationsRunOneAtATime) {
+    const Scene scene = lit_floor();
+    RenderService service(scene, Options{});
+    ViewCamera view;
+    view.key = scene.camera_path.front();
+    view.up = scene.up;
+    view.fov_degrees = scene.fov_degrees;
+    view.width = scene.width;
+    view.height = scene.height;
+    view.sampling = scene.sampling;
+    std::atomic<bool> first_asked{false}, first_asking{false}, overlapped{false};
+    std::thread first([&] {
+        service.explain(view, 10, 10, [&] {
+            first_asking = true;
+            first_asked = true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));  // slow, also while sampling
+            first_asking = false;
+            return false;
+        });
+    });
+    while (!first_asked) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    service.explain(view, 20, 20, [&] {
+        if (first_asking) overlapped = true;
+        return false;
+    });
+    first.join();
+    EXPECT_FALSE(overlapped);
 }
 
 }  // namespace
