@@ -71,7 +71,7 @@ bool shares_host_memory(const cl::Device& device) {
 }
 
 // Whether primary rays go one work-item a pixel (RendererOptions::per_pixel): on a GPU, 16-ray
-// packets in screen tiles kept its lanes idle (1M triangles: 23 Mrays/s in packets, 1,106 per
+// packets in screen tiles kept its lanes idle (1M triangles: 23 Mrays/s in packets, 1,104 per
 // pixel through the BVH; docs/benchmarks.md, A GPU).
 bool per_pixel_on(const cl::Device& device, const std::optional<bool>& choice) {
     if (choice) return *choice;
