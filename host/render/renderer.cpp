@@ -12,6 +12,7 @@
 #include "core/stopwatch.h"
 #include "device/cl_errors.h"
 #include "device/kernel_sources.h"
+#include "render/primary_ray_path.h"
 #include "render/screen_tiles.h"
 #include "shared/clr_samples.h"
 
@@ -75,7 +76,7 @@ bool shares_host_memory(const cl::Device& device) {
 // pixel through the BVH; docs/benchmarks.md, A GPU).
 bool per_pixel_on(const cl::Device& device, const std::optional<bool>& choice) {
     if (choice) return *choice;
-    return (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) != 0;
+    return traces_per_pixel(device.getInfo<CL_DEVICE_TYPE>());
 }
 
 }  // namespace

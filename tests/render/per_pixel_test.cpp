@@ -6,6 +6,7 @@
 #include <random>
 
 #include "render/feature_set.h"
+#include "render/primary_ray_path.h"
 #include "render/renderer.h"
 #include "support/opencl_test_device.h"
 #include "support/render_helpers.h"
@@ -54,6 +55,22 @@ Scene lit_meshes_and_a_mirror() {
     add_mesh(scene, grid_mesh({-5, -1.2, 4}, {10, 0, 0}, {0, 0, -10}, 7, 7), {0.8, 0.8, 0.8});
     scene.spheres.push_back(testing::make_sphere({0, 1.6, 1}, 0.7, {0, 0, 0}, true));
     return scene;
+}
+
+TEST(PerPixel, AGpuTracesPerPixelACpuAndOclgrindInPackets) {
+    EXPECT_TRUE(traces_per_pixel(CL_DEVICE_TYPE_GPU));
+    EXPECT_TRUE(traces_per_pixel(CL_DEVICE_TYPE_GPU | CL_DEVICE_TYPE_DEFAULT));
+    EXPECT_FALSE(traces_per_pixel(CL_DEVICE_TYPE_CPU));
+    EXPECT_FALSE(traces_per_pixel(CL_DEVICE_TYPE_CPU | CL_DEVICE_TYPE_DEFAULT));
+    EXPECT_FALSE(traces_per_pixel(CL_DEVICE_TYPE_ACCELERATOR));
+    // Oclgrind's simulator: every type at once.
+    EXPECT_FALSE(traces_per_pixel(CL_DEVICE_TYPE_ACCELERATOR | CL_DEVICE_TYPE_GPU | CL_DEVICE_TYPE_CPU |
+                                  CL_DEVICE_TYPE_DEFAULT));
+    // The test device (PoCL's CPU, Oclgrind, Intel's CPU runtime or a GPU) renders as it says.
+    const Scene scene = unlit_crowd();
+    const Renderer own_choice(testing::test_device(), scene);
+    EXPECT_EQ(own_choice.features().bvh,
+              traces_per_pixel(testing::test_device().device().getInfo<CL_DEVICE_TYPE>()));
 }
 
 TEST(PerPixel, UnlitObjectsAreSearchedThroughABvh) {

@@ -1,0 +1,7 @@
+#include "render/primary_ray_path.h"
+
+namespace clr {
+
+bool traces_per_pixel(cl_device_type type) { return (type & CL_DEVICE_TYPE_GPU) != 0 && (type & CL_DEVICE_TYPE_CPU) == 0; }
+
+}  // namespace clr
