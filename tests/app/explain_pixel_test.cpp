@@ -329,21 +329,28 @@ TEST(ExplainPixel, UnwritableStandardOutputIsAnOutputError) {
               "clrender: error: standard output: cannot write the explanation (disk full or pipe closed?)\n");
 }
 
+// Two mirrors facing each other 10 apart, the eye between them looking at one, and 40 small
+// spheres beside the corridor that every ray of every bounce tests; `spp` samples a pixel.
+std::string mirror_corridor(int spp) {
+    std::string spheres;
+    for (int i = 0; i < 40; ++i)
+        spheres += std::string(i ? ", " : "") + "{\"center\": [" + std::to_string(-20 + i) + ", 6, 0], \"radius\": 0.3, \"ambient\": [0.5, 0.5, 0.5]}";
+    return R"({
+      "eye": [0, 0, 0], "lookat": [0, 0, -1], "up": [0, 1, 0], "fov_angle": 30,
+      "width": 8, "height": 8, "MaxDepth": 64, "DefaultColor": [0.1, 0.1, 0.1], "clrender": {"spp": )" +
+           std::to_string(spp) + R"(},
+      "billboards": [
+        {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
+        {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
+      "spheres": [)" + spheres + "]}";
+}
+
 // Two mirrors facing each other, 40 spheres tested on every ray, 32 samples of 64 reflections:
 // about 20 MB of steps (hundreds of MB with more samples), once held whole in memory. The explanation stops its steps at the documented 16 MiB, says so, and
 // still ends with the result of every sample.
 TEST(ExplainPixel, ManySamplesWithDeepMirrorsAreBounded) {
     TempFolder folder;
-    std::string spheres;
-    for (int i = 0; i < 40; ++i)
-        spheres += std::string(i ? ", " : "") + "{\"center\": [" + std::to_string(-20 + i) + ", 6, 0], \"radius\": 0.3, \"ambient\": [0.5, 0.5, 0.5]}";
-    folder.write("mirrors.json", R"({
-      "eye": [0, 0, 0], "lookat": [0, 0, -1], "up": [0, 1, 0], "fov_angle": 30,
-      "width": 8, "height": 8, "MaxDepth": 64, "DefaultColor": [0.1, 0.1, 0.1], "clrender": {"spp": 32},
-      "billboards": [
-        {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
-        {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
-      "spheres": [)" + spheres + "]}");
+    folder.write("mirrors.json", mirror_corridor(32));
     const std::string command = "cd '" + folder.path() + "' && '" + CLRENDER_BINARY +
                                 "' mirrors.json --reference --explain-pixel 4,4 >explanation.txt 2>stderr.txt";
     const int status = std::system(command.c_str());
@@ -499,16 +506,7 @@ TEST(ExplainPixel, ANearPlaneSearchSaysWhereItStarts) {
 // the watchdog that ends a run whose work ignores the signal.
 TEST(ExplainPixel, CtrlCEndsALongExplanation) {
     TempFolder folder;
-    std::string spheres;  // in the corridor of mirrors: each of the 4096 samples' 64 bounces tests them
-    for (int i = 0; i < 40; ++i)
-        spheres += std::string(i ? ", " : "") + "{\"center\": [" + std::to_string(-20 + i) + ", 6, 0], \"radius\": 0.3, \"ambient\": [0.5, 0.5, 0.5]}";
-    folder.write("mirrors.json", R"({
-      "eye": [0, 0, 0], "lookat": [0, 0, -1], "up": [0, 1, 0], "fov_angle": 30,
-      "width": 8, "height": 8, "MaxDepth": 64, "DefaultColor": [0.1, 0.1, 0.1], "clrender": {"spp": 4096},
-      "billboards": [
-        {"UpperLeft": [-50, 50, -5], "LowerLeft": [-50, -50, -5], "UpperRight": [50, 50, -5], "ambient": [1, 1, 1], "IsMirror": 1},
-        {"UpperLeft": [-50, 50, 5], "LowerLeft": [50, 50, 5], "UpperRight": [-50, -50, 5], "ambient": [1, 1, 1], "IsMirror": 1}],
-      "spheres": [)" + spheres + "]}");
+    folder.write("mirrors.json", mirror_corridor(4096));  // each sample's 64 bounces test 40 spheres
     const auto run = testing::run_clrender_interrupted("mirrors.json --reference --explain-pixel 4,4", folder.path(), 1);
     const std::string& errors = run.output;
     EXPECT_EQ(run.exit_code, 130) << errors;

@@ -17,6 +17,8 @@
 #include "support/scene_builder.h"
 #include "support/scoped_env.h"
 #include "support/temp_folder.h"
+#include "view/view_camera.h"
+#include "view/view_parameters.h"
 
 namespace clr {
 namespace {
@@ -66,13 +68,7 @@ TEST(RenderService, AViewOfAnotherFeatureSetTakesTheStoresGeneralProgram) {
     RenderService service(scene, Options{});
     EXPECT_EQ(service.store_hits(), 1);
     EXPECT_EQ(service.cache_hits(), 0);
-    ViewCamera view;
-    view.key = scene.camera_path.front();
-    view.up = scene.up;
-    view.fov_degrees = scene.fov_degrees;
-    view.width = scene.width;
-    view.height = scene.height;
-    view.sampling = scene.sampling;
+    const ViewCamera view = resolve_view_camera(scene, ViewQuery{});  // the scene's own camera
     EXPECT_TRUE(service.render(view).rgba == own.rgba);
 }
 
@@ -82,13 +78,7 @@ TEST(RenderService, AnAbandonedFrameStopsAndTheNextRendersWhole) {
     const Scene scene = lit_floor();
     const Image own = Renderer(testing::test_device(), scene).render(scene.camera_path.front());
     RenderService service(scene, Options{});
-    ViewCamera view;
-    view.key = scene.camera_path.front();
-    view.up = scene.up;
-    view.fov_degrees = scene.fov_degrees;
-    view.width = scene.width;
-    view.height = scene.height;
-    view.sampling = scene.sampling;
+    const ViewCamera view = resolve_view_camera(scene, ViewQuery{});  // the scene's own camera
     int asked = 0;
     EXPECT_THROW(service.render(view, [&asked] { return ++asked > 0; }), FrameAbandoned);
     EXPECT_EQ(asked, 1) << "asked before the first band";
@@ -103,13 +93,7 @@ TEST(RenderService, AnAbandonedFrameStopsAndTheNextRendersWhole) {
 TEST(RenderService, ExplanationsRunOneAtATime) {
     const Scene scene = lit_floor();
     RenderService service(scene, Options{});
-    ViewCamera view;
-    view.key = scene.camera_path.front();
-    view.up = scene.up;
-    view.fov_degrees = scene.fov_degrees;
-    view.width = scene.width;
-    view.height = scene.height;
-    view.sampling = scene.sampling;
+    const ViewCamera view = resolve_view_camera(scene, ViewQuery{});  // the scene's own camera
     std::atomic<bool> first_asked{false}, first_asking{false}, overlapped{false};
     std::thread first([&] {
         service.explain(view, 10, 10, [&] {
