@@ -52,6 +52,7 @@ fi
 
 start=$SECONDS
 failures=0
+say "logs, images and bench.*.json go into $out"
 devices="$("$build/clrender" --list-devices 2>&1)"
 echo "$devices" | sed 's/^/gpu-check.sh: /'
 [ "$device" != gpu ] || grep -q '(GPU' <<< "$devices" || { say "no GPU device is listed" >&2; exit 1; }
