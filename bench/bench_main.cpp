@@ -42,6 +42,7 @@ struct Options {
     std::string json_path;
     std::string images_dir;
     std::optional<bool> per_pixel;  // --per-pixel, --screen-tiles; unset: as the device prefers
+    std::optional<bool> packets_walk_bvh;  // --bvh-packets, --tile-lists; unset: as the scene prefers
 };
 
 void parse_size(const std::string& text, RunSettings& settings) {
@@ -69,6 +70,14 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
     app.add_flag_callback("--screen-tiles", [&] { options.per_pixel = false; },
                           "clrender's primary rays in screen tiles of 16-ray packets (a CPU's default)")
         ->excludes(per_pixel);
+    auto* bvh_packets = app.add_flag_callback(
+        "--bvh-packets", [&] { options.packets_walk_bvh = true; },
+        "clrender's 16-ray packets walk the BVH instead of screen-tile lists (the default from 200,000 triangles)");
+    bvh_packets->excludes(per_pixel);
+    app.add_flag_callback("--tile-lists", [&] { options.packets_walk_bvh = false; },
+                          "clrender's 16-ray packets search lists binned into screen tiles (the default below)")
+        ->excludes(per_pixel)
+        ->excludes(bvh_packets);
     app.add_option("--json", options.json_path, "also write the results as JSON to this file");
     app.add_option("--images", options.images_dir, "write clrender's image of each scene as PNG into this folder");
     try {
@@ -186,7 +195,7 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     }
 
     std::cerr << "bench: " << spec.name << ": setting up" << std::endl;
-    ClrenderSide clr(device, scene, options.per_pixel);
+    ClrenderSide clr(device, scene, options.per_pixel, options.packets_walk_bvh);
     row.clr_setup_ms = clr.setup_ms();
     ClrenderFrame warmup = clr.render_frame();
     bool clr_done = keep_if_slow(warmup.wall_ms, row.clr_wall_ms);

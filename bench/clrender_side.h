@@ -22,7 +22,10 @@ public:
     // is out of the way.
     // `per_pixel`: primary rays one work-item a pixel through the BVH, or in screen tiles of
     // 16-ray packets; unset, as the device prefers (RendererOptions::per_pixel).
-    ClrenderSide(DeviceContext& device, const Scene& scene, std::optional<bool> per_pixel = std::nullopt);
+    // `packets_walk_bvh`: packets through the BVH, or through screen-tile lists; unset, as
+    // the scene prefers (RendererOptions::packets_walk_bvh).
+    ClrenderSide(DeviceContext& device, const Scene& scene, std::optional<bool> per_pixel = std::nullopt,
+                 std::optional<bool> packets_walk_bvh = std::nullopt);
 
     double setup_ms() const { return setup_ms_; }
     ClrenderFrame render_frame();

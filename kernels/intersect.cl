@@ -48,6 +48,13 @@ bool box_reachable(__global const ClrBvhNode* node, real3 origin, real3 inverse,
     return enter <= leave && enter <= t_max;
 }
 
+/* How many entries a walk's stack starts with: the root (node 0), where the BVH holds any
+ * object. */
+int bvh_roots(ClrSceneInfo info)
+{
+    return info.sphere_count + info.billboard_count + info.triangle_count > 0 ? 1 : 0;
+}
+
 real3 safe_inverse(real3 d)
 {
     real3 tiny = copysign((real3)(1e-30f), d);
@@ -66,9 +73,8 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
     hit.index = -1;
     real3 inverse = safe_inverse(direction);
     uint stack[CLR_BVH_STACK];
-    int top = 0;
-    if (info.sphere_count + info.billboard_count + info.triangle_count > 0)
-        stack[top++] = 0;
+    stack[0] = 0;
+    int top = bvh_roots(info);
     while (top > 0) {
         __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
         if (!box_reachable(node, origin, inverse, hit.t))

@@ -46,6 +46,10 @@ std::vector<double> row_work(int objects, int width, int height) {
     return std::vector<double>(height, static_cast<double>(width) * (1 + objects));
 }
 
+std::vector<double> row_work_through_bvh(std::size_t objects, int width, int height) {
+    return row_work(static_cast<int>(std::ceil(std::log2(static_cast<double>(objects) + 1))), width, height);
+}
+
 BandSizer::BandSizer(double target_seconds) : target_seconds_(target_seconds) {}
 
 void BandSizer::start_frame(std::vector<double> work, int samples, int width) {

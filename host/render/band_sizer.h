@@ -23,6 +23,9 @@ namespace clr {
 std::vector<double> row_work(const ScreenTiles& tiles, int width, int height);
 // Without screen tiles every pixel tests every object.
 std::vector<double> row_work(int objects, int width, int height);
+// Packets that walk a BVH of `objects` (ClrSceneInfo::primary_bvh): every row alike, a walk
+// growing with the tree's depth.
+std::vector<double> row_work_through_bvh(std::size_t objects, int width, int height);
 
 class BandSizer {
 public:

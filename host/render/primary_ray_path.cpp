@@ -2,6 +2,8 @@
 
 namespace clr {
 
+bool prefers_bvh_packets(std::size_t triangles, bool clips) { return triangles >= kPacketBvhMinTriangles && !clips; }
+
 bool traces_per_pixel(cl_device_type type) { return (type & CL_DEVICE_TYPE_GPU) != 0 && (type & CL_DEVICE_TYPE_CPU) == 0; }
 
 }  // namespace clr

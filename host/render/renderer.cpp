@@ -102,8 +102,12 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
     features_ = options.features.value_or(compiled_.features);
     features_.double_precision = options.double_precision;
     features_.float_output = options.float_output;
-    // Per pixel, primary rays search the BVH too: among enough objects, build one.
+    // Per pixel, primary rays search the BVH too: among enough objects, build one. Packets
+    // that walk it need one whatever the count.
     if (options.screen_tiles && !screen_tiles_ && FeatureSet::bvh_objects(scene_) > kBvhMinObjects) features_.bvh = true;
+    bvh_packets_ = screen_tiles_ && !features_.clip &&
+                   options.packets_walk_bvh.value_or(prefers_bvh_packets(scene_.triangles.size(), features_.clip));
+    if (bvh_packets_) features_.bvh = true;
     if (options.double_precision && device_.device().getInfo<CL_DEVICE_DOUBLE_FP_CONFIG>() == 0)
         throw DeviceError("'" + device_.entry().device_name +
                           "' has no double precision (cl_khr_fp64); use --precision float or another device");
@@ -167,6 +171,7 @@ void Renderer::upload_geometry() {
     refill(queue, context, scene_args_.bvh_nodes, device_bvh_nodes_);
     refill(queue, context, scene_args_.bvh_items, bvh_.items);
     scene_args_.info = compiled_.info;
+    scene_args_.info.primary_bvh = bvh_packets_ ? 1 : 0;
 }
 
 // Only positions change from frame to frame; impostors also turn, and then their billboards
@@ -184,7 +189,7 @@ void Renderer::show(const CameraKey& key, const Vec3& origin, const FrameCamera*
     // waits for it, also when an upload throws. A process that cannot start the thread bins
     // in render_camera() instead, as a still frame does (run.cpp lists devices the same way).
     std::future<void> tiles;
-    if (binned_for && screen_tiles_) {
+    if (binned_for && screen_tiles_ && !bvh_packets_) {
         try {
             tiles = std::async(std::launch::async, [this, binned_for] { binner_.bin(frame_, *binned_for, tiles_); });
         } catch (const std::system_error&) {
@@ -309,7 +314,10 @@ double Renderer::render_band(const ClrCamera& camera, const PixelRect& region, i
 }
 
 const ScreenTiles& Renderer::upload_screen_tiles(const FrameCamera& camera) {
-    if (!tiles_binned_) binner_.bin(frame_, camera, tiles_);
+    if (bvh_packets_)
+        leave_tiles_unlisted(camera, tiles_);
+    else if (!tiles_binned_)
+        binner_.bin(frame_, camera, tiles_);
     tiles_binned_ = false;
     const ScreenTiles& tiles = tiles_;
     tile_args_.offsets = upload(device_.context(), tiles.offsets);
@@ -379,7 +387,9 @@ Image Renderer::render_camera(const FrameCamera& view, FrameTiming* timing, cons
     std::vector<double> work;
     if (screen_tiles_) {
         try {
-            work = row_work(upload_screen_tiles(view), camera.width, camera.height);
+            const ScreenTiles& tiles = upload_screen_tiles(view);
+            work = bvh_packets_ ? row_work_through_bvh(frame_.object_count(), camera.width, camera.height)
+                                : row_work(tiles, camera.width, camera.height);
         } catch (const cl::Error& error) {
             throw DeviceError(describe_cl_error(error, "uploading screen tiles to '" + device_.entry().device_name + "'"));
         }

@@ -52,6 +52,11 @@ struct RendererOptions {
     // packets. Unset, the device decides: per pixel on a GPU, whose lanes each follow one ray,
     // tiles elsewhere (docs/benchmarks.md, A GPU). Either way the same bytes.
     std::optional<bool> per_pixel;
+    // Where primary rays go in packets: whether the packets walk the BVH (built for them)
+    // instead of screen-tile lists binned every frame. Unset: where the scene has many
+    // triangles (prefers_bvh_packets(), render/primary_ray_path.h). Never where the camera clips
+    // to near and far depths. Either way the same bytes.
+    std::optional<bool> packets_walk_bvh;
     // Intersect and shade in double (the device needs cl_khr_fp64; DeviceError otherwise).
     bool double_precision = false;
     // Frames also carry their linear colours and coverage (Image::linear), from kernels
@@ -96,6 +101,8 @@ public:
     void recycle(Image&& image);
 
     const FeatureSet& features() const { return features_; }
+    // Whether primary packets walk the BVH rather than screen-tile lists (RendererOptions::packets_walk_bvh).
+    bool packets_walk_bvh() const { return bvh_packets_; }
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
@@ -123,7 +130,8 @@ private:
     // Bytes the kernel writes per pixel, and where it writes them in `image`.
     std::size_t pixel_bytes() const { return features_.float_output ? 4 * sizeof(float) : 4; }
     std::uint8_t* kernel_pixels(Image& image) const;
-    // Bins the frame for `camera` into tiles_, unless show() did, and uploads the lists.
+    // Bins the frame for `camera` into tiles_, unless show() did, and uploads the lists; where
+    // the packets walk the BVH, uploads tiles without lists.
     const ScreenTiles& upload_screen_tiles(const FrameCamera& camera);
     void upload_geometry();
 
@@ -132,6 +140,7 @@ private:
     FrameGeometry frame_;  // scene_ as the current frame shows it: impostors placed for its key
     CompiledScene compiled_;  // frame_'s device form, without texels once they are uploaded
     bool screen_tiles_ = true;
+    bool bvh_packets_ = false;  // with screen_tiles_: the packets walk the BVH, the tiles hold no lists
     Vec3 origin_;  // the scene point at device (0, 0, 0)
     bool uploaded_ = false;  // the device holds frame_ relative to origin_ (false after a failed upload)
     FeatureSet features_;

@@ -85,6 +85,12 @@ void place_range(const FrameGeometry& frame, std::size_t begin, std::size_t end,
     });
 }
 
+// How many tiles across and down `camera`'s frame has.
+void size_tiles(const FrameCamera& camera, ScreenTiles& tiles) {
+    tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
+    tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
+}
+
 }  // namespace
 
 ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& camera) {
@@ -93,9 +99,16 @@ ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& came
     return tiles;
 }
 
+void leave_tiles_unlisted(const FrameCamera& camera, ScreenTiles& tiles) {
+    size_tiles(camera, tiles);
+    tiles.offsets.assign(static_cast<std::size_t>(tiles.tiles_x) * tiles.tiles_y + 1, 0);
+    tiles.items.clear();
+    tiles.nearest.clear();
+    tiles.rows.clear();
+}
+
 void ScreenTileBinner::bin(const FrameGeometry& frame, const FrameCamera& camera, ScreenTiles& tiles) {
-    tiles.tiles_x = (camera.width + kClrTileSize - 1) / kClrTileSize;
-    tiles.tiles_y = (camera.height + kClrTileSize - 1) / kClrTileSize;
+    size_tiles(camera, tiles);
     const std::size_t objects = frame.object_count();
     const std::size_t threads = objects >= kParallelFrom ? static_cast<std::size_t>(usable_cpu_count()) : 1;
     // The objects that some tile lists, in the frame's order: chunks of objects placed on

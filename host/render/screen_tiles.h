@@ -29,6 +29,10 @@ struct ScreenTiles {
 // kernels get, so that the projection matches their rays.
 ScreenTiles bin_screen_tiles(const FrameGeometry& frame, const FrameCamera& camera);
 
+// The tiles of `camera`'s frame, each with an empty list, for packets that walk the BVH
+// instead (ClrSceneInfo::primary_bvh); reuses the arrays of `tiles`.
+void leave_tiles_unlisted(const FrameCamera& camera, ScreenTiles& tiles);
+
 // Bins frame after frame with the same working arrays, and into the same lists: a renderer
 // bins every frame of a moving camera, and 100,000 spheres take about 15 MB of arrays, which
 // fresh from the system cost a page fault and a zero fill per 4 KB (docs/benchmarks.md).

@@ -13,6 +13,8 @@
 #include "common/scene_params.cl"
 #include "intersect.cl"
 #include "kinds/kinds.cl"
+#include "packet/bvh_walk16.cl"
+#include "packet/keep_nearer16.cl"
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
@@ -42,37 +44,11 @@ CLR_PACKET_INLINE Directions16 camera_rays16(ClrCamera camera, int col0, int row
     return d;
 }
 
-/* Tests object `index` of `kind` against the 16 rays and keeps, lane by lane, each hit that
- * beats `best` (common/hit_order.cl); without mirrors (CLR_LOOP_COLORS) also its flat colour
- * and, with alpha tests, the texel it shows. */
-CLR_PACKET_INLINE void keep_nearer16(int kind, int index, real3 origin, Directions16 d, Hits16* best,
-                                     Colors16* colors, uint16* best_texel, CLR_SCENE_PARAMS)
-{
-#if CLR_FEATURE_ALPHA
-    uint16 texel = (uint16)(CLR_NO_TEXEL);
-#else
-    uint16 texel = (uint16)(0u);
-#endif
-    real16 t = kind_hit_distance16(kind, index, origin, d, CLR_LOOP_COLORS, &texel, CLR_SCENE_ARGS);
-    mask16 beats = hits_beat16(t, kind, index, best->t, best->kind, best->index);
-    int16 beats_int = convert_int16(beats);
-    best->t = select(best->t, t, beats);
-    best->kind = select(best->kind, (int16)(kind), beats_int);
-    best->index = select(best->index, (int16)(index), beats_int);
-#if CLR_LOOP_COLORS
-    Colors16 flat = kind_flat_colors16(kind, index, texel, CLR_SCENE_ARGS);
-    colors->r = select(colors->r, flat.r, beats_int);
-    colors->g = select(colors->g, flat.g, beats_int);
-    colors->b = select(colors->b, flat.b, beats_int);
-#endif
-#if CLR_LOOP_COLORS && CLR_FEATURE_ALPHA
-    *best_texel = select(*best_texel, texel, beats_int);
-#endif
-}
-
 /* The nearest hits of 16 primary rays among the objects binned to their screen tile, skipping
  * those whose pixel rows leave out this `row`. The loop ends once every lane's hit is nearer
- * than every object left (the tile's items come nearest first). Hits are ranked by
+ * than every object left (the tile's items come nearest first). Where the host chose to walk
+ * the BVH instead (info.primary_bvh), the tile holds no list and the same objects are found
+ * there (packet/bvh_walk16.cl). Hits are ranked by
  * hits_beat16() (common/hit_order.cl), so the visiting order does not matter and the answer
  * is intersect_scene()'s, ties included. Without mirrors (CLR_LOOP_COLORS), *colors receives
  * each lane's colour as flat shading gives it: the background or kind_flat_colors16(); with a
@@ -92,6 +68,11 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
     uint16 best_texel = (uint16)(CLR_NO_TEXEL); /* each lane's winning texel, read after the loop */
 #else
     uint16 best_texel = (uint16)(0u); /* not read */
+#endif
+#if CLR_FEATURE_BVH
+    if (info.primary_bvh)
+        nearest_in_bvh16(origin, d, best, colors, &best_texel, CLR_SCENE_ARGS);
+    else
 #endif
     for (uint k = tile.first; k < tile.end; ++k) {
         if (all_lanes16(best->t < tile.nearest[k]))

@@ -20,16 +20,13 @@
 #include "common/scene_params.cl"
 #include "intersect.cl"
 #include "kinds/kinds.cl"
+#include "packet/boxes16.cl"
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
 #include "shared/clr_types.h"
 
 #if CLR_SUN_PACKETS
-
-/* The larger and the smaller lane by lane, of numbers that are not NaN (as larger()). */
-CLR_PACKET_INLINE real16 larger16(real16 a, real16 b) { return select(b, a, a > b); }
-CLR_PACKET_INLINE real16 smaller16(real16 a, real16 b) { return select(b, a, a < b); }
 
 /* The shadow rays of one row: lane l starts at (ox, oy, oz)[l], goes along (dx, dy, dz)[l],
  * ends at t_max[l] and leaves surface (skip_kind, skip_index)[l]; only lanes with wanted[l]
@@ -66,33 +63,22 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
     real16 ox = vload16(0, rays->ox), oy = vload16(0, rays->oy), oz = vload16(0, rays->oz);
     real16 dx = vload16(0, rays->dx), dy = vload16(0, rays->dy), dz = vload16(0, rays->dz);
     real16 t_max = vload16(0, rays->t_max);
-#if CLR_FEATURE_TRIANGLES
     Points16 origins = {ox, oy, oz};
     Directions16 d = {dx, dy, dz};
+#if CLR_FEATURE_TRIANGLES
     /* triangle_nearest_t() and triangle_plane_slack() lane by lane */
     real16 nearest = (real)CLR_TRIANGLE_SELF_GAP * (fabs(ox) + fabs(oy) + fabs(oz));
     real16 slack = (real)CLR_TRIANGLE_PLANE_SLACK * (fabs(ox) + fabs(oy) + fabs(oz));
     int16 skip_kind = vload16(0, rays->skip_kind), skip_index = vload16(0, rays->skip_index);
 #endif
-    /* safe_inverse() lane by lane: no 0 * inf, so no NaN in the slab test. */
-    const real16 tiny = (real16)(1e-30f);
-    real16 ix = (real16)(1.0f) / select(dx, copysign(tiny, dx), fabs(dx) < tiny);
-    real16 iy = (real16)(1.0f) / select(dy, copysign(tiny, dy), fabs(dy) < tiny);
-    real16 iz = (real16)(1.0f) / select(dz, copysign(tiny, dz), fabs(dz) < tiny);
+    Directions16 inverse = safe_inverse16(d);
     mask16 open = convert_mask16(vload16(0, rays->wanted) != (int16)(0));
     uint stack[CLR_BVH_STACK];
-    int top = 0;
-    if (info.sphere_count + info.billboard_count + info.triangle_count > 0)
-        stack[top++] = 0;
+    stack[0] = 0;
+    int top = bvh_roots(info);
     while (top > 0 && any_lanes16(open)) {
         __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
-        real16 t0x = ((real16)((real)node->lower.x) - ox) * ix, t1x = ((real16)((real)node->upper.x) - ox) * ix;
-        real16 t0y = ((real16)((real)node->lower.y) - oy) * iy, t1y = ((real16)((real)node->upper.y) - oy) * iy;
-        real16 t0z = ((real16)((real)node->lower.z) - oz) * iz, t1z = ((real16)((real)node->upper.z) - oz) * iz;
-        real16 enter = larger16(larger16(smaller16(t0x, t1x), smaller16(t0y, t1y)),
-                                larger16(smaller16(t0z, t1z), (real16)(0.0f)));
-        real16 leave = smaller16(smaller16(larger16(t0x, t1x), larger16(t0y, t1y)), larger16(t0z, t1z)) * (real)1.000001f;
-        mask16 reach = open & (enter <= leave) & (enter <= t_max);
+        mask16 reach = open & box_reached16(node, origins, inverse, t_max);
         if (!any_lanes16(reach))
             continue;
         if (node->count == 0) {

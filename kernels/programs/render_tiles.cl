@@ -9,7 +9,8 @@
 /* The same as render, with screen-tile culling for the primary rays: work-item (x, y)
  * renders screen tile x of tile row first_row / CLR_TILE_SIZE + y, that is the rows of its
  * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16). A tile
- * that no object can reach is the background's colour throughout. Identical output to
+ * that no object can reach is the background's colour throughout (known from its list; where
+ * packets walk the BVH instead, info.primary_bvh, every tile is traced). Identical output to
  * render. With CLR_FEATURE_FLOAT_OUTPUT, `pixels` holds a float4 per pixel instead (CLR_PIXEL). */
 __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
                              __global uchar4* pixels, __global const uint* tile_offsets,
@@ -37,7 +38,12 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
 #else
     bool no_plane = true;
 #endif
-    if (items.first == items.end && no_plane) {
+#if CLR_FEATURE_BVH
+    bool listed = !info.primary_bvh; /* walking the BVH, tiles have no lists */
+#else
+    bool listed = true;
+#endif
+    if (listed && items.first == items.end && no_plane) {
         /* Every sample sees the background: the mean as render computes it, once. */
         float3 sum = (float3)(0.0f);
         for (int sample = 0; sample < camera.samples; ++sample)

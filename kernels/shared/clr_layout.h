@@ -87,6 +87,6 @@
     CLR_LAYOUT_FIELD(ClrSceneInfo, triangle_count)  \
     CLR_LAYOUT_FIELD(ClrSceneInfo, plane_count)     \
     CLR_LAYOUT_FIELD(ClrSceneInfo, light_count)     \
-    CLR_LAYOUT_FIELD(ClrSceneInfo, pad2)
+    CLR_LAYOUT_FIELD(ClrSceneInfo, primary_bvh)
 
 #endif /* CLR_LAYOUT_H */

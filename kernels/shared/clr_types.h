@@ -174,7 +174,9 @@ typedef struct {
     clr_int triangle_count;
     clr_int plane_count;
     clr_int light_count; /* point lights of the Blinn-Phong model (CLR_FEATURE_LIGHTS) */
-    clr_int pad2;
+    /* 1: primary packets walk the BVH (CLR_FEATURE_BVH) instead of screen-tile lists, which
+     * the host then leaves empty (packet/bvh_walk16.cl); 0: the lists */
+    clr_int primary_bvh;
 } ClrSceneInfo;
 
 #ifndef __OPENCL_VERSION__
