@@ -6,6 +6,7 @@
 
 #include <cstring>
 
+#include "kinds/kinds.h"
 #include "support/random_scene.h"
 #include "support/scene_builder.h"
 
@@ -77,6 +78,25 @@ TEST(CompiledScene, ANewFrameWithTurnedImpostorsEqualsCompilingIt) {
 // The renderer gives the texels to the device in place (CL_MEM_USE_HOST_PTR), which PoCL takes
 // without a copy only at its CL_DEVICE_MEM_BASE_ADDR_ALIGN (128 bytes); malloc's large blocks
 // start 16 bytes into a page. Page alignment covers every device met so far.
+TEST(CompiledScene, ManyTrianglesMoveEachAsOnItsOwn) {
+    // More triangles than one worker's share (compile_frame moves them on every usable core):
+    // each must come out as TriangleKind::device() makes it alone, wherever its share ran.
+    Scene scene = testing::make_scene({0, 5, 30}, {0, 0, 0}, {0, 1, 0}, 60, 64, 48);
+    testing::add_mesh(scene, testing::grid_mesh({-20, -1, 20}, {40, 0, 0}, {0, 3, -40}, 230, 230), {0.5, 0.6, 0.7});
+    ASSERT_GT(scene.triangles.size(), 100000u);
+    const FrameGeometry frame(scene);
+    CompiledScene compiled = compile_scene(frame);
+    const Vec3 origin{3.25, -7.5, 1e4};
+    compile_frame(compiled, frame, origin);
+    ASSERT_EQ(compiled.triangles.size(), scene.triangles.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
+        const ClrTriangle alone = TriangleKind::device(scene, scene.triangles[i], origin);
+        differ += std::memcmp(&alone, &compiled.triangles[i], sizeof alone) != 0;
+    }
+    EXPECT_EQ(differ, 0u);
+}
+
 TEST(CompiledScene, TexelsStartOnAPage) {
     Scene scene = testing::make_random_scene(262, 3, 3);
     scene.impostors = {two_view_impostor({0, 0, 0})};
