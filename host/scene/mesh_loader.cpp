@@ -96,6 +96,21 @@ bool transformed_normal(const Vec3& normal, const Vec3& scale, Vec3& out) {
     return true;
 }
 
+// The longest edge of a triangle's corners.
+double longest_edge(const std::array<Vec3, 3>& corners) {
+    return std::max({length(corners[1] - corners[0]), length(corners[2] - corners[1]), length(corners[0] - corners[2])});
+}
+
+// Whether a placed triangle is one the kernels render as the reference does: it has an area,
+// and its longest edge is within the length range. The kernels' hit weights are cubes of
+// lengths relative to the ray's origin: for a triangle of edges near 1e-21 seen from as near,
+// they underflow float and the triangle vanishes from the image (or loses pixels) while the
+// double reference draws it; 1e-15 leaves a margin of a million, as a sphere's radius does.
+bool renders_exactly_enough(const std::array<Vec3, 3>& corners) {
+    const Vec3 area = cross(corners[1] - corners[0], corners[2] - corners[0]);
+    return dot(area, area) > 0 && longest_edge(corners) >= kMinLength;
+}
+
 // The longest edge of the triangles `corners` names among `positions`.
 double longest_edge(const std::vector<Vec3>& positions, const std::vector<std::array<std::uint32_t, 3>>& corners) {
     double longest = 0;
@@ -105,8 +120,9 @@ double longest_edge(const std::vector<Vec3>& positions, const std::vector<std::a
     return longest;
 }
 
-// Why triangles whose longest edge is `longest` have no area in double: corners so close that
-// the square of their distance underflows (1e-160 apart), or repeated or collinear ones.
+// Why triangles whose longest edge is `longest` have no area, or none that renders: corners so
+// close that the square of their distance underflows double (1e-160 apart) or closer than the
+// length range, or repeated or collinear ones.
 std::string no_area_reason(double longest, const std::string& collinear) {
     if (longest > 0 && longest < kMinLength)
         return "its longest edge is " + number_text(longest) +
@@ -137,8 +153,10 @@ void reserve_more(std::vector<T>& values, std::size_t extra) {
 }
 
 // Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
-// once placed are left out: no ray can hit them, and their plane has no normal. `what` names
-// the model in messages ("mesh 'bunny.obj'").
+// once placed are left out: no ray can hit them, and their plane has no normal. So are
+// triangles smaller than the length range (renders_exactly_enough()), which only a camera
+// closer than they are long could see, and the kernels would not draw as the reference does.
+// `what` names the model in messages ("mesh 'bunny.obj'").
 void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filename, const std::string& what,
               std::uint64_t memory_budget) {
     const std::uint64_t triangles = scene.triangles.size() + model.triangles.size();
@@ -173,8 +191,7 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
     for (std::size_t f = 0; f < model.triangles.size(); ++f) {
         Triangle triangle;
         for (int k = 0; k < 3; ++k) triangle.corners[k] = placed[model.triangles[f][k]];
-        const Vec3 area = cross(triangle.corners[1] - triangle.corners[0], triangle.corners[2] - triangle.corners[0]);
-        if (!(dot(area, area) > 0)) continue;
+        if (!renders_exactly_enough(triangle.corners)) continue;
         triangle.mesh = mesh_index;
         const auto& normal_indices = model.triangle_normals[f];
         std::array<Vec3, 3> normals;
@@ -188,22 +205,20 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
         scene.triangles.push_back(triangle);
     }
     mesh.triangle_count = scene.triangles.size() - mesh.first_triangle;
-    if (mesh.triangle_count == 0)
-        filename.fail(what + ": all its faces have zero area once scaled and placed (" +
-                      no_area_reason(longest_edge(placed, model.triangles), "repeated or collinear corners") +
+    if (mesh.triangle_count == 0) {
+        const double longest = longest_edge(placed, model.triangles);
+        filename.fail(what + ": all its faces " + (longest > 0 && longest < kMinLength ? "are too small" : "have zero area") +
+                      " once scaled and placed (" + no_area_reason(longest, "repeated or collinear corners") +
                       "): it draws nothing");
+    }
     scene.meshes.push_back(std::move(mesh));
 }
 
 }  // namespace
 
 void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, const Node& node) {
-    const Vec3 area = cross(corners[1] - corners[0], corners[2] - corners[0]);
-    if (!(dot(area, area) > 0)) {
-        const std::vector<Vec3> positions(corners.begin(), corners.end());
-        node.fail("triangle has no area: " +
-                  no_area_reason(longest_edge(positions, {{0, 1, 2}}), "its vertices are collinear or repeated"));
-    }
+    if (!renders_exactly_enough(corners))
+        node.fail("triangle has no area: " + no_area_reason(longest_edge(corners), "its vertices are collinear or repeated"));
     ObjMesh model;
     model.positions.assign(corners.begin(), corners.end());
     model.triangles.push_back({0, 1, 2});

@@ -142,6 +142,34 @@ TEST(MeshLoader, AMeshWhoseFacesAllHaveZeroAreaIsRefused) {
         << tinier;
 }
 
+// A triangle placed smaller than the length range (its longest edge below 1e-15) is left out
+// as one without area is: the kernels' hit weights, cubes of lengths, underflow float for
+// such a triangle seen from as near, and it vanished from their image while the reference drew
+// it. A mesh of only such triangles is refused; an edge of exactly 1e-15 is kept.
+TEST(MeshLoader, TrianglesPlacedBelowTheLengthRangeAreLeftOut) {
+    TempFolder folder;
+    // A cube of side 2e-9, placed with the smallest scale: sides of 2e-24, in documented ranges.
+    folder.write("cube.obj",
+                 "v -1e-9 -1e-9 -1e-9\nv 1e-9 -1e-9 -1e-9\nv 1e-9 1e-9 -1e-9\nv -1e-9 1e-9 -1e-9\n"
+                 "v -1e-9 -1e-9 1e-9\nv 1e-9 -1e-9 1e-9\nv 1e-9 1e-9 1e-9\nv -1e-9 1e-9 1e-9\n"
+                 "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 5 1 4 8\n");
+    EXPECT_EQ(load_in(folder, with_obj({{"filename", "cube.obj"}})).triangles.size(), 12u) << "2e-9 is in range";
+    const std::string placed = error_of(folder, with_obj({{"filename", "cube.obj"}, {"scale", 1e-15}}));
+    EXPECT_EQ(placed, "/obj/filename: mesh 'cube.obj': all its faces are too small once scaled and placed "
+                      "(its longest edge is 2.8284271247461903e-24 long, outside the range clrender renders "
+                      "exactly enough: lengths must be from 1e-15 to 1e16): it draws nothing")
+        << placed;
+    // Beside a triangle of the unit square, one of edges 1e-16 is left out, one whose longest edge
+    // is 1e-15 is kept.
+    folder.write("mixed.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2e-16 0 0\nv 1e-16 1e-16 0\nv 1e-15 0 0\n"
+                              "v 5e-16 5e-16 0\nf 1 2 3\nf 1 4 5\nf 1 6 7\n");
+    const Scene scene = load_in(folder, with_obj({{"filename", "mixed.obj"}}));
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    EXPECT_EQ(scene.triangles[0].corners[1], (Vec3{1, 0, 0}));
+    EXPECT_EQ(scene.triangles[1].corners[1], (Vec3{1e-15, 0, 0}));
+    EXPECT_EQ(scene.meshes.at(0).triangle_count, 2u);
+}
+
 // The message and exit code of the Error loading `scene` in `folder` with a mesh memory budget
 // of `budget` bytes; "" when it loads.
 std::pair<std::string, int> memory_error_of(const TempFolder& folder, const Json& scene, std::uint64_t budget) {

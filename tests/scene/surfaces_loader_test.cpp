@@ -139,6 +139,11 @@ TEST(Fall2019Format, TrianglesAndMeshesAreMeshesWithTheirMaterial) {
     json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1e-160, 0, 0], [0, 1e-160, 0]]");
     EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices",
                         "triangle has no area: its longest edge is 1.414213562373095e-160 long, outside the range"));
+    // Corners 1e-20 apart give an area in double, but below the length range the kernels'
+    // weights underflow float and the triangle would vanish from their image alone.
+    json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1e-20, 0, 0], [0, 1e-20, 0]]");
+    EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices",
+                        "triangle has no area: its longest edge is 1.414213562373095e-20 long, outside the range"));
     json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1, 0, 0]]");
     EXPECT_TRUE(FailsAt(json, "/surfaces/0/vertices", "vertices must be 3 positions"));
     json["surfaces"][0]["vertices"] = Json::parse("[[0, 0, 0], [1, 0, 0], [0, 1e16, 0]]");
