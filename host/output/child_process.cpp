@@ -33,7 +33,8 @@ void connect(posix_spawn_file_actions_t& actions, int fd, int target, int mode_w
 
 }  // namespace
 
-ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_fd, int stdout_fd, int stderr_fd) {
+ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_fd, int stdout_fd, int stderr_fd,
+                           const std::string& program) {
     std::vector<char*> argv;
     for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
     argv.push_back(nullptr);
@@ -62,7 +63,8 @@ ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_
     posix_spawnattr_setpgroup(&attributes, 0);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
 
-    const int error = ::posix_spawn(&pid_, argv[0], &actions, &attributes, argv.data(), environ);
+    const int error = ::posix_spawn(&pid_, program.empty() ? argv[0] : program.c_str(), &actions, &attributes,
+                                    argv.data(), environ);
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     if (error != 0) {

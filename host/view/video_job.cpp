@@ -17,7 +17,7 @@ namespace clr {
 
 std::string clrender_program_path() {
     std::error_code error;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+    const std::filesystem::path self = std::filesystem::read_symlink(kOwnProgram, error);
     if (error) throw OutputError("cannot find clrender's own program to render the video: " + error.message());
     return self.string();
 }
@@ -59,7 +59,7 @@ int VideoJobs::start(Place&& place, const std::string& scene_path, const std::st
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw OutputError(std::string("cannot create a pipe for the video render: ") + std::strerror(errno));
     try {
-        child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1]);
+        child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1], kOwnProgram);
     } catch (...) {
         ::close(fds[0]);
         ::close(fds[1]);

@@ -73,7 +73,15 @@ private:
     bool stopping_ = false;
 };
 
-// clrender's own program (from /proc/self/exe), which renders the videos.
+// The name of clrender's own program (the target of /proc/self/exe), which renders the videos:
+// what the render's process is called. The program run is /proc/self/exe itself
+// (kOwnProgram).
 std::string clrender_program_path();
+
+// The running program, as the kernel keeps it: also once its file has been replaced (a rebuild,
+// an install or an upgrade renames a new file over the old name) or removed, where its name
+// leads to another program or to none. The video then renders with the clrender that serves
+// the page.
+inline constexpr const char* kOwnProgram = "/proc/self/exe";
 
 }  // namespace clr

@@ -321,6 +321,30 @@ TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// A video asked for after the viewer's program was replaced (a rebuild or an install renames a
+// new file over its name) is rendered by the program that serves the page, not by whatever
+// now has its name: the viewer looked its name up, found "clrender (deleted)", and every
+// video failed with 409 after writing its scene.
+TEST(ViewExport, AVideoRendersAfterTheViewersProgramIsReplaced) {
+    TempFolder folder;
+    fs::create_directory(folder.file("bin"));
+    const std::string program = folder.file("bin/clrender");
+    fs::copy_file(CLRENDER_BINARY, program);
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path(), "", false, program);
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const std::string replacement = folder.write("bin/new", "#!/bin/sh\necho 'not the viewer's clrender' >&2\nexit 3\n");
+    fs::permissions(replacement, fs::perms::owner_all);
+    fs::rename(replacement, program);
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    EXPECT_EQ(state["state"], "done") << state.dump();
+    EXPECT_EQ(state["done"], 11);
+    EXPECT_GT(fs::file_size(folder.file("tour.mp4")), 0u);
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 // A video whose render fails reports the render's own message, not its --progress json line;
 // its scene stays (the input of the render, the scene the page showed), its video is not made.
 TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {

@@ -18,12 +18,12 @@ extern char** environ;
 namespace clr::testing {
 
 ViewerProcess::ViewerProcess(const std::string& arguments, const std::string& folder, const std::string& environment,
-                             bool open_browser)
+                             bool open_browser, const std::string& program)
     : folder_(folder) {
     int fds[2];
     if (::pipe(fds) != 0) return;
     // Through the shell, for the folder and the arguments' quoting; exec keeps the pid clrender's.
-    const std::string command = "cd '" + folder + "' && " + environment + " exec '" + CLRENDER_BINARY + "' view " +
+    const std::string command = "cd '" + folder + "' && " + environment + " exec '" + (program.empty() ? std::string(CLRENDER_BINARY) : program) + "' view " +
                                 arguments + (open_browser ? "" : " --no-browser") + " --port 0 2> view-stderr.txt";
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);

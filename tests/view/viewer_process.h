@@ -17,9 +17,10 @@ public:
     // Starts `clrender view <arguments> --no-browser --port 0` in `folder` and waits (up to two
     // minutes: the first start builds the program) for the line with its address. Check
     // started() before using it; output() says why it did not start.
-    // `environment` ("PATH=...") is set for it; with `open_browser`, --no-browser is left out.
+    // `environment` ("PATH=...") is set for it; with `open_browser`, --no-browser is left out;
+    // `program` is the clrender started ("": the one built with the tests).
     ViewerProcess(const std::string& arguments, const std::string& folder, const std::string& environment = "",
-                  bool open_browser = false);
+                  bool open_browser = false, const std::string& program = "");
     ~ViewerProcess();  // SIGKILLs it if it still runs
 
     bool started() const { return port_ > 0; }
