@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,9 @@ public:
     // exports need neither the current folder nor the name it was reached by.
     PathExporter(const Scene& scene, std::string scene_text, const Options& options, std::string output_dir);
 
-    // Makes, checks and writes the exported scene, under the first name of the request's
-    // name's series (view/unused_name_file.h) whose NAME.json, and NAME + each of
-    // `also_unused` (".mp4" for a video), do not exist. Throws ParameterError (the keys make
+    // Makes, checks and writes the exported scene (one export at a time), under the first name
+    // of the request's name's series (view/unused_name_file.h) whose NAME.json, and NAME + each
+    // of `also_unused` (".mp4" for a video), do not exist. Throws ParameterError (the keys make
     // no valid scene: "keys", naming the problem as the loader does) and OutputError (the file
     // cannot be written).
     ExportedScene export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused = {}) const;
@@ -52,6 +53,10 @@ private:
     const Options& options_;
     std::string output_dir_;
     std::filesystem::path scene_folder_;  // absolute, physical: relative image names are found from it
+    // Each export holds the scene's JSON twice as a tree (made, then checked by the loader),
+    // about 18 times the file each (docs/robustness.md, Memory): several at once (a script, a
+    // page's clicks) held several, 8 at once of a 21 MB scene 2.2 GB. One runs at a time.
+    mutable std::mutex one_at_a_time_;
 };
 
 }  // namespace clr

@@ -232,10 +232,11 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
 void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/export", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            const ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
+            ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
             // Names are for the reader: escaped as clrender's messages escape them (shown_name).
-            send_json(response, 200,
-                      {{"scene", exported.text}, {"file", shown_name(exported.path)}, {"name", shown_name(exported.name)}});
+            // The text is moved, not copied, into the answer: it may be as large as the scene.
+            send_json(response, 200, {{"scene", std::move(exported.text)}, {"file", shown_name(exported.path)},
+                                      {"name", shown_name(exported.name)}});
         });
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {
