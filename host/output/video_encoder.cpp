@@ -32,6 +32,7 @@
 #include "core/interruption.h"
 #include "output/file_extension.h"
 #include "output/full_disk_note.h"
+#include "output/vanished_output_note.h"
 #include "output/program_lookup.h"
 #include "output/temp_files.h"
 #include "output/video_probe.h"
@@ -446,9 +447,10 @@ void VideoEncoder::abandon() noexcept {
 }
 
 void VideoEncoder::fail(const std::string& reason) {
-    // Asked before abandon() frees the cut-off file: the space left is what the encoder met.
-    std::string message =
-        settings_.path + ": video encoding failed: " + reason + (temp_path_.empty() ? "" : full_disk_note(temp_path_));
+    // Asked before abandon() frees the cut-off file: the space left is what the encoder met,
+    // and a temporary file that is gone already was taken from under it.
+    std::string message = settings_.path + ": video encoding failed: " + reason +
+                          (temp_path_.empty() ? "" : full_disk_note(temp_path_) + vanished_output_note(temp_path_));
     const std::string log = log_tail(log_path_, 10);
     if (!log.empty()) message += "; its log ends:" + log;
     abandon();

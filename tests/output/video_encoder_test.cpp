@@ -324,6 +324,29 @@ TEST(VideoEncoder, EncoderThatWritesNothingIsAnError) {
     EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
 }
 
+// The video's folder removed while it is made: ffmpeg writes on into its open file and exits 0,
+// and its file is then not found by its path. The message names the folder, not the encoder
+// alone ("'ffmpeg' exited successfully but wrote no video" said nothing of the folder).
+TEST(VideoEncoder, AFolderRemovedMeanwhileIsNamedAsTheCause) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    fs::create_directory(folder.file("out"));
+    const std::string message = output_error_of([&] {
+        VideoEncoder video({folder.file("out/x.mp4"), 64, 48}, *encoder);
+        for (int i = 0; i < 5; ++i) video.add_frame(test_frame(64, 48, i));
+        fs::remove_all(folder.file("out"));
+        for (int i = 5; i < 10; ++i) video.add_frame(test_frame(64, 48, i));
+        video.finish();
+    });
+    EXPECT_NE(message.find(folder.file("out/x.mp4") + ": video encoding failed: "), std::string::npos) << message;
+    EXPECT_NE(message.find("; the folder '" + folder.file("out") +
+                           "' is gone: it was removed or renamed while the output was made"),
+              std::string::npos)
+        << message;
+    EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
+}
+
 TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "cat >/dev/null");
