@@ -28,6 +28,8 @@ Environment:
   POCL_KERNEL_CACHE          0: PoCL keeps no kernel cache (then its folder is not needed)
   XDG_RUNTIME_DIR            clrender view: folder for the page that opens the browser (the
                              user's own); default the temporary folder
+  CLRENDER_STOP_WITH_PARENT  Set by clrender view for its video's render: the process id
+                             whose end stops the render (SIGTERM)
 
 Exit status:
   0    Done

@@ -14,6 +14,7 @@
 #include "app/standard_output.h"
 #include "core/errors.h"
 #include "core/message_lines.h"
+#include "core/stop_with_parent.h"
 #include "view/view_command.h"
 
 namespace {
@@ -53,6 +54,8 @@ int exit_code_of(const std::function<int()>& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A video render the viewer started ends with the viewer, however the viewer ends.
+    clr::stop_with_parent_from_environment();
     // `clrender view SCENE`: the live viewer, with options of its own (a scene file named
     // "view" is still rendered as ./view).
     if (argc > 1 && std::string_view(argv[1]) == "view") return clr::view_main(argc - 1, argv + 1);

@@ -34,10 +34,14 @@ void connect(posix_spawn_file_actions_t& actions, int fd, int target, int mode_w
 }  // namespace
 
 ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_fd, int stdout_fd, int stderr_fd,
-                           const std::string& program) {
+                           const std::string& program, const std::vector<std::string>& more_environment) {
     std::vector<char*> argv;
     for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
     argv.push_back(nullptr);
+    std::vector<char*> environment;
+    for (char** entry = environ; *entry; ++entry) environment.push_back(*entry);
+    for (const std::string& entry : more_environment) environment.push_back(const_cast<char*>(entry.c_str()));
+    environment.push_back(nullptr);
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -64,7 +68,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& arguments, int stdin_
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
 
     const int error = ::posix_spawn(&pid_, program.empty() ? argv[0] : program.c_str(), &actions, &attributes,
-                                    argv.data(), environ);
+                                    argv.data(), environment.data());
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     if (error != 0) {

@@ -18,9 +18,10 @@ public:
     // Starts arguments[0] (a path; never through a shell), or `program` where one is given
     // (arguments[0] then only names it, in messages and in the process list), with the given
     // descriptors as its stdin, stdout and stderr (-1: /dev/null), in a new process group, with
-    // default signal handling. Throws OutputError when it cannot be started.
+    // default signal handling, and clrender's environment with `more_environment` ("NAME=value")
+    // added. Throws OutputError when it cannot be started.
     ChildProcess(const std::vector<std::string>& arguments, int stdin_fd, int stdout_fd, int stderr_fd,
-                 const std::string& program = "");
+                 const std::string& program = "", const std::vector<std::string>& more_environment = {});
     ~ChildProcess();  // stop()s a program still running
     ChildProcess(const ChildProcess&) = delete;
     ChildProcess& operator=(const ChildProcess&) = delete;

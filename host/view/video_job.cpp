@@ -6,11 +6,14 @@
 
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <filesystem>
+#include <future>
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
 #include "core/printable_text.h"
+#include "core/stop_with_parent.h"
 #include "output/child_process.h"
 
 namespace clr {
@@ -58,21 +61,35 @@ int VideoJobs::start(Place&& place, const std::string& scene_path, const std::st
     arguments.insert(arguments.end(), render_arguments_.begin(), render_arguments_.end());
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw OutputError(std::string("cannot create a pipe for the video render: ") + std::strerror(errno));
-    try {
-        child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1], kOwnProgram);
-    } catch (...) {
-        ::close(fds[0]);
+    // The render is started by the thread that watches it, which ends only once the render has
+    // been reaped: the render stops when the thread that started it ends (stop_with_parent.h),
+    // which is then when the viewer's process ends, killed outright too, and never before.
+    std::promise<std::exception_ptr> started;
+    std::future<std::exception_ptr> start_result = started.get_future();
+    watcher_ = std::thread([this, arguments, fds, started = std::move(started)]() mutable {
+        try {
+            child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1], kOwnProgram,
+                                                    std::vector<std::string>{stop_with_parent_entry()});
+        } catch (...) {
+            ::close(fds[0]);
+            ::close(fds[1]);
+            started.set_value(std::current_exception());
+            return;
+        }
         ::close(fds[1]);
-        throw;
+        started.set_value(nullptr);
+        watch(fds[0]);
+    });
+    if (const std::exception_ptr failure = start_result.get()) {
+        watcher_.join();
+        std::rethrow_exception(failure);
     }
-    ::close(fds[1]);
     VideoJobState job;
     job.id = static_cast<int>(jobs_.size()) + 1;
     job.state = "running";
     job.file = video_path;
     jobs_.push_back(job);
     running_ = true;
-    watcher_ = std::thread([this, read_fd = fds[0]] { watch(read_fd); });
     return job.id;
 }
 

@@ -463,6 +463,53 @@ TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
     expect_only_the_long_videos_scene(folder);
 }
 
+// The processes whose parent is `parent`.
+std::vector<pid_t> children_of(pid_t parent) {
+    std::vector<pid_t> children;
+    for (const auto& entry : fs::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::ifstream stat_file(entry.path() / "stat");
+        std::string stat;
+        if (!std::getline(stat_file, stat)) continue;
+        std::istringstream fields(stat.substr(stat.rfind(')') + 1));  // "pid (command) state ppid ..."
+        char state = 0;
+        pid_t parent_of = 0;
+        fields >> state >> parent_of;
+        if (parent_of == parent) children.push_back(std::stoi(name));
+    }
+    return children;
+}
+
+// Whether process `pid` still runs (a zombie has ended: it only waits to be collected).
+bool runs(pid_t pid) {
+    std::ifstream stat_file("/proc/" + std::to_string(pid) + "/stat");
+    std::string stat;
+    if (!std::getline(stat_file, stat)) return false;
+    return stat.substr(stat.rfind(')') + 2, 1) != "Z";
+}
+
+// The viewer killed outright (SIGKILL: the OOM killer, kill -9) cannot stop its video itself:
+// the video's render, in a process group of its own, rendered on for as long as the video took
+// and wrote it, for nobody. It stops with the viewer, removing its unfinished files.
+TEST(ViewExport, AVideoStopsWhenTheViewerIsKilled) {
+    TempFolder folder;
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result started = post(viewer, "/render-video", kLongVideo);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const std::vector<pid_t> renders = children_of(viewer.pid());
+    ASSERT_EQ(renders.size(), 1u) << "the video's render";
+    EXPECT_EQ(viewer.stop(SIGKILL), 128 + SIGKILL + 1000);
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (runs(renders[0]) && std::chrono::steady_clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_FALSE(runs(renders[0])) << "the render outlived the viewer by 10 s";
+    expect_only_the_long_videos_scene(folder);
+}
+
 // Clicks on "Render video" while a video is being started or rendered are refused (409) before
 // they write anything: four at once leave one scene, the video's.
 TEST(ViewExport, ARefusedVideoWritesNothing) {
