@@ -314,6 +314,17 @@ void warn_about_texture_maps(const ObjMaterialStatements& statements, const Mate
                             (more > 0 ? " (nor those of " + std::to_string(more) + " more materials it uses)" : ""));
 }
 
+// A line whose first word is no OBJ statement is skipped by tinyobjloader in silence: a `v` line
+// behind a byte order mark (files joined) or written "V" would shift the corners of every later
+// face onto other positions, a typo drop what it meant. A warning names the first such line.
+void warn_about_unknown_statements(const ObjTextCounts& counts, ObjMesh& mesh) {
+    if (counts.unknown_statements == 0) return;
+    const std::uint64_t more = counts.unknown_statements - 1;
+    mesh.warnings.push_back("line " + std::to_string(counts.first_unknown_line) + ": '" +
+                            printable(counts.first_unknown_keyword) + "' is not an OBJ statement: the line is ignored" +
+                            (more > 0 ? " (and " + std::to_string(more) + " more such lines)" : ""));
+}
+
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
@@ -387,6 +398,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     warn_about_undefined_materials(statements, material_files, mesh);
     warn_about_unused_materials(statements, materials, material_names, material_files, mesh);
     warn_about_texture_maps(statements, material_files, mesh);
+    warn_about_unknown_statements(counts, mesh);
     return mesh;
 }
 

@@ -219,6 +219,21 @@ void count_entry(std::string_view keyword, ObjTextCounts& counts) {
     else if (keyword == "o" || keyword == "g" || keyword == "usemtl" || keyword == "mtllib") ++counts.named_statements;
 }
 
+// Whether `keyword` starts a statement of the OBJ format (vertex data, elements, grouping,
+// display attributes, free-form geometry) or tinyobjloader's tags (`t`): all but these are
+// typos or damage, which a warning names.
+bool is_obj_statement(std::string_view keyword) {
+    static constexpr std::string_view kStatements[] = {
+        "v",    "vn",   "vt",     "f",        "o",        "g",          "s",          "usemtl", "mtllib",
+        "vp",   "l",    "p",      "mg",       "usemap",   "maplib",     "cstype",     "deg",    "bmat",
+        "step", "curv", "curv2",  "surf",     "parm",     "trim",       "hole",       "scrv",   "sp",
+        "end",  "con",  "lod",    "ctech",    "stech",    "bevel",      "c_interp",   "d_interp",
+        "call", "csh",  "res",    "trace_obj", "shadow_obj", "t"};
+    for (const std::string_view statement : kStatements)
+        if (keyword == statement) return true;
+    return false;
+}
+
 // The statement of a line: the text before a '#', which starts a comment ("f 1 2 3 # tri").
 std::string_view statement_of(std::string_view line) { return line.substr(0, line.find('#')); }
 
@@ -407,6 +422,10 @@ PieceCounts count_piece(std::string_view piece) {
         const std::string_view line = statement_of(whole_line);
         const std::string_view keyword = keyword_of(line);
         count_entry(keyword, counts.entries);
+        if (!keyword.empty() && !is_obj_statement(keyword) && counts.entries.unknown_statements++ == 0) {
+            counts.entries.first_unknown_line = counts.lines;  // within the piece
+            counts.entries.first_unknown_keyword = std::string(keyword.substr(0, 64));
+        }
         if (keyword == "f") {
             const std::uint64_t tokens = token_count(line);
             if (tokens >= 4) {
@@ -473,6 +492,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
     sum.faces += more.faces;
     sum.triangles += more.triangles;
     sum.named_statements += more.named_statements;
+    sum.unknown_statements += more.unknown_statements;
 }
 
 }  // namespace
@@ -498,6 +518,10 @@ ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles,
             add(before[i].entries, counted[i - 1].entries);
         }
         add(total, counted[i].entries);
+        if (total.first_unknown_line == 0 && counted[i].entries.first_unknown_line != 0) {
+            total.first_unknown_line = before[i].lines + counted[i].entries.first_unknown_line;
+            total.first_unknown_keyword = counted[i].entries.first_unknown_keyword;
+        }
     }
     std::vector<ObjTextProblem> problems(pieces.size());
     parallel_for(pieces.size(), parts, [&](std::size_t i) {

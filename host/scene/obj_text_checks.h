@@ -33,6 +33,13 @@ struct ObjTextCounts {
     // `o`, `g`, `usemtl` and `mtllib` lines: each may start a shape of tinyobjloader's or name a
     // material or a .mtl file, memory beside the triangles' (obj_reader.h, kStatementBytes).
     std::uint64_t named_statements = 0;
+    // Lines whose first word is no OBJ statement ("V", a typo, or a `v` line behind the byte
+    // order mark of a file joined on, "\xEF\xBB\xBFv"), which tinyobjloader skips in silence:
+    // a position skipped so shifts the corners of every face after it. The first one's line
+    // (from 1; 0 for none) and word.
+    std::uint64_t unknown_statements = 0;
+    std::uint64_t first_unknown_line = 0;
+    std::string first_unknown_keyword;
 };
 
 // A line the checks refuse: its number (from 1) and why, in a user's terms.

@@ -635,6 +635,28 @@ TEST(ObjReader, ATextureMapTheMeshDoesNotDrawIsAWarning) {
     EXPECT_TRUE(read_obj(folder.write("plain.obj", "mtllib m.mtl\n" + kSquare + "usemtl plain\nf 1 2 3\n")).warnings.empty());
 }
 
+// A line whose first word is no OBJ statement is skipped by tinyobjloader in silence: a `v` line
+// behind the byte order mark of a file joined on (or written "V") shifted every later face onto
+// other positions, with no word. A warning names the first such line and counts the rest; the
+// statements of the format that clrender does not draw (l, p, vp, curves) are no such lines.
+TEST(ObjReader, ALineThatIsNoObjStatementIsAWarning) {
+    const ObjMesh joined = parse_obj("v 0 0 0\n\xEF\xBB\xBFv 1 0 0\nv 0 1 0\nv 1 1 0\nF 1 2 3\nf 1 2 3\n", "mesh.obj");
+    EXPECT_EQ(joined.positions.size(), 3u) << "the line behind the mark is not read";
+    ASSERT_EQ(joined.warnings.size(), 1u);
+    EXPECT_EQ(joined.warnings[0], "line 2: '\\xEF\\xBB\\xBFv' is not an OBJ statement: the line is ignored (and 1 more such "
+                                  "lines)");
+    EXPECT_TRUE(parse_obj(kSquare + "l 1 2\np 1\nvp 0.5\ncstype bezier\ns off\no a\ng b\nf 1 2 3\n", "mesh.obj")
+                    .warnings.empty());
+    // In a text checked in parts (4 MiB and more), the line is counted from the file's start.
+    std::string large;
+    for (int i = 0; i < 600000; ++i) large += "v 0 0 0\n";
+    large += "v 1 0 0\nv 0 1 0\nvv 1 1 1\nf -3 -2 -1\nvv 2 2 2\n";
+    ASSERT_GT(large.size(), std::size_t(4) << 20);
+    const ObjMesh parted = parse_obj(large, "large.obj");
+    ASSERT_EQ(parted.warnings.size(), 1u);
+    EXPECT_EQ(parted.warnings[0], "line 600003: 'vv' is not an OBJ statement: the line is ignored (and 1 more such lines)");
+}
+
 // Each material and .mtl name is kept once however many lines repeat it: a file of millions of
 // `usemtl` lines took 400 MB for 48 MiB of text.
 TEST(ObjReader, RepeatedMaterialStatementsAreKeptOnce) {
