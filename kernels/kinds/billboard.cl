@@ -104,6 +104,33 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
     return select((real16)(INFINITY), t, inside);
 }
 
+/* billboard_distance() for 16 rays from 16 origins (t_max = infinity), the shadow rays of a
+ * packet's hit points (packet/shadows16.cl): lane by lane the same operations in the same
+ * order, so each lane's t is the one billboard_distance() gives its ray, to the last bit; a
+ * hole is read from the coverage bits, as billboard_distance16() reads it. */
+CLR_PACKET_INLINE real16 billboard_distance16_from(__global const ClrBillboard* billboard, __global const uint* coverage,
+                                                   Points16 o, Directions16 d)
+{
+    real3 normal = convert_real3(billboard->normal.xyz);
+    real3 corner = convert_real3(billboard->corner.xyz);
+    /* dot3(corner - origin, normal) / dot3(direction, normal) */
+    real16 ex = corner.x - o.x, ey = corner.y - o.y, ez = corner.z - o.z;
+    real16 t = (ex * normal.x + ey * normal.y + ez * normal.z) / (d.x * normal.x + d.y * normal.y + d.z * normal.z);
+    /* billboard_coords(): (origin - corner) + t * direction, then its dots with the duals */
+    real16 fx = (o.x - corner.x) + t * d.x;
+    real16 fy = (o.y - corner.y) + t * d.y;
+    real16 fz = (o.z - corner.z) + t * d.z;
+    real3 da = convert_real3(billboard->dual_a.xyz), db = convert_real3(billboard->dual_b.xyz);
+    real16 a = fx * da.x + fy * da.y + fz * da.z;
+    real16 b = fx * db.x + fy * db.y + fz * db.z;
+    mask16 inside = t > 0.0f && t < INFINITY && a >= 0.0f && a <= 1.0f && b >= 0.0f && b <= 1.0f;
+#if CLR_FEATURE_ALPHA
+    if ((billboard->flags & CLR_SURFACE_HOLES) && any_lanes16(inside)) /* a hole lets the ray on */
+        inside = inside && CLR_MASK16(covered16(coverage, billboard, billboard_texel_indices16(billboard, a, b, inside)));
+#endif
+    return select((real16)(INFINITY), t, inside);
+}
+
 /* The kind's functions for kinds/kinds.cl. */
 
 /* Billboard `index` as a ray from `origin` meets it at an opaque texel, with 0 < t < t_max,

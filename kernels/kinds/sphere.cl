@@ -60,6 +60,28 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, D
 
 /* Sphere `index` as a ray from `origin` meets it, with 0 < t < t_max or +inf (a sphere's hit
  * needs no t_max: the caller compares). */
+/* sphere_distance() for 16 rays from 16 origins, the shadow rays of a packet's hit points
+ * (packet/shadows16.cl): lane by lane the same operations in the same order, so each lane's t is
+ * the one sphere_distance() gives its ray, to the last bit. */
+CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, Points16 o, Directions16 d)
+{
+    real radius = center_radius.w;
+    real16 ocx = o.x - (real)center_radius.x, ocy = o.y - (real)center_radius.y, ocz = o.z - (real)center_radius.z;
+    real16 b = -(ocx * d.x + ocy * d.y + ocz * d.z); /* -dot3(oc, direction) */
+    real16 cx = ocx + b * d.x, cy = ocy + b * d.y, cz = ocz + b * d.z;
+    real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
+    if (!any_lanes16(discriminant >= 0.0f))
+        return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
+    real16 c = (ocx * ocx + ocy * ocy + ocz * ocz) - radius * radius;
+    real16 q = b + copysign(sqrt(discriminant), b);
+    real16 t0 = c / q;
+    real16 t1 = q;
+    real16 t_near = fmin(t0, t1);
+    real16 t_far = fmax(t0, t1);
+    real16 t = select(select((real16)(INFINITY), t_far, t_far > 0.0f), t_near, t_near > 0.0f);
+    return select(t, (real16)(INFINITY), discriminant < 0.0f || q == 0.0f);
+}
+
 real sphere_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
 {
     return sphere_distance(spheres[index].center_radius, origin, direction);

@@ -6,8 +6,8 @@
  *
  * Each lane's answer is occluded()'s: a lane stops at the first surface, other than the one
  * it leaves, that hit_beats() its ray's t_max, found by the same kind_hit_distance() on the
- * same ray (for a leaf's triangles, triangle_distance16_from() on the 16 lanes at once, the
- * same operations lane by lane; other kinds lane by lane, as few leaves hold them). The
+ * same ray (for a leaf's triangles, spheres and billboards, triangle_distance16_from() and its
+ * like on the 16 lanes at once, the same operations lane by lane; other kinds lane by lane). The
  * packet only decides which leaves are visited, and it visits every leaf that
  * any lane's own walk would (a box test in vectors rounds otherwise than box_reachable(), by
  * far less than the boxes' padding), so a lane may test more surfaces, never fewer: the same
@@ -56,6 +56,15 @@ bool lane_meets16(const ShadowRays16* rays, int lane, int kind, int index, CLR_S
     return hit_beats(t, kind, index, none);
 }
 
+/* The lanes among `reach` whose rays surface (kind, index), at distances `t`, occludes: those
+ * it meets before their t_max (hit_beats()), but for the lanes that leave it. */
+CLR_PACKET_INLINE int16 lanes_met16(real16 t, int kind, int index, mask16 reach, int16 skip_kind, int16 skip_index,
+                                    real16 t_max)
+{
+    mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
+    return convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
+}
+
 void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
 {
     for (int lane = 0; lane < 16; ++lane)
@@ -65,11 +74,11 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
     real16 t_max = vload16(0, rays->t_max);
     Points16 origins = {ox, oy, oz};
     Directions16 d = {dx, dy, dz};
+    int16 skip_kind = vload16(0, rays->skip_kind), skip_index = vload16(0, rays->skip_index);
 #if CLR_FEATURE_TRIANGLES
     /* triangle_nearest_t() and triangle_plane_slack() lane by lane */
     real16 nearest = (real)CLR_TRIANGLE_SELF_GAP * (fabs(ox) + fabs(oy) + fabs(oz));
     real16 slack = (real)CLR_TRIANGLE_PLANE_SLACK * (fabs(ox) + fabs(oy) + fabs(oz));
-    int16 skip_kind = vload16(0, rays->skip_kind), skip_index = vload16(0, rays->skip_index);
 #endif
     Directions16 inverse = safe_inverse16(d);
     mask16 open = convert_mask16(vload16(0, rays->wanted) != (int16)(0));
@@ -92,12 +101,25 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
         for (uint k = node->first; k < node->first + node->count; ++k) {
             int kind = item_kind(bvh_items[k]);
             int index = item_index(bvh_items[k]);
+            /* All 16 lanes at once, as lane_meets16() would answer each. */
 #if CLR_FEATURE_TRIANGLES
             if (kind == CLR_HIT_TRIANGLE) {
-                /* A mesh's leaves hold triangles: all 16 lanes at once, as lane_meets16(). */
-                mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
                 real16 t = triangle_distance16_from(&triangles[index], origins, nearest, slack, d);
-                met |= convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
+                met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
+                continue;
+            }
+#endif
+#if CLR_FEATURE_SPHERES
+            if (kind == CLR_HIT_SPHERE) {
+                real16 t = sphere_distance16_from(spheres[index].center_radius, origins, d);
+                met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
+                continue;
+            }
+#endif
+#if CLR_FEATURE_BILLBOARDS
+            if (kind == CLR_HIT_BILLBOARD) {
+                real16 t = billboard_distance16_from(&billboards[index], coverage, origins, d);
+                met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
                 continue;
             }
 #endif
