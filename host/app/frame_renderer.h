@@ -25,6 +25,9 @@ public:
     virtual int compute_units() const { return 0; }
     virtual int cache_hits() const { return 0; }  // programs built from the program cache
     virtual int store_hits() const { return 0; }  // programs built from the program store
+    // How primary rays are traced (render/primary_ray_path.h: "screen tiles", "BVH packets",
+    // "per pixel"); empty for the reference, which traces each pixel's rays through every object.
+    virtual std::string primary_rays() const { return {}; }
     // Keeps the programs built for this run in the program cache for the next (slow the first
     // time: call once the outputs are written).
     virtual void store_built_programs() {}

@@ -19,6 +19,7 @@ public:
     int compute_units() const override { return clr::compute_units(device_.entry()); }
     int cache_hits() const override { return device_.cache_hits(); }
     int store_hits() const override { return device_.store_hits(); }
+    std::string primary_rays() const override { return primary_rays_name(renderer_.primary_rays()); }
     void store_built_programs() override { device_.store_built_programs(); }
     void recycle(Image&& image) override { renderer_.recycle(std::move(image)); }
 

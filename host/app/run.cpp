@@ -61,6 +61,7 @@ struct RunReport {
     double build_ms = 0;
     int cache_hits = 0;
     int store_hits = 0;
+    std::string primary_rays;  // empty for the reference
     double render_ms = 0;
     double write_ms = 0;
     double total_ms = 0;
@@ -95,6 +96,7 @@ std::string stats_text(const RunReport& report) {
         {"build_ms", report.build_ms},
         {"cache_hits", report.cache_hits},  // programs built from clrender's program cache
         {"store_hits", report.store_hits},  // programs built from the store installed with clrender
+        {"primary_rays", report.primary_rays.empty() ? nlohmann::json() : nlohmann::json(report.primary_rays)},
         {"scene", report.scene_objects},
         {"stages_ms", {{"load", report.load_ms}, {"build", report.build_ms}, {"render", report.render_ms},
                        {"write", report.write_ms}, {"total", report.total_ms}}},
@@ -230,6 +232,7 @@ void render_frames(const Options& options, const Scene& scene, const OutputPlan&
     report.build_ms = renderer->build_ms();
     report.cache_hits = renderer->cache_hits();
     report.store_hits = renderer->store_hits();
+    report.primary_rays = renderer->primary_rays();
     if (!options.quiet)
         std::cerr << message_line("info", "device " + printable(report.device) +
                                               (report.compute_units > 0 ? " (compute units: " + std::to_string(report.compute_units) + ")" : ""));

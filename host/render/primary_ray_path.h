@@ -21,6 +21,13 @@ constexpr std::size_t kPacketBvhMinTriangles = 200000;
 // lane by lane (packet/intersect_packet.cl).
 bool prefers_bvh_packets(std::size_t triangles, bool clips);
 
+// How a renderer traces its primary rays: 16-ray packets over lists binned into screen tiles,
+// 16-ray packets through the BVH, or one work-item a pixel (through the BVH where one is built).
+enum class PrimaryRays { screen_tiles, bvh_packets, per_pixel };
+
+// The way's name, as --stats reports it: "screen tiles", "BVH packets", "per pixel".
+const char* primary_rays_name(PrimaryRays way);
+
 // Whether a device of `type` (CL_DEVICE_TYPE) traces per pixel: one that says it is a GPU and
 // not a CPU. Oclgrind's simulator says it is every type at once and runs one work-item at a
 // time; it keeps the packets, which are the kernels it is there to check.

@@ -18,6 +18,7 @@
 #include "render/frame_geometry.h"
 #include "render/frame_timing.h"
 #include "render/kernel_signatures.h"
+#include "render/primary_ray_path.h"
 #include "render/screen_tiles.h"
 #include "scene/scene.h"
 
@@ -103,6 +104,10 @@ public:
     const FeatureSet& features() const { return features_; }
     // Whether primary packets walk the BVH rather than screen-tile lists (RendererOptions::packets_walk_bvh).
     bool packets_walk_bvh() const { return bvh_packets_; }
+    // How this renderer traces primary rays (render/primary_ray_path.h).
+    PrimaryRays primary_rays() const {
+        return !screen_tiles_ ? PrimaryRays::per_pixel : bvh_packets_ ? PrimaryRays::bvh_packets : PrimaryRays::screen_tiles;
+    }
     int bands_of_last_frame() const { return bands_; }
     double build_ms() const { return build_ms_; }
 
