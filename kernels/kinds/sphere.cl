@@ -36,6 +36,20 @@ real sphere_distance(float4 center_radius, real3 origin, real3 direction)
     return t_far > 0.0f ? t_far : INFINITY; /* origin inside the sphere: the far side */
 }
 
+/* The nearer root t > 0 of 16 rays' quadratics as sphere_distance() finds it, from b (the t of
+ * each ray's closest approach), the discriminant and c (|origin - centre|^2 - radius^2): +inf
+ * where there is none. */
+CLR_PACKET_INLINE real16 sphere_root16(real16 b, real16 discriminant, real16 c)
+{
+    real16 q = b + copysign(sqrt(discriminant), b);
+    real16 t0 = c / q;
+    real16 t1 = q;
+    real16 t_near = fmin(t0, t1);
+    real16 t_far = fmax(t0, t1);
+    real16 t = select(select((real16)(INFINITY), t_far, t_far > 0.0f), t_near, t_near > 0.0f);
+    return select(t, (real16)(INFINITY), discriminant < 0.0f || q == 0.0f);
+}
+
 /* sphere_distance() for 16 rays from one origin. */
 CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, Directions16 d)
 {
@@ -47,19 +61,9 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, D
     if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
     real c = dot3(oc, oc) - radius * radius;
-    real16 q = b + copysign(sqrt(discriminant), b);
-    real16 t0 = c / q;
-    real16 t1 = q;
-    real16 t_near = fmin(t0, t1);
-    real16 t_far = fmax(t0, t1);
-    real16 t = select(select((real16)(INFINITY), t_far, t_far > 0.0f), t_near, t_near > 0.0f);
-    return select(t, (real16)(INFINITY), discriminant < 0.0f || q == 0.0f);
+    return sphere_root16(b, discriminant, (real16)(c));
 }
 
-/* The kind's functions for kinds/kinds.cl. */
-
-/* Sphere `index` as a ray from `origin` meets it, with 0 < t < t_max or +inf (a sphere's hit
- * needs no t_max: the caller compares). */
 /* sphere_distance() for 16 rays from 16 origins, the shadow rays of a packet's hit points
  * (packet/shadows16.cl): lane by lane the same operations in the same order, so each lane's t is
  * the one sphere_distance() gives its ray, to the last bit. */
@@ -73,15 +77,13 @@ CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, Points16 o
     if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
     real16 c = (ocx * ocx + ocy * ocy + ocz * ocz) - radius * radius;
-    real16 q = b + copysign(sqrt(discriminant), b);
-    real16 t0 = c / q;
-    real16 t1 = q;
-    real16 t_near = fmin(t0, t1);
-    real16 t_far = fmax(t0, t1);
-    real16 t = select(select((real16)(INFINITY), t_far, t_far > 0.0f), t_near, t_near > 0.0f);
-    return select(t, (real16)(INFINITY), discriminant < 0.0f || q == 0.0f);
+    return sphere_root16(b, discriminant, c);
 }
 
+/* The kind's functions for kinds/kinds.cl. */
+
+/* Sphere `index` as a ray from `origin` meets it, with 0 < t < t_max or +inf (a sphere's hit
+ * needs no t_max: the caller compares). */
 real sphere_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
 {
     return sphere_distance(spheres[index].center_radius, origin, direction);

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "support/command.h"
+#include "support/process_table.h"
 #include "support/small_disk.h"
 #include "support/temp_folder.h"
 
@@ -55,19 +56,8 @@ int count_of(const std::string& text, const std::string& part) {
 // for their parent to collect their status).
 std::set<int> living_members(int group) {
     std::set<int> members;
-    for (const auto& entry : fs::directory_iterator("/proc")) {
-        const std::string name = entry.path().filename().string();
-        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-        std::ifstream stat_file(entry.path() / "stat");
-        std::string stat;
-        if (!std::getline(stat_file, stat)) continue;
-        // "pid (command) state ppid pgrp ...": the command may contain spaces and ')'.
-        std::istringstream fields(stat.substr(stat.rfind(')') + 1));
-        char state = 0;
-        int parent = 0, process_group = 0;
-        fields >> state >> parent >> process_group;
-        if (process_group == group && state != 'Z') members.insert(std::stoi(name));
-    }
+    for (const testing::ProcessEntry& process : testing::process_table())
+        if (process.group == group && process.state != 'Z') members.insert(process.pid);
     return members;
 }
 

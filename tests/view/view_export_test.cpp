@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "support/command.h"
+#include "support/process_table.h"
 #include "support/temp_folder.h"
 #include "view/viewer_process.h"
 
@@ -448,13 +449,21 @@ void expect_only_the_long_videos_scene(const TempFolder& folder) {
     }
 }
 
-TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
-    TempFolder folder;
-    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
+// The demo at a size and sample count that make kLongVideo take seconds to render.
+const std::string kSlowDemo = "'" + kDemo + "demo.json' --size 640x360 --spp 64";
+
+// Asks `viewer` for kLongVideo; fails the test unless the video starts.
+void start_long_video(ViewerProcess& viewer) {
     ASSERT_TRUE(viewer.started()) << viewer.output();
     const httplib::Result started = post(viewer, "/render-video", kLongVideo);
     ASSERT_TRUE(started);
     ASSERT_EQ(started->status, 200) << started->body;
+}
+
+TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
+    TempFolder folder;
+    ViewerProcess viewer(kSlowDemo, folder.path());
+    ASSERT_NO_FATAL_FAILURE(start_long_video(viewer));
     const httplib::Result busy = post(viewer, "/render-video", kLongVideo);
     ASSERT_TRUE(busy);
     EXPECT_EQ(busy->status, 409) << "one video at a time";
@@ -466,39 +475,21 @@ TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
 // The processes whose parent is `parent`.
 std::vector<pid_t> children_of(pid_t parent) {
     std::vector<pid_t> children;
-    for (const auto& entry : fs::directory_iterator("/proc")) {
-        const std::string name = entry.path().filename().string();
-        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-        std::ifstream stat_file(entry.path() / "stat");
-        std::string stat;
-        if (!std::getline(stat_file, stat)) continue;
-        std::istringstream fields(stat.substr(stat.rfind(')') + 1));  // "pid (command) state ppid ..."
-        char state = 0;
-        pid_t parent_of = 0;
-        fields >> state >> parent_of;
-        if (parent_of == parent) children.push_back(std::stoi(name));
-    }
+    for (const testing::ProcessEntry& process : testing::process_table())
+        if (process.parent == parent) children.push_back(process.pid);
     return children;
 }
 
 // Whether process `pid` still runs (a zombie has ended: it only waits to be collected).
-bool runs(pid_t pid) {
-    std::ifstream stat_file("/proc/" + std::to_string(pid) + "/stat");
-    std::string stat;
-    if (!std::getline(stat_file, stat)) return false;
-    return stat.substr(stat.rfind(')') + 2, 1) != "Z";
-}
+bool runs(pid_t pid) { return testing::still_runs(testing::process_table(), pid); }
 
 // The viewer killed outright (SIGKILL: the OOM killer, kill -9) cannot stop its video itself:
 // the video's render, in a process group of its own, rendered on for as long as the video took
 // and wrote it, for nobody. It stops with the viewer, removing its unfinished files.
 TEST(ViewExport, AVideoStopsWhenTheViewerIsKilled) {
     TempFolder folder;
-    ViewerProcess viewer("'" + kDemo + "demo.json' --size 640x360 --spp 64", folder.path());  // seconds to render
-    ASSERT_TRUE(viewer.started()) << viewer.output();
-    const httplib::Result started = post(viewer, "/render-video", kLongVideo);
-    ASSERT_TRUE(started);
-    ASSERT_EQ(started->status, 200) << started->body;
+    ViewerProcess viewer(kSlowDemo, folder.path());
+    ASSERT_NO_FATAL_FAILURE(start_long_video(viewer));
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     const std::vector<pid_t> renders = children_of(viewer.pid());
     ASSERT_EQ(renders.size(), 1u) << "the video's render";
