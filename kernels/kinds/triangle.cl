@@ -341,6 +341,110 @@ real3 triangle_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
     return dot3(normal, direction) > 0.0f ? -normal : normal;
 }
 
+/* Corners, edges and corner normals of the triangles of 16 lanes, lane by lane in private
+ * arrays: what triangle_normals16() gathers before computing in vectors. */
+typedef struct {
+    real c0x[16], c0y[16], c0z[16];
+    real e1x[16], e1y[16], e1z[16];
+    real e2x[16], e2y[16], e2z[16];
+    real n0x[16], n0y[16], n0z[16], n1x[16], n1y[16], n1z[16], n2x[16], n2y[16], n2z[16];
+    int weighted[16];
+} TriangleLanes16;
+
+/* Lane `lane`'s triangle `index` into `lanes`, read as triangle_normal() reads it; a lane
+ * outside the packet's triangles (index < 0) gets a unit right triangle without corner
+ * normals, whose values are finite and ignored. */
+CLR_PACKET_INLINE void gather_triangle16(TriangleLanes16* lanes, int lane, int index, CLR_SCENE_PARAMS)
+{
+    real3 c0 = (real3)(0.0f), e1 = (real3)(1.0f, 0.0f, 0.0f), e2 = (real3)(0.0f, 1.0f, 0.0f);
+    real3 n0 = (real3)(0.0f), n1 = (real3)(0.0f), n2 = (real3)(0.0f);
+    int weighted = 0;
+    if (index >= 0) {
+        __global const ClrTriangle* triangle = &triangles[index];
+        c0 = convert_real3(triangle->corner0.xyz);
+        e1 = convert_real3(triangle->corner1.xyz) - c0;
+        e2 = convert_real3(triangle->corner2.xyz) - c0;
+        weighted = triangle->normals >= 0;
+        if (weighted) {
+            __global const float4* n = &triangle_normals[triangle->normals];
+            n0 = convert_real3(n[0].xyz);
+            n1 = convert_real3(n[1].xyz);
+            n2 = convert_real3(n[2].xyz);
+        }
+    }
+    lanes->c0x[lane] = c0.x, lanes->c0y[lane] = c0.y, lanes->c0z[lane] = c0.z;
+    lanes->e1x[lane] = e1.x, lanes->e1y[lane] = e1.y, lanes->e1z[lane] = e1.z;
+    lanes->e2x[lane] = e2.x, lanes->e2y[lane] = e2.y, lanes->e2z[lane] = e2.z;
+    lanes->n0x[lane] = n0.x, lanes->n0y[lane] = n0.y, lanes->n0z[lane] = n0.z;
+    lanes->n1x[lane] = n1.x, lanes->n1y[lane] = n1.y, lanes->n1z[lane] = n1.z;
+    lanes->n2x[lane] = n2.x, lanes->n2y[lane] = n2.y, lanes->n2z[lane] = n2.z;
+    lanes->weighted[lane] = weighted;
+}
+
+/* triangle_normal() of 16 lanes, lane l on triangle indices[l] (or none, where negative) at
+ * point p[l] met along d[l]: lane by lane the same operations in the same order, so each
+ * lane's normal is triangle_normal()'s to the last bit. A lane whose frame needs
+ * triangle_normal()'s rescaling (a triangle near float's range) is handed to it. Lit meshes
+ * spent about a quarter of their kernel time finding normals one lane at a time. */
+CLR_PACKET_INLINE Directions16 triangle_normals16(const int* indices, Points16 p, Directions16 d, CLR_SCENE_PARAMS)
+{
+    TriangleLanes16 t;
+    for (int lane = 0; lane < 16; ++lane)
+        gather_triangle16(&t, lane, indices[lane], CLR_SCENE_ARGS);
+    real16 e1x = vload16(0, t.e1x), e1y = vload16(0, t.e1y), e1z = vload16(0, t.e1z);
+    real16 e2x = vload16(0, t.e2x), e2y = vload16(0, t.e2y), e2z = vload16(0, t.e2z);
+    real16 px = p.x - vload16(0, t.c0x), py = p.y - vload16(0, t.c0y), pz = p.z - vload16(0, t.c0z);
+    /* triangle_frame(): geometric = edge_cross(e1, e2), area2, b1, b2 */
+    real16 gx = e1y * e2z - e1z * e2y, gy = e1z * e2x - e1x * e2z, gz = e1x * e2y - e1y * e2x;
+    real16 area2 = gx * gx + gy * gy + gz * gz;
+    mask16 weighted = convert_mask16(vload16(0, t.weighted) != (int16)(0));
+    real16 b1 = ((py * e2z - pz * e2y) * gx + (pz * e2x - px * e2z) * gy + (px * e2y - py * e2x) * gz) / area2;
+    real16 b2 = ((e1y * pz - e1z * py) * gx + (e1z * px - e1x * pz) * gy + (e1x * py - e1y * px) * gz) / area2;
+    b1 = select((real16)(0.0f), b1, weighted);
+    b2 = select((real16)(0.0f), b2, weighted);
+    real16 b0 = 1.0f - b1 - b2;
+    real16 bx = b0 * vload16(0, t.n0x) + b1 * vload16(0, t.n1x) + b2 * vload16(0, t.n2x);
+    real16 by = b0 * vload16(0, t.n0y) + b1 * vload16(0, t.n1y) + b2 * vload16(0, t.n2y);
+    real16 bz = b0 * vload16(0, t.n0z) + b1 * vload16(0, t.n1z) + b2 * vload16(0, t.n2z);
+    mask16 blend = weighted && (bx * bx + by * by + bz * bz) > 0.0f;
+    real16 nx = select(gx, bx, blend), ny = select(gy, by, blend), nz = select(gz, bz, blend);
+    real16 length = sqrt(nx * nx + ny * ny + nz * nz); /* unit3() */
+    nx = nx / length;
+    ny = ny / length;
+    nz = nz / length;
+    mask16 away = (nx * d.x + ny * d.y + nz * d.z) > 0.0f;
+    Directions16 normal;
+    normal.x = select(nx, -nx, away);
+    normal.y = select(ny, -ny, away);
+    normal.z = select(nz, -nz, away);
+    mask16 rescaled = !(area2 >= 7.8886091e-31f && area2 <= 1.2676506e30f) || !isfinite(b1) || !isfinite(b2);
+    if (any_lanes16(rescaled)) {
+        real x[16], y[16], z[16], ox[16], oy[16], oz[16], dx[16], dy[16], dz[16];
+        int again[16];
+        vstore16(normal.x, 0, x);
+        vstore16(normal.y, 0, y);
+        vstore16(normal.z, 0, z);
+        vstore16(p.x, 0, ox);
+        vstore16(p.y, 0, oy);
+        vstore16(p.z, 0, oz);
+        vstore16(d.x, 0, dx);
+        vstore16(d.y, 0, dy);
+        vstore16(d.z, 0, dz);
+        vstore16(convert_int16(rescaled), 0, again);
+        for (int lane = 0; lane < 16; ++lane) {
+            if (indices[lane] < 0 || !again[lane])
+                continue;
+            real3 n = triangle_normal(indices[lane], (real3)(ox[lane], oy[lane], oz[lane]),
+                                      (real3)(dx[lane], dy[lane], dz[lane]), CLR_SCENE_ARGS);
+            x[lane] = n.x, y[lane] = n.y, z[lane] = n.z;
+        }
+        normal.x = vload16(0, x);
+        normal.y = vload16(0, y);
+        normal.z = vload16(0, z);
+    }
+    return normal;
+}
+
 uint triangle_flags(int index, CLR_SCENE_PARAMS)
 {
     return triangles[index].flags;

@@ -10,9 +10,10 @@
 #include "kinds/kinds.cl"
 #include "packet/intersect_packet.cl"
 #include "packet/lane_masks.cl"
+#include "packet/lanes16.cl"
 #include "packet/packet_types.cl"
 #include "packet/shading_modes.cl"
-#include "packet/shadows16.cl"
+#include "packet/sunlit16.cl"
 #include "shared/clr_samples.h"
 #include "shared/clr_types.h"
 #include "trace.cl"
@@ -77,46 +78,6 @@ CLR_PACKET_INLINE void sample_offsets16(ClrCamera camera, int col0, int row, int
     }
 }
 
-/* 16 rays' hits and directions, and their colours, lane by lane in private arrays: what the
- * shading steps that go one lane at a time read and write. */
-typedef struct {
-    real t[16], x[16], y[16], z[16];
-    int kind[16], index[16];
-    float r[16], g[16], b[16];
-} Lanes16;
-
-/* The lanes of `hits` and `d`, with the colours of `flat` when given. */
-CLR_PACKET_INLINE void unpack_lanes16(Directions16 d, Hits16 hits, const Colors16* flat, Lanes16* lanes)
-{
-    if (flat) {
-        vstore16(flat->r, 0, lanes->r);
-        vstore16(flat->g, 0, lanes->g);
-        vstore16(flat->b, 0, lanes->b);
-    }
-    vstore16(hits.t, 0, lanes->t);
-    vstore16(hits.kind, 0, lanes->kind);
-    vstore16(hits.index, 0, lanes->index);
-    vstore16(d.x, 0, lanes->x);
-    vstore16(d.y, 0, lanes->y);
-    vstore16(d.z, 0, lanes->z);
-}
-
-CLR_PACKET_INLINE Colors16 lane_colors16(const Lanes16* lanes)
-{
-    Colors16 out;
-    out.r = vload16(0, lanes->r);
-    out.g = vload16(0, lanes->g);
-    out.b = vload16(0, lanes->b);
-    return out;
-}
-
-CLR_PACKET_INLINE void set_lane_color16(Lanes16* lanes, int lane, float3 color)
-{
-    lanes->r[lane] = color.x;
-    lanes->g[lane] = color.y;
-    lanes->b[lane] = color.z;
-}
-
 /* The colours of 16 rays from the eye with nearest hits `hits`, each path shaded by
  * trace_path(). Given `flat` (the intersection loop's flat colours), only lanes on lit kinds
  * (kind_is_lit()) are traced and the others keep their flat colour; without (0), every lane
@@ -138,71 +99,6 @@ CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hit
     }
     return lane_colors16(&lanes);
 }
-
-#if CLR_SUN_PACKETS
-/* traced_colors16() with `flat` in the sun-alone mode: each lane on a lit kind shaded as
- * surface_color() shades it, with the 16 lanes' shadow rays traced together
- * (occluded_lanes16()): the same colours. */
-CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
-{
-    Lanes16 lanes;
-    unpack_lanes16(d, hits, &flat, &lanes);
-    float3 lit[16];
-    ShadowRays16 rays;
-    int shadow_rays = 0;
-    for (int lane = 0; lane < 16; ++lane) {
-        rays.wanted[lane] = 0;
-        if (!kind_is_lit(lanes.kind[lane]))
-            continue; /* its flat colour is in lanes.r, g, b already */
-        const int kind = lanes.kind[lane], index = lanes.index[lane];
-        real3 direction = (real3)(lanes.x[lane], lanes.y[lane], lanes.z[lane]);
-        /* surface_color() in sun mode, up to its shadow ray. */
-        float3 color = kind_surface_color(kind, index, eye, direction, lanes.t[lane], CLR_SCENE_ARGS);
-        if (!info.lit) {
-            set_lane_color16(&lanes, lane, color);
-            continue;
-        }
-        real3 point = eye + lanes.t[lane] * direction;
-        real3 normal = kind_normal(kind, index, point, direction, CLR_SCENE_ARGS);
-        real3 to_sun = convert_real3(info.sun.xyz) - point;
-        real sun_distance = sqrt(dot3(to_sun, to_sun));
-        real3 light = to_sun / sun_distance;
-        real cosine = dot3(normal, light);
-        if (cosine <= 0.0f) {
-            set_lane_color16(&lanes, lane, (float3)(0.0f)); /* facing away: no shadow ray needed */
-            continue;
-        }
-        lit[lane] = color * (float)cosine;
-        rays.wanted[lane] = 1;
-        rays.ox[lane] = point.x;
-        rays.oy[lane] = point.y;
-        rays.oz[lane] = point.z;
-        rays.dx[lane] = light.x;
-        rays.dy[lane] = light.y;
-        rays.dz[lane] = light.z;
-        rays.t_max[lane] = sun_distance;
-        rays.skip_kind[lane] = kind;
-        rays.skip_index[lane] = index;
-        ++shadow_rays;
-    }
-    if (shadow_rays > 0) {
-        /* Lanes without a shadow ray still take part in the vectors: any finite values. */
-        for (int lane = 0; lane < 16; ++lane) {
-            if (rays.wanted[lane])
-                continue;
-            rays.ox[lane] = rays.oy[lane] = rays.oz[lane] = 0.0f;
-            rays.dx[lane] = rays.dy[lane] = rays.dz[lane] = 1.0f;
-            rays.t_max[lane] = 0.0f;
-        }
-        occluded_lanes16(&rays, CLR_SCENE_ARGS);
-        for (int lane = 0; lane < 16; ++lane) {
-            if (rays.wanted[lane])
-                set_lane_color16(&lanes, lane, rays.occluded[lane] ? (float3)(0.0f) : lit[lane]);
-        }
-    }
-    return lane_colors16(&lanes);
-}
-#endif
 
 /* The colours of 16 rays from the eye with nearest hits `hits`, in the program's shading mode
  * (shading_modes.cl). `flat` holds the intersection loop's flat colours (CLR_LOOP_COLORS). */
