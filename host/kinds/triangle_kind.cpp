@@ -26,14 +26,25 @@ PixelBounds TriangleKind::pixel_bounds(const ObjectBounds& view, const Triangle&
     return bounds;
 }
 
-// The distance from the eye to the triangle's plane: every point of the triangle is at
-// least that far. (The loader keeps no triangle without area, whose plane is undefined.)
+// The larger of the distances from the eye to the triangle's plane and to its box: every
+// point of the triangle is at least that far. The plane alone says little of a triangle seen
+// edge on, whose plane passes near the eye however far the triangle lies. (The loader keeps no
+// triangle without area, whose plane is undefined.)
 double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& triangle, const Vec3& object_origin) {
     const auto& c = triangle.corners;
+    const Vec3 eye = view.eye() - object_origin;
+    Vec3 outside;  // from the box to the eye, 0 along axes where the eye lies within it
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lower = std::min({c[0][axis], c[1][axis], c[2][axis]});
+        const double upper = std::max({c[0][axis], c[1][axis], c[2][axis]});
+        const double e = eye[axis];
+        (axis == 0 ? outside.x : axis == 1 ? outside.y : outside.z) = e < lower ? lower - e : (e > upper ? e - upper : 0);
+    }
+    const double to_box = length(outside);
     const Vec3 normal = cross(c[1] - c[0], c[2] - c[0]);
     const double area2 = length(normal);
-    if (!(area2 > 0)) return 0;
-    return std::fabs(dot((view.eye() - object_origin) - c[0], normal / area2));
+    if (!(area2 > 0)) return to_box;
+    return std::max(to_box, std::fabs(dot(eye - c[0], normal / area2)));
 }
 
 ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {

@@ -1,12 +1,17 @@
 // The list of primitive kinds (host/kinds/kinds.h): its order is the hit order the kernels
 // rank ties by, each kind's shading rule is the documented one (docs/scene-format.md,
-// Conventions: Lighting and shadows), and each kind's BVH box holds the whole object.
+// Conventions: Lighting and shadows), each kind's BVH box holds the whole object, and a
+// triangle's least distance from the eye bounds its distance closely from below.
 #include "kinds/kinds.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <vector>
 
+#include "render/frame_camera.h"
+#include "render/object_bounds.h"
 #include "support/scene_builder.h"
 
 namespace clr {
@@ -64,6 +69,50 @@ TEST(PrimitiveKinds, BoxesHoldTheirObjects) {
     for (const Vec3& corner : triangle.corners) EXPECT_TRUE(inside(triangle_box, corner - shift));
     EXPECT_EQ(triangle_box.lower, (Vec3{-1, 0, 0} - shift));
     EXPECT_EQ(triangle_box.upper, (Vec3{2, 3, 4} - shift));
+}
+
+// The least distance from `eye` to points of `triangle` on a fine barycentric grid: an upper
+// bound on the distance of the triangle itself, close for the grid's spacing.
+double sampled_distance(const Triangle& triangle, const Vec3& eye) {
+    const auto& c = triangle.corners;
+    double least = INFINITY;
+    constexpr int kSteps = 40;
+    for (int i = 0; i <= kSteps; ++i)
+        for (int j = 0; i + j <= kSteps; ++j) {
+            const double u = double(i) / kSteps, v = double(j) / kSteps;
+            least = std::min(least, length(c[0] + (c[1] - c[0]) * u + (c[2] - c[0]) * v - eye));
+        }
+    return least;
+}
+
+// The screen tiles list triangles nearest first by this bound, and a row stops once its hits
+// are nearer than the next one's: it must never exceed the triangle's distance, and a triangle
+// seen edge on, whose plane passes through the eye however far it lies, must not bound at 0
+// (a terrain seen at a low angle was then searched to the end of every list: half the speed).
+TEST(PrimitiveKinds, TriangleLeastDistanceBoundsItsDistanceClosely) {
+    const FrameCamera camera = make_frame_camera({0, 1, 0}, {0, 1, -10}, {0, 1, 0}, 60, 64, 48);
+    const ObjectBounds view(camera);
+    const Vec3 eye = camera.eye_in_scene();
+    Triangle edge_on;  // in the plane y = 1, through the eye, 10 to 12 in front of it
+    edge_on.corners = {Vec3{-1, 1, -10}, Vec3{1, 1, -10}, Vec3{0, 1, -12}};
+    const double bound = TriangleKind::least_distance(view, edge_on, {});
+    EXPECT_LE(bound, sampled_distance(edge_on, eye));
+    EXPECT_GE(bound, 9.9) << "bounded by its plane, which holds the eye";
+
+    std::mt19937 random(25);
+    std::uniform_real_distribution<double> spot(-6, 6);
+    for (int i = 0; i < 400; ++i) {
+        Triangle t;
+        const Vec3 at{spot(random), spot(random), spot(random) - 8};
+        t.corners = {at, at + Vec3{spot(random), spot(random), spot(random)} * 0.3,
+                     at + Vec3{spot(random), spot(random), spot(random)} * 0.3};
+        const double least = TriangleKind::least_distance(view, t, {});
+        EXPECT_LE(least, sampled_distance(t, eye) + 1e-12) << "triangle " << i;
+        // Corners relative to an object origin (impostors): the same triangle, the same bound.
+        Triangle moved = t;
+        for (Vec3& corner : moved.corners) corner = corner - Vec3{1, 2, 3};
+        EXPECT_NEAR(TriangleKind::least_distance(view, moved, {1, 2, 3}), least, 1e-9) << "triangle " << i;
+    }
 }
 
 }  // namespace
