@@ -33,17 +33,24 @@ CLR_PACKET_INLINE void want_shadow_ray16(ShadowRays16* rays, int lane, real3 poi
     rays->skip_index[lane] = index;
 }
 
+/* What a packet's lanes on lit kinds need from the sun, vector by vector: each lane's colour
+ * so far (its flat colour, or black where it faces away from the sun), its lit colour, and
+ * its shadow ray (ShadowRays16, whose wanted[] says which lanes have one). */
+typedef struct {
+    Colors16 color, lit;
+    ShadowRays16 rays;
+} SunlitLanes16;
+
 #if CLR_FEATURE_TRIANGLES
-/* The lanes of `hits` on triangles in a lit scene, shaded as sunlit_colors16() shades a lane,
- * the 16 at once (each lane's values the same bits): a lane facing away from the sun turns
- * black, a lane facing it gets its lit colour in lit[lane] and its shadow ray in `rays`.
- * Returns how many shadow rays it wants. */
-CLR_PACKET_INLINE int sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits, Lanes16* lanes, float3* lit,
-                                         ShadowRays16* rays, CLR_SCENE_PARAMS)
+/* The lanes of `hits` on triangles in a lit scene, shaded as sunlit_colors16() shades a lane
+ * (each lane's values the same bits), 16 at once: a lane facing away from the sun turns black,
+ * a lane facing it gets its lit colour and its shadow ray. */
+CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits, SunlitLanes16* out,
+                                          CLR_SCENE_PARAMS)
 {
     int16 on = hits.kind == (int16)(CLR_HIT_TRIANGLE);
     if (!any_lanes16(on))
-        return 0;
+        return;
     int indices[16];
     vstore16(select((int16)(-1), hits.index, on), 0, indices);
     Points16 point; /* eye + t * direction */
@@ -59,92 +66,117 @@ CLR_PACKET_INLINE int sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits,
     light.y = sy / sun_distance;
     light.z = sz / sun_distance;
     real16 cosine = normal.x * light.x + normal.y * light.y + normal.z * light.z;
-    real c[16], px[16], py[16], pz[16], lx[16], ly[16], lz[16], distance[16];
-    vstore16(cosine, 0, c);
-    vstore16(point.x, 0, px);
-    vstore16(point.y, 0, py);
-    vstore16(point.z, 0, pz);
-    vstore16(light.x, 0, lx);
-    vstore16(light.y, 0, ly);
-    vstore16(light.z, 0, lz);
-    vstore16(sun_distance, 0, distance);
-    int shadow_rays = 0;
+    int16 away = on & convert_int16(cosine <= 0.0f); /* no shadow ray needed */
+    int16 lit = on & ~away;
+    out->color.r = select(out->color.r, (float16)(0.0f), away);
+    out->color.g = select(out->color.g, (float16)(0.0f), away);
+    out->color.b = select(out->color.b, (float16)(0.0f), away);
+    float r[16], g[16], b[16]; /* triangle_surface_color() */
     for (int lane = 0; lane < 16; ++lane) {
-        const int index = indices[lane];
-        if (index < 0)
-            continue;
-        if (c[lane] <= 0.0f) {
-            set_lane_color16(lanes, lane, (float3)(0.0f)); /* facing away: no shadow ray needed */
-            continue;
-        }
-        lit[lane] = triangles[index].color.xyz * (float)c[lane]; /* triangle_surface_color() */
-        want_shadow_ray16(rays, lane, (real3)(px[lane], py[lane], pz[lane]), (real3)(lx[lane], ly[lane], lz[lane]),
-                          distance[lane], CLR_HIT_TRIANGLE, index);
-        ++shadow_rays;
+        float3 color = indices[lane] < 0 ? (float3)(0.0f) : triangles[indices[lane]].color.xyz;
+        r[lane] = color.x;
+        g[lane] = color.y;
+        b[lane] = color.z;
     }
-    return shadow_rays;
+    float16 shade = convert_float16(cosine);
+    out->lit.r = select(out->lit.r, vload16(0, r) * shade, lit);
+    out->lit.g = select(out->lit.g, vload16(0, g) * shade, lit);
+    out->lit.b = select(out->lit.b, vload16(0, b) * shade, lit);
+    ShadowRays16* rays = &out->rays;
+    mask16 ray = convert_mask16(lit);
+    vstore16(select(vload16(0, rays->wanted), (int16)(1), lit), 0, rays->wanted);
+    vstore16(select(vload16(0, rays->ox), point.x, ray), 0, rays->ox);
+    vstore16(select(vload16(0, rays->oy), point.y, ray), 0, rays->oy);
+    vstore16(select(vload16(0, rays->oz), point.z, ray), 0, rays->oz);
+    vstore16(select(vload16(0, rays->dx), light.x, ray), 0, rays->dx);
+    vstore16(select(vload16(0, rays->dy), light.y, ray), 0, rays->dy);
+    vstore16(select(vload16(0, rays->dz), light.z, ray), 0, rays->dz);
+    vstore16(select(vload16(0, rays->t_max), sun_distance, ray), 0, rays->t_max);
+    vstore16(select(vload16(0, rays->skip_kind), (int16)(CLR_HIT_TRIANGLE), lit), 0, rays->skip_kind);
+    vstore16(select(vload16(0, rays->skip_index), hits.index, lit), 0, rays->skip_index);
 }
 #endif
 
 /* traced_colors16() with `flat` in the sun-alone mode: each lane on a lit kind shaded as
  * surface_color() shades it, with the 16 lanes' shadow rays traced together
- * (occluded_lanes16()): the same colours. */
+ * (occluded_lanes16()): the same colours. Lanes without a shadow ray still take part in its
+ * vectors, with any finite values. */
 CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
-    Lanes16 lanes;
-    unpack_lanes16(d, hits, &flat, &lanes);
-    float3 lit[16];
-    ShadowRays16 rays;
-    for (int lane = 0; lane < 16; ++lane)
-        rays.wanted[lane] = 0;
-    int shadow_rays = 0;
+    SunlitLanes16 out;
+    ShadowRays16* rays = &out.rays;
+    vstore16((int16)(0), 0, rays->wanted);
+    vstore16((real16)(0.0f), 0, rays->ox);
+    vstore16((real16)(0.0f), 0, rays->oy);
+    vstore16((real16)(0.0f), 0, rays->oz);
+    vstore16((real16)(1.0f), 0, rays->dx);
+    vstore16((real16)(1.0f), 0, rays->dy);
+    vstore16((real16)(1.0f), 0, rays->dz);
+    vstore16((real16)(0.0f), 0, rays->t_max);
+    vstore16((int16)(CLR_HIT_NONE), 0, rays->skip_kind);
+    vstore16((int16)(-1), 0, rays->skip_index);
+    /* Lanes on other lit kinds (and every lit lane of a scene the sun does not light), one by
+     * one: surface_color() in sun mode, up to its shadow ray. */
+    int16 by_lane = lit_lanes16(hits.kind);
 #if CLR_FEATURE_TRIANGLES
     if (info.lit)
-        shadow_rays += sunlit_triangles16(eye, d, hits, &lanes, lit, &rays, CLR_SCENE_ARGS);
+        by_lane = by_lane & (hits.kind != (int16)(CLR_HIT_TRIANGLE));
 #endif
-    for (int lane = 0; lane < 16; ++lane) {
-        const int kind = lanes.kind[lane], index = lanes.index[lane];
-        if (!kind_is_lit(kind))
-            continue; /* its flat colour is in lanes.r, g, b already */
-        if (CLR_FEATURE_TRIANGLES && info.lit && kind == CLR_HIT_TRIANGLE)
-            continue; /* shaded by sunlit_triangles16() */
-        real3 direction = (real3)(lanes.x[lane], lanes.y[lane], lanes.z[lane]);
-        /* surface_color() in sun mode, up to its shadow ray. */
-        float3 color = kind_surface_color(kind, index, eye, direction, lanes.t[lane], CLR_SCENE_ARGS);
-        if (!info.lit) {
-            set_lane_color16(&lanes, lane, color);
-            continue;
-        }
-        real3 point = eye + lanes.t[lane] * direction;
-        real3 normal = kind_normal(kind, index, point, direction, CLR_SCENE_ARGS);
-        real3 to_sun = convert_real3(info.sun.xyz) - point;
-        real sun_distance = sqrt(dot3(to_sun, to_sun));
-        real3 light = to_sun / sun_distance;
-        real cosine = dot3(normal, light);
-        if (cosine <= 0.0f) {
-            set_lane_color16(&lanes, lane, (float3)(0.0f)); /* facing away: no shadow ray needed */
-            continue;
-        }
-        lit[lane] = color * (float)cosine;
-        want_shadow_ray16(&rays, lane, point, light, sun_distance, kind, index);
-        ++shadow_rays;
-    }
-    if (shadow_rays > 0) {
-        /* Lanes without a shadow ray still take part in the vectors: any finite values. */
+    Lanes16 lanes;
+    unpack_lanes16(d, hits, &flat, &lanes);
+    float lit_r[16], lit_g[16], lit_b[16];
+    vstore16((float16)(0.0f), 0, lit_r);
+    vstore16((float16)(0.0f), 0, lit_g);
+    vstore16((float16)(0.0f), 0, lit_b);
+    if (any_lanes16(by_lane)) {
+        int one_by_one[16];
+        vstore16(by_lane, 0, one_by_one);
         for (int lane = 0; lane < 16; ++lane) {
-            if (rays.wanted[lane])
+            if (!one_by_one[lane])
                 continue;
-            rays.ox[lane] = rays.oy[lane] = rays.oz[lane] = 0.0f;
-            rays.dx[lane] = rays.dy[lane] = rays.dz[lane] = 1.0f;
-            rays.t_max[lane] = 0.0f;
-        }
-        occluded_lanes16(&rays, CLR_SCENE_ARGS);
-        for (int lane = 0; lane < 16; ++lane) {
-            if (rays.wanted[lane])
-                set_lane_color16(&lanes, lane, rays.occluded[lane] ? (float3)(0.0f) : lit[lane]);
+            const int kind = lanes.kind[lane], index = lanes.index[lane];
+            real3 direction = (real3)(lanes.x[lane], lanes.y[lane], lanes.z[lane]);
+            float3 color = kind_surface_color(kind, index, eye, direction, lanes.t[lane], CLR_SCENE_ARGS);
+            if (!info.lit) {
+                set_lane_color16(&lanes, lane, color);
+                continue;
+            }
+            real3 point = eye + lanes.t[lane] * direction;
+            real3 normal = kind_normal(kind, index, point, direction, CLR_SCENE_ARGS);
+            real3 to_sun = convert_real3(info.sun.xyz) - point;
+            real sun_distance = sqrt(dot3(to_sun, to_sun));
+            real3 light = to_sun / sun_distance;
+            real cosine = dot3(normal, light);
+            if (cosine <= 0.0f) {
+                set_lane_color16(&lanes, lane, (float3)(0.0f)); /* facing away: no shadow ray needed */
+                continue;
+            }
+            float3 lit = color * (float)cosine;
+            lit_r[lane] = lit.x;
+            lit_g[lane] = lit.y;
+            lit_b[lane] = lit.z;
+            want_shadow_ray16(rays, lane, point, light, sun_distance, kind, index);
         }
     }
-    return lane_colors16(&lanes);
+    out.color = lane_colors16(&lanes);
+    out.lit.r = vload16(0, lit_r);
+    out.lit.g = vload16(0, lit_g);
+    out.lit.b = vload16(0, lit_b);
+#if CLR_FEATURE_TRIANGLES
+    if (info.lit)
+        sunlit_triangles16(eye, d, hits, &out, CLR_SCENE_ARGS);
+#endif
+    int16 wanted = vload16(0, rays->wanted) != (int16)(0);
+    if (!any_lanes16(wanted))
+        return out.color;
+    occluded_lanes16(rays, CLR_SCENE_ARGS);
+    int16 sunlit = wanted & (vload16(0, rays->occluded) == (int16)(0));
+    int16 shadowed = wanted & ~sunlit;
+    Colors16 color = out.color;
+    color.r = select(select(color.r, (float16)(0.0f), shadowed), out.lit.r, sunlit);
+    color.g = select(select(color.g, (float16)(0.0f), shadowed), out.lit.g, sunlit);
+    color.b = select(select(color.b, (float16)(0.0f), shadowed), out.lit.b, sunlit);
+    return color;
 }
 
 #endif /* CLR_SUN_PACKETS */
