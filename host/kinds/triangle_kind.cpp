@@ -50,8 +50,8 @@ double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& tr
 ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {
     const Mesh& mesh = scene.meshes[triangle.mesh];
     ClrTriangle out{};
+    out.color = to_float4(mesh.ambient);  // before move(), which stores the plane's offset in its w
     move(out, triangle, origin);
-    out.color = to_float4(mesh.ambient);
     out.flags = mesh.is_mirror ? CLR_SURFACE_MIRROR : 0u;
     out.normals = triangle.normals < 0 ? -1 : triangle.normals * 3;
     out.material = mesh.material;
@@ -77,7 +77,8 @@ cl_uint edge_order(const ClrTriangle& device) {
 Vec3 xyz(const cl_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
 
 // The plane's normal (c1 - c0) x (c2 - c0) of the corners as stored, into the corners' w:
-// the kernels' t is the plane's (c0 - o).n / d.n, as the reference's. Made from the edges
+// the kernels decide the side of the plane by (c0 - o).n and d.n, as the reference finds t,
+// and take the plane's t where it is the more exact (kernels/kinds/triangle.cl). Made from the edges
 // scaled by the power of two that brings the longest near 1, so that it stays well inside
 // float's range at every supported size (docs/scene-format.md, Numeric ranges); only its
 // direction matters to t.
@@ -96,6 +97,24 @@ void store_plane_normal(ClrTriangle& device) {
     device.corner2.s[3] = static_cast<float>(normal.z);
 }
 
+// The plane's offset from the origin (the frame's eye) for the normal n as stored, into the
+// colour's w: |n| times the eye's signed distance from the triangle's plane, in double from the
+// unrounded corners. The kernels take a hit's t from it where it is the more exact
+// (kernels/kinds/triangle.cl). So the plane the kernels see passes through the true plane's
+// point nearest the eye, and the float normal's rounding (about 6e-8 of a radian) tilts it
+// only about that point: from the corner, (c0 - eye).n put the plane of a triangle 1e8 across
+// units off near the eye, as its corner is that far away.
+void store_plane_offset(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
+    const Vec3 stored{device.corner0.s[3], device.corner1.s[3], device.corner2.s[3]};
+    const auto& c = triangle.corners;
+    const Vec3 plane = normalize(cross(c[1] - c[0], c[2] - c[0]));
+    const double distance = dot(c[0] - origin, plane);
+    const double side = dot(stored, plane) < 0 ? -1.0 : 1.0;
+    const double offset = side * distance * length(stored);
+    // The loader keeps no triangle without area; should one come all the same, the corner's.
+    device.color.s[3] = static_cast<float>(std::isfinite(offset) ? offset : dot(c[0] - origin, stored));
+}
+
 }  // namespace
 
 void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
@@ -104,6 +123,7 @@ void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec
     device.corner2 = to_float4(triangle.corners[2] - origin);
     device.edge_order = edge_order(device);
     store_plane_normal(device);
+    store_plane_offset(device, triangle, origin);
 }
 
 }  // namespace clr

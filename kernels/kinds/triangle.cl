@@ -20,7 +20,15 @@
  * first: the ray meets the triangle only where (c0 - o).n and d.n have one sign, n the
  * plane's normal that the host stores in the corners' w, as the reference finds it ((c0 - o).n
  * is exactly 0 for an eye on a floor along the axes); and where the plane says ahead but the
- * blend does not, t is the plane's (c0 - o).n / d.n. */
+ * blend does not, t is the plane's (c0 - o).n / d.n.
+ *
+ * The blend rounds in proportion to the corners' distances along the ray, the plane's t in
+ * proportion to the origin's distance from the plane: for a triangle far larger than its
+ * distance (a ground triangle 1e8 across seen from 3 units) the blend's t was units off and
+ * the floor speckled with false light. Each hit takes whichever of the two is the more exact
+ * (plane_t_is_exacter()); the plane's offset may come from the host, computed in double
+ * (triangle_offset()), since the corners themselves, rounded to float relative to the eye, put
+ * such a plane units off. */
 #ifndef CLR_KINDS_TRIANGLE_CL
 #define CLR_KINDS_TRIANGLE_CL
 
@@ -87,6 +95,43 @@ real3 triangle_plane_normal(__global const ClrTriangle* triangle)
     return convert_real3((float3)(triangle->corner0.w, triangle->corner1.w, triangle->corner2.w));
 }
 
+/* |p.x q.x| + |p.y q.y| + |p.z q.z|: the bound on the rounding of dot3(p, q). */
+real abs_dot3(real3 p, real3 q)
+{
+    return fabs(p.x * q.x) + fabs(p.y * q.y) + fabs(p.z * q.z);
+}
+
+/* The origin's offset (c0 - o).n from the plane, with a bound on its rounding (in units of
+ * its precision), the more exact of two ways. From the corner as stored (`a` = c0 - o): exact
+ * near the triangle, and of the plane that the corners as stored span, where the edge tests
+ * decide; but the corner is rounded relative to the eye, so for a triangle 1e8 across the
+ * plane was units off near the eye however near it passes. From the plane's offset from the
+ * eye, which the host computed in double (ClrTriangle color.w), less n.o: exact near the eye
+ * (o = 0 for a primary ray), but for a ray leaving a far triangle n.o is as large as the
+ * triangle is far. */
+typedef struct {
+    real offset, error;
+} PlaneOffset;
+
+PlaneOffset triangle_offset(__global const ClrTriangle* triangle, real3 a, real3 n, real3 origin)
+{
+    real stored = (real)triangle->color.w;
+    PlaneOffset from_corner = {dot3(a, n), abs_dot3(a, n)};
+    PlaneOffset from_eye = {stored - dot3(n, origin), fabs(stored) + abs_dot3(n, origin)};
+    return from_eye.error < from_corner.error ? from_eye : from_corner;
+}
+
+/* Whether the plane's t, offset / facing, is more exact than the blend of the corners'
+ * distances along the ray: the blend rounds in proportion to the largest of those distances
+ * (`blend_error`, the largest abs_dot3() of a corner and the direction; its weights are convex),
+ * the plane's t in proportion to its offset's error plus t times that of `facing` (`slant`,
+ * abs_dot3() of the direction and n), over |facing|. A grazing ray keeps the blend, and so
+ * does every triangle no larger than its distance from the origin. */
+bool plane_t_is_exacter(real offset_error, real t_plane, real slant, real facing, real blend_error)
+{
+    return offset_error + fabs(t_plane) * slant < blend_error * fabs(facing);
+}
+
 /* Whether a ray whose origin is `offset` = (c0 - o).n from the plane and whose direction has
  * `facing` = d.n meets the plane ahead of its origin. */
 bool plane_ahead(real offset, real facing)
@@ -151,7 +196,8 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     if (!inside || det == 0.0f)
         return INFINITY;
     real3 n = triangle_plane_normal(triangle);
-    real offset = dot3(k.a, n), facing = dot3(direction, n);
+    PlaneOffset plane = triangle_offset(triangle, k.a, n, origin);
+    real offset = plane.offset, facing = dot3(direction, n);
     if (!plane_ahead(offset, facing))
         return INFINITY;
     if (!(fabs(det) >= CLR_TRIANGLE_SCALED_BELOW && fabs(det) <= CLR_TRIANGLE_SCALED_ABOVE)) {
@@ -162,9 +208,13 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
         det *= scale;
     }
     real t = (u * dot3(k.a, direction) + v * dot3(k.b, direction) + w * dot3(k.c, direction)) / det;
+    real t_plane = offset / facing;
+    real blend_error = fmax(fmax(abs_dot3(k.a, direction), abs_dot3(k.b, direction)), abs_dot3(k.c, direction));
+    if (plane_t_is_exacter(plane.error, t_plane, abs_dot3(direction, n), facing, blend_error))
+        t = t_plane;
     real least = triangle_least_t(offset, n, triangle_nearest_t(origin), triangle_plane_slack(origin));
     if (!(t > least))
-        t = offset / facing;
+        t = t_plane;
     return t > least && t < t_max ? t : INFINITY;
 }
 
@@ -217,15 +267,23 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
-    real offset = dot3(k.a, n);
+    PlaneOffset plane = triangle_offset(triangle, k.a, n, origin);
+    real offset = plane.offset;
     real16 facing = dot16(n, d);
     hit = hit && ((offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f)); /* plane_ahead() */
     scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * dot16(k.a, d) + v * dot16(k.b, d) + w * dot16(k.c, d)) / det;
+    real16 t_plane = offset / facing;
+    /* plane_t_is_exacter() lane by lane, with abs_dot3() written out */
+    real16 blend_error = fmax(fmax(fabs(k.a.x * d.x) + fabs(k.a.y * d.y) + fabs(k.a.z * d.z),
+                                   fabs(k.b.x * d.x) + fabs(k.b.y * d.y) + fabs(k.b.z * d.z)),
+                              fabs(k.c.x * d.x) + fabs(k.c.y * d.y) + fabs(k.c.z * d.z));
+    real16 slant = fabs(d.x * n.x) + fabs(d.y * n.y) + fabs(d.z * n.z);
+    t = select(t, t_plane, hit && plane.error + fabs(t_plane) * slant < blend_error * fabs(facing));
     real nearest = triangle_nearest_t(origin);
     mask16 behind = hit && !(t > nearest);
     if (any_lanes16(behind))
-        t = select(t, offset / facing, behind);
+        t = select(t, t_plane, behind);
     hit = hit && t > nearest;
     return select((real16)(INFINITY), t, hit);
 }
@@ -254,17 +312,32 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
-    real16 offset = ax * n.x + ay * n.y + az * n.z, facing = d.x * n.x + d.y * n.y + d.z * n.z;
+    /* triangle_offset() lane by lane */
+    real stored = (real)triangle->color.w;
+    real16 offset = ax * n.x + ay * n.y + az * n.z, offset_error = fabs(ax * n.x) + fabs(ay * n.y) + fabs(az * n.z);
+    real16 from_eye = stored - (n.x * o.x + n.y * o.y + n.z * o.z);
+    real16 from_eye_error = fabs(stored) + (fabs(n.x * o.x) + fabs(n.y * o.y) + fabs(n.z * o.z));
+    mask16 eye_exacter = from_eye_error < offset_error;
+    offset = select(offset, from_eye, eye_exacter);
+    offset_error = select(offset_error, from_eye_error, eye_exacter);
+    real16 facing = d.x * n.x + d.y * n.y + d.z * n.z;
     hit = hit && ((offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f)); /* plane_ahead() */
     scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * (ax * d.x + ay * d.y + az * d.z) + v * (bx * d.x + by * d.y + bz * d.z) +
                 w * (cx * d.x + cy * d.y + cz * d.z)) /
                det;
+    real16 t_plane = offset / facing;
+    /* plane_t_is_exacter() lane by lane, with abs_dot3() written out */
+    real16 blend_error = fmax(fmax(fabs(ax * d.x) + fabs(ay * d.y) + fabs(az * d.z),
+                                   fabs(bx * d.x) + fabs(by * d.y) + fabs(bz * d.z)),
+                              fabs(cx * d.x) + fabs(cy * d.y) + fabs(cz * d.z));
+    real16 slant = fabs(d.x * n.x) + fabs(d.y * n.y) + fabs(d.z * n.z);
+    t = select(t, t_plane, hit && offset_error + fabs(t_plane) * slant < blend_error * fabs(facing));
     /* triangle_least_t() lane by lane */
     real16 least = select((real16)(0.0f), nearest, fabs(offset) <= slack * (fabs(n.x) + fabs(n.y) + fabs(n.z)));
     mask16 behind = hit && !(t > least);
     if (any_lanes16(behind))
-        t = select(t, offset / facing, behind);
+        t = select(t, t_plane, behind);
     hit = hit && t > least;
     return select((real16)(INFINITY), t, hit);
 }

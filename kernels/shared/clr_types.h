@@ -105,7 +105,7 @@ typedef struct {
     clr_float4 corner0; /* xyz = c0; w = the plane normal's x */
     clr_float4 corner1; /* xyz = c1; w = its y */
     clr_float4 corner2; /* xyz = c2; w = its z */
-    clr_float4 color;   /* xyz = its mesh's ambient colour; w unused */
+    clr_float4 color;   /* xyz = its mesh's ambient colour; w = the plane's offset (c0 - eye).n */
     clr_uint flags;     /* CLR_SURFACE_* */
     clr_int normals;    /* first of its three corner normals in triangle_normals, or -1 */
     clr_uint material;  /* its mesh's Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */

@@ -301,6 +301,28 @@ TEST(Stress, AMeshFarAwayThroughANarrowLens) {
     }
 }
 
+// Ground triangles far larger than their distance from the eye, as people model a floor: 2e8
+// across and 1.4 below the eye, level and tilted by a tenth, lit, with a sphere standing on them
+// (its shadow on the floor, the floor cutting it). Their corners are 1e8 away, where float
+// steps by 8: the t blended from the corners' distances along the ray was units off (a sixth of
+// the level floor's pixels lit wrongly), and the tilted plane through the rounded corner and
+// normal passed units off the eye's surroundings (the whole floor shaded wrongly, the sphere cut
+// in the wrong place). The kernels now take t from the plane's offset from the eye, computed in
+// double by the host, where it is the more exact.
+TEST(Stress, GroundTrianglesFarLargerThanTheirDistanceFromTheEye) {
+    for (const double tilt : {0.0, 0.1}) {
+        Scene scene = testing::make_scene({0.3, 0.4, 3}, {0, -1, 0}, {0, 1, 0}, 60, 96, 72);
+        scene.has_sun = true;
+        scene.sun_location = {2, 3, 4};
+        scene.spheres.push_back(testing::make_sphere({0.2, -0.9, -0.3}, 0.4, {0.9, 0.2, 0.2}));
+        const double s = 1e8;
+        testing::TestMesh floor;
+        floor.triangles.push_back({Vec3{-s, -1 - tilt * s, -s}, Vec3{s, -1 + tilt * s, -s}, Vec3{0, -1, s}});
+        testing::add_mesh(scene, floor, {0.8, 0.8, 0.8});
+        expect_close_to_reference(scene, tilt == 0 ? "level floor 2e8 across" : "tilted floor 2e8 across");
+    }
+}
+
 // Whether the ray through (x, y, -1) (camera looking along -z, up +y) clearly meets a shape:
 // 1 inside, 0 outside, -1 too close to its outline to say.
 using Coverage = std::function<int(double x, double y)>;
