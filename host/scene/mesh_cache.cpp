@@ -13,6 +13,7 @@
 
 #include "core/cache_folder.h"
 #include "scene/bounded_file.h"
+#include "scene/mtl_library.h"
 #include "scene/value_ranges.h"
 
 namespace clr {
@@ -159,7 +160,7 @@ MeshCache::Key MeshCache::key(const std::string& path, const std::string& text) 
         .finish();
 }
 
-std::optional<ObjMesh> MeshCache::load(const Key& key) const {
+std::optional<ObjMesh> MeshCache::load(const Key& key, MtlLibrary* library) const {
     std::optional<CacheEntry> entry = entries_.load(key);
     if (!entry) return std::nullopt;
     ObjMesh mesh;
@@ -184,6 +185,11 @@ std::optional<ObjMesh> MeshCache::load(const Key& key) const {
     // A file named several ways ("a.mtl", "./a.mtl") is hashed once, by its identity.
     std::map<std::pair<dev_t, ino_t>, Sha256Digest> hashed;
     for (std::size_t i = 0; i < mesh.material_files.size(); ++i) {
+        if (library) {  // read once for all the scene's OBJ files that name it
+            const MtlFileRead& file = library->read(mesh.material_files[i]);
+            if (!file.read || file.digest != mesh.material_digests[i]) return std::nullopt;
+            continue;
+        }
         struct stat info {};
         if (::stat(mesh.material_files[i].c_str(), &info) != 0) return std::nullopt;
         auto known = hashed.find({info.st_dev, info.st_ino});
@@ -229,17 +235,19 @@ void MeshCache::store(const Key& key, const ObjMesh& mesh) const {
     entries_.store(key, {0, 0}, out.bytes().data(), out.bytes().size());
 }
 
-ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache, std::uint64_t memory_budget) {
+ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache, std::uint64_t memory_budget,
+                               MtlLibrary* library) {
     const std::string text = read_obj_text(path);
-    if (!cache.enabled() || text.size() < MeshCache::kSmallestStoredBytes) return parse_obj(text, path, memory_budget);
+    if (!cache.enabled() || text.size() < MeshCache::kSmallestStoredBytes)
+        return parse_obj(text, path, memory_budget, library);
     std::optional<MeshCache::Key> key;
     try {
         key = MeshCache::key(path, text);
-        if (std::optional<ObjMesh> cached = cache.load(*key)) return std::move(*cached);
+        if (std::optional<ObjMesh> cached = cache.load(*key, library)) return std::move(*cached);
     } catch (const std::exception&) {  // no hashing (libcrypto refused), or no memory for the entry: no caching
         key.reset();
     }
-    ObjMesh mesh = parse_obj(text, path, memory_budget);
+    ObjMesh mesh = parse_obj(text, path, memory_budget, library);
     if (key && !mesh.triangles.empty() && mesh.warnings.empty()) {  // an entry does not keep warnings
         try {
             cache.store(*key, mesh);

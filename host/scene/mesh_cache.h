@@ -59,7 +59,8 @@ public:
 
     // The mesh stored for `key`, or nothing: no entry, a damaged one, a .mtl that no longer
     // reads as it did, or a mesh that fails the reader's checks (such an entry is removed).
-    std::optional<ObjMesh> load(const Key& key) const;
+    // The .mtl files are read through `library` where one is given (see parse_obj).
+    std::optional<ObjMesh> load(const Key& key, MtlLibrary* library = nullptr) const;
     // Stores `mesh` (best effort: a folder that cannot be written leaves the cache as it was),
     // then trims the folder to the size limit.
     void store(const Key& key, const ObjMesh& mesh) const;
@@ -70,8 +71,10 @@ private:
 };
 
 // read_obj(path) through `cache`: the same mesh, and the same ObjError for a file that cannot
-// be read (failures are never stored).
+// be read (failures are never stored). A parse reads the .mtl files through `library` (see
+// parse_obj).
 ObjMesh read_obj_through_cache(const std::string& path, const MeshCache& cache,
-                               std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
+                               std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max(),
+                               MtlLibrary* library = nullptr);
 
 }  // namespace clr

@@ -13,6 +13,7 @@
 #include "core/printable_text.h"
 #include "scene/file_names.h"
 #include "scene/mesh_cache.h"
+#include "scene/mtl_library.h"
 #include "scene/obj_reader.h"
 #include "scene/value_ranges.h"
 
@@ -243,6 +244,7 @@ std::vector<PendingMesh> read_mesh_objects(ObjectReader& file) {
 void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders, std::uint64_t memory_budget) {
     const fs::path folder = fs::path(scene.path).parent_path();
     const MeshCache cache = MeshCache::from_environment();
+    MtlLibrary materials;  // a .mtl that several of the OBJ files name is read once
     std::vector<std::string> paths;
     for (const PendingMesh& each : pending) {
         // "models/../m.obj" is opened as the system resolves it (through a symbolic link
@@ -265,7 +267,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         try {
             auto found = kept.find(path);
             if (found == kept.end()) {
-                read = read_obj_through_cache(path, cache, memory_budget);
+                read = read_obj_through_cache(path, cache, memory_budget, &materials);
                 if (used_again) found = kept.emplace(path, std::move(read)).first;
             }
             if (found != kept.end()) model = &found->second;

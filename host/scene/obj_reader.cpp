@@ -14,6 +14,7 @@
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
+#include "scene/mtl_library.h"
 #include "scene/mtl_texture_maps.h"
 #include "scene/obj_text_checks.h"
 #include "scene/text_encoding.h"
@@ -69,21 +70,11 @@ std::vector<bool> materials_giving_diffuse(const std::string& text) {
     return gives;
 }
 
-// Why `text` is not the text of an OBJ or .mtl file though it may be one saved another way:
-// UTF-16 or UTF-32 (whose NUL bytes would read as unknown statements), or gzip-compressed.
-// "" when neither.
-std::string encoding_problem(std::string_view text) {
-    if (const auto encoding = wide_unicode_encoding(text))
-        return "it is " + *encoding + " text; save it as UTF-8 (clrender reads only UTF-8)";
-    if (text.size() >= 2 && text[0] == '\x1F' && text[1] == '\x8B') return "it is gzip-compressed; decompress it first";
-    return "";
-}
-
 // Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any
 // input file; the first failure is kept for read_obj to report.
 class MaterialFiles {
 public:
-    explicit MaterialFiles(std::filesystem::path folder) : folder_(std::move(folder)) {}
+    MaterialFiles(std::filesystem::path folder, MtlLibrary& library) : folder_(std::move(folder)), library_(library) {}
 
     // Adds the materials of .mtl `name` to `materials` and their names to `names`, as
     // tinyobjloader's LoadMtl does; false (and problem() says why) where it cannot.
@@ -108,32 +99,22 @@ public:
                            std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
             return false;
         }
-        std::string text;
-        try {
-            text = read_bounded_file(path.string(), kMaxMtlFileBytes);
-        } catch (const BoundedFileError& failure) {
-            if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + failure.what();
+        // Read and checked once for all the scene's OBJ files that name it (MtlLibrary).
+        const MtlFileRead& file = library_.read(path.string());
+        const std::string shown = "mtllib " + printable(shortened(name, 200)) + ": ";
+        if (file.read) {
+            if (identified) read_.insert({{info.st_dev, info.st_ino}, digests_.size()});
+            files_.push_back(path.string());
+            digests_.push_back(file.digest);
+        }
+        if (!file.problem.empty()) {
+            if (problem_.empty()) problem_ = shown + file.problem;
             return false;
         }
-        if (identified) read_.insert({{info.st_dev, info.st_ino}, digests_.size()});
-        files_.push_back(path.string());
-        digests_.push_back(sha256(text.data(), text.size()));
-        if (const std::string encoding = encoding_problem(text); !encoding.empty()) {
-            if (problem_.empty()) problem_ = "mtllib " + printable(shortened(name, 200)) + ": " + encoding;
-            return false;
-        }
-        const ObjTextProblem colour = check_mtl_text(text);
-        if (colour.line != 0) {
-            if (problem_.empty()) {
-                problem_ = "mtllib " + printable(shortened(name, 200)) + ": line " + std::to_string(colour.line) + ": " +
-                           colour.detail;
-            }
-            return false;
-        }
-        for (const auto& [material, map] : diffuse_texture_maps(text))
-            texture_maps_.emplace(material, "mtllib " + printable(shortened(name, 200)) + ": line " +
-                                                std::to_string(map.line) + ": " + printable(shortened(map.statement, 200)));
-        text = mtl_statements_used(text);
+        for (const auto& [material, map] : file.texture_maps)
+            texture_maps_.emplace(material, shown + "line " + std::to_string(map.line) + ": " +
+                                                printable(shortened(map.statement, 200)));
+        const std::string& text = file.used;
         const std::vector<bool> gives_diffuse = materials_giving_diffuse(text);
         const std::size_t before = materials->size();
         if (before + gives_diffuse.size() > kMaxObjMaterials) {
@@ -199,6 +180,7 @@ private:
     std::uint64_t redefined_ = 0;
     std::string first_redefinition_;
     std::filesystem::path folder_;
+    MtlLibrary& library_;
     std::string problem_;
     std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
@@ -404,8 +386,8 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
 
 }  // namespace
 
-ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget) {
-    if (const std::string encoding = encoding_problem(text); !encoding.empty()) throw ObjError(encoding);
+ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
+    if (const std::string encoding = saved_text_problem(text); !encoding.empty()) throw ObjError(encoding);
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
@@ -418,7 +400,8 @@ ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_
                               gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +
                               " a scene's meshes may take: half of this machine's memory (docs/robustness.md, Memory)");
     }
-    MaterialFiles material_files(std::filesystem::path(path).parent_path());
+    MtlLibrary own_library;
+    MaterialFiles material_files(std::filesystem::path(path).parent_path(), library ? *library : own_library);
     try {
         return parse_checked(text, counts, material_files);
     } catch (ObjError& failure) {

@@ -90,10 +90,13 @@ struct ObjMesh {
 // memory runs out all the same.
 ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 
+class MtlLibrary;
+
 // The same for the file's content already read; `path` names the file in messages and
-// locates its .mtl files.
+// locates its .mtl files, which `library` reads (the scene's, shared by its OBJ files), or
+// one of this parse's own.
 ObjMesh parse_obj(const std::string& text, const std::string& path,
-                  std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
+                  std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max(), MtlLibrary* library = nullptr);
 
 // The whole text of the OBJ at `path`, with read_obj's limits; ObjError when it cannot be read.
 std::string read_obj_text(const std::string& path);

@@ -30,4 +30,11 @@ std::optional<std::string> wide_unicode_encoding(std::string_view text) {
     return std::nullopt;
 }
 
+std::string saved_text_problem(std::string_view text) {
+    if (const auto encoding = wide_unicode_encoding(text))
+        return "it is " + *encoding + " text; save it as UTF-8 (clrender reads only UTF-8)";
+    if (text.size() >= 2 && text[0] == '\x1F' && text[1] == '\x8B') return "it is gzip-compressed; decompress it first";
+    return "";
+}
+
 }  // namespace clr

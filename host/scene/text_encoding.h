@@ -14,4 +14,9 @@ namespace clr {
 // (every JSON text starts with one) have in it (RFC 4627, section 3). nullopt otherwise.
 std::optional<std::string> wide_unicode_encoding(std::string_view text);
 
+// Why `text` is not the text of an OBJ or .mtl file though it may be one saved another way:
+// UTF-16 or UTF-32 (whose NUL bytes would read as unknown statements), or gzip-compressed.
+// "" when neither.
+std::string saved_text_problem(std::string_view text);
+
 }  // namespace clr

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "scene/mtl_library.h"
 #include "support/obj_text.h"
 #include "support/temp_folder.h"
 
@@ -87,6 +88,19 @@ TEST_F(MeshCacheTest, AMaterialNamedASecondWayIsCheckedUnderThatName) {
     EXPECT_THROW(read_obj_through_cache(obj, cache_), ObjError) << "the entry stood for the link's target";
     fs::remove(folder_.file("alias.mtl"));
     EXPECT_THROW(read_obj_through_cache(obj, cache_), ObjError) << "the entry stood for a missing .mtl";
+}
+
+// Within one scene's load a .mtl is read once for all its OBJ files (scene/mtl_library.h): a
+// stored mesh is checked against the library's read of its .mtl, not a read of its own, so
+// that a thousand OBJ files naming one large library do not each hash it.
+TEST_F(MeshCacheTest, AStoredMeshIsCheckedAgainstTheScenesReadOfItsMtl) {
+    read_obj_through_cache(obj_, cache_);
+    const MeshCache::Key key = MeshCache::key(obj_, testing::read_bytes(obj_));
+    MtlLibrary library;
+    ASSERT_TRUE(library.read(folder_.file("grid.mtl")).read);
+    folder_.write("grid.mtl", "newmtl green\nKd 0.9 0.1 0.1\n");  // after the scene's read of it
+    EXPECT_TRUE(cache_.load(key, &library).has_value()) << "the library's read, as the scene's other meshes see it";
+    EXPECT_FALSE(cache_.load(key).has_value()) << "a read of its own sees the edit";
 }
 
 TEST_F(MeshCacheTest, ADamagedEntryIsNotUsedAndIsReplaced) {
