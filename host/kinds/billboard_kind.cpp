@@ -48,8 +48,8 @@ ClrBillboard BillboardKind::device(const Billboard& billboard, const TextureSlot
     double m2 = dot(m, m);
 
     ClrBillboard out{};
+    out.normal = to_float4(normalize(cross(edge_b, edge_a)));  // front: (LL-UL) x (UR-UL); move() sets its w
     move(out, billboard, origin);
-    out.normal = to_float4(normalize(cross(edge_b, edge_a)));  // front: (LL-UL) x (UR-UL)
     out.dual_a = to_float4(cross(edge_b, m) / m2);
     out.dual_b = to_float4(cross(m, edge_a) / m2);
     out.color = to_float4(billboard.ambient);
@@ -64,8 +64,19 @@ ClrBillboard BillboardKind::device(const Billboard& billboard, const TextureSlot
     return out;
 }
 
+// The corner relative to the origin (the frame's eye), and in the normal's w the plane's offset
+// (UL - origin).n for the normal as stored: its length times the origin's signed distance from
+// the plane, in double from the unrounded corners, so that the plane the kernels see passes
+// through the true plane's point nearest the eye. The kernels take it where the corner, rounded
+// to float relative to the eye, would put the plane of a billboard far larger than its distance
+// units off (kernels/kinds/billboard.cl, billboard_offset()).
 void BillboardKind::move(ClrBillboard& device, const Billboard& billboard, const Vec3& origin) {
     device.corner = to_float4(billboard.upper_left - origin);
+    const Vec3 stored{device.normal.s[0], device.normal.s[1], device.normal.s[2]};
+    const Vec3 plane = normalize(cross(billboard.lower_left - billboard.upper_left, billboard.upper_right - billboard.upper_left));
+    const double side = dot(stored, plane) < 0 ? -1.0 : 1.0;
+    const double offset = side * dot(billboard.upper_left - origin, plane) * length(stored);
+    device.normal.s[3] = static_cast<float>(std::isfinite(offset) ? offset : dot(billboard.upper_left - origin, stored));
 }
 
 }  // namespace clr

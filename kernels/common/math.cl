@@ -52,6 +52,12 @@ real dot3(real3 a, real3 b)
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
+/* |p.x q.x| + |p.y q.y| + |p.z q.z|: the bound on the rounding of dot3(p, q). */
+real abs_dot3(real3 p, real3 q)
+{
+    return fabs(p.x * q.x) + fabs(p.y * q.y) + fabs(p.z * q.z);
+}
+
 /* v / |v| with dot3, for the same reason. */
 real3 unit3(real3 v)
 {

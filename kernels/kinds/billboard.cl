@@ -23,6 +23,22 @@ real2 billboard_coords(__global const ClrBillboard* billboard, real3 origin, rea
                    dot3(from_corner, convert_real3(billboard->dual_b.xyz)));
 }
 
+/* The origin's offset (UL - o).n from the billboard's plane, the more exact of two ways. From
+ * the corner as stored: the corner is rounded to float relative to the eye, so the plane of a
+ * billboard far larger than its distance from the eye (a tilted ground 1e12 across under an
+ * eye 1.4 above it) passed units off the eye's surroundings, and the billboard vanished. From
+ * the plane's offset from the eye, which the host computed in double (ClrBillboard normal.w),
+ * less n.o: exact near the eye (o = 0 for a primary ray). The second is taken only where the
+ * first's rounding bound is 4096 times its own, so that every billboard not so large keeps its
+ * bits. */
+real billboard_offset(__global const ClrBillboard* billboard, real3 corner, real3 normal, real3 origin)
+{
+    real3 to_corner = corner - origin;
+    real stored = (real)billboard->normal.w;
+    real eye_error = fabs(stored) + abs_dot3(normal, origin);
+    return eye_error * 4096.0f < abs_dot3(to_corner, normal) ? stored - dot3(normal, origin) : dot3(to_corner, normal);
+}
+
 /* Distance along the ray to the billboard's plane if the ray meets the parallelogram there
  * at an opaque texel with 0 < t < t_max, else +inf. A ray parallel to the plane divides by
  * zero; the resulting inf or NaN fails the range test, so no special case is needed. */
@@ -30,7 +46,7 @@ real billboard_distance(__global const ClrBillboard* billboard, __global const u
                         real3 direction, real t_max)
 {
     real3 normal = convert_real3(billboard->normal.xyz);
-    real t = dot3(convert_real3(billboard->corner.xyz) - origin, normal) / dot3(direction, normal);
+    real t = billboard_offset(billboard, convert_real3(billboard->corner.xyz), normal, origin) / dot3(direction, normal);
     if (!(t > 0.0f && t < t_max))
         return INFINITY;
     real2 ab = billboard_coords(billboard, origin, direction, t);
@@ -63,7 +79,7 @@ CLR_PACKET_INLINE real16 billboard_distance16(__global const ClrBillboard* billb
 {
     real3 normal = convert_real3(billboard->normal.xyz);
     real3 corner = convert_real3(billboard->corner.xyz);
-    real16 t = dot3(corner - origin, normal) / dot16(normal, d);
+    real16 t = billboard_offset(billboard, corner, normal, origin) / dot16(normal, d);
     real3 origin_from_corner = origin - corner;
     real16 fx = origin_from_corner.x + t * d.x;
     real16 fy = origin_from_corner.y + t * d.y;
@@ -113,9 +129,14 @@ CLR_PACKET_INLINE real16 billboard_distance16_from(__global const ClrBillboard* 
 {
     real3 normal = convert_real3(billboard->normal.xyz);
     real3 corner = convert_real3(billboard->corner.xyz);
-    /* dot3(corner - origin, normal) / dot3(direction, normal) */
+    /* billboard_offset(), then over dot3(direction, normal) */
     real16 ex = corner.x - o.x, ey = corner.y - o.y, ez = corner.z - o.z;
-    real16 t = (ex * normal.x + ey * normal.y + ez * normal.z) / (d.x * normal.x + d.y * normal.y + d.z * normal.z);
+    real stored = (real)billboard->normal.w;
+    real16 eye_error = fabs(stored) + (fabs(normal.x * o.x) + fabs(normal.y * o.y) + fabs(normal.z * o.z));
+    real16 offset = select(ex * normal.x + ey * normal.y + ez * normal.z,
+                           stored - (normal.x * o.x + normal.y * o.y + normal.z * o.z),
+                           eye_error * 4096.0f < fabs(ex * normal.x) + fabs(ey * normal.y) + fabs(ez * normal.z));
+    real16 t = offset / (d.x * normal.x + d.y * normal.y + d.z * normal.z);
     /* billboard_coords(): (origin - corner) + t * direction, then its dots with the duals */
     real16 fx = (o.x - corner.x) + t * d.x;
     real16 fy = (o.y - corner.y) + t * d.y;

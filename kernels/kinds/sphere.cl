@@ -9,21 +9,41 @@
 #include "packet/packet_types.cl"
 #include "shared/clr_types.h"
 
+/* A sphere's power c = |o - centre|^2 - r^2 at the ray's origin o (negative inside), the more
+ * exact of two ways. From oc = o - centre as stored, |oc|^2 - r^2: both squares round by a
+ * share of their size, so near the surface of a sphere far larger than that distance (a ground
+ * sphere of radius 1e8 under an eye 1.4 above it: squares of 1e16, c of 2.8e8) c was noise,
+ * its sign, whether the origin is inside, too, and the image went black. From the power of the
+ * eye that the host computed in double (`c_eye`, ClrSphere color.w) and the origin relative to
+ * it: c_eye + o.(o - 2 centre), exact near the eye (o = 0 for a primary ray). The second is
+ * taken only where the first's rounding bound is 4096 times its own, so that every sphere not
+ * so near the origin keeps its bits. */
+real sphere_power(real c_eye, real3 oc, real3 center, real3 origin, real radius)
+{
+    real from_oc = dot3(oc, oc) - radius * radius;
+    real oc_error = dot3(oc, oc) + radius * radius;
+    real3 away = oc - center;
+    real from_eye = c_eye + dot3(origin, away);
+    real eye_error = fabs(c_eye) + abs_dot3(origin, away);
+    return eye_error * 4096.0f < oc_error ? from_eye : from_oc;
+}
+
 /* Distance along the unit direction to the nearest intersection with t > 0, or +inf.
  * Float32-robust form (Ray Tracing Gems, ch. 7): the discriminant is computed from the
  * distance between the centre and the ray's closest point instead of b*b - c, which would
  * cancel catastrophically for small or distant spheres, and the two roots come from
  * q = b + sign(b) sqrt(discriminant) as c/q and q, so neither subtracts nearly equal values. */
-real sphere_distance(float4 center_radius, real3 origin, real3 direction)
+real sphere_distance(float4 center_radius, real c_eye, real3 origin, real3 direction)
 {
     real radius = center_radius.w;
-    real3 oc = origin - convert_real3(center_radius.xyz);
+    real3 center = convert_real3(center_radius.xyz);
+    real3 oc = origin - center;
     real b = -dot3(oc, direction);              /* t of the closest approach */
     real3 closest_offset = oc + b * direction; /* centre -> closest point on the ray */
     real discriminant = radius * radius - dot3(closest_offset, closest_offset);
     if (discriminant < 0.0f)
         return INFINITY;
-    real c = dot3(oc, oc) - radius * radius;
+    real c = sphere_power(c_eye, oc, center, origin, radius);
     real q = b + copysign(sqrt(discriminant), b);
     if (q == 0.0f) /* tangent exactly at the origin */
         return INFINITY;
@@ -51,23 +71,24 @@ CLR_PACKET_INLINE real16 sphere_root16(real16 b, real16 discriminant, real16 c)
 }
 
 /* sphere_distance() for 16 rays from one origin. */
-CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real3 origin, Directions16 d)
+CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real c_eye, real3 origin, Directions16 d)
 {
     real radius = center_radius.w;
-    real3 oc = origin - convert_real3(center_radius.xyz);
+    real3 center = convert_real3(center_radius.xyz);
+    real3 oc = origin - center;
     real16 b = -dot16(oc, d);
     real16 cx = oc.x + b * d.x, cy = oc.y + b * d.y, cz = oc.z + b * d.z;
     real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
     if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
-    real c = dot3(oc, oc) - radius * radius;
+    real c = sphere_power(c_eye, oc, center, origin, radius);
     return sphere_root16(b, discriminant, (real16)(c));
 }
 
 /* sphere_distance() for 16 rays from 16 origins, the shadow rays of a packet's hit points
  * (packet/shadows16.cl): lane by lane the same operations in the same order, so each lane's t is
  * the one sphere_distance() gives its ray, to the last bit. */
-CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, Points16 o, Directions16 d)
+CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, real c_eye, Points16 o, Directions16 d)
 {
     real radius = center_radius.w;
     real16 ocx = o.x - (real)center_radius.x, ocy = o.y - (real)center_radius.y, ocz = o.z - (real)center_radius.z;
@@ -76,7 +97,12 @@ CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, Points16 o
     real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
     if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
-    real16 c = (ocx * ocx + ocy * ocy + ocz * ocz) - radius * radius;
+    /* sphere_power() lane by lane */
+    real16 squared = ocx * ocx + ocy * ocy + ocz * ocz;
+    real16 ax = ocx - (real)center_radius.x, ay = ocy - (real)center_radius.y, az = ocz - (real)center_radius.z;
+    real16 from_eye = c_eye + (o.x * ax + o.y * ay + o.z * az);
+    real16 eye_error = fabs(c_eye) + (fabs(o.x * ax) + fabs(o.y * ay) + fabs(o.z * az));
+    real16 c = select(squared - radius * radius, from_eye, eye_error * 4096.0f < squared + radius * radius);
     return sphere_root16(b, discriminant, c);
 }
 
@@ -86,14 +112,14 @@ CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, Points16 o
  * needs no t_max: the caller compares). */
 real sphere_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
 {
-    return sphere_distance(spheres[index].center_radius, origin, direction);
+    return sphere_distance(spheres[index].center_radius, spheres[index].color.w, origin, direction);
 }
 
 /* sphere_hit_distance() for 16 primary rays; a sphere shows no texels. */
 CLR_PACKET_INLINE real16 sphere_hit_distance16(int index, real3 origin, Directions16 d, int want_texels,
                                                uint16* texel, CLR_SCENE_PARAMS)
 {
-    return sphere_distance16(spheres[index].center_radius, origin, d);
+    return sphere_distance16(spheres[index].center_radius, spheres[index].color.w, origin, d);
 }
 
 /* The unit outward normal at `point` on the sphere. */

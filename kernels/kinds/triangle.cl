@@ -95,12 +95,6 @@ real3 triangle_plane_normal(__global const ClrTriangle* triangle)
     return convert_real3((float3)(triangle->corner0.w, triangle->corner1.w, triangle->corner2.w));
 }
 
-/* |p.x q.x| + |p.y q.y| + |p.z q.z|: the bound on the rounding of dot3(p, q). */
-real abs_dot3(real3 p, real3 q)
-{
-    return fabs(p.x * q.x) + fabs(p.y * q.y) + fabs(p.z * q.z);
-}
-
 /* The origin's offset (c0 - o).n from the plane, with a bound on its rounding (in units of
  * its precision), the more exact of two ways. From the corner as stored (`a` = c0 - o): exact
  * near the triangle, and of the plane that the corners as stored span, where the edge tests

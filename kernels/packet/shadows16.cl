@@ -111,7 +111,7 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
 #endif
 #if CLR_FEATURE_SPHERES
             if (kind == CLR_HIT_SPHERE) {
-                real16 t = sphere_distance16_from(spheres[index].center_radius, origins, d);
+                real16 t = sphere_distance16_from(spheres[index].center_radius, spheres[index].color.w, origins, d);
                 met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
                 continue;
             }

@@ -77,7 +77,7 @@ typedef struct {
 
 typedef struct {
     clr_float4 center_radius; /* xyz = centre, w = radius (> 0) */
-    clr_float4 color;         /* xyz = ambient colour; w unused */
+    clr_float4 color;         /* xyz = ambient colour; w = the eye's power |eye - centre|^2 - r^2 */
     clr_uint flags;           /* CLR_SURFACE_* */
     clr_uint material;        /* its Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */
     clr_uint pad1, pad2;
@@ -86,7 +86,7 @@ typedef struct {
 /* A parallelogram UL + a*(UR-UL) + b*(LL-UL), 0 <= a, b <= 1. */
 typedef struct {
     clr_float4 corner; /* xyz = UL */
-    clr_float4 normal; /* xyz = unit front normal normalize((LL-UL) x (UR-UL)) */
+    clr_float4 normal; /* xyz = unit front normal normalize((LL-UL) x (UR-UL)); w = the plane's offset from the eye */
     clr_float4 dual_a; /* xyz = vector whose dot with (P - UL) gives a, for P in the plane */
     clr_float4 dual_b; /* xyz = vector whose dot with (P - UL) gives b, for P in the plane */
     clr_float4 color;  /* xyz = flat colour (ambient); w unused */

@@ -323,6 +323,36 @@ TEST(Stress, GroundTrianglesFarLargerThanTheirDistanceFromTheEye) {
     }
 }
 
+// A ground sphere (a planet under the eye) and ground billboards far larger than their
+// distance from the eye, 1.4 below it, lit, with a sphere standing on them. The sphere's
+// |eye - centre|^2 - r^2 cancelled in float (squares of 1e16 rounding by 6e8 for a radius of
+// 1e8): whether the eye was inside came out at random, and the image black. A billboard 2e12
+// across, tilted by a tenth, had its plane units off the eye (the corner rounded to float 1e12
+// away) and vanished. The host gives both the eye's power and the plane's offset in double.
+TEST(Stress, GroundSpheresAndBillboardsFarLargerThanTheirDistanceFromTheEye) {
+    const auto ground_scene = [] {
+        Scene scene = testing::make_scene({0.3, 0.4, 3}, {0, -1, 0}, {0, 1, 0}, 60, 96, 72);
+        scene.has_sun = true;
+        scene.sun_location = {2, 3, 4};
+        scene.spheres.push_back(testing::make_sphere({0.2, -0.6, -0.3}, 0.4, {0.9, 0.2, 0.2}));
+        return scene;
+    };
+    for (const double radius : {1e8, 1e14}) {
+        Scene scene = ground_scene();
+        scene.spheres.push_back(testing::make_sphere({0, -1 - radius, 0}, radius, {0.8, 0.8, 0.8}));
+        std::ostringstream what;
+        what << "ground sphere of radius " << radius;
+        expect_close_to_reference(scene, what.str());
+    }
+    for (const double tilt : {0.0, 0.1}) {
+        const double s = 1e12;
+        Scene scene = ground_scene();
+        scene.billboards.push_back(testing::make_billboard({-s, -1 - tilt * s, -s}, {-s, -1 - tilt * s, s},
+                                                           {s, -1 + tilt * s, -s}, {0.8, 0.8, 0.8}));
+        expect_close_to_reference(scene, tilt == 0 ? "level ground billboard 2e12 across" : "tilted ground billboard 2e12 across");
+    }
+}
+
 // Whether the ray through (x, y, -1) (camera looking along -z, up +y) clearly meets a shape:
 // 1 inside, 0 outside, -1 too close to its outline to say.
 using Coverage = std::function<int(double x, double y)>;
