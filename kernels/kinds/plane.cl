@@ -12,6 +12,20 @@
 #include "packet/packet_types.cl"
 #include "shared/clr_types.h"
 
+/* The origin's offset (P0 - o).n from the plane, the more exact of two ways: from the point as
+ * stored, rounded to float relative to the eye (a plane through a point 1e12 away passed units
+ * off the eye, and filled the image with the wrong side of it), or from the plane's offset
+ * from the eye, which the host computed in double (ClrPlane point.w), less n.o; the second only
+ * where the first's rounding bound is 4096 times its own, so that other planes keep their bits
+ * (kinds/billboard.cl, billboard_offset()). */
+real plane_offset(__global const ClrPlane* plane, real3 normal, real3 origin)
+{
+    real3 to_point = convert_real3(plane->point.xyz) - origin;
+    real stored = (real)plane->point.w;
+    real eye_error = fabs(stored) + abs_dot3(normal, origin);
+    return eye_error * 4096.0f < abs_dot3(to_point, normal) ? stored - dot3(normal, origin) : dot3(to_point, normal);
+}
+
 /* The lecture's ray-plane intersection: t = ((P0 - o).n) / (d.n), kept when 0 < t < t_max;
  * a ray parallel to the plane (d.n = 0) misses it. */
 real plane_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
@@ -21,7 +35,7 @@ real plane_hit_distance(int index, real3 origin, real3 direction, real t_max, CL
     real along = dot3(direction, normal);
     if (along == 0.0f)
         return INFINITY;
-    real t = dot3(convert_real3(plane->point.xyz) - origin, normal) / along;
+    real t = plane_offset(plane, normal, origin) / along;
     return t > 0.0f && t < t_max ? t : INFINITY;
 }
 
@@ -32,7 +46,7 @@ CLR_PACKET_INLINE real16 plane_hit_distance16(int index, real3 origin, Direction
     __global const ClrPlane* plane = &planes[index];
     real3 normal = convert_real3(plane->normal.xyz);
     real16 along = dot16(normal, d);
-    real16 t = (real16)(dot3(convert_real3(plane->point.xyz) - origin, normal)) / along;
+    real16 t = (real16)(plane_offset(plane, normal, origin)) / along;
     return select((real16)(INFINITY), t, along != 0.0f && t > 0.0f);
 }
 

@@ -118,7 +118,7 @@ typedef struct {
 /* An infinite plane through `point` with unit normal `normal`, seen from both sides. Planes
  * are in no BVH and no screen tile: every ray tests every plane. */
 typedef struct {
-    clr_float4 point;  /* xyz = a point of the plane; w unused */
+    clr_float4 point;  /* xyz = a point of the plane; w = the plane's offset from the eye */
     clr_float4 normal; /* xyz = unit normal as the scene gives it; w unused */
     clr_float4 color;  /* xyz = ambient colour; w unused */
     clr_uint flags;    /* CLR_SURFACE_* */

@@ -132,6 +132,22 @@ TEST(Planes, APlaneIsLitAlikeFromBothSidesOutToTheHorizon) {
     EXPECT_EQ(testing::render_with_kernels(scene).rgba, testing::render_with_kernels(flipped).rgba);
 }
 
+// A plane given by a point far along it (1e8 and 1e12 away, tilted by a tenth) passing 1.4 under
+// the eye: the point, rounded to float relative to the eye, put the plane units off there (a
+// fifth of the pixels lit wrongly at 1e8, nearly all at 1e12). The host's offset of the plane
+// from the eye, in double, places it as the reference does.
+TEST(Planes, APlaneThroughAFarPointIsWhereItPassesTheEye) {
+    for (const double far : {1e8, 1e12}) {
+        Scene scene = testing::make_scene({0.3, 0.4, 3}, {0, -1, 0}, {0, 1, 0}, 60, 96, 72);
+        const std::uint32_t plain = add_material(scene, {0.7, 0.7, 0.7}, {0.3, 0.3, 0.3}, 8);
+        add_plane(scene, {far, -1 + 0.1 * far, 0}, {-0.1, 1, 0}, {0.1, 0.1, 0.1}, plain);
+        add_sphere(scene, {0.2, -0.6, -0.3}, 0.4, {0.2, 0.1, 0.1}, plain);
+        scene.lights.push_back({{2, 3, 4}, {0.9, 0.9, 0.9}});
+        testing::expect_kernels_match_reference(scene, far == 1e8 ? "plane through a point 1e8 away"
+                                                                   : "plane through a point 1e12 away");
+    }
+}
+
 // One pixel by hand: the camera looks straight at a plane with a light at the eye, so at the
 // centre pixel n = l = h = (0, 0, 1): colour = ambient + I (k_d + k_s).
 TEST(Lights, TheCentrePixelIsTheModelWorkedOutByHand) {
