@@ -49,7 +49,6 @@ ClrBillboard BillboardKind::device(const Billboard& billboard, const TextureSlot
 
     ClrBillboard out{};
     out.normal = to_float4(normalize(cross(edge_b, edge_a)));  // front: (LL-UL) x (UR-UL); move() sets its w
-    move(out, billboard, origin);
     out.dual_a = to_float4(cross(edge_b, m) / m2);
     out.dual_b = to_float4(cross(m, edge_a) / m2);
     out.color = to_float4(billboard.ambient);
@@ -61,6 +60,7 @@ ClrBillboard BillboardKind::device(const Billboard& billboard, const TextureSlot
         out.texture_height = texture->height;
         if (texture->holes) out.flags |= CLR_SURFACE_HOLES;  // only these need alpha tests
     }
+    move(out, billboard, origin);  // last: it marks a billboard near the eye in the flags
     return out;
 }
 
@@ -77,6 +77,14 @@ void BillboardKind::move(ClrBillboard& device, const Billboard& billboard, const
     const double side = dot(stored, plane) < 0 ? -1.0 : 1.0;
     const double offset = side * dot(billboard.upper_left - origin, plane) * length(stored);
     device.normal.s[3] = static_cast<float>(std::isfinite(offset) ? offset : dot(billboard.upper_left - origin, stored));
+    // The kernels' test can choose the stored offset only where 4096 |offset| is below
+    // (UL - eye).n summed by the components' magnitudes (billboard_offset()); half that, for
+    // rounding, marks the billboards that run it.
+    const Vec3 to_corner = billboard.upper_left - origin;
+    const double spread = std::fabs(to_corner.x * stored.x) + std::fabs(to_corner.y * stored.y) +
+                          std::fabs(to_corner.z * stored.z);
+    const bool near_eye = 2048 * std::fabs(device.normal.s[3]) < spread;
+    device.flags = near_eye ? device.flags | CLR_SURFACE_NEAR_EYE : device.flags & ~CLR_SURFACE_NEAR_EYE;
 }
 
 }  // namespace clr

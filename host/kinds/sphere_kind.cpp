@@ -84,9 +84,11 @@ double SphereKind::least_distance(const ObjectBounds& view, const Sphere& sphere
 
 ClrSphere SphereKind::device(const Sphere& sphere, const Vec3& origin) {
     ClrSphere out{};
-    out.color = to_float4(sphere.ambient);  // before move(), which stores the eye's power in its w
-    move(out, sphere, origin);
+    // Before move(), which stores the eye's power in the colour's w and marks a sphere near the
+    // eye in the flags.
+    out.color = to_float4(sphere.ambient);
     out.flags = sphere.is_mirror ? CLR_SURFACE_MIRROR : 0u;
+    move(out, sphere, origin);
     out.material = sphere.material;
     return out;
 }
@@ -98,7 +100,12 @@ ClrSphere SphereKind::device(const Sphere& sphere, const Vec3& origin) {
 void SphereKind::move(ClrSphere& device, const Sphere& sphere, const Vec3& origin) {
     device.center_radius = to_float4(sphere.center - origin, static_cast<float>(sphere.radius));
     const double distance = length(origin - sphere.center);
-    device.color.s[3] = static_cast<float>((distance - sphere.radius) * (distance + sphere.radius));
+    const double power = (distance - sphere.radius) * (distance + sphere.radius);
+    device.color.s[3] = static_cast<float>(power);
+    // The kernels' test can choose the eye's power only where 4096 |power| < distance^2 + r^2
+    // (sphere_power()); half that, for rounding, marks the spheres that run it.
+    const bool near_eye = 2048 * std::fabs(power) < distance * distance + sphere.radius * sphere.radius;
+    device.flags = near_eye ? device.flags | CLR_SURFACE_NEAR_EYE : device.flags & ~CLR_SURFACE_NEAR_EYE;
 }
 
 }  // namespace clr

@@ -50,9 +50,11 @@ double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& tr
 ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {
     const Mesh& mesh = scene.meshes[triangle.mesh];
     ClrTriangle out{};
-    out.color = to_float4(mesh.ambient);  // before move(), which stores the plane's offset in its w
-    move(out, triangle, origin);
+    // Before move(), which stores the plane's offset in the colour's w and marks a triangle near
+    // the eye in the flags.
+    out.color = to_float4(mesh.ambient);
     out.flags = mesh.is_mirror ? CLR_SURFACE_MIRROR : 0u;
+    move(out, triangle, origin);
     out.normals = triangle.normals < 0 ? -1 : triangle.normals * 3;
     out.material = mesh.material;
     return out;
@@ -115,6 +117,19 @@ void store_plane_offset(ClrTriangle& device, const Triangle& triangle, const Vec
     device.color.s[3] = static_cast<float>(std::isfinite(offset) ? offset : dot(c[0] - origin, stored));
 }
 
+// Whether the triangle is larger than an eighth of its distance from the origin (the frame's
+// eye): its box's diagonal against the distance to its box. Only such a triangle can have a hit
+// that the kernels' plane_t_is_exacter() gives the plane's t: that needs the farthest corner
+// along the ray twice as far as the hit, and a diagonal below 2 / sqrt(3) - 1 (0.155) of the
+// distance keeps every corner nearer (kernels/kinds/triangle.cl).
+bool near_eye(const Triangle& triangle, const Vec3& origin) {
+    Box3 box;
+    for (const Vec3& corner : triangle.corners) box.grow(corner - origin);
+    const Vec3 nearest{std::clamp(0.0, box.lower.x, box.upper.x), std::clamp(0.0, box.lower.y, box.upper.y),
+                       std::clamp(0.0, box.lower.z, box.upper.z)};
+    return !(8 * length(box.upper - box.lower) < length(nearest));
+}
+
 }  // namespace
 
 void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
@@ -124,6 +139,7 @@ void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec
     device.edge_order = edge_order(device);
     store_plane_normal(device);
     store_plane_offset(device, triangle, origin);
+    device.flags = near_eye(triangle, origin) ? device.flags | CLR_SURFACE_NEAR_EYE : device.flags & ~CLR_SURFACE_NEAR_EYE;
 }
 
 }  // namespace clr

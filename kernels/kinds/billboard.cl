@@ -30,10 +30,14 @@ real2 billboard_coords(__global const ClrBillboard* billboard, real3 origin, rea
  * the plane's offset from the eye, which the host computed in double (ClrBillboard normal.w),
  * less n.o: exact near the eye (o = 0 for a primary ray). The second is taken only where the
  * first's rounding bound is 4096 times its own, so that every billboard not so large keeps its
- * bits. */
+ * bits. That needs 4096 |stored| < |(UL - eye).n|, summed by component, whatever the origin; the
+ * host marks the billboards that meet it with a margin (CLR_SURFACE_NEAR_EYE), and the others
+ * take the first without the test. */
 real billboard_offset(__global const ClrBillboard* billboard, real3 corner, real3 normal, real3 origin)
 {
     real3 to_corner = corner - origin;
+    if (!(billboard->flags & CLR_SURFACE_NEAR_EYE))
+        return dot3(to_corner, normal);
     real stored = (real)billboard->normal.w;
     real eye_error = fabs(stored) + abs_dot3(normal, origin);
     return eye_error * 4096.0f < abs_dot3(to_corner, normal) ? stored - dot3(normal, origin) : dot3(to_corner, normal);
@@ -131,11 +135,13 @@ CLR_PACKET_INLINE real16 billboard_distance16_from(__global const ClrBillboard* 
     real3 corner = convert_real3(billboard->corner.xyz);
     /* billboard_offset(), then over dot3(direction, normal) */
     real16 ex = corner.x - o.x, ey = corner.y - o.y, ez = corner.z - o.z;
-    real stored = (real)billboard->normal.w;
-    real16 eye_error = fabs(stored) + (fabs(normal.x * o.x) + fabs(normal.y * o.y) + fabs(normal.z * o.z));
-    real16 offset = select(ex * normal.x + ey * normal.y + ez * normal.z,
-                           stored - (normal.x * o.x + normal.y * o.y + normal.z * o.z),
-                           eye_error * 4096.0f < fabs(ex * normal.x) + fabs(ey * normal.y) + fabs(ez * normal.z));
+    real16 offset = ex * normal.x + ey * normal.y + ez * normal.z;
+    if (billboard->flags & CLR_SURFACE_NEAR_EYE) {
+        real stored = (real)billboard->normal.w;
+        real16 eye_error = fabs(stored) + (fabs(normal.x * o.x) + fabs(normal.y * o.y) + fabs(normal.z * o.z));
+        offset = select(offset, stored - (normal.x * o.x + normal.y * o.y + normal.z * o.z),
+                        eye_error * 4096.0f < fabs(ex * normal.x) + fabs(ey * normal.y) + fabs(ez * normal.z));
+    }
     real16 t = offset / (d.x * normal.x + d.y * normal.y + d.z * normal.z);
     /* billboard_coords(): (origin - corner) + t * direction, then its dots with the duals */
     real16 fx = (o.x - corner.x) + t * d.x;

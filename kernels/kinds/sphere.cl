@@ -17,7 +17,9 @@
  * eye that the host computed in double (`c_eye`, ClrSphere color.w) and the origin relative to
  * it: c_eye + o.(o - 2 centre), exact near the eye (o = 0 for a primary ray). The second is
  * taken only where the first's rounding bound is 4096 times its own, so that every sphere not
- * so near the origin keeps its bits. */
+ * so near the origin keeps its bits. That needs 4096 |c_eye| < |centre - eye|^2 + r^2 whatever
+ * the origin; the host marks the spheres that meet it with a margin (CLR_SURFACE_NEAR_EYE),
+ * and the others take the first without the test (`near_eye` false). */
 real sphere_power(real c_eye, real3 oc, real3 center, real3 origin, real radius)
 {
     real from_oc = dot3(oc, oc) - radius * radius;
@@ -33,7 +35,7 @@ real sphere_power(real c_eye, real3 oc, real3 center, real3 origin, real radius)
  * distance between the centre and the ray's closest point instead of b*b - c, which would
  * cancel catastrophically for small or distant spheres, and the two roots come from
  * q = b + sign(b) sqrt(discriminant) as c/q and q, so neither subtracts nearly equal values. */
-real sphere_distance(float4 center_radius, real c_eye, real3 origin, real3 direction)
+real sphere_distance(float4 center_radius, real c_eye, bool near_eye, real3 origin, real3 direction)
 {
     real radius = center_radius.w;
     real3 center = convert_real3(center_radius.xyz);
@@ -43,7 +45,7 @@ real sphere_distance(float4 center_radius, real c_eye, real3 origin, real3 direc
     real discriminant = radius * radius - dot3(closest_offset, closest_offset);
     if (discriminant < 0.0f)
         return INFINITY;
-    real c = sphere_power(c_eye, oc, center, origin, radius);
+    real c = near_eye ? sphere_power(c_eye, oc, center, origin, radius) : dot3(oc, oc) - radius * radius;
     real q = b + copysign(sqrt(discriminant), b);
     if (q == 0.0f) /* tangent exactly at the origin */
         return INFINITY;
@@ -71,7 +73,8 @@ CLR_PACKET_INLINE real16 sphere_root16(real16 b, real16 discriminant, real16 c)
 }
 
 /* sphere_distance() for 16 rays from one origin. */
-CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real c_eye, real3 origin, Directions16 d)
+CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real c_eye, bool near_eye, real3 origin,
+                                           Directions16 d)
 {
     real radius = center_radius.w;
     real3 center = convert_real3(center_radius.xyz);
@@ -81,14 +84,15 @@ CLR_PACKET_INLINE real16 sphere_distance16(float4 center_radius, real c_eye, rea
     real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
     if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
-    real c = sphere_power(c_eye, oc, center, origin, radius);
+    real c = near_eye ? sphere_power(c_eye, oc, center, origin, radius) : dot3(oc, oc) - radius * radius;
     return sphere_root16(b, discriminant, (real16)(c));
 }
 
 /* sphere_distance() for 16 rays from 16 origins, the shadow rays of a packet's hit points
  * (packet/shadows16.cl): lane by lane the same operations in the same order, so each lane's t is
  * the one sphere_distance() gives its ray, to the last bit. */
-CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, real c_eye, Points16 o, Directions16 d)
+CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, real c_eye, bool near_eye, Points16 o,
+                                                Directions16 d)
 {
     real radius = center_radius.w;
     real16 ocx = o.x - (real)center_radius.x, ocy = o.y - (real)center_radius.y, ocz = o.z - (real)center_radius.z;
@@ -97,12 +101,14 @@ CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, real c_eye
     real16 discriminant = radius * radius - (cx * cx + cy * cy + cz * cz);
     if (!any_lanes16(discriminant >= 0.0f))
         return (real16)(INFINITY); /* all 16 rays miss: skip the square root and division */
-    /* sphere_power() lane by lane */
     real16 squared = ocx * ocx + ocy * ocy + ocz * ocz;
-    real16 ax = ocx - (real)center_radius.x, ay = ocy - (real)center_radius.y, az = ocz - (real)center_radius.z;
-    real16 from_eye = c_eye + (o.x * ax + o.y * ay + o.z * az);
-    real16 eye_error = fabs(c_eye) + (fabs(o.x * ax) + fabs(o.y * ay) + fabs(o.z * az));
-    real16 c = select(squared - radius * radius, from_eye, eye_error * 4096.0f < squared + radius * radius);
+    real16 c = squared - radius * radius;
+    if (near_eye) { /* sphere_power() lane by lane */
+        real16 ax = ocx - (real)center_radius.x, ay = ocy - (real)center_radius.y, az = ocz - (real)center_radius.z;
+        real16 from_eye = c_eye + (o.x * ax + o.y * ay + o.z * az);
+        real16 eye_error = fabs(c_eye) + (fabs(o.x * ax) + fabs(o.y * ay) + fabs(o.z * az));
+        c = select(c, from_eye, eye_error * 4096.0f < squared + radius * radius);
+    }
     return sphere_root16(b, discriminant, c);
 }
 
@@ -112,14 +118,18 @@ CLR_PACKET_INLINE real16 sphere_distance16_from(float4 center_radius, real c_eye
  * needs no t_max: the caller compares). */
 real sphere_hit_distance(int index, real3 origin, real3 direction, real t_max, CLR_SCENE_PARAMS)
 {
-    return sphere_distance(spheres[index].center_radius, spheres[index].color.w, origin, direction);
+    __global const ClrSphere* sphere = &spheres[index];
+    return sphere_distance(sphere->center_radius, sphere->color.w, (sphere->flags & CLR_SURFACE_NEAR_EYE) != 0u, origin,
+                           direction);
 }
 
 /* sphere_hit_distance() for 16 primary rays; a sphere shows no texels. */
 CLR_PACKET_INLINE real16 sphere_hit_distance16(int index, real3 origin, Directions16 d, int want_texels,
                                                uint16* texel, CLR_SCENE_PARAMS)
 {
-    return sphere_distance16(spheres[index].center_radius, spheres[index].color.w, origin, d);
+    __global const ClrSphere* sphere = &spheres[index];
+    return sphere_distance16(sphere->center_radius, sphere->color.w, (sphere->flags & CLR_SURFACE_NEAR_EYE) != 0u,
+                             origin, d);
 }
 
 /* The unit outward normal at `point` on the sphere. */

@@ -25,10 +25,13 @@
  * The blend rounds in proportion to the corners' distances along the ray, the plane's t in
  * proportion to the origin's distance from the plane: for a triangle far larger than its
  * distance (a ground triangle 1e8 across seen from 3 units) the blend's t was units off and
- * the floor speckled with false light. Each hit takes whichever of the two is the more exact
- * (plane_t_is_exacter()); the plane's offset may come from the host, computed in double
- * (triangle_offset()), since the corners themselves, rounded to float relative to the eye, put
- * such a plane units off. */
+ * the floor speckled with false light. Each hit on such a triangle takes whichever of the two
+ * is the more exact (plane_t_is_exacter()); the plane's offset may come from the host, computed
+ * in double (triangle_offset()), since the corners themselves, rounded to float relative to the
+ * eye, put such a plane units off. The host marks those triangles (CLR_SURFACE_NEAR_EYE: larger
+ * than an eighth of their distance from the eye, where the test could choose the plane at all);
+ * every other triangle takes the blend and its corner's offset without the test, which cost
+ * about 8% of a mesh's primary rays. */
 #ifndef CLR_KINDS_TRIANGLE_CL
 #define CLR_KINDS_TRIANGLE_CL
 
@@ -190,7 +193,8 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     if (!inside || det == 0.0f)
         return INFINITY;
     real3 n = triangle_plane_normal(triangle);
-    PlaneOffset plane = triangle_offset(triangle, k.a, n, origin);
+    bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
+    PlaneOffset plane = near_eye ? triangle_offset(triangle, k.a, n, origin) : (PlaneOffset){dot3(k.a, n), 0.0f};
     real offset = plane.offset, facing = dot3(direction, n);
     if (!plane_ahead(offset, facing))
         return INFINITY;
@@ -203,9 +207,11 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     }
     real t = (u * dot3(k.a, direction) + v * dot3(k.b, direction) + w * dot3(k.c, direction)) / det;
     real t_plane = offset / facing;
-    real blend_error = fmax(fmax(abs_dot3(k.a, direction), abs_dot3(k.b, direction)), abs_dot3(k.c, direction));
-    if (plane_t_is_exacter(plane.error, t_plane, abs_dot3(direction, n), facing, blend_error))
-        t = t_plane;
+    if (near_eye) {
+        real blend_error = fmax(fmax(abs_dot3(k.a, direction), abs_dot3(k.b, direction)), abs_dot3(k.c, direction));
+        if (plane_t_is_exacter(plane.error, t_plane, abs_dot3(direction, n), facing, blend_error))
+            t = t_plane;
+    }
     real least = triangle_least_t(offset, n, triangle_nearest_t(origin), triangle_plane_slack(origin));
     if (!(t > least))
         t = t_plane;
@@ -261,23 +267,26 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
-    PlaneOffset plane = triangle_offset(triangle, k.a, n, origin);
+    bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
+    PlaneOffset plane = near_eye ? triangle_offset(triangle, k.a, n, origin) : (PlaneOffset){dot3(k.a, n), 0.0f};
     real offset = plane.offset;
     real16 facing = dot16(n, d);
     hit = hit && ((offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f)); /* plane_ahead() */
     scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * dot16(k.a, d) + v * dot16(k.b, d) + w * dot16(k.c, d)) / det;
-    real16 t_plane = offset / facing;
-    /* plane_t_is_exacter() lane by lane, with abs_dot3() written out */
-    real16 blend_error = fmax(fmax(fabs(k.a.x * d.x) + fabs(k.a.y * d.y) + fabs(k.a.z * d.z),
-                                   fabs(k.b.x * d.x) + fabs(k.b.y * d.y) + fabs(k.b.z * d.z)),
-                              fabs(k.c.x * d.x) + fabs(k.c.y * d.y) + fabs(k.c.z * d.z));
-    real16 slant = fabs(d.x * n.x) + fabs(d.y * n.y) + fabs(d.z * n.z);
-    t = select(t, t_plane, hit && plane.error + fabs(t_plane) * slant < blend_error * fabs(facing));
+    if (near_eye) {
+        real16 t_plane = offset / facing;
+        /* plane_t_is_exacter() lane by lane, with abs_dot3() written out */
+        real16 blend_error = fmax(fmax(fabs(k.a.x * d.x) + fabs(k.a.y * d.y) + fabs(k.a.z * d.z),
+                                       fabs(k.b.x * d.x) + fabs(k.b.y * d.y) + fabs(k.b.z * d.z)),
+                                  fabs(k.c.x * d.x) + fabs(k.c.y * d.y) + fabs(k.c.z * d.z));
+        real16 slant = fabs(d.x * n.x) + fabs(d.y * n.y) + fabs(d.z * n.z);
+        t = select(t, t_plane, hit && plane.error + fabs(t_plane) * slant < blend_error * fabs(facing));
+    }
     real nearest = triangle_nearest_t(origin);
     mask16 behind = hit && !(t > nearest);
     if (any_lanes16(behind))
-        t = select(t, t_plane, behind);
+        t = select(t, offset / facing, behind);
     hit = hit && t > nearest;
     return select((real16)(INFINITY), t, hit);
 }
@@ -306,32 +315,37 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
-    /* triangle_offset() lane by lane */
-    real stored = (real)triangle->color.w;
-    real16 offset = ax * n.x + ay * n.y + az * n.z, offset_error = fabs(ax * n.x) + fabs(ay * n.y) + fabs(az * n.z);
-    real16 from_eye = stored - (n.x * o.x + n.y * o.y + n.z * o.z);
-    real16 from_eye_error = fabs(stored) + (fabs(n.x * o.x) + fabs(n.y * o.y) + fabs(n.z * o.z));
-    mask16 eye_exacter = from_eye_error < offset_error;
-    offset = select(offset, from_eye, eye_exacter);
-    offset_error = select(offset_error, from_eye_error, eye_exacter);
+    bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
+    real16 offset = ax * n.x + ay * n.y + az * n.z, offset_error = (real16)(0.0f);
+    if (near_eye) { /* triangle_offset() lane by lane */
+        real stored = (real)triangle->color.w;
+        offset_error = fabs(ax * n.x) + fabs(ay * n.y) + fabs(az * n.z);
+        real16 from_eye = stored - (n.x * o.x + n.y * o.y + n.z * o.z);
+        real16 from_eye_error = fabs(stored) + (fabs(n.x * o.x) + fabs(n.y * o.y) + fabs(n.z * o.z));
+        mask16 eye_exacter = from_eye_error < offset_error;
+        offset = select(offset, from_eye, eye_exacter);
+        offset_error = select(offset_error, from_eye_error, eye_exacter);
+    }
     real16 facing = d.x * n.x + d.y * n.y + d.z * n.z;
     hit = hit && ((offset > 0.0f && facing > 0.0f) || (offset < 0.0f && facing < 0.0f)); /* plane_ahead() */
     scale_weights16(hit, &u, &v, &w, &det);
     real16 t = (u * (ax * d.x + ay * d.y + az * d.z) + v * (bx * d.x + by * d.y + bz * d.z) +
                 w * (cx * d.x + cy * d.y + cz * d.z)) /
                det;
-    real16 t_plane = offset / facing;
-    /* plane_t_is_exacter() lane by lane, with abs_dot3() written out */
-    real16 blend_error = fmax(fmax(fabs(ax * d.x) + fabs(ay * d.y) + fabs(az * d.z),
-                                   fabs(bx * d.x) + fabs(by * d.y) + fabs(bz * d.z)),
-                              fabs(cx * d.x) + fabs(cy * d.y) + fabs(cz * d.z));
-    real16 slant = fabs(d.x * n.x) + fabs(d.y * n.y) + fabs(d.z * n.z);
-    t = select(t, t_plane, hit && offset_error + fabs(t_plane) * slant < blend_error * fabs(facing));
+    if (near_eye) {
+        real16 t_plane = offset / facing;
+        /* plane_t_is_exacter() lane by lane, with abs_dot3() written out */
+        real16 blend_error = fmax(fmax(fabs(ax * d.x) + fabs(ay * d.y) + fabs(az * d.z),
+                                       fabs(bx * d.x) + fabs(by * d.y) + fabs(bz * d.z)),
+                                  fabs(cx * d.x) + fabs(cy * d.y) + fabs(cz * d.z));
+        real16 slant = fabs(d.x * n.x) + fabs(d.y * n.y) + fabs(d.z * n.z);
+        t = select(t, t_plane, hit && offset_error + fabs(t_plane) * slant < blend_error * fabs(facing));
+    }
     /* triangle_least_t() lane by lane */
     real16 least = select((real16)(0.0f), nearest, fabs(offset) <= slack * (fabs(n.x) + fabs(n.y) + fabs(n.z)));
     mask16 behind = hit && !(t > least);
     if (any_lanes16(behind))
-        t = select(t, t_plane, behind);
+        t = select(t, offset / facing, behind);
     hit = hit && t > least;
     return select((real16)(INFINITY), t, hit);
 }

@@ -111,7 +111,9 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
 #endif
 #if CLR_FEATURE_SPHERES
             if (kind == CLR_HIT_SPHERE) {
-                real16 t = sphere_distance16_from(spheres[index].center_radius, spheres[index].color.w, origins, d);
+                __global const ClrSphere* sphere = &spheres[index];
+                real16 t = sphere_distance16_from(sphere->center_radius, sphere->color.w,
+                                                  (sphere->flags & CLR_SURFACE_NEAR_EYE) != 0u, origins, d);
                 met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
                 continue;
             }

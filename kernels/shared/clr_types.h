@@ -25,6 +25,9 @@ typedef cl_uint clr_uint;
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
 #define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below CLR_OPAQUE_ALPHA */
+#define CLR_SURFACE_NEAR_EYE 8u /* so large for its distance from the frame's eye that the
+                                   kernels may take what the host computed from the eye in double
+                                   (kinds/sphere.cl, billboard.cl, triangle.cl: each says when) */
 
 /* The only alpha at which a texel stops rays; any lower alpha is a hole that rays pass
  * through (docs/scene-format.md, Conventions: Billboards). The texels' alpha tests and the
