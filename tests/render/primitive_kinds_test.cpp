@@ -115,5 +115,32 @@ TEST(PrimitiveKinds, TriangleLeastDistanceBoundsItsDistanceClosely) {
     }
 }
 
+// The kernels weigh the host's double values against their own only for objects marked near
+// the eye (CLR_SURFACE_NEAR_EYE): the ground objects far larger than their distance that need
+// them (Stress.Ground*), never ordinary ones, whose every test that cost (8% of a mesh's
+// primary rays).
+TEST(PrimitiveKinds, OnlyObjectsFarLargerThanTheirDistanceAreMarkedNearTheEye) {
+    Scene scene = testing::make_scene({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 60, 32, 32);
+    testing::TestMesh mesh;
+    mesh.triangles = {{Vec3{-0.2, 0, 0}, Vec3{0.2, 0, 0}, Vec3{0, 0.3, 0}},     // 0.3 across, 5 away
+                      {Vec3{-1e8, -1.4, -1e8}, Vec3{1e8, -1.4, -1e8}, Vec3{0, -1.4, 1e8}}};  // ground
+    testing::add_mesh(scene, mesh, {1, 1, 1});
+    const Vec3 eye{0, 0, 5};
+    EXPECT_FALSE(TriangleKind::device(scene, scene.triangles[0], eye).flags & CLR_SURFACE_NEAR_EYE);
+    EXPECT_TRUE(TriangleKind::device(scene, scene.triangles[1], eye).flags & CLR_SURFACE_NEAR_EYE);
+    EXPECT_FALSE(SphereKind::device(testing::make_sphere({0, 0, 0}, 1, {1, 1, 1}), eye).flags & CLR_SURFACE_NEAR_EYE);
+    EXPECT_TRUE(SphereKind::device(testing::make_sphere({0, -1e8 - 1.4, 5}, 1e8, {1, 1, 1}), eye).flags &
+                CLR_SURFACE_NEAR_EYE);
+    const Billboard wall = testing::make_billboard({-1, 1, 0}, {-1, -1, 0}, {1, 1, 0}, {1, 1, 1});
+    EXPECT_FALSE(BillboardKind::device(wall, nullptr, eye).flags & CLR_SURFACE_NEAR_EYE);
+    // 2e12 across, tilted by a twentieth about the line 1.4 under the eye.
+    const Billboard ground = testing::make_billboard({-1e12, -1.4 - 5e10, -1e12}, {-1e12, -1.4 + 5e10, 1e12},
+                                                     {1e12, -1.4 - 5e10, -1e12}, {1, 1, 1});
+    EXPECT_TRUE(BillboardKind::device(ground, nullptr, eye).flags & CLR_SURFACE_NEAR_EYE);
+    // The mark follows the eye: the same sphere seen from far away is ordinary.
+    EXPECT_FALSE(SphereKind::device(testing::make_sphere({0, -1e8 - 1.4, 5}, 1e8, {1, 1, 1}), {0, 1e9, 5}).flags &
+                 CLR_SURFACE_NEAR_EYE);
+}
+
 }  // namespace
 }  // namespace clr
