@@ -22,15 +22,11 @@
 #include "raygen.cl"
 #include "shared/clr_types.h"
 
-/* The 16 lanes' column offsets within the packet. */
-#define CLR_LANES ((int16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
-
-/* camera_ray_through() for pixels (col0 .. col0 + 15, row), at offsets (ox, oy) in them. */
-CLR_PACKET_INLINE Directions16 camera_rays16(ClrCamera camera, int col0, int row, float16 ox, float16 oy)
+/* camera_ray_through() for the lanes' pixels, at offsets (ox, oy) in them. */
+CLR_PACKET_INLINE Directions16 camera_rays16(ClrCamera camera, LanePixels16 pixels, float16 ox, float16 oy)
 {
-    real16 col = convert_real16((int16)(col0) + CLR_LANES);
-    real16 sx = 2.0f * (col + convert_real16(ox)) / (real)camera.width - 1.0f;
-    real16 sy = 1.0f - 2.0f * ((real)row + convert_real16(oy)) / (real)camera.height;
+    real16 sx = 2.0f * (convert_real16(pixels.col) + convert_real16(ox)) / (real)camera.width - 1.0f;
+    real16 sy = 1.0f - 2.0f * (convert_real16(pixels.row) + convert_real16(oy)) / (real)camera.height;
     real3 forward = convert_real3(camera.forward.xyz), right = convert_real3(camera.right.xyz);
     real3 up = convert_real3(camera.up.xyz);
     Directions16 d;

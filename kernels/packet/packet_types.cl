@@ -9,6 +9,30 @@
  * vectors and results through the stack. */
 #define CLR_PACKET_INLINE __attribute__((always_inline))
 
+/* The pixels of a packet's 16 lanes, lane l at (col[l], row[l]): 16 of one row, whose screen
+ * tile's list culls objects by that row, or, where packets walk the BVH (info.primary_bvh), a
+ * 4x4 block, whose rays spread less and so reach fewer boxes. */
+typedef struct {
+    int16 col, row;
+} LanePixels16;
+
+/* The 16 lanes' offsets within a packet: 0 .. 15. */
+#define CLR_LANES ((int16)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
+
+/* Pixels col0 .. col0 + 15 of `row`. */
+CLR_PACKET_INLINE LanePixels16 row_pixels16(int col0, int row)
+{
+    LanePixels16 pixels = {(int16)(col0) + CLR_LANES, (int16)(row)};
+    return pixels;
+}
+
+/* The 4x4 block from (col0, row0), row by row. */
+CLR_PACKET_INLINE LanePixels16 block_pixels16(int col0, int row0)
+{
+    LanePixels16 pixels = {(int16)(col0) + (CLR_LANES & (int16)(3)), (int16)(row0) + (CLR_LANES >> (int16)(2))};
+    return pixels;
+}
+
 /* The 16 rays' unit directions. */
 typedef struct {
     real16 x, y, z;

@@ -63,15 +63,18 @@ CLR_PACKET_INLINE void store_pixels16(__global uchar4* out, uint16 packed, int l
 }
 
 /* Where in their pixels the 16 rays of sample `sample` lie (clr_samples.h). */
-CLR_PACKET_INLINE void sample_offsets16(ClrCamera camera, int col0, int row, int sample, float16* ox, float16* oy)
+CLR_PACKET_INLINE void sample_offsets16(ClrCamera camera, LanePixels16 pixels, int sample, float16* ox, float16* oy)
 {
     *ox = (float16)(0.5f); /* one sample: the centre */
     *oy = (float16)(0.5f);
     if (camera.samples > 1) {
         float oxs[16], oys[16];
+        int cols[16], rows[16];
+        vstore16(pixels.col, 0, cols);
+        vstore16(pixels.row, 0, rows);
         for (int lane = 0; lane < 16; ++lane) {
-            oxs[lane] = clr_sample_offset_x(camera.frame_seed, col0 + lane, row, sample, camera.samples);
-            oys[lane] = clr_sample_offset_y(camera.frame_seed, col0 + lane, row, sample, camera.samples);
+            oxs[lane] = clr_sample_offset_x(camera.frame_seed, cols[lane], rows[lane], sample, camera.samples);
+            oys[lane] = clr_sample_offset_y(camera.frame_seed, cols[lane], rows[lane], sample, camera.samples);
         }
         *ox = vload16(0, oxs);
         *oy = vload16(0, oys);
@@ -128,11 +131,12 @@ CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hit
 }
 #endif
 
-/* The sums of the samples' colours of pixels col0 .. col0 + 15 of `row`, whose primary rays
- * meet only objects of `tile`. With CLR_FEATURE_FLOAT_OUTPUT, `hit_counts` receives how many
- * of each pixel's samples hit an object (its coverage, docs/command-line.md, HDR and alpha
- * outputs); otherwise it is not touched. */
-CLR_PACKET_INLINE Colors16 sample_sums16(ClrCamera camera, real3 eye, int col0, int row, TileItems tile,
+/* The sums of the samples' colours of the lanes' pixels, whose primary rays meet only objects
+ * of `tile`; a tile's list is searched for pixels of `row` (row_pixels16()), where the packets
+ * walk the BVH the pixels may be any (block_pixels16()). With CLR_FEATURE_FLOAT_OUTPUT,
+ * `hit_counts` receives how many of each pixel's samples hit an object (its coverage,
+ * docs/command-line.md, HDR and alpha outputs); otherwise it is not touched. */
+CLR_PACKET_INLINE Colors16 sample_sums16(ClrCamera camera, real3 eye, LanePixels16 pixels, int row, TileItems tile,
                                          float16* hit_counts, CLR_SCENE_PARAMS)
 {
 #if CLR_FEATURE_FLOAT_OUTPUT
@@ -142,8 +146,8 @@ CLR_PACKET_INLINE Colors16 sample_sums16(ClrCamera camera, real3 eye, int col0, 
     sums.r = sums.g = sums.b = (float16)(0.0f);
     for (int sample = 0; sample < camera.samples; ++sample) {
         float16 ox, oy;
-        sample_offsets16(camera, col0, row, sample, &ox, &oy);
-        Directions16 d = camera_rays16(camera, col0, row, ox, oy);
+        sample_offsets16(camera, pixels, sample, &ox, &oy);
+        Directions16 d = camera_rays16(camera, pixels, ox, oy);
         Hits16 hits;
 #if CLR_FEATURE_CLIP
         /* Clipped rays start on the near plane, each at its own point: lane by lane. */
@@ -169,9 +173,33 @@ CLR_PACKET_INLINE Colors16 sample_sums16(ClrCamera camera, real3 eye, int col0, 
 CLR_PACKET_INLINE uint16 render_row16(ClrCamera camera, real3 eye, int col0, int row, TileItems tile, CLR_SCENE_PARAMS)
 {
     float16 unused;
-    Colors16 sums = sample_sums16(camera, eye, col0, row, tile, &unused, CLR_SCENE_ARGS);
+    Colors16 sums = sample_sums16(camera, eye, row_pixels16(col0, row), row, tile, &unused, CLR_SCENE_ARGS);
     return display_pixels16(sums.r, sums.g, sums.b, camera.samples);
 }
+
+#if CLR_FEATURE_BVH
+/* The 4x4 block of pixels from (col0, row0), as render_row16() renders a row, for packets that
+ * walk the BVH (no list to cull by row). */
+CLR_PACKET_INLINE uint16 render_block16(ClrCamera camera, real3 eye, int col0, int row0, TileItems tile,
+                                        CLR_SCENE_PARAMS)
+{
+    float16 unused;
+    Colors16 sums = sample_sums16(camera, eye, block_pixels16(col0, row0), -1, tile, &unused, CLR_SCENE_ARGS);
+    return display_pixels16(sums.r, sums.g, sums.b, camera.samples);
+}
+
+/* Writes the first `cols` columns of the first `rows` rows of a 4x4 block of packed pixels
+ * (lane 4 r + c at row r, column c) to `out`, rows `width` pixels apart. */
+CLR_PACKET_INLINE void store_block16(__global uchar4* out, int width, uint16 packed, int cols, int rows)
+{
+    __global uint* words = (__global uint*)out;
+    uint w[16];
+    vstore16(packed, 0, w);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c)
+            words[r * width + c] = w[4 * r + c];
+}
+#endif
 
 #if CLR_FEATURE_FLOAT_OUTPUT
 /* The float output mode (docs/command-line.md, HDR and alpha outputs): per pixel the mean of
@@ -194,9 +222,29 @@ CLR_PACKET_INLINE void render_linear_row16(__global float4* out, int lanes, ClrC
                                            int row, TileItems tile, CLR_SCENE_PARAMS)
 {
     float16 hit_counts;
-    Colors16 sums = sample_sums16(camera, eye, col0, row, tile, &hit_counts, CLR_SCENE_ARGS);
+    Colors16 sums = sample_sums16(camera, eye, row_pixels16(col0, row), row, tile, &hit_counts, CLR_SCENE_ARGS);
     store_linear16(out, sums, hit_counts, camera.samples, lanes);
 }
+
+#if CLR_FEATURE_BVH
+/* The 4x4 block from (col0, row0) in the float output mode, its first `cols` columns of its
+ * first `rows` rows written to `out`, rows `width` pixels apart. */
+CLR_PACKET_INLINE void render_linear_block16(__global float4* out, int width, int cols, int rows, ClrCamera camera,
+                                             real3 eye, int col0, int row0, TileItems tile, CLR_SCENE_PARAMS)
+{
+    float16 hit_counts;
+    Colors16 sums = sample_sums16(camera, eye, block_pixels16(col0, row0), -1, tile, &hit_counts, CLR_SCENE_ARGS);
+    float n = (float)camera.samples; /* store_linear16()'s values */
+    float red[16], green[16], blue[16], alpha[16];
+    vstore16(sums.r / n, 0, red);
+    vstore16(sums.g / n, 0, green);
+    vstore16(sums.b / n, 0, blue);
+    vstore16(hit_counts / n, 0, alpha);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c)
+            out[r * width + c] = (float4)(red[4 * r + c], green[4 * r + c], blue[4 * r + c], alpha[4 * r + c]);
+}
+#endif
 #endif
 
 #endif /* CLR_PACKET_RENDER_ROW16_CL */

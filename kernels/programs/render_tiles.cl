@@ -8,8 +8,8 @@
 
 /* The same as render, with screen-tile culling for the primary rays: work-item (x, y)
  * renders screen tile x of tile row first_row / CLR_TILE_SIZE + y, that is the rows of its
- * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16). A tile
- * that no object can reach is the background's colour throughout (known from its list; where
+ * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16), or where
+ * packets walk the BVH 4x4 pixels at a time (render_block16). A tile that no object can reach is the background's colour throughout (known from its list; where
  * packets walk the BVH instead, info.primary_bvh, every tile is traced). Identical output to
  * render. With CLR_FEATURE_FLOAT_OUTPUT, `pixels` holds a float4 per pixel instead (CLR_PIXEL). */
 __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
@@ -61,6 +61,23 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
         return;
     }
     real3 eye = convert_real3(camera.eye.xyz);
+#if CLR_FEATURE_BVH
+    if (info.primary_bvh) { /* 4x4 blocks, whose rays spread less through the BVH than a row's */
+        for (int row0 = row_begin; row0 < row_end; row0 += 4, out += 4 * camera.width) {
+            int rows = min(4, row_end - row0);
+            for (int c = 0; c < lanes; c += 4) {
+#if CLR_FEATURE_FLOAT_OUTPUT
+                render_linear_block16(out + c, camera.width, min(4, lanes - c), rows, camera, eye, col0 + c, row0,
+                                      items, CLR_SCENE_ARGS);
+#else
+                store_block16(out + c, camera.width, render_block16(camera, eye, col0 + c, row0, items, CLR_SCENE_ARGS),
+                              min(4, lanes - c), rows);
+#endif
+            }
+        }
+        return;
+    }
+#endif
     for (int row = row_begin; row < row_end; ++row, out += camera.width)
 #if CLR_FEATURE_FLOAT_OUTPUT
         render_linear_row16(out, lanes, camera, eye, col0, row, items, CLR_SCENE_ARGS);

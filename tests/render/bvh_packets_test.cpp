@@ -2,7 +2,8 @@
 // the CPU's path for large meshes) give the bytes of packets over screen-tile lists, in every
 // shading mode the packet kernel has: flat colours from the walk with alpha-tested textures,
 // the sun's shadow packets, mirrors, point lights with planes, several samples, double
-// precision, the float output, and frames of a moving camera.
+// precision, the float output, frames of a moving camera, and bands and crops that cut the
+// walk's 4x4 blocks.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -105,6 +106,24 @@ TEST(BvhPackets, SunlitMeshesGiveTheListsBytes) {
     RendererOptions linear = walk(false);
     linear.float_output = true;
     expect_walk_gives_the_lists_bytes(scene, "float output", linear);
+}
+
+// A walking packet renders a 4x4 block of pixels (render_block16): bands and crops that cut
+// blocks anywhere, and a frame of 131x97, whose last blocks hang over its edges, still give
+// every pixel its own bytes.
+TEST(BvhPackets, BandsAndCropsThatCutItsBlocksGiveTheListsBytes) {
+    const Scene scene = sunlit_meshes();
+    for (int band_rows : {1, 5, 7}) {
+        RendererOptions lists = walk(false);
+        lists.band_rows = band_rows;
+        expect_walk_gives_the_lists_bytes(scene, "bands of " + std::to_string(band_rows) + " rows", lists);
+    }
+    RendererOptions cropped = walk(false);
+    cropped.crop = PixelRect{3, 70, 5, 62};
+    expect_walk_gives_the_lists_bytes(scene, "a crop from (3, 5)", cropped);
+    cropped.float_output = true;
+    cropped.band_rows = 3;
+    expect_walk_gives_the_lists_bytes(scene, "a crop in the float output mode, bands of 3 rows", cropped);
 }
 
 TEST(BvhPackets, MirrorsAndPointLightsWithPlanesGiveTheListsBytes) {
