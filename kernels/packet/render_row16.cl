@@ -204,8 +204,11 @@ CLR_PACKET_INLINE void store_block16(__global uchar4* out, int width, uint16 pac
 #if CLR_FEATURE_FLOAT_OUTPUT
 /* The float output mode (docs/command-line.md, HDR and alpha outputs): per pixel the mean of
  * its samples' colours, linear and unclamped (the very value display_pixels16() turns into
- * bytes), and the fraction of its samples that hit an object. Writes the first `lanes`. */
-CLR_PACKET_INLINE void store_linear16(__global float4* out, Colors16 sums, float16 hit_counts, int samples, int lanes)
+ * bytes), and the fraction of its samples that hit an object. Writes lane stride * r + c to
+ * out[r * width + c], for the first `rows` rows and `cols` columns: a row of 16 (stride 16)
+ * or a 4x4 block (stride 4). */
+CLR_PACKET_INLINE void store_linear16(__global float4* out, int width, int stride, int cols, int rows, Colors16 sums,
+                                      float16 hit_counts, int samples)
 {
     float n = (float)samples;
     float r[16], g[16], b[16], a[16];
@@ -213,8 +216,11 @@ CLR_PACKET_INLINE void store_linear16(__global float4* out, Colors16 sums, float
     vstore16(sums.g / n, 0, g);
     vstore16(sums.b / n, 0, b);
     vstore16(hit_counts / n, 0, a);
-    for (int lane = 0; lane < lanes; ++lane)
-        out[lane] = (float4)(r[lane], g[lane], b[lane], a[lane]);
+    for (int row = 0; row < rows; ++row)
+        for (int col = 0; col < cols; ++col) {
+            int lane = stride * row + col;
+            out[row * width + col] = (float4)(r[lane], g[lane], b[lane], a[lane]);
+        }
 }
 
 /* Pixels col0 .. col0 + 15 of `row` in the float output mode, written to out[0 .. lanes - 1]. */
@@ -223,26 +229,18 @@ CLR_PACKET_INLINE void render_linear_row16(__global float4* out, int lanes, ClrC
 {
     float16 hit_counts;
     Colors16 sums = sample_sums16(camera, eye, row_pixels16(col0, row), row, tile, &hit_counts, CLR_SCENE_ARGS);
-    store_linear16(out, sums, hit_counts, camera.samples, lanes);
+    store_linear16(out, camera.width, 16, lanes, 1, sums, hit_counts, camera.samples);
 }
 
 #if CLR_FEATURE_BVH
 /* The 4x4 block from (col0, row0) in the float output mode, its first `cols` columns of its
- * first `rows` rows written to `out`, rows `width` pixels apart. */
-CLR_PACKET_INLINE void render_linear_block16(__global float4* out, int width, int cols, int rows, ClrCamera camera,
-                                             real3 eye, int col0, int row0, TileItems tile, CLR_SCENE_PARAMS)
+ * first `rows` rows written to `out`, rows camera.width pixels apart. */
+CLR_PACKET_INLINE void render_linear_block16(__global float4* out, int cols, int rows, ClrCamera camera, real3 eye,
+                                             int col0, int row0, TileItems tile, CLR_SCENE_PARAMS)
 {
     float16 hit_counts;
     Colors16 sums = sample_sums16(camera, eye, block_pixels16(col0, row0), -1, tile, &hit_counts, CLR_SCENE_ARGS);
-    float n = (float)camera.samples; /* store_linear16()'s values */
-    float red[16], green[16], blue[16], alpha[16];
-    vstore16(sums.r / n, 0, red);
-    vstore16(sums.g / n, 0, green);
-    vstore16(sums.b / n, 0, blue);
-    vstore16(hit_counts / n, 0, alpha);
-    for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < cols; ++c)
-            out[r * width + c] = (float4)(red[4 * r + c], green[4 * r + c], blue[4 * r + c], alpha[4 * r + c]);
+    store_linear16(out, camera.width, 4, cols, rows, sums, hit_counts, camera.samples);
 }
 #endif
 #endif

@@ -67,8 +67,8 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
             int rows = min(4, row_end - row0);
             for (int c = 0; c < lanes; c += 4) {
 #if CLR_FEATURE_FLOAT_OUTPUT
-                render_linear_block16(out + c, camera.width, min(4, lanes - c), rows, camera, eye, col0 + c, row0,
-                                      items, CLR_SCENE_ARGS);
+                render_linear_block16(out + c, min(4, lanes - c), rows, camera, eye, col0 + c, row0, items,
+                                      CLR_SCENE_ARGS);
 #else
                 store_block16(out + c, camera.width, render_block16(camera, eye, col0 + c, row0, items, CLR_SCENE_ARGS),
                               min(4, lanes - c), rows);

@@ -257,8 +257,8 @@ TEST(MeshLoader, AnUndefinedMaterialIsAWarningAtTheFilename) {
     EXPECT_EQ(scene.meshes.at(0).ambient, (Vec3{0.8, 0.8, 0.8}));
 }
 
-// The bytes this process has read so far (rchar of /proc/self/io: every read(2), files and all).
-std::uint64_t bytes_read_so_far() {
+// The bytes this process has read so far (rchar of /proc/self/io: every read() and pread()).
+std::uint64_t bytes_read() {
     std::ifstream io("/proc/self/io");
     std::string key;
     std::uint64_t value = 0;
@@ -281,9 +281,9 @@ TEST(MeshLoader, ADotMtlThatSeveralObjFilesNameIsReadOnce) {
         folder.write(name, "mtllib shared.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         objects.push_back({{"filename", name}, {"position", {i, 0, 0}}});
     }
-    const std::uint64_t before = bytes_read_so_far();
+    const std::uint64_t before = bytes_read();
     const Scene scene = load_in(folder, with_obj(objects));
-    const std::uint64_t read = bytes_read_so_far() - before;
+    const std::uint64_t read = bytes_read() - before;
     ASSERT_EQ(scene.meshes.size(), 20u);
     for (const Mesh& mesh : scene.meshes) {
         EXPECT_EQ(mesh.ambient, (Vec3{1, 0, 0}));
@@ -418,16 +418,6 @@ TEST(MeshLoader, AFileWithoutFacesIsNoMesh) {
         EXPECT_NE(error.find("/obj/filename: cannot read OBJ"), std::string::npos) << name << ": " << error;
         EXPECT_NE(error.find("it has no faces"), std::string::npos) << name << ": " << error;
     }
-}
-
-// The bytes this process has read so far (rchar of /proc/self/io: every read() and pread()).
-std::uint64_t bytes_read() {
-    std::ifstream io("/proc/self/io");
-    std::string key;
-    std::uint64_t value = 0;
-    while (io >> key >> value)
-        if (key == "rchar:") return value;
-    return 0;
 }
 
 // One model placed many times (a forest of one tree) is one file: read once, not once a copy.
