@@ -40,11 +40,14 @@ double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& tr
         const double e = eye[axis];
         (axis == 0 ? outside.x : axis == 1 ? outside.y : outside.z) = e < lower ? lower - e : (e > upper ? e - upper : 0);
     }
-    const double to_box = length(outside);
+    // Compared as squares, with one square root for the larger: binning calls this for every
+    // triangle of every frame.
+    const double to_box2 = dot(outside, outside);
     const Vec3 normal = cross(c[1] - c[0], c[2] - c[0]);
-    const double area2 = length(normal);
-    if (!(area2 > 0)) return to_box;
-    return std::max(to_box, std::fabs(dot(eye - c[0], normal / area2)));
+    const double normal2 = dot(normal, normal);
+    const double offset = dot(eye - c[0], normal);
+    const double to_plane2 = normal2 > 0 ? offset * offset / normal2 : 0;
+    return std::sqrt(std::max(to_box2, std::isfinite(to_plane2) ? to_plane2 : 0.0));
 }
 
 ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {
