@@ -23,6 +23,13 @@ struct Box3 {
         grow(b.lower);
         grow(b.upper);
     }
+    // The squared distance from `p` to the box's nearest point (0 inside it).
+    double squared_distance_to(const Vec3& p) const {
+        const Vec3 nearest{std::clamp(p.x, lower.x, upper.x), std::clamp(p.y, lower.y, upper.y),
+                           std::clamp(p.z, lower.z, upper.z)};
+        const Vec3 away = p - nearest;
+        return dot(away, away);
+    }
     double area() const {
         if (lower.x > upper.x) return 0;
         Vec3 d = upper - lower;

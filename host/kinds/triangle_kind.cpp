@@ -33,16 +33,10 @@ PixelBounds TriangleKind::pixel_bounds(const ObjectBounds& view, const Triangle&
 double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& triangle, const Vec3& object_origin) {
     const auto& c = triangle.corners;
     const Vec3 eye = view.eye() - object_origin;
-    Vec3 outside;  // from the box to the eye, 0 along axes where the eye lies within it
-    for (int axis = 0; axis < 3; ++axis) {
-        const double lower = std::min({c[0][axis], c[1][axis], c[2][axis]});
-        const double upper = std::max({c[0][axis], c[1][axis], c[2][axis]});
-        const double e = eye[axis];
-        (axis == 0 ? outside.x : axis == 1 ? outside.y : outside.z) = e < lower ? lower - e : (e > upper ? e - upper : 0);
-    }
     // Compared as squares, with one square root for the larger: binning calls this for every
     // triangle of every frame.
-    const double to_box2 = dot(outside, outside);
+    Vec3 centroid;
+    const double to_box2 = box(triangle, {}, centroid).squared_distance_to(eye);
     const Vec3 normal = cross(c[1] - c[0], c[2] - c[0]);
     const double normal2 = dot(normal, normal);
     const double offset = dot(eye - c[0], normal);
@@ -121,16 +115,16 @@ void store_plane_offset(ClrTriangle& device, const Triangle& triangle, const Vec
 }
 
 // Whether the triangle is larger than an eighth of its distance from the origin (the frame's
-// eye): its box's diagonal against the distance to its box. Only such a triangle can have a hit
-// that the kernels' plane_t_is_exacter() gives the plane's t: that needs the farthest corner
-// along the ray twice as far as the hit, and a diagonal below 2 / sqrt(3) - 1 (0.155) of the
-// distance keeps every corner nearer (kernels/kinds/triangle.cl).
+// eye): its box's diagonal against the distance to its box, as squares (every triangle of every
+// frame). Only such a triangle can have a hit that the kernels' plane_t_is_exacter() gives the
+// plane's t: that needs the farthest corner along the ray twice as far as the hit, and a
+// diagonal below 2 / sqrt(3) - 1 (0.155) of the distance keeps every corner nearer
+// (kernels/kinds/triangle.cl).
 bool near_eye(const Triangle& triangle, const Vec3& origin) {
-    Box3 box;
-    for (const Vec3& corner : triangle.corners) box.grow(corner - origin);
-    const Vec3 nearest{std::clamp(0.0, box.lower.x, box.upper.x), std::clamp(0.0, box.lower.y, box.upper.y),
-                       std::clamp(0.0, box.lower.z, box.upper.z)};
-    return !(8 * length(box.upper - box.lower) < length(nearest));
+    Vec3 centroid;
+    const Box3 box = TriangleKind::box(triangle, origin, centroid);
+    const Vec3 diagonal = box.upper - box.lower;
+    return !(64 * dot(diagonal, diagonal) < box.squared_distance_to({}));
 }
 
 }  // namespace
