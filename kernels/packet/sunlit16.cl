@@ -97,6 +97,51 @@ CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits
 }
 #endif
 
+/* The lanes in `by_lane`, one by one: surface_color() in sun mode, up to each lane's shadow
+ * ray, into `out` (whose colours are the lanes' flat ones). */
+CLR_PACKET_INLINE void sunlit_lanes_one_by_one16(real3 eye, Directions16 d, Hits16 hits, int16 by_lane,
+                                                 SunlitLanes16* out, CLR_SCENE_PARAMS)
+{
+    Lanes16 lanes;
+    unpack_lanes16(d, hits, &out->color, &lanes);
+    float lit_r[16], lit_g[16], lit_b[16];
+    vstore16((float16)(0.0f), 0, lit_r);
+    vstore16((float16)(0.0f), 0, lit_g);
+    vstore16((float16)(0.0f), 0, lit_b);
+    int one_by_one[16];
+    vstore16(by_lane, 0, one_by_one);
+    for (int lane = 0; lane < 16; ++lane) {
+        if (!one_by_one[lane])
+            continue;
+        const int kind = lanes.kind[lane], index = lanes.index[lane];
+        real3 direction = (real3)(lanes.x[lane], lanes.y[lane], lanes.z[lane]);
+        float3 color = kind_surface_color(kind, index, eye, direction, lanes.t[lane], CLR_SCENE_ARGS);
+        if (!info.lit) {
+            set_lane_color16(&lanes, lane, color);
+            continue;
+        }
+        real3 point = eye + lanes.t[lane] * direction;
+        real3 normal = kind_normal(kind, index, point, direction, CLR_SCENE_ARGS);
+        real3 to_sun = convert_real3(info.sun.xyz) - point;
+        real sun_distance = sqrt(dot3(to_sun, to_sun));
+        real3 light = to_sun / sun_distance;
+        real cosine = dot3(normal, light);
+        if (cosine <= 0.0f) {
+            set_lane_color16(&lanes, lane, (float3)(0.0f)); /* facing away: no shadow ray needed */
+            continue;
+        }
+        float3 lit = color * (float)cosine;
+        lit_r[lane] = lit.x;
+        lit_g[lane] = lit.y;
+        lit_b[lane] = lit.z;
+        want_shadow_ray16(&out->rays, lane, point, light, sun_distance, kind, index);
+    }
+    out->color = lane_colors16(&lanes);
+    out->lit.r = vload16(0, lit_r);
+    out->lit.g = vload16(0, lit_g);
+    out->lit.b = vload16(0, lit_b);
+}
+
 /* traced_colors16() with `flat` in the sun-alone mode: each lane on a lit kind shaded as
  * surface_color() shades it, with the 16 lanes' shadow rays traced together
  * (occluded_lanes16()): the same colours. Lanes without a shadow ray still take part in its
@@ -122,46 +167,10 @@ CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hit
     if (info.lit)
         by_lane = by_lane & (hits.kind != (int16)(CLR_HIT_TRIANGLE));
 #endif
-    Lanes16 lanes;
-    unpack_lanes16(d, hits, &flat, &lanes);
-    float lit_r[16], lit_g[16], lit_b[16];
-    vstore16((float16)(0.0f), 0, lit_r);
-    vstore16((float16)(0.0f), 0, lit_g);
-    vstore16((float16)(0.0f), 0, lit_b);
-    if (any_lanes16(by_lane)) {
-        int one_by_one[16];
-        vstore16(by_lane, 0, one_by_one);
-        for (int lane = 0; lane < 16; ++lane) {
-            if (!one_by_one[lane])
-                continue;
-            const int kind = lanes.kind[lane], index = lanes.index[lane];
-            real3 direction = (real3)(lanes.x[lane], lanes.y[lane], lanes.z[lane]);
-            float3 color = kind_surface_color(kind, index, eye, direction, lanes.t[lane], CLR_SCENE_ARGS);
-            if (!info.lit) {
-                set_lane_color16(&lanes, lane, color);
-                continue;
-            }
-            real3 point = eye + lanes.t[lane] * direction;
-            real3 normal = kind_normal(kind, index, point, direction, CLR_SCENE_ARGS);
-            real3 to_sun = convert_real3(info.sun.xyz) - point;
-            real sun_distance = sqrt(dot3(to_sun, to_sun));
-            real3 light = to_sun / sun_distance;
-            real cosine = dot3(normal, light);
-            if (cosine <= 0.0f) {
-                set_lane_color16(&lanes, lane, (float3)(0.0f)); /* facing away: no shadow ray needed */
-                continue;
-            }
-            float3 lit = color * (float)cosine;
-            lit_r[lane] = lit.x;
-            lit_g[lane] = lit.y;
-            lit_b[lane] = lit.z;
-            want_shadow_ray16(rays, lane, point, light, sun_distance, kind, index);
-        }
-    }
-    out.color = lane_colors16(&lanes);
-    out.lit.r = vload16(0, lit_r);
-    out.lit.g = vload16(0, lit_g);
-    out.lit.b = vload16(0, lit_b);
+    out.color = flat;
+    out.lit.r = out.lit.g = out.lit.b = (float16)(0.0f);
+    if (any_lanes16(by_lane))
+        sunlit_lanes_one_by_one16(eye, d, hits, by_lane, &out, CLR_SCENE_ARGS);
 #if CLR_FEATURE_TRIANGLES
     if (info.lit)
         sunlit_triangles16(eye, d, hits, &out, CLR_SCENE_ARGS);
