@@ -17,6 +17,7 @@
 #include "common/scene_items.cl"
 #include "common/scene_params.cl"
 #include "intersect.cl"
+#include "packet/bvh_entries.cl"
 #include "packet/boxes16.cl"
 #include "packet/keep_nearer16.cl"
 #include "packet/lane_masks.cl"
@@ -25,25 +26,18 @@
 
 #if CLR_FEATURE_BVH
 
-/* How far along `lead` the centre of `node`'s box lies from `origin`, doubled: which of two
- * children a packet heading along `lead` meets first. */
-CLR_PACKET_INLINE real centre_along(__global const ClrBvhNode* node, real3 origin, real3 lead)
-{
-    real3 doubled = convert_real3(node->lower.xyz) + convert_real3(node->upper.xyz) - 2.0f * origin;
-    return doubled.x * lead.x + doubled.y * lead.y + doubled.z * lead.z;
-}
-
 /* keep_nearer16() for every object of the BVH that some lane of the 16 rays from `origin`
- * along `d` may meet before its hit in `best`. */
-CLR_PACKET_INLINE void nearest_in_bvh16(real3 origin, Directions16 d, Hits16* best, Colors16* colors,
-                                        uint16* best_texel, CLR_SCENE_PARAMS)
+ * along `d` may meet before its hit in `best`: those under `entries` (bvh_entries()). */
+CLR_PACKET_INLINE void nearest_in_bvh16(real3 origin, Directions16 d, const BvhEntries* entries, Hits16* best,
+                                        Colors16* colors, uint16* best_texel, CLR_SCENE_PARAMS)
 {
     Directions16 inverse = safe_inverse16(d);
     Points16 eye = {(real16)(origin.x), (real16)(origin.y), (real16)(origin.z)};
     real3 lead = (real3)(d.x.s7, d.y.s7, d.z.s7); /* a middle lane's direction */
-    uint stack[CLR_BVH_STACK];
-    stack[0] = 0;
-    int top = bvh_roots(info);
+    uint stack[CLR_BVH_STACK + CLR_BVH_ENTRIES]; /* the entries, and below one of them its walk's */
+    int top = 0;
+    for (int i = entries->count - 1; i >= 0; --i) /* the nearest popped first */
+        stack[top++] = entries->node[i];
     while (top > 0) {
         __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
         if (!any_lanes16(box_reached16(node, eye, inverse, best->t)))

@@ -67,7 +67,7 @@ CLR_PACKET_INLINE void intersect_tile16(real3 origin, Directions16 d, int row, T
 #endif
 #if CLR_FEATURE_BVH
     if (info.primary_bvh)
-        nearest_in_bvh16(origin, d, best, colors, &best_texel, CLR_SCENE_ARGS);
+        nearest_in_bvh16(origin, d, tile.entries, best, colors, &best_texel, CLR_SCENE_ARGS);
     else
 #endif
     for (uint k = tile.first; k < tile.end; ++k) {

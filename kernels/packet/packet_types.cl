@@ -55,9 +55,6 @@ typedef struct {
     float16 r, g, b;
 } Colors16;
 
-/* The objects binned to one screen tile (host/render/screen_tiles.h), entries first .. end - 1
- * of its lists: items[k] (common/scene_items.cl), nearest first; nearest[k], a lower bound on
- * the object's hit distance; rows[k], the pixel rows it may cover (first << 16 | last). */
 /* dot3() of a vector with each of 16 directions. */
 CLR_PACKET_INLINE real16 dot16(real3 a, Directions16 d)
 {
@@ -74,11 +71,23 @@ CLR_PACKET_INLINE Colors16 uniform_colors16(float3 color)
     return out;
 }
 
+/* Where a tile's packets enter the BVH, where they walk it (packet/bvh_entries.cl): the roots
+ * of disjoint subtrees that hold every object the tile's rays may meet, nearest first. */
+#define CLR_BVH_ENTRIES 16
+typedef struct {
+    uint node[CLR_BVH_ENTRIES];
+    int count;
+} BvhEntries;
+
+/* The objects binned to one screen tile (host/render/screen_tiles.h), entries first .. end - 1
+ * of its lists: items[k] (common/scene_items.cl), nearest first; nearest[k], a lower bound on
+ * the object's hit distance; rows[k], the pixel rows it may cover (first << 16 | last). */
 typedef struct {
     __global const uint* items;
     __global const float* nearest;
     __global const uint* rows;
     uint first, end;
+    const BvhEntries* entries; /* where packets walk the BVH instead (info.primary_bvh) */
 } TileItems;
 
 #endif /* CLR_PACKET_TYPES_CL */

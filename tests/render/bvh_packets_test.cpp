@@ -126,6 +126,40 @@ TEST(BvhPackets, BandsAndCropsThatCutItsBlocksGiveTheListsBytes) {
     expect_walk_gives_the_lists_bytes(scene, "a crop in the float output mode, bands of 3 rows", cropped);
 }
 
+// Each screen tile finds where its packets enter the tree (packet/bvh_entries.cl) by the
+// pyramid of its rays: a floor of 45,000 small triangles that fills most of the view makes the
+// tree deep and each tile's pyramid meet few of its boxes, so that a tile's entries lie far
+// below the root; cameras rolled, narrow, wide, grazing the floor and inside its box, with
+// three samples a pixel and bands of 5 rows, see what the lists see.
+TEST(BvhPackets, TilesEnteringTheTreeBelowItsRootGiveTheListsBytes) {
+    Scene scene = testing::make_scene({0, 3, 9}, {0, 0, 0}, {0, 1, 0}, 55, 131, 97);
+    add_mesh(scene, grid_mesh({-12, -1, 12}, {24, 0, 0}, {0, 0.8, -24}, 150, 150), {0.7, 0.7, 0.7});
+    add_mesh(scene, sphere_mesh({1, 0.5, 0}, 1.2, 40, 20, true), {0.9, 0.3, 0.2});
+    struct View {
+        Vec3 eye, lookat, up;
+        double fov;
+        const char* what;
+    };
+    const View views[] = {
+        {{0, 3, 9}, {0, 0, 0}, {0, 1, 0}, 55, "from above"},
+        {{2, 6, 4}, {-1, -1, -3}, {1, 1, 0.2}, 35, "rolled"},
+        {{0.3, 2, 3}, {0.5, 0, 0}, {0, 1, 0}, 8, "narrow"},
+        {{0, 1.5, 6}, {0, 0, -4}, {0, 1, 0}, 140, "wide"},
+        {{-9, -0.5, 10}, {6, -0.3, -9}, {0, 1, 0}, 60, "grazing the floor"},
+        {{0, -0.2, 0}, {3, 1, -3}, {0, 0, 1}, 90, "inside the floor's box"},
+    };
+    for (const View& view : views) {
+        scene.camera_path = {{view.eye, view.lookat}};
+        scene.up = view.up;
+        scene.fov_degrees = view.fov;
+        expect_walk_gives_the_lists_bytes(scene, view.what);
+    }
+    scene.sampling.samples_per_pixel = 3;
+    RendererOptions bands = walk(false);
+    bands.band_rows = 5;
+    expect_walk_gives_the_lists_bytes(scene, "inside the floor's box, 3 samples, bands of 5 rows", bands);
+}
+
 TEST(BvhPackets, MirrorsAndPointLightsWithPlanesGiveTheListsBytes) {
     expect_walk_gives_the_lists_bytes(testing::make_sunlit_mirror_scene(), "sunlit mirrors");
     Scene lit = sunlit_meshes();
