@@ -11,6 +11,9 @@
 
 #include <httplib.h>
 
+#include <memory>
+#include <string>
+
 #include "scene/scene.h"
 #include "view/answer_budget.h"
 #include "view/path_export.h"
@@ -27,6 +30,9 @@ struct ViewSession {
     VideoJobs& videos;
     const RequestGuard& guard;
     AnswerBudget& answers;  // the frame answers' bytes held while clients take them
+    // GET /scene.json's text, made once: the scene does not change while the viewer runs, and
+    // a path of a million keys makes it 78 MB, which every answer sends from this one copy.
+    std::shared_ptr<const std::string> scene_summary;
 };
 
 // Installs the guard and the routes on `server`. `session` must outlive the server's requests.

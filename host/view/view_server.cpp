@@ -11,7 +11,9 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <optional>
+#include <string>
 #include <thread>
 
 #include "app/standard_output.h"
@@ -20,6 +22,7 @@
 #include "core/printable_text.h"
 #include "view/bounded_server.h"
 #include "view/opener_page.h"
+#include "view/scene_summary.h"
 #include "view/socket_address.h"
 
 extern char** environ;
@@ -136,7 +139,8 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     const std::string host = url_host(bound ? bound->ip : bind_address);
     warn_about_bind(settings.bind, host);
     const RequestGuard guard(token, settings.bind, port);
-    ViewSession session{scene, renderer, exporter, videos, guard, answers};
+    ViewSession session{scene, renderer, exporter, videos, guard, answers,
+                        std::make_shared<const std::string>(scene_summary_json(scene))};
     add_view_routes(server, session);
     // A client that asks before sending its body (Expect: 100-continue) is invited only when
     // the request may be served: cpp-httplib would invite any, a foreign page's or one whose
