@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -186,8 +187,8 @@ std::optional<ObjMesh> MeshCache::load(const Key& key, MtlLibrary* library) cons
     std::map<std::pair<dev_t, ino_t>, Sha256Digest> hashed;
     for (std::size_t i = 0; i < mesh.material_files.size(); ++i) {
         if (library) {  // read once for all the scene's OBJ files that name it
-            const MtlFileRead& file = library->read(mesh.material_files[i]);
-            if (!file.read || file.digest != mesh.material_digests[i]) return std::nullopt;
+            const std::shared_ptr<const MtlFileRead> file = library->read(mesh.material_files[i]);
+            if (!file->read || file->digest != mesh.material_digests[i]) return std::nullopt;
             continue;
         }
         struct stat info {};

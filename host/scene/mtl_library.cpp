@@ -31,22 +31,33 @@ MtlFileRead read_mtl_file(const std::string& path) {
         return file;
     }
     file.texture_maps = diffuse_texture_maps(text);
-    file.used = mtl_statements_used(text);
+    file.materials = read_mtl_materials(mtl_statements_used(text), file.problem);
     return file;
+}
+
+// About what a file's read holds, for the library's bound.
+std::uint64_t bytes_held(const MtlFileRead& file) {
+    std::uint64_t bytes = 256 + file.materials.list.size() * sizeof(MtlMaterial);
+    for (const MtlDefinition& definition : file.materials.definitions)
+        bytes += sizeof(MtlDefinition) + 3 * (definition.name.size() + 64);  // with `defined` and `first`
+    for (const auto& [name, map] : file.texture_maps) bytes += name.size() + map.statement.size() + 96;
+    return bytes;
 }
 
 }  // namespace
 
-const MtlFileRead& MtlLibrary::read(const std::string& path) {
+std::shared_ptr<const MtlFileRead> MtlLibrary::read(const std::string& path) {
     struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) return last_ = read_mtl_file(path);  // its read names why
+    if (::stat(path.c_str(), &info) != 0)
+        return std::make_shared<const MtlFileRead>(read_mtl_file(path));  // its read names why
     const std::pair<dev_t, ino_t> identity{info.st_dev, info.st_ino};
     if (const auto known = kept_.find(identity); known != kept_.end()) return known->second;
-    MtlFileRead file = read_mtl_file(path);
-    const std::uint64_t bytes = file.used.size() + 256;
-    if (kept_bytes_ + bytes > kMostKeptBytes) return last_ = std::move(file);
+    auto file = std::make_shared<const MtlFileRead>(read_mtl_file(path));
+    const std::uint64_t bytes = bytes_held(*file);
+    if (kept_bytes_ + bytes > kMostKeptBytes) return file;
     kept_bytes_ += bytes;
-    return kept_.emplace(identity, std::move(file)).first->second;
+    kept_.emplace(identity, file);
+    return file;
 }
 
 }  // namespace clr

@@ -7,9 +7,12 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <string_view>
+#include <unordered_set>
 
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
@@ -71,14 +74,15 @@ std::vector<bool> materials_giving_diffuse(const std::string& text) {
 }
 
 // Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any
-// input file; the first failure is kept for read_obj to report.
+// input file; the first failure is kept for read_obj to report. The materials are combined as
+// tinyobjloader's LoadMtl would list them, file after file, a name's first definition kept,
+// from each file's materials as the scene's MtlLibrary read them once.
 class MaterialFiles {
 public:
     MaterialFiles(std::filesystem::path folder, MtlLibrary& library) : folder_(std::move(folder)), library_(library) {}
 
-    // Adds the materials of .mtl `name` to `materials` and their names to `names`, as
-    // tinyobjloader's LoadMtl does; false (and problem() says why) where it cannot.
-    bool read(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names) {
+    // Adds the materials of .mtl `name`; false (and problem() says why) where it cannot.
+    bool read(const std::string& name) {
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
         tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
         // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
@@ -99,45 +103,30 @@ public:
                            std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
             return false;
         }
-        // Read and checked once for all the scene's OBJ files that name it (MtlLibrary).
-        const MtlFileRead& file = library_.read(path.string());
+        // Read, checked and its materials listed once for all the scene's OBJ files that name it
+        // (MtlLibrary).
+        std::shared_ptr<const MtlFileRead> file = library_.read(path.string());
         const std::string shown = "mtllib " + printable(shortened(name, 200)) + ": ";
-        if (file.read) {
+        if (file->read) {
             if (identified) read_.insert({{info.st_dev, info.st_ino}, digests_.size()});
             files_.push_back(path.string());
-            digests_.push_back(file.digest);
+            digests_.push_back(file->digest);
         }
-        if (!file.problem.empty()) {
-            if (problem_.empty()) problem_ = shown + file.problem;
+        if (!file->problem.empty()) {
+            if (problem_.empty()) problem_ = shown + file->problem;
             return false;
         }
-        for (const auto& [material, map] : file.texture_maps)
-            texture_maps_.emplace(material, shown + "line " + std::to_string(map.line) + ": " +
-                                                printable(shortened(map.statement, 200)));
-        const std::string& text = file.used;
-        const std::vector<bool> gives_diffuse = materials_giving_diffuse(text);
-        const std::size_t before = materials->size();
-        if (before + gives_diffuse.size() > kMaxObjMaterials) {
+        const MtlMaterials& materials = file->materials;
+        if (material_count_ + materials.count > kMaxObjMaterials) {
             if (problem_.empty())
-                problem_ = "mtllib " + printable(shortened(name, 200)) + ": it brings the OBJ's materials to " +
-                           std::to_string(before + gives_diffuse.size()) + ", more than the limit of " +
+                problem_ = shown + "it brings the OBJ's materials to " +
+                           std::to_string(material_count_ + materials.count) + ", more than the limit of " +
                            std::to_string(kMaxObjMaterials);
             return false;
         }
-        std::istringstream stream(text);
-        std::string warning, error;
-        tinyobj::LoadMtl(names, materials, &stream, &warning, &error);
-        if (materials->size() != before + gives_diffuse.size()) {
-            if (problem_.empty()) {
-                problem_ = "mtllib " + printable(shortened(name, 200)) + ": tinyobjloader read " +
-                           std::to_string(materials->size() - before) + " materials where the file defines " +
-                           std::to_string(gives_diffuse.size());
-            }
-            return false;
-        }
-        with_diffuse_.insert(with_diffuse_.end(), gives_diffuse.begin(), gives_diffuse.end());
-        note_redefinitions(name, text);
-        for (const auto& named : *names) names_.insert(named.first);
+        material_count_ += materials.count;
+        note_redefinitions(name, materials);
+        libraries_.push_back({std::move(file), shown});
         return true;
     }
 
@@ -152,31 +141,63 @@ public:
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
     const std::vector<std::string>& tried() const { return tried_; }
-    // Whether the material at `index` in tinyobjloader's list gives a `Kd` line.
-    bool gives_diffuse(std::size_t index) const { return index < with_diffuse_.size() && with_diffuse_[index]; }
-    bool defines(const std::string& material) const { return names_.count(material) != 0; }
-    // The first `map_Kd` line of `material` ("mtllib a.mtl: line 3: map_Kd wood.png"), or null.
-    const std::string* texture_map_of(const std::string& material) const {
-        const auto map = texture_maps_.find(material);
-        return map == texture_maps_.end() ? nullptr : &map->second;
+    bool defines(const std::string& material) const { return material_named(material) != nullptr; }
+    // The `Kd` of material `name` (its first definition, as LoadMtl keeps), where a .mtl file
+    // gives it one.
+    std::optional<Vec3> diffuse_of(const std::string& material) const {
+        const MtlMaterial* found = material_named(material);
+        if (!found || !found->gives_diffuse) return std::nullopt;
+        return found->diffuse;
+    }
+    // The first `map_Kd` line of `material` ("mtllib a.mtl: line 3: map_Kd wood.png"), or "".
+    std::string texture_map_of(const std::string& material) const {
+        for (const Library& library : libraries_) {
+            const auto map = library.file->texture_maps.find(material);
+            if (map != library.file->texture_maps.end())
+                return library.shown + "line " + std::to_string(map->second.line) + ": " +
+                       printable(shortened(map->second.statement, 200));
+        }
+        return "";
     }
 
 private:
-    // Counts the `newmtl` lines of the .mtl `name` (its used statements, `text`) that define
-    // a name this OBJ's .mtl files defined already, keeping the first for the warning.
-    void note_redefinitions(const std::string& name, const std::string& text) {
-        for_each_statement(text, "newmtl", [&](std::uint64_t line, std::string_view statement) {
-            std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
-            material = material.substr(0, material.find('\0'));  // the library reads it as a C string
-            while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
-            if (material.empty() || defined_.insert(material).second) return;
-            if (redefined_++ == 0)
-                first_redefinition_ = "mtllib " + printable(shortened(name, 200)) + ": line " + std::to_string(line) +
-                                      ": newmtl " + printable(shortened(material, 200));
-        });
+    struct Library {
+        std::shared_ptr<const MtlFileRead> file;
+        std::string shown;  // "mtllib NAME: ", as the OBJ names it
+    };
+
+    // Material `name` as tinyobjloader's list would find it: in the first file that defines it.
+    const MtlMaterial* material_named(const std::string& name) const {
+        for (const Library& library : libraries_) {
+            const MtlMaterials& materials = library.file->materials;
+            if (const auto found = materials.first.find(name); found != materials.first.end())
+                return &materials.list[found->second];
+        }
+        return nullptr;
     }
 
-    std::set<std::string> defined_;  // each name a `newmtl` line gave, across the .mtl files
+    // Counts the `newmtl` lines of .mtl `name` that define a name this OBJ's .mtl files defined
+    // already, keeping the first for the warning. The OBJ's first file's own were counted when
+    // it was read: an OBJ of one .mtl, the usual, does no work per material here.
+    void note_redefinitions(const std::string& name, const MtlMaterials& materials) {
+        const auto note = [&](const MtlDefinition& definition) {
+            if (redefined_++ == 0)
+                first_redefinition_ = "mtllib " + printable(shortened(name, 200)) + ": line " +
+                                      std::to_string(definition.line) + ": newmtl " +
+                                      printable(shortened(definition.name, 200));
+        };
+        if (libraries_.empty()) {
+            if (materials.defined_again == 0) return;
+            note(materials.definitions[materials.first_again]);
+            redefined_ += materials.defined_again - 1;
+            return;
+        }
+        if (libraries_.size() == 1) defined_ = libraries_.front().file->materials.defined;
+        for (const MtlDefinition& definition : materials.definitions)
+            if (!defined_.insert(definition.name).second) note(definition);
+    }
+
+    std::unordered_set<std::string> defined_;  // each name a `newmtl` line gave, across 2+ .mtl files
     std::uint64_t redefined_ = 0;
     std::string first_redefinition_;
     std::filesystem::path folder_;
@@ -186,9 +207,8 @@ private:
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
     std::map<std::pair<dev_t, ino_t>, std::size_t> read_;  // each .mtl read, by identity: its digest's index
-    std::vector<bool> with_diffuse_;  // of each material in tinyobjloader's list
-    std::set<std::string> names_;     // the materials defined, as usemtl names them
-    std::map<std::string, std::string> texture_maps_;  // material: its first map_Kd line, shown
+    std::vector<Library> libraries_;  // each .mtl whose materials the OBJ takes, in order
+    std::size_t material_count_ = 0;  // of those files together, as LoadMtl would list them
 };
 
 Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
@@ -243,34 +263,21 @@ void warn_about_undefined_materials(const ObjMaterialStatements& statements, con
 }
 
 // Reads every .mtl file the OBJ names, each name once, in order, with the first
-// problem kept by `material_files`; `materials` and `names` as tinyobjloader's LoadMtl fills them.
-void read_material_libraries(const ObjMaterialStatements& statements, MaterialFiles& material_files,
-                             std::vector<tinyobj::material_t>& materials, std::map<std::string, int>& names) {
+// problem kept by `material_files`.
+void read_material_libraries(const ObjMaterialStatements& statements, MaterialFiles& material_files) {
     std::set<std::string> named;
     for (const std::string& name : statements.libraries) {
         if (!named.insert(name).second) continue;
-        if (!material_files.read(name, &materials, &names)) return;
+        if (!material_files.read(name)) return;
     }
-}
-
-// The `Kd` of material `name`, where a .mtl file gives it one.
-std::optional<Vec3> diffuse_of(const std::string& name, const std::vector<tinyobj::material_t>& materials,
-                               const std::map<std::string, int>& names, const MaterialFiles& material_files) {
-    const auto material = names.find(name);
-    if (material == names.end() || material->second < 0 ||
-        static_cast<std::size_t>(material->second) >= materials.size() || !material_files.gives_diffuse(material->second))
-        return std::nullopt;
-    const auto& kd = materials[material->second].diffuse;
-    return Vec3{kd[0], kd[1], kd[2]};
 }
 
 // A mesh takes one colour (docs/scene-format.md, Meshes): a `usemtl` whose material's Kd is not
 // the first face's (mesh.diffuse) is a warning.
-void warn_about_unused_materials(const ObjMaterialStatements& statements, const std::vector<tinyobj::material_t>& materials,
-                                 const std::map<std::string, int>& names, const MaterialFiles& material_files,
+void warn_about_unused_materials(const ObjMaterialStatements& statements, const MaterialFiles& material_files,
                                  ObjMesh& mesh) {
     const auto unused = [&](const std::string& name) {
-        const std::optional<Vec3> diffuse = diffuse_of(name, materials, names, material_files);
+        const std::optional<Vec3> diffuse = material_files.diffuse_of(name);
         return name != statements.first_face_material && diffuse && diffuse != mesh.diffuse;
     };
     warn_about_uses(statements, unused,
@@ -283,16 +290,16 @@ void warn_about_unused_materials(const ObjMaterialStatements& statements, const 
 // material that a `usemtl` uses is not drawn, which a warning says, naming the first.
 void warn_about_texture_maps(const ObjMaterialStatements& statements, const MaterialFiles& material_files,
                              ObjMesh& mesh) {
-    const std::string* first = nullptr;
+    std::string first;
     std::uint64_t more = 0;
     for (const auto& use : statements.uses) {
-        const std::string* map = material_files.texture_map_of(use.name);
-        if (map && first) ++more;
-        if (map && !first) first = map;
+        const std::string map = material_files.texture_map_of(use.name);
+        if (!map.empty() && !first.empty()) ++more;
+        if (!map.empty() && first.empty()) first = map;
     }
-    if (!first) return;
-    mesh.warnings.push_back(*first + ": a mesh takes one colour, the scene's ambient or else its first face's material's "
-                                     "Kd; this texture is not drawn" +
+    if (first.empty()) return;
+    mesh.warnings.push_back(first + ": a mesh takes one colour, the scene's ambient or else its first face's "
+                                    "material's Kd; this texture is not drawn" +
                             (more > 0 ? " (nor those of " + std::to_string(more) + " more materials it uses)" : ""));
 }
 
@@ -312,9 +319,7 @@ void warn_about_unknown_statements(const ObjTextCounts& counts, ObjMesh& mesh) {
 // their `mtllib` and `usemtl` lines.
 ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
     const ObjMaterialStatements statements = material_statements(text);
-    std::vector<tinyobj::material_t> materials;
-    std::map<std::string, int> material_names;
-    read_material_libraries(statements, material_files, materials, material_names);
+    read_material_libraries(statements, material_files);
     if (!material_files.problem().empty()) throw ObjError(material_files.problem());
 
     tinyobj::attrib_t attributes;
@@ -373,18 +378,57 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(mesh.triangles.size()) + " triangles where the file has " +
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
-    mesh.diffuse = diffuse_of(statements.first_face_material, materials, material_names, material_files);
+    mesh.diffuse = material_files.diffuse_of(statements.first_face_material);
     check_values_read(mesh);
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);
     warn_about_undefined_materials(statements, material_files, mesh);
-    warn_about_unused_materials(statements, materials, material_names, material_files, mesh);
+    warn_about_unused_materials(statements, material_files, mesh);
     warn_about_texture_maps(statements, material_files, mesh);
     warn_about_unknown_statements(counts, mesh);
     return mesh;
 }
 
 }  // namespace
+
+MtlMaterials read_mtl_materials(const std::string& used, std::string& problem) {
+    MtlMaterials read;
+    std::vector<tinyobj::material_t> materials;
+    std::map<std::string, int> names;
+    const std::vector<bool> gives_diffuse = materials_giving_diffuse(used);
+    read.count = gives_diffuse.size();
+    // Every OBJ refuses a file of more materials than an OBJ may have, with the limit's message:
+    // LoadMtl would first hold about a kilobyte for each.
+    if (read.count > kMaxObjMaterials) return read;
+    std::istringstream stream(used);
+    std::string warning, error;
+    tinyobj::LoadMtl(&names, &materials, &stream, &warning, &error);
+    if (materials.size() != gives_diffuse.size()) {
+        problem = "tinyobjloader read " + std::to_string(materials.size()) + " materials where the file defines " +
+                  std::to_string(gives_diffuse.size());
+        return read;
+    }
+    read.list.reserve(materials.size());
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const auto& kd = materials[i].diffuse;
+        read.list.push_back({Vec3{kd[0], kd[1], kd[2]}, gives_diffuse[i]});
+    }
+    read.first.reserve(names.size());
+    for (const auto& [name, index] : names)
+        if (index >= 0 && static_cast<std::size_t>(index) < materials.size()) read.first.emplace(name, index);
+    // The names as the warning about a material defined again reads them: the rest of the
+    // `newmtl` line without trailing blanks, up to a NUL (the library reads it as a C string).
+    for_each_statement(used, "newmtl", [&](std::uint64_t line, std::string_view statement) {
+        std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
+        material = material.substr(0, material.find('\0'));
+        while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
+        if (material.empty()) return;
+        const bool again = !read.defined.insert(material).second;
+        if (again && read.defined_again++ == 0) read.first_again = read.definitions.size();
+        read.definitions.push_back({line, std::move(material)});
+    });
+    return read;
+}
 
 ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) throw ObjError(encoding);

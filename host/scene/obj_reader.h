@@ -91,6 +91,12 @@ struct ObjMesh {
 ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 
 class MtlLibrary;
+struct MtlMaterials;
+
+// The materials of a .mtl's used statements (mtl_statements_used) as tinyobjloader's LoadMtl
+// reads them, with the `newmtl` statements that define a name again; `problem` says where the
+// library and clrender's own reading disagree on the count ("" where they agree).
+MtlMaterials read_mtl_materials(const std::string& used, std::string& problem);
 
 // The same for the file's content already read; `path` names the file in messages and
 // locates its .mtl files, which `library` reads (the scene's, shared by its OBJ files), or

@@ -97,7 +97,7 @@ TEST_F(MeshCacheTest, AStoredMeshIsCheckedAgainstTheScenesReadOfItsMtl) {
     read_obj_through_cache(obj_, cache_);
     const MeshCache::Key key = MeshCache::key(obj_, testing::read_bytes(obj_));
     MtlLibrary library;
-    ASSERT_TRUE(library.read(folder_.file("grid.mtl")).read);
+    ASSERT_TRUE(library.read(folder_.file("grid.mtl"))->read);
     folder_.write("grid.mtl", "newmtl green\nKd 0.9 0.1 0.1\n");  // after the scene's read of it
     EXPECT_TRUE(cache_.load(key, &library).has_value()) << "the library's read, as the scene's other meshes see it";
     EXPECT_FALSE(cache_.load(key).has_value()) << "a read of its own sees the edit";

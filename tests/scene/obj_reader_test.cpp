@@ -10,10 +10,13 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "scene/mtl_library.h"
 #include "scene/obj_reader.h"
 #include "scene/obj_text_checks.h"
 #include "support/address_space_child.h"
@@ -200,6 +203,34 @@ TEST(ObjReader, AMaterialDefinedAgainIsAWarning) {
                                 "used (and 1 more materials defined again)"}));
     folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // " red" is another name
     EXPECT_TRUE(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
+}
+
+// A scene's OBJ files share one MtlLibrary, which lists each .mtl's materials once: each OBJ
+// still combines its files in its own order, a name's first definition kept and a later one a
+// warning naming the file that defines it again.
+TEST(ObjReader, ObjFilesSharingALibraryCombineItsFilesInTheirOwnOrder) {
+    TempFolder folder;
+    folder.write("a.mtl", "newmtl red\nKd 1 0 0\nnewmtl only_a\nKd 0 0 1\n");
+    folder.write("b.mtl", "newmtl red\nKd 0 1 0\n");
+    MtlLibrary library;
+    const std::string a_then_b = folder.write("ab.obj", "mtllib a.mtl b.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n");
+    const std::string b_then_a = folder.write("ba.obj", "mtllib b.mtl a.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n");
+    const std::string only_b = folder.write("b.obj", "mtllib b.mtl\n" + kSquare + "usemtl only_a\nf 1 2 3\n");
+    for (int round = 0; round < 2; ++round) {  // the files' first reads, then the library's kept ones
+        const ObjMesh ab = parse_obj(testing::read_bytes(a_then_b), a_then_b, UINT64_MAX, &library);
+        EXPECT_EQ(ab.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+        EXPECT_EQ(ab.warnings, (std::vector<std::string>{"mtllib b.mtl: line 1: newmtl red: the material is defined "
+                                                         "again; the first definition is used"}));
+        const ObjMesh ba = parse_obj(testing::read_bytes(b_then_a), b_then_a, UINT64_MAX, &library);
+        EXPECT_EQ(ba.diffuse, (std::optional<Vec3>{Vec3{0, 1, 0}}));
+        EXPECT_EQ(ba.warnings, (std::vector<std::string>{"mtllib a.mtl: line 1: newmtl red: the material is defined "
+                                                         "again; the first definition is used"}));
+        const ObjMesh b = parse_obj(testing::read_bytes(only_b), only_b, UINT64_MAX, &library);
+        EXPECT_EQ(b.diffuse, std::nullopt);
+        ASSERT_EQ(b.warnings.size(), 1u);
+        EXPECT_NE(b.warnings[0].find("usemtl only_a: no .mtl file of the OBJ defines this material"), std::string::npos)
+            << b.warnings[0];
+    }
 }
 
 // A usemtl that names no material is a warning with its line (tinyobjloader's own says
