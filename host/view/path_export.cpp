@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "core/errors.h"
+#include "core/interruption.h"
 #include "output/output_roles.h"
 #include "scene/file_names.h"
 #include "scene/json_reader.h"
@@ -108,6 +109,10 @@ void PathExporter::check_output(const std::string& role, const std::string& path
 
 ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused) const {
     const std::lock_guard<std::mutex> one_at_a_time(one_at_a_time_);
+    // Exports sent together wait here for their turn: at a stop, those still waiting write
+    // nothing (503), rather than run one after another after the signal, writing files no client
+    // hears of, until the watchdog ends the viewer.
+    throw_if_interrupted();
     const MemoryGivenBack given_back;
     const std::string base = request.name.empty() ? default_name() : request.name;
     // Checked under the requested name: the text names neither the file nor its folder.
@@ -127,6 +132,7 @@ ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const 
     } catch (const SceneError& error) {
         throw ParameterError("keys", error.location().empty() ? error.detail() : error.location() + ": " + error.detail());
     }
+    throw_if_interrupted();  // the check takes seconds on a large scene: a stop meanwhile writes nothing
     const UnusedNameFile written = write_under_unused_name(
         output_dir_, base, ".json", also_unused, exported.text,
         [this](const std::string& path) { check_output("exported scene", path); });
