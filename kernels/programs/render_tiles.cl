@@ -33,7 +33,6 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
     items.rows = item_rows;
     items.first = tile_offsets[tile];
     items.end = tile_offsets[tile + 1];
-    items.entries = 0;
     __global CLR_PIXEL* out = (__global CLR_PIXEL*)pixels + (row_begin - first_row) * camera.width + col0;
 #if CLR_FEATURE_PLANES
     bool no_plane = info.plane_count == 0; /* planes are in no tile, and may cross any */
@@ -63,12 +62,14 @@ __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR
         return;
     }
     real3 eye = convert_real3(camera.eye.xyz);
+    BvhEntries entries; /* filled where packets walk the BVH; never a null pointer: Oclgrind's
+                           compiler made of a null here an llvm.assume it cannot run */
+    entries.count = 0;
+    items.entries = &entries;
 #if CLR_FEATURE_BVH
     if (info.primary_bvh) { /* 4x4 blocks, whose rays spread less through the BVH than a row's */
         TileFrustum frustum = tile_frustum(camera, col0, col0 + lanes, row_begin, row_end);
-        BvhEntries entries;
         bvh_entries(&frustum, &entries, CLR_SCENE_ARGS);
-        items.entries = &entries;
         for (int row0 = row_begin; row0 < row_end; row0 += 4, out += 4 * camera.width) {
             int rows = min(4, row_end - row0);
             for (int c = 0; c < lanes; c += 4) {
