@@ -9,7 +9,9 @@
  * keep_nearer16() and ranked by hits_beat16(), in whatever order. A box is entered where some
  * lane's ray reaches it no farther than that lane's best hit so far (box_reachable() lane by
  * lane, with intersect_bvh()'s rule for the nearest hit), so no lane misses an object that
- * could beat its hit; the nearer child first, so that far boxes are mostly passed by. */
+ * could beat its hit; the nearer child first, so that far boxes are mostly passed by. The walk
+ * starts at the entries its screen tile found (packet/bvh_entries.cl), below the levels that
+ * every packet of the tile would test alike. */
 #ifndef CLR_PACKET_BVH_WALK16_CL
 #define CLR_PACKET_BVH_WALK16_CL
 

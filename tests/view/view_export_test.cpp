@@ -234,18 +234,23 @@ long rise_during(pid_t pid, const std::function<void()>& work) {
     return peak - before;
 }
 
+// A scene of 100,000 spheres (a 7 MB file) as `name` in `folder`: one whose JSON is costly to hold.
+void write_many_spheres(TempFolder& folder, const std::string& name) {
+    json scene = json::parse(R"({"eye": [0, 1.5, 14], "lookat": [0, 1, 0], "up": [0, 1, 0], "fov_angle": 60,
+                                 "width": 32, "height": 18, "spheres": []})");
+    for (int i = 0; i < 100000; ++i)
+        scene["spheres"].push_back({{"center", {i % 100, (i / 100) % 100, -50 - i / 10000}}, {"radius", 0.3},
+                                    {"ambient", {0.5, 0.5, 0.5}}});
+    folder.write(name, scene.dump());
+}
+
 // Each export holds the scene's JSON as a tree twice (about 18 times the file each) while it
 // runs: exports sent at once run one at a time, and give back what they held, so that 8 at once
 // take about what one takes. Sent at once, 8 exports of this 7 MB scene took the viewer about
 // 7 times as far as one did (8 at once of a 21 MB scene, 2.2 GB).
 TEST(ViewExport, ExportsSentAtOnceDoNotEachHoldTheScene) {
     TempFolder folder;
-    json scene = json::parse(R"({"eye": [0, 1.5, 14], "lookat": [0, 1, 0], "up": [0, 1, 0], "fov_angle": 60,
-                                 "width": 32, "height": 18, "spheres": []})");
-    for (int i = 0; i < 100000; ++i)
-        scene["spheres"].push_back({{"center", {i % 100, (i / 100) % 100, -50 - i / 10000}}, {"radius", 0.3},
-                                    {"ambient", {0.5, 0.5, 0.5}}});
-    folder.write("many.json", scene.dump());
+    write_many_spheres(folder, "many.json");
     ViewerProcess viewer("many.json", folder.path());
     ASSERT_TRUE(viewer.started()) << viewer.output();
     const std::string one_key = R"({"keys": [{"eye": [0, 1.5, 14], "lookat": [0, 1, 0]}], "name": "e"})";
@@ -273,12 +278,7 @@ TEST(ViewExport, ExportsSentAtOnceDoNotEachHoldTheScene) {
 TEST(ViewExport, ExportsWaitingTheirTurnAtAStopWriteNothing) {
     TempFolder folder;
     fs::create_directories(folder.file("out"));
-    json scene = json::parse(R"({"eye": [0, 1.5, 14], "lookat": [0, 1, 0], "up": [0, 1, 0], "fov_angle": 60,
-                                 "width": 32, "height": 18, "spheres": []})");
-    for (int i = 0; i < 100000; ++i)
-        scene["spheres"].push_back({{"center", {i % 100, (i / 100) % 100, -50 - i / 10000}}, {"radius", 0.3},
-                                    {"ambient", {0.5, 0.5, 0.5}}});
-    folder.write("many.json", scene.dump());
+    write_many_spheres(folder, "many.json");
     ViewerProcess viewer("many.json --output-dir out", folder.path());
     ASSERT_TRUE(viewer.started()) << viewer.output();
     const auto written = [&] {
