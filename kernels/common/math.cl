@@ -16,6 +16,7 @@
 typedef double real;
 typedef double2 real2;
 typedef double3 real3;
+typedef double4 real4;
 typedef double16 real16;
 typedef long16 mask16; /* what comparing two real16 gives */
 #define convert_mask16 convert_long16
@@ -25,6 +26,7 @@ typedef long16 mask16; /* what comparing two real16 gives */
 typedef float real;
 typedef float2 real2;
 typedef float3 real3;
+typedef float4 real4;
 typedef float16 real16;
 typedef int16 mask16;
 #define convert_mask16 convert_int16
