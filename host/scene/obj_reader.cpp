@@ -314,6 +314,18 @@ void warn_about_unknown_statements(const ObjTextCounts& counts, ObjMesh& mesh) {
                             (more > 0 ? " (and " + std::to_string(more) + " more such lines)" : ""));
 }
 
+// A mesh takes one colour (docs/scene-format.md, Meshes): colours given with the positions
+// (`v x y z r g b`) are not drawn, which a warning says, naming the first such line.
+void warn_about_vertex_colours(const ObjTextCounts& counts, ObjMesh& mesh) {
+    if (counts.coloured_positions == 0) return;
+    const std::uint64_t more = counts.coloured_positions - 1;
+    mesh.warnings.push_back("line " + std::to_string(counts.first_coloured_line) +
+                            ": a vertex colour after the position (v x y z r g b): a mesh takes one colour, the "
+                            "scene's ambient or else its first face's material's Kd; the vertices' colours are not "
+                            "drawn" +
+                            (more > 0 ? " (nor those of " + std::to_string(more) + " more such lines)" : ""));
+}
+
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
@@ -386,6 +398,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     warn_about_unused_materials(statements, material_files, mesh);
     warn_about_texture_maps(statements, material_files, mesh);
     warn_about_unknown_statements(counts, mesh);
+    warn_about_vertex_colours(counts, mesh);
     return mesh;
 }
 

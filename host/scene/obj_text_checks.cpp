@@ -426,6 +426,8 @@ PieceCounts count_piece(std::string_view piece) {
             counts.entries.first_unknown_line = counts.lines;  // within the piece
             counts.entries.first_unknown_keyword = std::string(keyword.substr(0, 64));
         }
+        if (keyword == "v" && token_count(line) > 5 && counts.entries.coloured_positions++ == 0)
+            counts.entries.first_coloured_line = counts.lines;  // within the piece
         if (keyword == "f") {
             const std::uint64_t tokens = token_count(line);
             if (tokens >= 4) {
@@ -493,6 +495,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
     sum.triangles += more.triangles;
     sum.named_statements += more.named_statements;
     sum.unknown_statements += more.unknown_statements;
+    sum.coloured_positions += more.coloured_positions;
 }
 
 }  // namespace
@@ -522,6 +525,8 @@ ObjTextCounts check_obj_text(std::string_view text, std::uint64_t max_triangles,
             total.first_unknown_line = before[i].lines + counted[i].entries.first_unknown_line;
             total.first_unknown_keyword = counted[i].entries.first_unknown_keyword;
         }
+        if (total.first_coloured_line == 0 && counted[i].entries.first_coloured_line != 0)
+            total.first_coloured_line = before[i].lines + counted[i].entries.first_coloured_line;
     }
     std::vector<ObjTextProblem> problems(pieces.size());
     parallel_for(pieces.size(), parts, [&](std::size_t i) {

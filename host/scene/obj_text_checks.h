@@ -40,6 +40,11 @@ struct ObjTextCounts {
     std::uint64_t unknown_statements = 0;
     std::uint64_t first_unknown_line = 0;
     std::string first_unknown_keyword;
+    // `v` lines with more than four numbers: a vertex colour after the position
+    // (`v x y z r g b`, as MeshLab and photogrammetry tools write it), which no mesh draws (a
+    // mesh takes one colour). The first one's line (from 1; 0 for none).
+    std::uint64_t coloured_positions = 0;
+    std::uint64_t first_coloured_line = 0;
 };
 
 // A line the checks refuse: its number (from 1) and why, in a user's terms.

@@ -688,6 +688,28 @@ TEST(ObjReader, ALineThatIsNoObjStatementIsAWarning) {
     EXPECT_EQ(parted.warnings[0], "line 600003: 'vv' is not an OBJ statement: the line is ignored (and 1 more such lines)");
 }
 
+// Colours given with the positions (`v x y z r g b`, as MeshLab, Open3D and photogrammetry tools
+// write them) were read past in silence: the mesh in grey, exit 0 also with --strict. A mesh
+// takes one colour, so a warning names the first such line and counts the rest; a position's
+// fourth number (its weight) and numbers behind a '#' are no colour.
+TEST(ObjReader, VertexColoursTheMeshDoesNotDrawAreAWarning) {
+    const ObjMesh coloured =
+        parse_obj("v 0 0 0 1 0 0\nv 1 0 0\nv 1 1 0 0.5 0.5 0.5\nv 0 1 0 0 1 0\nf 1 2 3\n", "mesh.obj");
+    ASSERT_EQ(coloured.warnings.size(), 1u);
+    EXPECT_EQ(coloured.warnings[0], "line 1: a vertex colour after the position (v x y z r g b): a mesh takes one "
+                                    "colour, the scene's ambient or else its first face's material's Kd; the "
+                                    "vertices' colours are not drawn (nor those of 2 more such lines)");
+    EXPECT_TRUE(parse_obj("v 0 0 0 1\nv 1 0 0 1\nv 1 1 0 # 1 0 0\nf 1 2 3\n", "mesh.obj").warnings.empty());
+    // In a text checked in parts (4 MiB and more), the line is counted from the file's start.
+    std::string large;
+    for (int i = 0; i < 600000; ++i) large += "v 0 0 0\n";
+    large += "v 1 0 0\nv 0 1 0 1 0 0\nf -3 -2 -1\n";
+    ASSERT_GT(large.size(), std::size_t(4) << 20);
+    const ObjMesh parted = parse_obj(large, "large.obj");
+    ASSERT_EQ(parted.warnings.size(), 1u);
+    EXPECT_EQ(parted.warnings[0].substr(0, 14), "line 600002: a");
+}
+
 // Each material and .mtl name is kept once however many lines repeat it: a file of millions of
 // `usemtl` lines took 400 MB for 48 MiB of text.
 TEST(ObjReader, RepeatedMaterialStatementsAreKeptOnce) {
