@@ -248,7 +248,7 @@ void warn_about_uses(const ObjMaterialStatements& statements, const std::functio
     }
     if (!first) return;
     mesh.warnings.push_back("line " + std::to_string(first->first_line) + ": usemtl " +
-                            printable(shortened(first->name, 200)) + ": " + problem +
+                            printable(shortened(first->whole, 200)) + ": " + problem +
                             (more > 0 ? " (nor those of " + std::to_string(more) + " more usemtl lines)" : "") +
                             consequence);
 }
@@ -270,6 +270,17 @@ void read_material_libraries(const ObjMaterialStatements& statements, MaterialFi
         if (!named.insert(name).second) continue;
         if (!material_files.read(name)) return;
     }
+}
+
+// A `usemtl` names its material by its whole name where a .mtl file defines that ("usemtl my
+// mat" for a `newmtl my mat`, a name that tinyobjloader's LoadMtl keeps whole), else by its first
+// word, as tinyobjloader reads a `usemtl` (`usemtl wood oak` for a `newmtl wood`).
+void choose_material_names(ObjMaterialStatements& statements, const MaterialFiles& material_files) {
+    for (auto& use : statements.uses)
+        if (use.whole != use.name && material_files.defines(use.whole)) use.name = use.whole;
+    if (statements.first_face_whole != statements.first_face_material &&
+        material_files.defines(statements.first_face_whole))
+        statements.first_face_material = statements.first_face_whole;
 }
 
 // A mesh takes one colour (docs/scene-format.md, Meshes): a `usemtl` whose material's Kd is not
@@ -330,9 +341,10 @@ void warn_about_vertex_colours(const ObjTextCounts& counts, ObjMesh& mesh) {
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
 ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
-    const ObjMaterialStatements statements = material_statements(text);
+    ObjMaterialStatements statements = material_statements(text);
     read_material_libraries(statements, material_files);
     if (!material_files.problem().empty()) throw ObjError(material_files.problem());
+    choose_material_names(statements, material_files);
 
     tinyobj::attrib_t attributes;
     std::vector<tinyobj::shape_t> shapes;

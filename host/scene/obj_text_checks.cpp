@@ -325,6 +325,17 @@ std::string used_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
+// The whole material name of a `usemtl` statement: the rest of it, without its comment and the
+// blanks around it.
+std::string whole_material_name(std::string_view statement) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    statement = statement_of(statement);
+    std::size_t at = statement.find("usemtl") + 6, end = statement.size();
+    while (at < end && blank(statement[at])) ++at;
+    while (end > at && blank(statement[end - 1])) --end;
+    return std::string(statement.substr(at, end - at));
+}
+
 }  // namespace
 
 // Each name once, however many lines repeat it: a file of millions of `usemtl` or `mtllib`
@@ -343,10 +354,10 @@ ObjMaterialStatements material_statements(std::string_view text) {
             for (std::string& name : names)
                 if (libraries.insert(name).second) found.libraries.push_back(std::move(name));
         } else if (keyword == "usemtl") {
-            std::string name = used_material_name(line);
-            if (!faces_begun) found.first_face_material = name;
-            const auto [entry, added] = uses.try_emplace(name, found.uses.size());
-            if (added) found.uses.push_back({std::move(name), number, 0});
+            std::string name = used_material_name(line), whole = whole_material_name(line);
+            if (!faces_begun) found.first_face_material = name, found.first_face_whole = whole;
+            const auto [entry, added] = uses.try_emplace(whole, found.uses.size());
+            if (added) found.uses.push_back({std::move(name), std::move(whole), number, 0});
             ++found.uses[entry->second].lines;
         } else if (keyword == "f") {
             faces_begun = true;

@@ -100,17 +100,21 @@ struct ObjMaterialStatements {
     // (tinyobjloader itself reads only the first name of a statement that it can read, and a
     // `usemtl` only among the files named above it).
     std::vector<std::string> libraries;  // each name once, where it first appears
-    // Each material name that `usemtl` statements use (its first word, as tinyobjloader reads
-    // it), once, in the order of first use: the line of its first use and how many lines use it.
+    // Each material that `usemtl` statements use, once, in the order of first use: its name (the
+    // statement's first word, as tinyobjloader reads it), the whole name (the rest of the
+    // statement, blanks around it left out: "my mat" of `usemtl my mat # note`, which a
+    // `newmtl my mat` defines), the line of its first use and how many lines use it.
     struct Use {
         std::string name;
+        std::string whole;
         std::uint64_t first_line = 0;
         std::uint64_t lines = 0;
     };
     std::vector<Use> uses;
-    // The material of the first face: the name of the last `usemtl` before the first `f` line
-    // ("" where there is none).
+    // The material of the first face: the name and whole name of the last `usemtl` before the
+    // first `f` line ("" where there is none).
     std::string first_face_material;
+    std::string first_face_whole;
 };
 ObjMaterialStatements material_statements(std::string_view text);
 

@@ -187,6 +187,35 @@ TEST(ObjReader, MaterialNamesAreReadAsTinyobjloaderReadsThem) {
                      .diffuse.has_value());
 }
 
+// A `newmtl my mat` defines "my mat" (LoadMtl keeps the rest of the line), which a `usemtl my mat`
+// names whole; a name that no .mtl defines whole is its first word, as tinyobjloader reads a
+// `usemtl`. Such a material was never found: the mesh drawn grey, and a warning that no .mtl
+// defined "my".
+TEST(ObjReader, AMaterialNameWithBlanksIsFoundWhole) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl my mat\nKd 1 0 0\nnewmtl wood\nKd 0 1 0\n");
+    const auto read = [&](const std::string& uses) {
+        return read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + uses));
+    };
+    const ObjMesh whole = read("usemtl my mat\nf 1 2 3\nusemtl  my mat  # red\nf 1 3 4\n");
+    EXPECT_EQ(whole.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_TRUE(whole.warnings.empty()) << whole.warnings[0];
+    const ObjMesh first_word = read("usemtl wood oak\nf 1 2 3\n");
+    EXPECT_EQ(first_word.diffuse, (std::optional<Vec3>{Vec3{0, 1, 0}}));
+    EXPECT_TRUE(first_word.warnings.empty()) << first_word.warnings[0];
+    const ObjMesh neither = read("usemtl my other mat\nf 1 2 3\n");
+    EXPECT_FALSE(neither.diffuse.has_value());
+    ASSERT_EQ(neither.warnings.size(), 1u);
+    EXPECT_EQ(neither.warnings[0].rfind("line 6: usemtl my other mat: no .mtl file of the OBJ defines this material", 0),
+              0u)
+        << neither.warnings[0];
+    const ObjMesh other_colour = read("usemtl wood\nf 1 2 3\nusemtl my mat\nf 1 3 4\n");
+    EXPECT_EQ(other_colour.diffuse, (std::optional<Vec3>{Vec3{0, 1, 0}}));
+    ASSERT_EQ(other_colour.warnings.size(), 1u);
+    EXPECT_EQ(other_colour.warnings[0].rfind("line 8: usemtl my mat: a mesh takes one colour", 0), 0u)
+        << other_colour.warnings[0];
+}
+
 // A material defined again keeps its first definition: the later one's colour is unused, which
 // a warning says, with the .mtl's line (across .mtl files too).
 TEST(ObjReader, AMaterialDefinedAgainIsAWarning) {
