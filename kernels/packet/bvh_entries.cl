@@ -47,6 +47,11 @@ TileFrustum tile_frustum(ClrCamera camera, int col_begin, int col_end, int row_b
     real s = dot(right, cross(forward, up)) < 0.0f ? -1.0f : 1.0f;
     real3 side[4] = {s * cross(forward + a0 * right, up), -s * cross(forward + a1 * right, up),
                      -s * cross(forward + b0 * up, right), s * cross(forward + b1 * up, right)};
+    /* Each side scaled to its largest component 1: only the signs of its products count, and a
+     * lens near 180 degrees makes right and up about 1e12 long, whose products, against a box
+     * 1e15 away, left float's range (+inf and -inf summed to NaN, and the box was left out). */
+    for (int i = 0; i < 4; ++i)
+        side[i] /= fmax(fmax(fabs(side[i].x), fabs(side[i].y)), fabs(side[i].z));
     TileFrustum f;
     f.nx = (real4)(side[0].x, side[1].x, side[2].x, side[3].x);
     f.ny = (real4)(side[0].y, side[1].y, side[2].y, side[3].y);

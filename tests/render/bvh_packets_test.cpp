@@ -160,6 +160,17 @@ TEST(BvhPackets, TilesEnteringTheTreeBelowItsRootGiveTheListsBytes) {
     expect_walk_gives_the_lists_bytes(scene, "inside the floor's box, 3 samples, bands of 5 rows", bands);
 }
 
+// A lens within 1e-10 degrees of 180 makes the camera's right and up vectors about 1e12 long,
+// and a tile's pyramid's side normals their products: against a box 1e15 away their sums passed
+// float's range, and a box the tile's rays meet could be left out.
+TEST(BvhPackets, ATilesPyramidHoldsFarBoxesThroughTheWidestLens) {
+    Scene scene = testing::make_scene({0, 0, 0}, {1, 0.3, -1}, {0, 1, 0}, 179.99999999995, 64, 48);
+    add_mesh(scene, grid_mesh({-1e15, -1e15, -1e15}, {2e15, 0, 0}, {0, 0, 2e15}, 60, 60), {0.7, 0.7, 0.7});
+    add_mesh(scene, sphere_mesh({6e14, 3e14, -6e14}, 2e14, 24, 12, false), {0.9, 0.3, 0.2});
+    add_mesh(scene, sphere_mesh({-6e14, 1e14, 6e14}, 3e14, 24, 12, false), {0.2, 0.3, 0.9});
+    expect_walk_gives_the_lists_bytes(scene, "fov 179.99999999995");
+}
+
 TEST(BvhPackets, MirrorsAndPointLightsWithPlanesGiveTheListsBytes) {
     expect_walk_gives_the_lists_bytes(testing::make_sunlit_mirror_scene(), "sunlit mirrors");
     Scene lit = sunlit_meshes();
