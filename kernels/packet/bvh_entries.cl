@@ -104,7 +104,8 @@ void bvh_entries(const TileFrustum* f, BvhEntries* entries, CLR_SCENE_PARAMS)
                 deeper = true;
                 __global const ClrBvhNode* left = &bvh_nodes[node->first];
                 bool left_first = centre_along(left, f->eye, f->centre) <= centre_along(left + 1, f->eye, f->centre);
-                uint near = left_first ? node->first : node->first + 1, far = left_first ? node->first + 1 : node->first;
+                uint near = left_first ? node->first : node->first + 1;
+                uint far = left_first ? node->first + 1 : node->first;
                 if (frustum_meets(f, &bvh_nodes[near]))
                     kept[n++] = near;
                 if (frustum_meets(f, &bvh_nodes[far]))

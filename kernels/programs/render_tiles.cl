@@ -10,9 +10,11 @@
 /* The same as render, with screen-tile culling for the primary rays: work-item (x, y)
  * renders screen tile x of tile row first_row / CLR_TILE_SIZE + y, that is the rows of its
  * 16x16 pixels that lie in the band, 16 pixels of a row at a time (render_row16), or where
- * packets walk the BVH 4x4 pixels at a time (render_block16). A tile that no object can reach is the background's colour throughout (known from its list; where
- * packets walk the BVH instead, info.primary_bvh, every tile is traced). Identical output to
- * render. With CLR_FEATURE_FLOAT_OUTPUT, `pixels` holds a float4 per pixel instead (CLR_PIXEL). */
+ * packets walk the BVH 4x4 pixels at a time (render_block16), from entries the tile finds once
+ * (packet/bvh_entries.cl). A tile that no object can reach is the background's colour
+ * throughout (known from its list; where packets walk the BVH instead, info.primary_bvh, every
+ * tile is traced). Identical output to render. With CLR_FEATURE_FLOAT_OUTPUT, `pixels` holds
+ * a float4 per pixel instead (CLR_PIXEL). */
 __kernel void render_packets(ClrCamera camera, int first_row, int row_count, CLR_SCENE_PARAMS,
                              __global uchar4* pixels, __global const uint* tile_offsets,
                              __global const uint* tile_items, __global const float* item_nearest,
