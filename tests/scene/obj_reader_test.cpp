@@ -695,6 +695,14 @@ TEST(ObjReader, ATextureMapTheMeshDoesNotDrawIsAWarning) {
     EXPECT_TRUE(read_obj(folder.write("plain.obj", "mtllib m.mtl\n" + kSquare + "usemtl plain\nf 1 2 3\n")).warnings.empty());
 }
 
+// 600,000 positions, then `tail` from line 600,001: a text of more than 4 MiB, which the checks
+// read in parts.
+std::string checked_in_parts(const std::string& tail) {
+    std::string text;
+    for (int i = 0; i < 600000; ++i) text += "v 0 0 0\n";
+    return text + tail;
+}
+
 // A line whose first word is no OBJ statement is skipped by tinyobjloader in silence: a `v` line
 // behind the byte order mark of a file joined on (or written "V") shifted every later face onto
 // other positions, with no word. A warning names the first such line and counts the rest; the
@@ -708,9 +716,7 @@ TEST(ObjReader, ALineThatIsNoObjStatementIsAWarning) {
     EXPECT_TRUE(parse_obj(kSquare + "l 1 2\np 1\nvp 0.5\ncstype bezier\ns off\no a\ng b\nf 1 2 3\n", "mesh.obj")
                     .warnings.empty());
     // In a text checked in parts (4 MiB and more), the line is counted from the file's start.
-    std::string large;
-    for (int i = 0; i < 600000; ++i) large += "v 0 0 0\n";
-    large += "v 1 0 0\nv 0 1 0\nvv 1 1 1\nf -3 -2 -1\nvv 2 2 2\n";
+    const std::string large = checked_in_parts("v 1 0 0\nv 0 1 0\nvv 1 1 1\nf -3 -2 -1\nvv 2 2 2\n");
     ASSERT_GT(large.size(), std::size_t(4) << 20);
     const ObjMesh parted = parse_obj(large, "large.obj");
     ASSERT_EQ(parted.warnings.size(), 1u);
@@ -730,9 +736,7 @@ TEST(ObjReader, VertexColoursTheMeshDoesNotDrawAreAWarning) {
                                     "vertices' colours are not drawn (nor those of 2 more such lines)");
     EXPECT_TRUE(parse_obj("v 0 0 0 1\nv 1 0 0 1\nv 1 1 0 # 1 0 0\nf 1 2 3\n", "mesh.obj").warnings.empty());
     // In a text checked in parts (4 MiB and more), the line is counted from the file's start.
-    std::string large;
-    for (int i = 0; i < 600000; ++i) large += "v 0 0 0\n";
-    large += "v 1 0 0\nv 0 1 0 1 0 0\nf -3 -2 -1\n";
+    const std::string large = checked_in_parts("v 1 0 0\nv 0 1 0 1 0 0\nf -3 -2 -1\n");
     ASSERT_GT(large.size(), std::size_t(4) << 20);
     const ObjMesh parted = parse_obj(large, "large.obj");
     ASSERT_EQ(parted.warnings.size(), 1u);
