@@ -1,11 +1,14 @@
 #include "scene/mesh_loader.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <new>
+#include <tuple>
 #include <vector>
 
 #include "core/errors.h"
@@ -215,6 +218,22 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
     scene.meshes.push_back(std::move(mesh));
 }
 
+// The model a mesh's file gives, by what its read depends on: the OBJ's identity (device and
+// inode) and that of the folder its relative `mtllib` names start from, each as the name
+// reaches it. "m.obj", "d/../m.obj" and a link beside m.obj name one model, read once (each
+// spelling read it again: 20 of a 100 MB OBJ took 20 reads); a link from another folder reads
+// its .mtl files from there, so it is another model. A name stat() cannot follow keeps its own
+// key, and its read says why.
+using ModelKey = std::tuple<dev_t, ino_t, dev_t, ino_t, std::string>;
+
+ModelKey model_key(const std::string& path) {
+    struct stat file {}, folder {};
+    const std::string parent = fs::path(path).parent_path().string();
+    if (::stat(path.c_str(), &file) != 0 || ::stat(parent.empty() ? "." : parent.c_str(), &folder) != 0)
+        return {0, 0, 0, 0, path};
+    return {file.st_dev, file.st_ino, folder.st_dev, folder.st_ino, ""};
+}
+
 }  // namespace
 
 void add_triangle(Scene& scene, Mesh mesh, const std::array<Vec3, 3>& corners, const Node& node) {
@@ -251,24 +270,26 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         // `models`, or not at all when there is no folder `models`): scene/file_names.h.
         paths.push_back(path_in_folder(folder, each.mesh.filename));
     }
-    // A file that several meshes place (one model, many copies) is read once, and its model
-    // kept only until the last of them is placed.
-    std::map<std::string, std::size_t> uses_left;
-    for (const std::string& path : paths) ++uses_left[path];
-    std::map<std::string, ObjMesh> kept;
+    // A file that several meshes place (one model, many copies), under one name or several, is
+    // read once, and its model kept only until the last of them is placed.
+    std::vector<ModelKey> keys;
+    std::map<ModelKey, std::size_t> uses_left;
+    for (const std::string& path : paths) ++uses_left[keys.emplace_back(model_key(path))];
+    std::map<ModelKey, ObjMesh> kept;
     for (std::size_t m = 0; m < pending.size(); ++m) {
         const PendingMesh& each = pending[m];
         const std::string& path = paths[m];
-        const bool used_again = --uses_left[path] > 0;
+        const ModelKey& key = keys[m];
+        const bool used_again = --uses_left[key] > 0;
         Mesh mesh = each.mesh;
         ObjMesh read;  // a model for this mesh alone
         const ObjMesh* model = &read;
         std::string what = "mesh '" + printable(mesh.filename) + "'";
         try {
-            auto found = kept.find(path);
+            auto found = kept.find(key);
             if (found == kept.end()) {
                 read = read_obj_through_cache(path, cache, memory_budget, &materials);
-                if (used_again) found = kept.emplace(path, std::move(read)).first;
+                if (used_again) found = kept.emplace(key, std::move(read)).first;
             }
             if (found != kept.end()) model = &found->second;
             // Any text reads as an OBJ of unknown statements: a file without one face is
@@ -304,7 +325,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         if (!mesh.placeholder) mesh.material_paths = model->material_files;
         if (!each.ambient_given) mesh.ambient = model->diffuse && !mesh.placeholder ? *model->diffuse : kDefaultMeshColor;
         add_mesh(scene, std::move(mesh), *model, each.filename, what, memory_budget);
-        if (!used_again) kept.erase(path);
+        if (!used_again) kept.erase(key);
     }
 }
 
