@@ -166,9 +166,11 @@ void add_scene_inputs(const Scene& scene, OutputRoles& roles) {
     for (const Impostor& impostor : scene.impostors)
         for (const ImpostorView& view : impostor.views)
             if (view.image) roles.add_input("impostor image", view.image->path);
+    std::set<const std::vector<std::string>*> listed;  // the placements of a file share its list
     for (const Mesh& mesh : scene.meshes) {
         if (!mesh.path.empty()) roles.add_input("mesh", mesh.path);
-        for (const std::string& material : mesh.material_paths) roles.add_input("mesh material", material);
+        if (mesh.material_paths && listed.insert(mesh.material_paths.get()).second)
+            for (const std::string& material : *mesh.material_paths) roles.add_input("mesh material", material);
     }
 }
 

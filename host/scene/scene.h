@@ -73,7 +73,10 @@ struct Mesh {
     // The file read (relative to the scene's folder), also when a placeholder stands in for
     // it: every file the scene tried to read is an input that no output may replace.
     std::string path;
-    std::vector<std::string> material_paths;  // the .mtl files it named, as far as it was read
+    // The .mtl files it named, as far as it was read (null for a triangle of the scene): one list
+    // for every placement of a file, not a copy each, since one `mtllib` line may name thousands
+    // (a .mtl spelt many ways); inputs are checked once per list (add_scene_inputs).
+    std::shared_ptr<const std::vector<std::string>> material_paths;
     Vec3 position;
     Vec3 scale{1, 1, 1};
     Color ambient;  // the scene's, else the OBJ material's Kd, else 0.8 grey

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <system_error>
 
 #include "core/errors.h"
@@ -100,9 +101,12 @@ void PathExporter::check_output(const std::string& role, const std::string& path
     roles.add_input("scene file", scene_.path);
     for (const ImageFileInfo& image : scene_.image_files)
         if (image.format != "placeholder") roles.add_input("image '" + image.path + "'", image.path);
+    std::set<const std::vector<std::string>*> listed;  // the placements of a file share its list
     for (const Mesh& mesh : scene_.meshes) {
         if (!mesh.path.empty()) roles.add_input("mesh '" + mesh.path + "'", mesh.path);
-        for (const std::string& material : mesh.material_paths) roles.add_input("mesh material '" + material + "'", material);
+        if (mesh.material_paths && listed.insert(mesh.material_paths.get()).second)
+            for (const std::string& material : *mesh.material_paths)
+                roles.add_input("mesh material '" + material + "'", material);
     }
     roles.add_output(role, path);
 }
