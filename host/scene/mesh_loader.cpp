@@ -281,6 +281,9 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     // spellings of one .mtl copied for each of 300 placements took 4.4 GB, and the output check
     // 88 s to look at every name of every copy.
     std::map<ModelKey, std::shared_ptr<const std::vector<std::string>>> material_lists;
+    // A file that cannot be read, for its later placements (a placeholder each, with
+    // --placeholders): 40 placements of a broken 50 MB OBJ read it 40 times.
+    std::map<ModelKey, ObjError> failed;
     for (std::size_t m = 0; m < pending.size(); ++m) {
         const PendingMesh& each = pending[m];
         const std::string& path = paths[m];
@@ -291,6 +294,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         const ObjMesh* model = &read;
         std::string what = "mesh '" + printable(mesh.filename) + "'";
         try {
+            if (const auto failure = failed.find(key); failure != failed.end()) throw failure->second;
             auto found = kept.find(key);
             if (found == kept.end()) {
                 read = read_obj_through_cache(path, cache, memory_budget, &materials);
@@ -313,13 +317,16 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             fail_out_of_memory(each.filename, "OBJ '" + printable(path) + "': reading it took more memory than the "
                                               "system gives (docs/robustness.md, Memory)");
         } catch (const ObjError& error) {
+            if (used_again) failed.emplace(key, error);
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
             each.filename.warn(problem + "; rendering a placeholder cube instead");
             read = placeholder_cube();
             model = &read;
             mesh.placeholder = true;
-            mesh.material_paths = std::make_shared<const std::vector<std::string>>(error.material_files);
+            std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
+            if (!list) list = std::make_shared<const std::vector<std::string>>(error.material_files);
+            mesh.material_paths = list;
             // A placement the cube cannot take must still say why there is a cube at all.
             what = "the placeholder cube for " + what + " (" + problem + ")";
         }
@@ -337,6 +344,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         if (!used_again) {
             kept.erase(key);
             material_lists.erase(key);
+            failed.erase(key);
         }
     }
 }

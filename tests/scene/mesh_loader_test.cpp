@@ -551,6 +551,42 @@ TEST(MeshLoader, PlacementsOfAFileShareItsListOfMtlNames) {
     EXPECT_THROW(roles.add_output("image", folder.file("d/../a.mtl")), OutputError) << "the .mtl is an input";
 }
 
+// With placeholders, a file that cannot be read is read once for all its placements, as one that
+// loads is: 40 placements of a broken 50 MB OBJ read it 40 times. Each placement is still a
+// placeholder with the file's problem (here its .mtl's), and the .mtl stays an input of each.
+TEST(MeshLoader, ABrokenFilePlacedManyTimesIsReadOnce) {
+    TempFolder folder;
+    std::string obj = "mtllib a.mtl\nusemtl c\n";
+    for (int i = 0; i < 4000; ++i) obj += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\n";
+    for (int i = 1; i < 4000; ++i)
+        obj += "f " + std::to_string(2 * i - 1) + " " + std::to_string(2 * i + 1) + " " + std::to_string(2 * i) + "\n";
+    folder.write("bad.obj", obj);
+    folder.write("a.mtl", "newmtl c\nKd 1 0\n");  // a colour of two numbers: the OBJ cannot be read
+    Json copies = Json::array();
+    for (int i = 0; i < 20; ++i) copies.push_back({{"filename", "bad.obj"}, {"position", {0, 0, -i}}});
+    LoadOptions options;
+    options.placeholder_images = true;
+    const std::string scene_file = folder.write("scene.json", with_obj(copies).dump());
+    const std::uint64_t before = bytes_read();
+    const Scene scene = load_scene(scene_file, options);
+    const std::uint64_t read = bytes_read() - before;
+    if (before == 0) GTEST_SKIP() << "no /proc/self/io here";
+    ASSERT_EQ(scene.meshes.size(), 20u);
+    for (const Mesh& mesh : scene.meshes) {
+        EXPECT_TRUE(mesh.placeholder);
+        ASSERT_TRUE(mesh.material_paths);
+        EXPECT_EQ(*mesh.material_paths, std::vector<std::string>{folder.file("a.mtl")});
+    }
+    const std::string warnings = testing::scene_json::all_warnings(scene);
+    std::size_t placeholders = 0;
+    for (std::size_t at = warnings.find("'Kd' needs 3 numbers"); at != std::string::npos;
+         at = warnings.find("'Kd' needs 3 numbers", at + 1))
+        ++placeholders;
+    EXPECT_EQ(placeholders, 20u) << warnings;
+    EXPECT_LT(read, 3 * obj.size()) << "bad.obj (" << obj.size() << " bytes) read about " << read / obj.size()
+                                    << " times";
+}
+
 TEST(MeshLoader, MeshesChangeTheScenesDigest) {
     TempFolder folder;
     folder.write("square.obj", kSquareObj);
