@@ -49,6 +49,16 @@ Json with_obj(const Json& obj) {
     return scene;
 }
 
+// The text of an OBJ strip of `columns` - 1 triangles (2 * columns corners in two rows),
+// after `head`: big enough that reading it again shows in the bytes read.
+std::string strip_obj(int columns, const std::string& head = "") {
+    std::string obj = head;
+    for (int i = 0; i < columns; ++i) obj += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\n";
+    for (int i = 1; i < columns; ++i)
+        obj += "f " + std::to_string(2 * i - 1) + " " + std::to_string(2 * i + 1) + " " + std::to_string(2 * i) + "\n";
+    return obj;
+}
+
 // The SceneError loading `scene` in `folder` gives: "location: detail", or "" when it loads.
 std::string error_of(const TempFolder& folder, const Json& scene, const LoadOptions& options = {}) {
     try {
@@ -461,10 +471,7 @@ TEST(MeshLoader, AFileWithoutFacesIsNoMesh) {
 // One model placed many times (a forest of one tree) is one file: read once, not once a copy.
 TEST(MeshLoader, AFilePlacedManyTimesIsReadOnce) {
     TempFolder folder;
-    std::string obj;
-    for (int i = 0; i < 2000; ++i) obj += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\n";
-    for (int i = 1; i < 2000; ++i)
-        obj += "f " + std::to_string(2 * i - 1) + " " + std::to_string(2 * i + 1) + " " + std::to_string(2 * i) + "\n";
+    const std::string obj = strip_obj(2000);
     folder.write("strip.obj", obj);
     Json copies = Json::array();
     for (int i = 0; i < 40; ++i) copies.push_back({{"filename", "strip.obj"}, {"position", {0, 0, -i}}});
@@ -488,10 +495,7 @@ TEST(MeshLoader, AFilePlacedManyTimesIsReadOnce) {
 // is another model with that folder's colour.
 TEST(MeshLoader, AFileNamedSeveralWaysIsReadOnce) {
     TempFolder folder;
-    std::string obj = "mtllib m.mtl\nusemtl c\n";
-    for (int i = 0; i < 2000; ++i) obj += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\n";
-    for (int i = 1; i < 2000; ++i)
-        obj += "f " + std::to_string(2 * i - 1) + " " + std::to_string(2 * i + 1) + " " + std::to_string(2 * i) + "\n";
+    const std::string obj = strip_obj(2000, "mtllib m.mtl\nusemtl c\n");
     folder.write("strip.obj", obj);
     folder.write("m.mtl", "newmtl c\nKd 1 0 0\n");
     fs::create_directory(folder.file("d"));
@@ -556,10 +560,7 @@ TEST(MeshLoader, PlacementsOfAFileShareItsListOfMtlNames) {
 // placeholder with the file's problem (here its .mtl's), and the .mtl stays an input of each.
 TEST(MeshLoader, ABrokenFilePlacedManyTimesIsReadOnce) {
     TempFolder folder;
-    std::string obj = "mtllib a.mtl\nusemtl c\n";
-    for (int i = 0; i < 4000; ++i) obj += "v " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\n";
-    for (int i = 1; i < 4000; ++i)
-        obj += "f " + std::to_string(2 * i - 1) + " " + std::to_string(2 * i + 1) + " " + std::to_string(2 * i) + "\n";
+    const std::string obj = strip_obj(4000, "mtllib a.mtl\nusemtl c\n");
     folder.write("bad.obj", obj);
     folder.write("a.mtl", "newmtl c\nKd 1 0\n");  // a colour of two numbers: the OBJ cannot be read
     Json copies = Json::array();
