@@ -31,9 +31,16 @@ bool is_plain_base_name(const std::string& name) {
 }
 
 CameraKeysRequest parse_camera_keys(const std::string& body) {
-    const json document = json::parse(body, nullptr, /*allow_exceptions=*/false);
-    if (document.is_discarded() || !document.is_object())
-        throw ParameterError("body", "the body must be a JSON object {\"keys\": [{\"eye\": [x, y, z], \"lookat\": [x, y, z]}, ...]}");
+    const std::string shape = "a JSON object {\"keys\": [{\"eye\": [x, y, z], \"lookat\": [x, y, z]}, ...]}";
+    json document;
+    try {  // each way a body fails says so: a number past a double's range is JSON that no double holds
+        document = json::parse(body);
+    } catch (const json::parse_error& error) {
+        throw ParameterError("body", "the body is not JSON (byte " + std::to_string(error.byte) + "); it must be " + shape);
+    } catch (const json::out_of_range&) {  // its message would echo the whole number
+        throw ParameterError("body", "the body holds a number too large for a double; it must be " + shape);
+    }
+    if (!document.is_object()) throw ParameterError("body", "the body must be " + shape);
     CameraKeysRequest request;
     const auto keys = document.find("keys");
     if (keys == document.end() || !keys->is_array() || keys->empty())

@@ -6,6 +6,7 @@
 
 #include "scene/camera_path.h"
 #include "scene/scene_loader.h"
+#include "view/camera_keys.h"
 #include "view/view_camera.h"
 #include "view/view_parameters.h"
 
@@ -115,6 +116,29 @@ TEST(ViewParameters, PlainNumbersOnly) {
     EXPECT_EQ(parse_plain_number("1e-400"), 0);  // underflow reads as zero, as strtod reads JSON
     for (const char* text : {"1e400", "-1e400", "inf", "nan", "0x1p3", "1,5", "", "+", "1e", " 1", "1 "})
         EXPECT_FALSE(parse_plain_number(text)) << text;
+}
+
+// What an export's body that cannot be read says: not JSON, a number no double holds (the
+// whole number not echoed back), or JSON of another shape, each named as the body's fault.
+TEST(ViewCameraKeys, EachWayABodyFailsSaysWhich) {
+    const std::string huge(400, '9');
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"not json", "the body is not JSON (byte "},
+        {R"({"keys": [{"eye": [0, 0, )" + huge + R"(], "lookat": [0, 0, 0]}]})", "a number too large for a double"},
+        {R"({"keys": [{"eye": [0, 0, 1e400], "lookat": [0, 0, 0]}]})", "a number too large for a double"},
+        {"[1, 2, 3]", "the body must be a JSON object"},
+    };
+    for (const auto& [body, expected] : cases) {
+        try {
+            parse_camera_keys(body);
+            ADD_FAILURE() << body.substr(0, 60) << ": accepted";
+        } catch (const ParameterError& error) {
+            const std::string message = error.what();
+            EXPECT_EQ(error.parameter(), "body") << message;
+            EXPECT_NE(message.find(expected), std::string::npos) << message;
+            EXPECT_EQ(message.find(huge.substr(0, 40)), std::string::npos) << "the number echoed: " << message;
+        }
+    }
 }
 
 }  // namespace
