@@ -1,6 +1,7 @@
 #include "view/bounded_server.h"
 
 #include <linux/sockios.h>
+#include <fcntl.h>
 #include <poll.h>
 #include <sys/ioctl.h>
 #include <sys/socket.h>
@@ -355,6 +356,49 @@ BoundedServer::BoundedServer(std::size_t threads) {
     httplib::Server::set_post_routing_handler([](const httplib::Request&, httplib::Response& answer) {
         if (stream_of_this_thread != nullptr && stream_of_this_thread->body_left_unread()) say_connection_closes(answer);
     });
+}
+
+BoundedServer::~BoundedServer() {
+    if (kept_listening_ >= 0) ::close(kept_listening_);
+}
+
+void BoundedServer::listen_until_stopped() {
+    {
+        std::lock_guard<std::mutex> lock(stop_mutex_);
+        if (stopping_ || svr_sock_ == INVALID_SOCKET) return;
+        kept_listening_ = ::fcntl(svr_sock_, F_DUPFD_CLOEXEC, 0);
+    }
+    for (;;) {
+        listen_after_bind();
+        // Ended by stop(), or by a failed accept() after which cpp-httplib closed its descriptor
+        // of the socket (and left its number in svr_sock_). The kept duplicate still listens.
+        for (;;) {
+            {
+                std::lock_guard<std::mutex> lock(stop_mutex_);
+                if (stopping_ || kept_listening_ < 0) return;
+                const int again = ::fcntl(kept_listening_, F_DUPFD_CLOEXEC, 0);
+                if (again >= 0) {
+                    svr_sock_ = again;
+                    break;
+                }
+            }
+            // No descriptor to be had (the shortage that failed the accept): wait, as cpp-httplib
+            // waits out EMFILE.
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        // The shortage may not be over: the next round's first accept() may fail as well, and
+        // each round starts a pool of threads.
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+}
+
+void BoundedServer::stop() {
+    std::lock_guard<std::mutex> lock(stop_mutex_);
+    stopping_ = true;
+    httplib::Server::stop();
+    // A round about to start (not running yet, so Server::stop() did nothing) finds the socket
+    // shut down: its accept() fails at once and the round ends.
+    if (kept_listening_ >= 0) ::shutdown(kept_listening_, SHUT_RDWR);
 }
 
 // cpp-httplib's own loop over a connection's requests (process_server_socket in 0.11.4), with

@@ -25,6 +25,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -119,6 +120,16 @@ public:
     // Connections are served by `threads` threads of the server's own pool (new_task_queue is
     // set here and must stay), which counts the connections waiting for one.
     explicit BoundedServer(std::size_t threads);
+    ~BoundedServer() override;
+
+    // listen_after_bind(), until stop(): cpp-httplib 0.11.4 closes the listening socket and
+    // returns at the first accept() that fails with anything but EMFILE (ENFILE or ENOBUFS: the
+    // system's files or socket memory exhausted for a moment), and nothing would listen again.
+    // A duplicate of the socket, kept here, keeps it listening (connections wait in its
+    // backlog) and the server listens on it again, so that a passing shortage does not end it.
+    void listen_until_stopped();
+    // Server::stop(), also between two rounds of listen_until_stopped().
+    void stop();
 
 private:
     // Its own post-routing handler closes connections (see the constructor): not replaceable.
@@ -127,6 +138,9 @@ private:
     bool process_and_close_socket(socket_t socket) override;
 
     std::atomic<std::size_t> waiting_connections_{0};  // accepted, not yet taken by a thread
+    std::mutex stop_mutex_;
+    bool stopping_ = false;
+    int kept_listening_ = -1;  // the duplicate of the listening socket (listen_until_stopped)
 };
 
 }  // namespace clr

@@ -160,7 +160,7 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
 
     std::atomic<bool> listener_ended{false};
     std::thread listener([&server, &listener_ended] {
-        server.listen_after_bind();
+        server.listen_until_stopped();
         listener_ended = true;
     });
     // Until the listener runs, Server::stop() would do nothing and the join below would wait

@@ -1,17 +1,47 @@
 // BoundedServer (view/bounded_server.h) on its own, with a short write timeout: how it treats a
-// client that reads an answer slowly.
+// client that reads an answer slowly, and a failed accept().
 #include <gtest/gtest.h>
 
+#include <dlfcn.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <string>
 #include <thread>
 
 #include "view/bounded_server.h"
+
+// accept() as cpp-httplib's library calls it (this definition comes before the C library's):
+// the next `failing_accepts` calls fail with ENFILE, the system's file table full for a moment.
+namespace {
+std::atomic<int> failing_accepts{0};
+
+bool accept_fails() {
+    for (int left = failing_accepts; left > 0;)
+        if (failing_accepts.compare_exchange_weak(left, left - 1)) {
+            errno = ENFILE;
+            return true;
+        }
+    return false;
+}
+}  // namespace
+
+extern "C" int accept(int socket, sockaddr* address, socklen_t* length) {
+    using Accept = int (*)(int, sockaddr*, socklen_t*);
+    static const Accept real = reinterpret_cast<Accept>(::dlsym(RTLD_NEXT, "accept"));
+    return accept_fails() ? -1 : real(socket, address, length);
+}
+
+extern "C" int accept4(int socket, sockaddr* address, socklen_t* length, int flags) {
+    using Accept4 = int (*)(int, sockaddr*, socklen_t*, int);
+    static const Accept4 real = reinterpret_cast<Accept4>(::dlsym(RTLD_NEXT, "accept4"));
+    return accept_fails() ? -1 : real(socket, address, length, flags);
+}
 
 namespace clr {
 namespace {
@@ -57,6 +87,52 @@ TEST(BoundedServer, ASlowButSteadyReaderGetsTheWholeAnswer) {
     server.stop();
     listener.join();
     EXPECT_GT(received, big.size()) << "the head and all " << big.size() << " bytes of the body";
+}
+
+// cpp-httplib closes the listening socket at an accept() that fails with ENFILE (or ENOBUFS,
+// ENOMEM) and returns: the viewer went on running with nothing listening, every client refused
+// for good. listen_until_stopped() listens again on the same socket, whose connections waited.
+TEST(BoundedServer, AFailedAcceptDoesNotEndTheListening) {
+    BoundedServer server(2);
+    server.Get("/hi", [](const httplib::Request&, httplib::Response& response) { response.set_content("hi", "text/plain"); });
+    const int port = server.bind_to_any_port("127.0.0.1");
+    ASSERT_GT(port, 0);
+    std::thread listener([&] { server.listen_until_stopped(); });
+    while (!server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    httplib::Client client("127.0.0.1", port);
+    client.set_connection_timeout(5);
+    client.set_read_timeout(5);
+    auto first = client.Get("/hi");
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->status, 200);
+
+    failing_accepts = 1;
+    for (int request = 0; request < 3; ++request) {
+        httplib::Client next("127.0.0.1", port);
+        next.set_connection_timeout(5);
+        next.set_read_timeout(5);
+        auto answer = next.Get("/hi");
+        ASSERT_TRUE(answer) << "request " << request << " after the failed accept: " << httplib::to_string(answer.error());
+        EXPECT_EQ(answer->status, 200);
+        EXPECT_EQ(answer->body, "hi");
+    }
+    EXPECT_EQ(failing_accepts, 0) << "the accept() did not fail: the test tested nothing";
+
+    // Stopped while every accept fails (rounds end one after another), the listening ends.
+    failing_accepts = 1000000;
+    const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);  // waits in the backlog
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    const auto stopped_at = std::chrono::steady_clock::now();
+    server.stop();
+    listener.join();
+    failing_accepts = 0;
+    ::close(socket);
+    EXPECT_LT(std::chrono::steady_clock::now() - stopped_at, std::chrono::seconds(2));
 }
 
 }  // namespace
