@@ -337,6 +337,51 @@ void warn_about_vertex_colours(const ObjTextCounts& counts, ObjMesh& mesh) {
                             (more > 0 ? " (nor those of " + std::to_string(more) + " more such lines)" : ""));
 }
 
+// Whether the fan of a polygon from its first corner (corners 1, k, k+1) covers the polygon and
+// nothing else: every fan triangle turns the way the polygon does as a whole (their area vectors
+// add up to the polygon's). A concave polygon whose first corner does not see every other corner
+// (a U, an L started at an outer corner) fans into triangles turned the other way, which cover
+// area outside its outline. Triangles without area (a corner on an edge) count for nothing.
+bool fans_within_outline(const std::vector<Vec3>& positions, const tinyobj::index_t* corner, std::size_t corners) {
+    if (corners < 4) return true;
+    const Vec3& apex = positions[static_cast<std::size_t>(corner[0].vertex_index)];
+    const auto fan_area = [&](std::size_t c) {
+        return cross(positions[static_cast<std::size_t>(corner[c].vertex_index)] - apex,
+                     positions[static_cast<std::size_t>(corner[c + 1].vertex_index)] - apex);
+    };
+    Vec3 whole{0, 0, 0};
+    double sizes = 0;
+    for (std::size_t c = 1; c + 1 < corners; ++c) {
+        const Vec3 area = fan_area(c);
+        whole = whole + area;
+        sizes += length(area);
+    }
+    if (!(sizes > 0)) return true;  // no area at all: left out as such
+    // Turned against the whole by more than rounding (relative to the polygon's size), or areas
+    // that cancel out (a bow tie).
+    const double tolerance = 1e-9 * sizes;
+    if (length(whole) <= tolerance) return false;
+    for (std::size_t c = 1; c + 1 < corners; ++c)
+        if (dot(fan_area(c), whole) < -tolerance * length(whole)) return false;
+    return true;
+}
+
+void warn_about_polygons_outside_their_outline(const std::string& text, std::uint64_t bad_faces,
+                                                std::uint64_t first_bad_face, std::size_t first_bad_corners,
+                                                ObjMesh& mesh) {
+    if (bad_faces == 0) return;
+    std::uint64_t face = 0, line = 0;
+    for_each_statement(text, "f", [&](std::uint64_t number, std::string_view) {
+        if (face++ == first_bad_face) line = number;
+    });
+    const std::uint64_t more = bad_faces - 1;
+    mesh.warnings.push_back("line " + std::to_string(line) + ": a polygon of " + std::to_string(first_bad_corners) +
+                            " corners that is not convex as seen from its first corner: it is drawn as a fan from "
+                            "that corner, which covers area outside its outline" +
+                            (more > 0 ? " (and " + std::to_string(more) + " more such faces)" : "") +
+                            "; triangulate it when exporting, or start it at a corner that sees every other corner");
+}
+
 // parse_obj once the text's checks have passed; `material_files` reads the .mtl files, all of
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
@@ -373,6 +418,8 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     mesh.triangle_normals.reserve(counts.triangles);
 
     const auto in_range = [](int index, std::size_t count) { return index >= 0 && static_cast<std::size_t>(index) < count; };
+    std::uint64_t outside_outline = 0, first_outside = 0;
+    std::size_t first_outside_corners = 0;
     for (const tinyobj::shape_t& shape : shapes) {
         std::size_t offset = 0;
         for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
@@ -383,6 +430,10 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
             for (std::size_t c = 0; c < corners; ++c) {
                 if (!in_range(corner[c].vertex_index, positions)) throw ObjError("a face names a missing position");
                 every_normal = every_normal && in_range(corner[c].normal_index, normals);
+            }
+            if (!fans_within_outline(mesh.positions, corner, corners) && outside_outline++ == 0) {
+                first_outside = mesh.faces;
+                first_outside_corners = corners;
             }
             for (std::size_t c = 1; c + 1 < corners; ++c) {  // a fan from the first corner
                 mesh.triangles.push_back({static_cast<std::uint32_t>(corner[0].vertex_index),
@@ -411,6 +462,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     warn_about_texture_maps(statements, material_files, mesh);
     warn_about_unknown_statements(counts, mesh);
     warn_about_vertex_colours(counts, mesh);
+    warn_about_polygons_outside_their_outline(text, outside_outline, first_outside, first_outside_corners, mesh);
     return mesh;
 }
 

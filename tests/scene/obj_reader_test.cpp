@@ -743,6 +743,33 @@ TEST(ObjReader, VertexColoursTheMeshDoesNotDrawAreAWarning) {
     EXPECT_EQ(parted.warnings[0].substr(0, 14), "line 600002: a");
 }
 
+// A polygon is drawn as a fan from its first corner (docs/scene-format.md): a concave one whose
+// first corner does not see every other corner (a U started at an outer corner, as exporters
+// write n-gons) fanned into triangles outside its outline, which the image drew filled, exit 0
+// and no warning. A warning names the first such face's line and counts the rest; convex
+// polygons, concave ones whose fan stays inside (a chevron from its inner corner), a corner on
+// an edge, a slightly warped quad, and triangles give none.
+TEST(ObjReader, APolygonWhoseFanCoversAreaOutsideItIsAWarning) {
+    const std::string u = "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv 1 2 0\nv 1 -1 0\nv -1 -1 0\nv -1 2 0\nv -2 2 0\n";
+    const ObjMesh outside = parse_obj(u + "# a U\nf 1 2 3\nf 1 2 3 4 5 6 7 8\nf 8 7 6 5 4 3 2 1\n", "u.obj");
+    EXPECT_EQ(outside.triangles.size(), 13u);  // still drawn, as documented
+    ASSERT_EQ(outside.warnings.size(), 1u);
+    EXPECT_EQ(outside.warnings[0], "line 11: a polygon of 8 corners that is not convex as seen from its first corner: "
+                                   "it is drawn as a fan from that corner, which covers area outside its outline "
+                                   "(and 1 more such faces); triangulate it when exporting, or start it at a corner "
+                                   "that sees every other corner");
+    // A bow tie's two triangles turn against each other; the fans below stay inside.
+    EXPECT_EQ(parse_obj("v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4\n", "bow.obj").warnings.size(), 1u);
+    for (const char* fine : {"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",                         // square
+                             "v 0 0 0\nv -2 -2 0\nv 0 2 0\nv 2 -2 0\nf 1 2 3 4\n",                      // chevron
+                             "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nf 1 2 3 4 5\n",              // on an edge
+                             "v 0 0 0\nv 1 0 0.1\nv 1 1 0\nv 0 1 0.1\nf 1 2 3 4\n",                      // warped
+                             "v 0 0 0\nv 1e-15 0 0\nv 1e-15 1e-15 0\nv 0 1e-15 0\nf 4 3 2 1\n"}) {     // tiny
+        const ObjMesh mesh = parse_obj(fine, "fine.obj");
+        EXPECT_TRUE(mesh.warnings.empty()) << fine << mesh.warnings.front();
+    }
+}
+
 // Each material and .mtl name is kept once however many lines repeat it: a file of millions of
 // `usemtl` lines took 400 MB for 48 MiB of text.
 TEST(ObjReader, RepeatedMaterialStatementsAreKeptOnce) {
