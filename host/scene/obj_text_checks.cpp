@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/parallel_for.h"
+#include "core/printable_text.h"
 #include "core/usable_cpus.h"
 #include "scene/value_ranges.h"
 
@@ -134,11 +135,11 @@ std::string number_limits_text() {
            std::to_string(kMaxNumberExponent);
 }
 
+// A token of the file as messages show it: its first 40 bytes, escaped as every message escapes
+// text (a NUL as \x00, not as a '?' that the file may hold itself or not at all).
 std::string quoted(std::string_view token) {
     constexpr std::size_t kShown = 40;
-    std::string text;
-    for (char c : token.substr(0, kShown)) text += (c >= 0x20 && c < 0x7f) ? c : '?';
-    return "'" + text + (token.size() > kShown ? "...'" : "'");
+    return "'" + printable(std::string(token.substr(0, kShown))) + (token.size() > kShown ? "...'" : "'");
 }
 
 // The numbers of a `v`, `vn` or `vt` line: at least `least`, each finite; the first three of

@@ -122,6 +122,14 @@ TEST(ObjReader, AUtf8ByteOrderMarkIsSkipped) {
               "line 4: corner 3: position index 3 is out of range: the file has 2");
 }
 
+// A byte of a refused number or index that is no printable character (a NUL, an ESC) is shown
+// escaped, as every message shows text: it was shown as a '?', which the file may hold itself
+// or not at all (here the one '?' is the file's own).
+TEST(ObjReader, AByteOfARefusedTokenThatIsNoCharacterIsShownEscaped) {
+    EXPECT_EQ(error_for(std::string("v 1\0\x1b?5 0 0\n", 12)), "line 1: 'v': '1\\x00\\x1B?5' is not a finite number");
+    EXPECT_EQ(error_for(kSquare + std::string("f 1 2 3\0\n", 9)), "line 5: corner 3: '3\\x00' is not a position index");
+}
+
 // Forms that OBJ writers use: a '+' sign on a number or an index, and a comment after a
 // statement. tinyobjloader must read them as the checks do.
 TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
