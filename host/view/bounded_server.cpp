@@ -165,12 +165,13 @@ std::optional<std::size_t> declared_body_length(const httplib::Request& request)
 
 RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
                              std::chrono::milliseconds write_timeout, std::size_t most_body_bytes,
-                             const std::atomic<socket_t>& serving)
+                             const std::atomic<socket_t>& serving, const std::string& answer_headers)
     : socket_(socket),
       read_timeout_(read_timeout),
       write_timeout_(write_timeout),
       most_body_bytes_(most_body_bytes),
-      serving_(serving) {
+      serving_(serving),
+      answer_headers_(answer_headers) {
     start_request();
 }
 
@@ -238,8 +239,8 @@ bool RequestStream::take(std::size_t count) {
 ssize_t RequestStream::refuse(const char* status_line) {
     limit_reached_ = true;
     if (!answering_) {
-        const std::string answer = std::string(status_line) +
-                                   "\r\nConnection: close\r\nContent-Type: text/plain\r\nContent-Length: 0\r\n\r\n";
+        const std::string answer = std::string(status_line) + "\r\n" + answer_headers_ +
+                                   "Connection: close\r\nContent-Type: text/plain\r\nContent-Length: 0\r\n\r\n";
         if (wait_for(socket_, POLLOUT, 1000) > 0) (void)::send(socket_, answer.data(), answer.size(), MSG_NOSIGNAL);
         answering_ = true;
     }
@@ -392,6 +393,12 @@ void BoundedServer::listen_until_stopped() {
     }
 }
 
+void BoundedServer::set_answer_headers(const httplib::Headers& headers) {
+    answer_header_lines_.clear();
+    for (const auto& [name, value] : headers) answer_header_lines_ += name + ": " + value + "\r\n";
+    set_default_headers(headers);
+}
+
 void BoundedServer::stop() {
     std::lock_guard<std::mutex> lock(stop_mutex_);
     stopping_ = true;
@@ -408,7 +415,7 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
     using std::chrono::milliseconds;
     RequestStream stream(socket, milliseconds(read_timeout_sec_ * 1000 + read_timeout_usec_ / 1000),
                          milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_,
-                         svr_sock_);
+                         svr_sock_, answer_header_lines_);
     stream_of_this_thread = &stream;
     const auto parsed = [&stream](httplib::Request& request) {
         stream.head_parsed(declared_body_length(request));

@@ -51,8 +51,10 @@ public:
     // While `serving` names the listening socket, the server runs; once the server stops, a
     // request still arriving is dropped, and an answer still leaving given up, at once (within
     // 50 ms), not waited for.
+    // `answer_headers` are header lines ("Name: value\r\n" each) that its own refusals carry
+    // (BoundedServer::set_answer_headers()).
     RequestStream(int socket, std::chrono::milliseconds read_timeout, std::chrono::milliseconds write_timeout,
-                  std::size_t most_body_bytes, const std::atomic<socket_t>& serving);
+                  std::size_t most_body_bytes, const std::atomic<socket_t>& serving, const std::string& answer_headers);
 
     // The next request starts: its limits count from here.
     void start_request();
@@ -101,6 +103,7 @@ private:
     std::chrono::milliseconds read_timeout_, write_timeout_;
     std::size_t most_body_bytes_;
     const std::atomic<socket_t>& serving_;
+    const std::string& answer_headers_;
     char buffer_[4096];
     std::size_t buffered_ = 0, buffer_at_ = 0;
     // This request's progress.
@@ -130,6 +133,10 @@ public:
     void listen_until_stopped();
     // Server::stop(), also between two rounds of listen_until_stopped().
     void stop();
+    // Headers that every answer carries: cpp-httplib's (set_default_headers(), also on its bare
+    // 400 for a request line it cannot parse) and the refusals of the stream's own limits (408,
+    // 413, 431), which cpp-httplib never sees.
+    void set_answer_headers(const httplib::Headers& headers);
 
 private:
     // Its own post-routing handler closes connections (see the constructor): not replaceable.
@@ -141,6 +148,7 @@ private:
     std::mutex stop_mutex_;
     bool stopping_ = false;
     int kept_listening_ = -1;  // the duplicate of the listening socket (listen_until_stopped)
+    std::string answer_header_lines_;  // set_answer_headers(), as lines of an answer's head
 };
 
 }  // namespace clr

@@ -349,6 +349,17 @@ void refuse_unrouted_method(const Request& request, Response& response, const st
 
 }  // namespace
 
+httplib::Headers view_answer_headers() {
+    // Nothing the viewer sends is for a cache, another site's frame, or a content sniffer; the
+    // address holds the token, which no link may pass on.
+    return {{"Cache-Control", "no-store"},
+            {"X-Content-Type-Options", "nosniff"},
+            {"X-Frame-Options", "DENY"},
+            {"Referrer-Policy", "no-referrer"},
+            {"Accept-Ranges", "none"},  // a Range header is ignored (view/bounded_server.h)
+            {"Content-Security-Policy", kContentSecurityPolicy}};
+}
+
 RequestFacts request_facts(const Request& request) {
     RequestFacts facts;
     facts.method = request.method;
@@ -383,14 +394,6 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
             send_error(response, 411, "request bodies must have a Content-Length (no Transfer-Encoding)");
             return httplib::Server::HandlerResponse::Handled;
         }
-        // Nothing the viewer sends is for a cache, another site's frame, or a content sniffer;
-        // the address holds the token, which no link may pass on.
-        response.set_header("Cache-Control", "no-store");
-        response.set_header("X-Content-Type-Options", "nosniff");
-        response.set_header("X-Frame-Options", "DENY");
-        response.set_header("Referrer-Policy", "no-referrer");
-        response.set_header("Accept-Ranges", "none");  // a Range header is ignored (view/bounded_server.h)
-        response.set_header("Content-Security-Policy", kContentSecurityPolicy);
         // Such a request has no body (RFC 9112), but cpp-httplib reads one to the end of the
         // connection: the client waited out the read timeout, or its half-close made whatever
         // it had sent the body. The page always says its body's length.

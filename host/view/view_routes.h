@@ -38,6 +38,11 @@ struct ViewSession {
 // Installs the guard and the routes on `server`. `session` must outlive the server's requests.
 void add_view_routes(httplib::Server& server, ViewSession& session);
 
+// The headers every answer of the viewer carries, refusals included (docs/command-line.md,
+// view): nothing for a cache, another site's frame or a content sniffer, no referrer (the
+// address holds the token), no ranges, and the page's Content-Security-Policy.
+httplib::Headers view_answer_headers();
+
 // The guard's facts of an httplib request.
 RequestFacts request_facts(const httplib::Request& request);
 

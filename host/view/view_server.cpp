@@ -142,6 +142,7 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     ViewSession session{scene, renderer, exporter, videos, guard, answers,
                         std::make_shared<const std::string>(scene_summary_json(scene))};
     add_view_routes(server, session);
+    server.set_answer_headers(view_answer_headers());  // on every answer, refusals included
     // A client that asks before sending its body (Expect: 100-continue) is invited only when
     // the request may be served: cpp-httplib would invite any, a foreign page's or one whose
     // Content-Length is over the limit, and then read the body it invited.

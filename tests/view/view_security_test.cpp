@@ -166,6 +166,46 @@ TEST_F(ViewSecurity, TheContentSecurityPolicyRunsOnlyThePagesOwnScripts) {
     EXPECT_EQ(frame->get_header_value("Content-Security-Policy"), page->get_header_value("Content-Security-Policy"));
 }
 
+// Every answer carries the headers docs/command-line.md lists, once each: the routes' and the
+// refusals', also those made before any check (a request line cpp-httplib cannot parse) and
+// those of the server's own limits (a head over 64 KiB), which no route sees.
+TEST_F(ViewSecurity, EveryAnswerCarriesTheSameHeadersRefusalsIncluded) {
+    const std::string host = "Host: " + own_host() + "\r\n";
+    const std::string path = viewer_->with_token("/scene.json");
+    const std::vector<std::pair<std::string, std::string>> requests = {
+        {"GET " + path + " HTTP/1.1\r\n" + host + "\r\n", "200"},
+        {"GET /scene.json HTTP/1.1\r\n" + host + "\r\n", "403"},
+        {"GET " + path + " HTTP/1.1\r\nHost: evil.example\r\n\r\n", "403"},
+        {"GET " + viewer_->with_token("/nothing") + " HTTP/1.1\r\n" + host + "\r\n", "404"},
+        {"DELETE " + path + " HTTP/1.1\r\n" + host + "Origin: " + own_origin() + "\r\nContent-Length: 0\r\n\r\n",
+         "405"},
+        {"PROPFIND " + path + " HTTP/1.1\r\n" + host + "\r\n", "400"},
+        {"GET " + path + " HTTP/1.1\r\n" + host + "X-Long: " + std::string(70 * 1024, 'a') + "\r\n\r\n", "431"},
+    };
+    const std::vector<std::string> headers = {"Cache-Control: no-store",
+                                              "X-Content-Type-Options: nosniff",
+                                              "X-Frame-Options: DENY",
+                                              "Referrer-Policy: no-referrer",
+                                              "Accept-Ranges: none",
+                                              "Content-Security-Policy: default-src 'none';"};
+    for (const auto& [request, status] : requests) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
+        const std::string answer = read_one_answer(socket, 5);
+        ::close(socket);
+        const std::string head = answer.substr(0, answer.find("\r\n\r\n") + 2);
+        const std::string shown = request.substr(0, request.find(' ')) + " (" + status + ")";
+        EXPECT_EQ(head.rfind("HTTP/1.1 " + status, 0), 0u) << shown << ": " << head.substr(0, 200);
+        for (const std::string& header : headers) {
+            const std::size_t at = head.find("\r\n" + header);
+            EXPECT_NE(at, std::string::npos) << shown << " lacks " << header << ": " << head.substr(0, 300);
+            const std::string name = header.substr(0, header.find(':') + 1);
+            EXPECT_EQ(head.find("\r\n" + name, at + 1), std::string::npos) << shown << ": " << name << " twice";
+        }
+    }
+}
+
 TEST_F(ViewSecurity, HostHeaderMustNameThisServer) {
     auto client = viewer_->client();
     const std::string port = std::to_string(viewer_->port());
