@@ -1,12 +1,11 @@
 #include "scene/image_cache.h"
 
-#include <dlfcn.h>
 #include <stb_image.h>
-#include <sys/stat.h>
 
 #include <stdexcept>
 
 #include "core/cache_folder.h"
+#include "core/code_file.h"
 #include "scene/image_loader.h"
 #include "scene/jpeg_decoder.h"
 
@@ -20,16 +19,9 @@ CacheEntryKind image_entries(std::uint64_t size_limit) {
     return {"rgba", {'c', 'l', 'r', 'i', 'm', 'a', 'g', 'e'}, ImageCache::kFormatVersion, size_limit};
 }
 
-// Which build of a decoding library holds `function`: the file holding it, its size and
-// modification time. A library update may decode some file differently, so it must change every key.
-std::string library_identity(void* function) {
-    Dl_info info{};
-    if (::dladdr(function, &info) == 0 || !info.dli_fname) return "unknown";
-    struct stat file;
-    if (::stat(info.dli_fname, &file) != 0) return info.dli_fname;
-    return std::string(info.dli_fname) + " " + std::to_string(file.st_size) + " " + std::to_string(file.st_mtim.tv_sec) +
-           "." + std::to_string(file.st_mtim.tv_nsec);
-}
+// Which build of a decoding library holds `function` (core/code_file.h). A library update may
+// decode some file differently, so it must change every key.
+std::string library_identity(const void* function) { return code_file_identity(function); }
 
 // stb_image decodes PNG, libjpeg-turbo JPEG (scene/jpeg_decoder.h).
 const std::string& decoder_identity() {

@@ -1,6 +1,5 @@
 #include "scene/mesh_cache.h"
 
-#include <dlfcn.h>
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "core/cache_folder.h"
+#include "core/code_file.h"
 #include "scene/bounded_file.h"
 #include "scene/mtl_library.h"
 #include "scene/value_ranges.h"
@@ -32,14 +32,7 @@ CacheEntryKind mesh_entries(std::uint64_t size_limit) {
 
 // The clrender build that parses: the file holding read_obj, its size and modification time.
 const std::string& build_identity() {
-    static const std::string identity = [] {
-        Dl_info info{};
-        if (::dladdr(reinterpret_cast<void*>(&parse_obj), &info) == 0 || !info.dli_fname) return std::string("unknown");
-        struct stat file;
-        if (::stat(info.dli_fname, &file) != 0) return std::string(info.dli_fname);
-        return std::string(info.dli_fname) + " " + std::to_string(file.st_size) + " " +
-               std::to_string(file.st_mtim.tv_sec) + "." + std::to_string(file.st_mtim.tv_nsec);
-    }();
+    static const std::string identity = code_file_identity(reinterpret_cast<const void*>(&parse_obj));
     return identity;
 }
 
