@@ -81,6 +81,9 @@ std::vector<std::string> video_render_arguments(const Options& options) {
     if (options.threads) arguments.insert(arguments.end(), {"-t", std::to_string(*options.threads)});
     if (options.double_precision) arguments.insert(arguments.end(), {"--precision", "double"});
     if (options.placeholders) arguments.push_back("--placeholders");
+    // A file changed since the viewer loaded the scene may now give a warning (the video reads
+    // the meshes and images again): under --strict the video is refused, as a render would be.
+    if (options.strict) arguments.push_back("--strict");
     if (!options.kernel_dir.empty()) arguments.insert(arguments.end(), {"--kernel-dir", options.kernel_dir});
     return arguments;
 }

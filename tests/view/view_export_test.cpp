@@ -513,6 +513,29 @@ TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// The video reads the meshes again: a .mtl edited since the viewer started may now give a
+// warning (a texture the mesh does not draw). Under the viewer's --strict the video is refused,
+// as `clrender --strict` refuses the scene; it was rendered without --strict, warning unseen.
+TEST(ViewExport, AVideoUnderStrictIsRefusedForAWarningOfAFileChangedSinceTheStart) {
+    TempFolder folder;
+    folder.write("cube.obj", "mtllib cube.mtl\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 16, "height": 12, "obj": {"filename": "cube.obj"}})");
+    ViewerProcess viewer("scene.json --strict", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    ASSERT_EQ(state["state"], "failed") << state.dump();
+    EXPECT_NE(state["error"].get<std::string>().find("--strict makes warnings errors"), std::string::npos)
+        << state.dump();
+    EXPECT_FALSE(fs::exists(folder.file("tour.mp4")));
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 // Four keys of a video that takes seconds at 640x360 and 64 samples: still rendering when the
 // tests below act.
 const std::string kLongVideo =
