@@ -9,6 +9,7 @@
 #include <exception>
 #include <filesystem>
 #include <future>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
@@ -113,6 +114,11 @@ void VideoJobs::watch(int read_fd) {
             } else if (progress.is_object() && progress.contains("message") && progress["message"].is_string()) {
                 // An error or warning line of --progress json: its message, as the page shows it.
                 last_message = shortened(printable(progress["message"].get<std::string>()), kLongestDetail);
+                // The video reads the meshes and images again: a file changed since the viewer
+                // started may give a warning, which a finished job does not show. It goes to the
+                // viewer's terminal, where the scene's own warnings went, as a render prints it.
+                if (progress.contains("level") && progress["level"] == "warning")
+                    std::cerr << ("clrender: warning: " + last_message + "\n") << std::flush;
             } else if (!line.empty()) {
                 last_message = shortened(printable(line), kLongestDetail);
             }

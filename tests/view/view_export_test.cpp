@@ -536,6 +536,28 @@ TEST(ViewExport, AVideoUnderStrictIsRefusedForAWarningOfAFileChangedSinceTheStar
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// Without --strict the video is made, and the warning of the changed file is printed on the
+// viewer's terminal, as a render prints it: it was seen nowhere, neither there nor in the page.
+TEST(ViewExport, AVideosWarningsArePrintedByTheViewer) {
+    TempFolder folder;
+    folder.write("cube.obj", "mtllib cube.mtl\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 16, "height": 12, "obj": {"filename": "cube.obj"}})");
+    ViewerProcess viewer("scene.json", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    ASSERT_EQ(state["state"], "done") << state.dump();
+    EXPECT_NE(viewer.output().find("clrender: warning: ./tour.json: /obj/filename: OBJ '"), std::string::npos)
+        << viewer.output();
+    EXPECT_NE(viewer.output().find("this texture is not drawn"), std::string::npos) << viewer.output();
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 // Four keys of a video that takes seconds at 640x360 and 64 samples: still rendering when the
 // tests below act.
 const std::string kLongVideo =
