@@ -513,22 +513,33 @@ TEST(ViewExport, AFailedVideoReportsTheRendersMessage) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// A one-triangle mesh scene in `folder`, its .mtl without a warning.
+void write_mesh_scene(const TempFolder& folder) {
+    folder.write("cube.obj", "mtllib cube.mtl\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 16, "height": 12, "obj": {"filename": "cube.obj"}})");
+}
+
+// The final state of a video of kTwoKeys that `viewer` makes of write_mesh_scene()'s scene once
+// its .mtl names a texture the mesh does not draw (a warning; the video reads the meshes again).
+json video_after_the_mtl_changed(const TempFolder& folder, const ViewerProcess& viewer) {
+    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    EXPECT_TRUE(started && started->status == 200) << (started ? started->body : "no answer");
+    if (!started || started->status != 200) return json();
+    return finished_job(viewer, json::parse(started->body)["job"].get<int>());
+}
+
 // The video reads the meshes again: a .mtl edited since the viewer started may now give a
 // warning (a texture the mesh does not draw). Under the viewer's --strict the video is refused,
 // as `clrender --strict` refuses the scene; it was rendered without --strict, warning unseen.
 TEST(ViewExport, AVideoUnderStrictIsRefusedForAWarningOfAFileChangedSinceTheStart) {
     TempFolder folder;
-    folder.write("cube.obj", "mtllib cube.mtl\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\n");
-    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
-        "width": 16, "height": 12, "obj": {"filename": "cube.obj"}})");
+    write_mesh_scene(folder);
     ViewerProcess viewer("scene.json --strict", folder.path());
     ASSERT_TRUE(viewer.started()) << viewer.output();
-    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
-    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
-    ASSERT_TRUE(started);
-    ASSERT_EQ(started->status, 200) << started->body;
-    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    const json state = video_after_the_mtl_changed(folder, viewer);
     ASSERT_EQ(state["state"], "failed") << state.dump();
     EXPECT_NE(state["error"].get<std::string>().find("--strict makes warnings errors"), std::string::npos)
         << state.dump();
@@ -540,17 +551,10 @@ TEST(ViewExport, AVideoUnderStrictIsRefusedForAWarningOfAFileChangedSinceTheStar
 // viewer's terminal, as a render prints it: it was seen nowhere, neither there nor in the page.
 TEST(ViewExport, AVideosWarningsArePrintedByTheViewer) {
     TempFolder folder;
-    folder.write("cube.obj", "mtllib cube.mtl\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\n");
-    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
-        "width": 16, "height": 12, "obj": {"filename": "cube.obj"}})");
+    write_mesh_scene(folder);
     ViewerProcess viewer("scene.json", folder.path());
     ASSERT_TRUE(viewer.started()) << viewer.output();
-    folder.write("cube.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
-    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
-    ASSERT_TRUE(started);
-    ASSERT_EQ(started->status, 200) << started->body;
-    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    const json state = video_after_the_mtl_changed(folder, viewer);
     ASSERT_EQ(state["state"], "done") << state.dump();
     EXPECT_NE(viewer.output().find("clrender: warning: ./tour.json: /obj/filename: OBJ '"), std::string::npos)
         << viewer.output();
