@@ -19,15 +19,12 @@ CacheEntryKind image_entries(std::uint64_t size_limit) {
     return {"rgba", {'c', 'l', 'r', 'i', 'm', 'a', 'g', 'e'}, ImageCache::kFormatVersion, size_limit};
 }
 
-// Which build of a decoding library holds `function` (core/code_file.h). A library update may
-// decode some file differently, so it must change every key.
-std::string library_identity(const void* function) { return code_file_identity(function); }
-
-// stb_image decodes PNG, libjpeg-turbo JPEG (scene/jpeg_decoder.h).
+// stb_image decodes PNG, libjpeg-turbo JPEG (scene/jpeg_decoder.h); the build of each library
+// (core/code_file.h) is in the key: a library update may decode some file differently.
 const std::string& decoder_identity() {
-    static const std::string identity = "stb: " + library_identity(reinterpret_cast<void*>(&stbi_load_from_memory)) +
-                                        "; libjpeg-turbo " + jpeg_decoder_version() + ": " +
-                                        library_identity(jpeg_decoder_entry_point());
+    static const std::string identity =
+        "stb: " + code_file_identity(reinterpret_cast<const void*>(&stbi_load_from_memory)) + "; libjpeg-turbo " +
+        jpeg_decoder_version() + ": " + code_file_identity(jpeg_decoder_entry_point());
     return identity;
 }
 
