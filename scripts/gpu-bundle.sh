@@ -10,7 +10,9 @@
 #   run.sh          on the GPU machine, from the tree's root: `bash BUNDLE/run.sh`; logs and
 #                   bench.*.json go to $GPU_CHECK_OUT (default /tmp/gpu-check)
 # The tests find the tree, its course scenes and the build's programs where this build was
-# configured (their compiled-in folders): run.sh links those paths when they do not exist.
+# configured (their compiled-in folders): run.sh links those paths when they do not exist, or
+# moves its own links of an earlier run (a link there is replaced, a folder left alone), and
+# removes what it unpacked when it ends.
 #
 #   scripts/gpu-bundle.sh DIR           $CLRENDER_BUILD_DIR overrides build/
 set -euo pipefail
@@ -60,17 +62,22 @@ set -uo pipefail
 bundle="\$(cd "\$(dirname "\${BASH_SOURCE[0]}")" && pwd)"
 tree="\$PWD"
 [ -f "\$tree/scripts/gpu-check.sh" ] || { echo "run.sh: run it from the tree's root" >&2; exit 2; }
-if [ ! -e "$source_dir" ]; then  # where the tests look for the tree
-    mkdir -p "\$(dirname "$source_dir")" && ln -s "\$tree" "$source_dir"
-fi
+# A link at \$2 to \$1, where there is nothing or a link (of an earlier run); a folder stays.
+link_to() {
+    if [ -L "\$2" ] || [ ! -e "\$2" ]; then
+        mkdir -p "\$(dirname "\$2")" && ln -sfn "\$1" "\$2"
+    else
+        echo "run.sh: \$2 is not a link: the tests use what is there"
+    fi
+}
+link_to "\$tree" "$source_dir"  # where the tests look for the tree
 if [ -f "\$bundle/course.tar" ] && [ ! -e "$source_dir/../shared/course-scenes" ]; then
     mkdir -p "$source_dir/../shared" && tar -xf "\$bundle/course.tar" -C "$source_dir/../shared"
 fi
 build="\$(mktemp -d)"
+trap 'rm -rf "\$build"' EXIT
 tar -xJf "\$bundle/bundle.tar.xz" -C "\$build"
-if [ ! -e "$build_dir" ]; then  # where the tests look for clrender and its test cache
-    mkdir -p "\$(dirname "$build_dir")" && ln -s "\$build/bin" "$build_dir"
-fi
+link_to "\$build/bin" "$build_dir"  # where the tests look for clrender and its test cache
 export LD_LIBRARY_PATH="\$build/lib"
 if ! "\$build/bin/clrender" --version > /dev/null 2>&1; then
     export LD_LIBRARY_PATH="\$build/lib:\$build/lib/fallback"
