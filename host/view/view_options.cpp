@@ -31,6 +31,8 @@ std::string option_not_for_view(const Options& options) {
     if (options.crop) return "--crop";
     if (options.alpha) return "--alpha";
     if (options.progress != defaults.progress) return "--progress";
+    if (options.plan) return "--plan";
+    if (!options.display_server.empty()) return "--display-server";
     return "";
 }
 

@@ -15,6 +15,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <set>
 #include <thread>
@@ -105,6 +106,59 @@ TEST(ViewLifetime, OptionsThatDoNotApplyAreUsageErrors) {
     EXPECT_EQ(folder.entry_count(), 0);
     EXPECT_EQ(run_clrender("view --help").exit_code, 0);
     EXPECT_NE(run_clrender("view --help").output.find("--no-browser"), std::string::npos);
+}
+
+// The render options the viewer takes (view_options.cpp's footer), and every other one of
+// `clrender --help` with a value to give it: each of those names an output or another mode,
+// which the viewer would ignore in silence.
+const std::set<std::string> kOptionsThatApply = {"--help",    "--size",         "--spp",   "--device",
+                                                 "--threads", "--define",       "--seed",  "--precision",
+                                                 "--strict",  "--placeholders", "--quiet", "--kernel-dir"};
+const std::map<std::string, std::string> kOptionsThatDoNotApply = {
+    {"--output", "-o x.png"},
+    {"--video", "--video x.mp4"},
+    {"--frames", "--frames 1"},
+    {"--assemble", "--assemble"},
+    {"--resume", "--resume"},
+    {"--quality", "--quality 20"},
+    {"--list-devices", "--list-devices"},
+    {"--frame-count", "--frame-count"},
+    {"--reference", "--reference"},
+    {"--stats", "--stats s.json"},
+    {"--explain-pixel", "--explain-pixel 1,1"},
+    {"--progress", "--progress json"},
+    {"--crop", "--crop 0,4,0,4"},
+    {"--check", "--check"},
+    {"--plan", "--plan"},
+    {"--alpha", "--alpha"},
+    {"--join", "--join t.png"},
+    {"--display-server", "--display-server localhost:1"},
+    {"--version", ""},  // prints the version and exits, as for a render
+};
+
+TEST(ViewLifetime, EveryRenderOptionAppliesOrIsRefused) {
+    // --plan and --display-server were taken and ignored: the viewer served, no plan printed,
+    // nothing sent to tev.
+    const std::string help = run_clrender("--help").output;
+    const std::regex option(R"(\n  (?:-[a-zA-Z],)?(--[a-z-]+))");
+    TempFolder folder;
+    std::set<std::string> listed;
+    for (auto it = std::sregex_iterator(help.begin(), help.end(), option); it != std::sregex_iterator(); ++it) {
+        const std::string name = (*it)[1];
+        listed.insert(name);
+        if (kOptionsThatApply.count(name)) continue;
+        const auto refused = kOptionsThatDoNotApply.find(name);
+        ASSERT_NE(refused, kOptionsThatDoNotApply.end()) << name << ": the viewer neither takes nor refuses it";
+        if (refused->second.empty()) continue;
+        const auto result = run_clrender("view '" + kDemoScene + "' --no-browser " + refused->second, folder.path(),
+                                         "timeout 20");
+        EXPECT_EQ(result.exit_code, 1) << refused->second << ": " << result.output;
+        const std::string shown = refused->second.substr(0, refused->second.find(' '));  // -o for --output
+        EXPECT_NE(result.output.find(shown + " does not apply to clrender view"), std::string::npos) << result.output;
+        EXPECT_EQ(result.output.find("view at"), std::string::npos) << refused->second;
+    }
+    EXPECT_EQ(listed.size(), kOptionsThatApply.size() + kOptionsThatDoNotApply.size()) << "an option left --help";
+    EXPECT_EQ(folder.entry_count(), 0);
 }
 
 TEST(ViewLifetime, AMissingOutputFolderIsAnOutputError) {
