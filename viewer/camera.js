@@ -45,14 +45,21 @@ const ClrenderCamera = (() => {
     return next;
   }
 
-  // Moves the eye towards (factor < 1) or away from (factor > 1) the look-at point.
+  // The coordinates a scene may have (docs/scene-format.md, Numeric ranges).
+  const kMaxCoordinate = 1e15;
+
+  // Moves the eye towards (factor < 1) or away from (factor > 1) the look-at point, by that
+  // factor at every distance: a scene may be a model of 1e-5 or a planet of 1e8. A move that
+  // would take the eye beyond the coordinates a scene may have, or so near the look-at point
+  // that their distance rounds to 0 (no orbit could turn it), leaves the camera as it is (a
+  // distance held within [1e-3, 1e6] made a notch out from 2e6 bring the eye closer, and a
+  // notch in at 1e-5 move it 100 times away).
   function zoom(camera, factor) {
-    const offset = sub(camera.eye, camera.lookat);
-    const radius = length(offset);
-    const wanted = Math.min(1e6, Math.max(1e-3, radius * factor));
-    if (radius === 0) return camera;
     const next = copy(camera);
-    next.eye = add(camera.lookat, scale(offset, wanted / radius));
+    next.eye = add(camera.lookat, scale(sub(camera.eye, camera.lookat), factor));
+    if (!(length(sub(next.eye, camera.lookat)) > 0) || !next.eye.every((x) => Math.abs(x) <= kMaxCoordinate)) {
+      return camera;
+    }
     return next;
   }
 

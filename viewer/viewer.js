@@ -189,7 +189,7 @@
       const seconds = Math.min(0.1, (now - flying.last) / 1000);
       if (seconds <= 0) return;
       flying.last = now;
-      const speed = 0.5 * Math.max(ClrenderCamera.distance(live.camera), 1e-3) * (flying.fast ? 4 : 1) * seconds;
+      const speed = 0.5 * ClrenderCamera.distance(live.camera) * (flying.fast ? 4 : 1) * seconds;
       const sum = [0, 0, 0];
       held.forEach((code) => moves[code].forEach((m, i) => { sum[i] += m; }));
       if (sum.some((m) => m !== 0)) {
