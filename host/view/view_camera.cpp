@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "scene/camera_path.h"
@@ -20,6 +21,31 @@ std::string parameter_at(const std::string& location) {
     if (location.rfind("/fov_angle", 0) == 0) return "fov";
     if (location.rfind("/clrender/spp", 0) == 0) return "spp";
     return "size";  // /width, /height, or the pixel count of both
+}
+
+// The parameter to name for a fault at `location`: its own where the query gave it, else the
+// query's value that the fault also depends on. The view direction is eye to lookat, which up
+// must not be parallel to, and the narrowest fov is the size's: a query that moved only the
+// look-at point onto the scene's eye was told `eye`, one whose size was too large for the
+// scene's fov `fov`.
+std::string parameter_for(const std::string& location, const ViewQuery& query) {
+    const std::string own = parameter_at(location);
+    const auto given = [&query](const std::string& name) {
+        if (name == "eye") return query.eye.has_value();
+        if (name == "lookat") return query.lookat.has_value();
+        if (name == "up") return query.up.has_value();
+        if (name == "fov") return query.fov_degrees.has_value();
+        if (name == "spp") return query.samples_per_pixel.has_value();
+        return query.width.has_value();
+    };
+    if (given(own)) return own;
+    const std::vector<std::string> also = own == "eye"   ? std::vector<std::string>{"lookat"}
+                                          : own == "up"  ? std::vector<std::string>{"eye", "lookat"}
+                                          : own == "fov" ? std::vector<std::string>{"size"}
+                                                         : std::vector<std::string>{};
+    for (const std::string& other : also)
+        if (given(other)) return other;
+    return own;
 }
 
 // A scene's message about a key it made from the query, in the query's terms.
@@ -63,7 +89,7 @@ ViewCamera resolve_view_camera(const Scene& scene, const ViewQuery& query) {
     try {
         parse_scene(camera_only.dump(), "view request");
     } catch (const SceneError& error) {
-        throw ParameterError(parameter_at(error.location()), in_query_terms(error.detail()));
+        throw ParameterError(parameter_for(error.location(), query), in_query_terms(error.detail()));
     }
     return view;
 }

@@ -88,6 +88,29 @@ TEST(ViewParameters, BadValuesNameTheirParameter) {
     for (const auto& [name, value, parameter] : cases) EXPECT_EQ(refused_parameter(name, value), parameter) << name << "=" << value;
 }
 
+TEST(ViewParameters, AFaultOfTwoValuesNamesTheOneTheQueryGave) {
+    // The scene's eye is [0, 0, 10], its look-at point the origin, its up [0, 1, 0].
+    EXPECT_EQ(refused_parameter("lookat", "0,0,10"), "lookat");   // onto the eye: it was named eye
+    EXPECT_EQ(refused_parameter("lookat", "0,-5,10"), "lookat");  // the view parallel to up: named up
+    EXPECT_EQ(refused_parameter("eye", "0,7,0"), "eye");          // the same: named up
+    // A size the scene's narrow fov cannot resolve is the size's fault (named fov).
+    const Scene narrow = parse_scene(R"({"eye": [0, 0, 10], "lookat": [0, 0, 0], "up": [0, 1, 0],
+        "fov_angle": 0.01, "width": 64, "height": 48})", "narrow.json");
+    try {
+        resolve_view_camera(narrow, parse_view_query({{"size", "16384x1"}}));
+        ADD_FAILURE() << "a fov of 0.01 degrees across 16384 pixels was taken";
+    } catch (const ParameterError& error) {
+        EXPECT_EQ(error.parameter(), "size") << error.what();
+    }
+    // Given both, the value at fault is named, as before.
+    try {
+        resolve_view_camera(path_scene(), parse_view_query({{"eye", "1,1,1"}, {"lookat", "1,1,1"}}));
+        ADD_FAILURE() << "eye and lookat the same point were taken";
+    } catch (const ParameterError& error) {
+        EXPECT_EQ(error.parameter(), "eye") << error.what();
+    }
+}
+
 TEST(ViewParameters, LimitsAreTheCommandLines) {
     // The largest values a render accepts are accepted; one beyond is refused.
     EXPECT_EQ(refused_parameter("spp", "4096"), "");
