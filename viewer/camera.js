@@ -106,14 +106,21 @@ const ClrenderCamera = (() => {
     return centripetalCatmullRom(before, from, to, after, numerator / denominator);
   }
 
-  // The camera of frame k of F of an animation through keys ("linear" or "catmull-rom").
+  // The camera of frame k of F of an animation through keys ("linear" or "catmull-rom"), with
+  // the first key's up and fov: the exported scene has one of each, the first key's (Play gave
+  // each segment its first key's, and the last frame the last key's: keys recorded with the
+  // slider moved between them played at other fields of view than the export renders).
   function alongKeys(keys, k, frameCount, interpolation = "linear") {
-    if (keys.length === 1 || frameCount < 2) return copy(keys[0]);
+    const next = copy(keys[0]);
+    if (keys.length === 1 || frameCount < 2) return next;
     const denominator = frameCount - 1;
     const scaled = k * (keys.length - 1);
     const segment = Math.floor(scaled / denominator), numerator = scaled % denominator;
-    if (segment >= keys.length - 1) return copy(keys[keys.length - 1]);
-    const next = copy(keys[segment]);
+    if (segment >= keys.length - 1) {
+      next.eye = keys[keys.length - 1].eye.slice();
+      next.lookat = keys[keys.length - 1].lookat.slice();
+      return next;
+    }
     next.eye = pointOnPath(keys.map((key) => key.eye), segment, numerator, denominator, interpolation);
     next.lookat = pointOnPath(keys.map((key) => key.lookat), segment, numerator, denominator, interpolation);
     return next;

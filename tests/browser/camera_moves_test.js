@@ -43,5 +43,23 @@ let near = { eye: [0, 0, 1e-100], lookat: [0, 0, 0], up: [0, 1, 0], fov: 60 };
 for (let i = 0; i < 10000; ++i) near = ClrenderCamera.zoom(near, 1 / 1.1);
 check(ClrenderCamera.distance(near) > 0, "notches in stop short of the look-at point");
 
+// Play goes through the keys as the exported scene will: every frame with the first key's fov
+// and up, which the export writes (each segment had its first key's, the last frame the last
+// key's: keys recorded with the fov slider moved between them played at other fields of view).
+const keys = [{ eye: [0, 0, 10], lookat: [0, 0, 0], up: [0, 1, 0], fov: 60 },
+              { eye: [10, 0, 0], lookat: [0, 0, 1], up: [0, 1, 0], fov: 30 },
+              { eye: [0, 0, -10], lookat: [0, 0, 0], up: [1, 1, 0], fov: 90 }];
+for (const interpolation of ["linear", "catmull-rom"]) {
+  for (let k = 0; k < 21; ++k) {
+    const camera = ClrenderCamera.alongKeys(keys, k, 21, interpolation);
+    const what = `${interpolation} frame ${k}: fov ${camera.fov}, up ${camera.up}`;
+    check(camera.fov === 60 && camera.up.join() === "0,1,0", what);
+  }
+  const last = ClrenderCamera.alongKeys(keys, 20, 21, interpolation);
+  check(last.eye.join() === "0,0,-10" && last.lookat.join() === "0,0,0", `${interpolation}: the last key`);
+  const middle = ClrenderCamera.alongKeys(keys, 10, 21, interpolation);
+  check(middle.eye.join() === "10,0,0" && middle.lookat.join() === "0,0,1", `${interpolation}: the second key`);
+}
+
 if (failures) process.exit(1);
 console.log("camera moves: every check held");
