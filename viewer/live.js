@@ -69,6 +69,7 @@ class ClrenderLiveView {
     this.inFlight = null;      // {version, spp, abort}
     this.shown = null;         // {version, spp, camera, frame, size}
     this.failedVersion = -1;   // a camera the server refused: not asked again until it changes
+    this.busyUntil = 0;        // performance.now() before which the busy server is not asked
     this.shownTimes = [];      // performance.now() of each image shown, the last few seconds
     this.latencies = [];       // input-to-image times in ms, the most recent 2000
     this.history = [];         // {version, spp} of the last 100 images shown
@@ -110,6 +111,12 @@ class ClrenderLiveView {
 
   pump() {
     if (this.inFlight || this.camera === null || this.failedVersion === this.version) return;
+    const busy = this.busyUntil - performance.now();
+    if (busy > 0) {
+      clearTimeout(this.stillTimer);
+      this.stillTimer = setTimeout(() => this.pump(), busy);
+      return;
+    }
     let upToDate = this.shown !== null && this.shown.version === this.version;
     if (upToDate && this.holds > 0 && this.onIdle) {
       this.onIdle();  // a continuous move (held keys) may move the camera now
@@ -140,7 +147,7 @@ class ClrenderLiveView {
     try {
       const sent = performance.now();
       const response = await fetch(url, { signal: abort.signal, cache: "no-store" });
-      if (!response.ok) throw new Error(await clrenderErrorText(response));
+      if (!response.ok) throw await this.failure(response);
       const answered = performance.now();
       const received = await this.draw(response);
       const now = performance.now();
@@ -156,8 +163,12 @@ class ClrenderLiveView {
       if (this.history.length > 100) this.history.shift();
       this.onShown(this.shown);
     } catch (error) {
-      if (error.name === "AbortError") {
+      if (error.name === "AbortError" || error.retryAfterMs) {
         if (inputTime !== null && this.firstUnsentInput === null) this.firstUnsentInput = inputTime;
+        if (error.retryAfterMs) {
+          this.busyUntil = performance.now() + error.retryAfterMs;
+          this.onError(`${error.message}; asking again`);
+        }
       } else {
         // Not asked again until the camera changes: a refused camera stays refused, and a
         // stopped server would only be asked in a tight loop.
@@ -169,6 +180,16 @@ class ClrenderLiveView {
       this.inFlight = null;
     }
     this.pump();
+  }
+
+  // The error of a failed frame. A 503 with Retry-After is the server busy sending frames to
+  // other clients, not a refusal of this camera: the same view is asked again after the wait
+  // it gives (taken as a refusal, the view stayed unsharpened until the camera moved).
+  async failure(response) {
+    const error = new Error(await clrenderErrorText(response));
+    const seconds = Number(response.headers.get("Retry-After"));
+    if (response.status === 503 && seconds > 0) error.retryAfterMs = Math.min(seconds, 60) * 1000;
+    return error;
   }
 
   async draw(response) {
