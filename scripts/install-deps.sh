@@ -57,6 +57,8 @@ packages=(
   python3 python3-pip
   # tests/browser/ and scripts/bench_viewer.sh: clrender view's page driven in headless Chromium
   chromium chromium-driver python3-selenium
+  # tests/browser/*_test.js: the page's scripts (viewer/camera.js, viewer/live.js) run in Node.js
+  nodejs
 )
 
 case "${1:-all}" in
