@@ -31,6 +31,7 @@ MtlFileRead read_mtl_file(const std::string& path) {
         return file;
     }
     file.texture_maps = diffuse_texture_maps(text);
+    file.miscased = first_miscased_statement(text);
     file.materials = read_mtl_materials(mtl_statements_used(text), file.problem);
     return file;
 }
@@ -41,6 +42,7 @@ std::uint64_t bytes_held(const MtlFileRead& file) {
     for (const MtlDefinition& definition : file.materials.definitions)
         bytes += sizeof(MtlDefinition) + 3 * (definition.name.size() + 64);  // with `defined` and `first`
     for (const auto& [name, map] : file.texture_maps) bytes += name.size() + map.statement.size() + 96;
+    bytes += file.miscased.written.size() + file.miscased.meant.size();
     return bytes;
 }
 

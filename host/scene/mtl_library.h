@@ -16,6 +16,7 @@
 
 #include "core/sha256.h"
 #include "core/vec3.h"
+#include "scene/mtl_statement_case.h"
 #include "scene/mtl_texture_maps.h"
 
 namespace clr {
@@ -53,6 +54,7 @@ struct MtlFileRead {
     Sha256Digest digest{};
     MtlMaterials materials;  // of its statements that clrender uses (mtl_statements_used)
     std::map<std::string, MtlTextureMap> texture_maps;  // diffuse_texture_maps of the whole text
+    MtlMiscasedStatement miscased;                      // first_miscased_statement of the whole text
 };
 
 class MtlLibrary {

@@ -131,6 +131,19 @@ public:
     }
 
     const std::string& problem() const { return problem_; }
+    // A warning for each .mtl file with a statement clrender reads written in another case.
+    std::vector<std::string> miscased_statement_warnings() const {
+        std::vector<std::string> warnings;
+        for (const Library& library : libraries_) {
+            const MtlMiscasedStatement& miscased = library.file->miscased;
+            if (miscased.line == 0) continue;
+            warnings.push_back(library.shown + "line " + std::to_string(miscased.line) + ": '" +
+                               printable(miscased.written) + "' is not a .mtl statement (statements are "
+                               "case-sensitive: '" + miscased.meant + "'): the line is ignored" +
+                               (miscased.more > 0 ? " (and " + std::to_string(miscased.more) + " more such lines)" : ""));
+        }
+        return warnings;
+    }
     // A warning for the first material defined again (tinyobjloader keeps the first
     // definition, so the later one's colour is silently unused), or "".
     std::string redefinition_warning() const {
@@ -460,6 +473,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     warn_about_undefined_materials(statements, material_files, mesh);
     warn_about_unused_materials(statements, material_files, mesh);
     warn_about_texture_maps(statements, material_files, mesh);
+    for (std::string& warning : material_files.miscased_statement_warnings()) mesh.warnings.push_back(std::move(warning));
     warn_about_unknown_statements(counts, mesh);
     warn_about_vertex_colours(counts, mesh);
     warn_about_polygons_outside_their_outline(text, outside_outline, first_outside, first_outside_corners, mesh);

@@ -703,6 +703,27 @@ TEST(ObjReader, ATextureMapTheMeshDoesNotDrawIsAWarning) {
     EXPECT_TRUE(read_obj(folder.write("plain.obj", "mtllib m.mtl\n" + kSquare + "usemtl plain\nf 1 2 3\n")).warnings.empty());
 }
 
+// tinyobjloader matches .mtl statements case for case: "KD 1 0 0" or "Newmtl red" was skipped in
+// silence, the mesh drawn grey. A warning names the first such line of each .mtl the OBJ uses
+// and counts the rest; the statements clrender does not read (Ka, Ns, illum) in any case are no
+// such lines, nor is a word that only begins like one.
+TEST(ObjReader, AMtlStatementWrittenInAnotherCaseIsAWarning) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl red\nKD 1 0 0\nka 1 1 1\nILLUM 2\nkd 0 1 0\nKds 1 1 1\nMAP_KD red.png\n");
+    const ObjMesh mesh = read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(mesh.diffuse, std::nullopt) << "the line is ignored, as tinyobjloader does";
+    ASSERT_EQ(mesh.warnings.size(), 1u);
+    EXPECT_EQ(mesh.warnings[0], "mtllib m.mtl: line 2: 'KD' is not a .mtl statement (statements are case-sensitive: "
+                                "'Kd'): the line is ignored (and 2 more such lines)");
+    folder.write("n.mtl", "Newmtl blue\nKd 0 0 1\n");
+    const ObjMesh undefined = read_obj(folder.write("blue.obj", "mtllib n.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"));
+    ASSERT_EQ(undefined.warnings.size(), 2u) << "after the warning that no .mtl defines 'blue'";
+    EXPECT_EQ(undefined.warnings[1], "mtllib n.mtl: line 1: 'Newmtl' is not a .mtl statement (statements are "
+                                     "case-sensitive: 'newmtl'): the line is ignored");
+    folder.write("ok.mtl", "newmtl red\nKa 1 1 1\nillum 2\nKd 1 0 0\n");
+    EXPECT_TRUE(read_obj(folder.write("ok.obj", "mtllib ok.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
+}
+
 // 600,000 positions, then `tail` from line 600,001: a text of more than 4 MiB, which the checks
 // read in parts.
 std::string checked_in_parts(const std::string& tail) {
