@@ -76,8 +76,7 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
     Directions16 d = {dx, dy, dz};
     int16 skip_kind = vload16(0, rays->skip_kind), skip_index = vload16(0, rays->skip_index);
 #if CLR_FEATURE_TRIANGLES
-    /* triangle_nearest_t() and triangle_plane_slack() lane by lane */
-    real16 nearest = (real)CLR_TRIANGLE_SELF_GAP * (fabs(ox) + fabs(oy) + fabs(oz));
+    /* triangle_plane_slack() lane by lane */
     real16 slack = (real)CLR_TRIANGLE_PLANE_SLACK * (fabs(ox) + fabs(oy) + fabs(oz));
 #endif
     Directions16 inverse = safe_inverse16(d);
@@ -104,7 +103,7 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
             /* All 16 lanes at once, as lane_meets16() would answer each. */
 #if CLR_FEATURE_TRIANGLES
             if (kind == CLR_HIT_TRIANGLE) {
-                real16 t = triangle_distance16_from(&triangles[index], origins, nearest, slack, d);
+                real16 t = triangle_distance16_from(&triangles[index], origins, slack, d);
                 met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
                 continue;
             }
