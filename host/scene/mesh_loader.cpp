@@ -157,6 +157,57 @@ void reserve_more(std::vector<T>& values, std::size_t extra) {
     if (values.size() + extra > values.capacity()) values.reserve(std::max(values.size() + extra, 2 * values.capacity()));
 }
 
+// How far a + b, rounded to a double, lies from the exact sum (Knuth's TwoSum).
+double rounding_of_sum(double a, double b) {
+    const double sum = a + b;
+    const double b_part = sum - a;
+    return (a - (sum - b_part)) + (b - b_part);
+}
+
+// Placed vertices are doubles in scene coordinates, 1/64 apart near 1e14 and 1/8 near 1e15: a
+// model placed there is rounded to that grid (a unit ball of 2,304 triangles at 9e14 lost a
+// third of them and a third of its pixels changed), which no other object suffers. A triangle
+// a corner of which the rounding moves by more than this share of its longest edge is counted
+// as changed; slivers thinner than the rounding near the origin are not.
+constexpr double kPlacementTolerance = 1e-3;
+
+// What placing a model did to its triangles: `moved` per vertex, the largest rounding of its
+// coordinates; the triangles changed beyond kPlacementTolerance, and those of them left without
+// an area.
+struct PlacementRounding {
+    std::vector<float> moved;  // float: a share of an edge needs no more, and a large mesh's copy is half as big
+    std::size_t changed = 0;
+    std::size_t lost = 0;
+
+    void count(const ObjMesh& model, std::size_t f, const Vec3& scale, bool kept) {
+        const auto& corner = model.triangles[f];
+        const double most = std::max({moved[corner[0]], moved[corner[1]], moved[corner[2]]});
+        if (most == 0) return;
+        std::array<Vec3, 3> scaled;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = model.positions[corner[k]];
+            scaled[k] = Vec3{p.x * scale.x, p.y * scale.y, p.z * scale.z};
+        }
+        if (!renders_exactly_enough(scaled) || most <= kPlacementTolerance * longest_edge(scaled)) return;
+        ++changed;
+        lost += !kept;
+    }
+};
+
+void warn_about_placement_rounding(const Node& filename, const std::string& what, const PlacementRounding& rounding,
+                                   std::size_t triangles, const std::vector<Vec3>& placed) {
+    if (rounding.changed == 0) return;
+    double largest = 0;
+    for (const Vec3& p : placed) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    const double spacing = std::ldexp(1.0, std::ilogb(largest) - std::numeric_limits<double>::digits + 1);
+    filename.warn(what + ": " + std::to_string(rounding.changed) + " of its " + std::to_string(triangles) +
+                  " triangles move by more than a thousandth of their size once placed, where coordinates are " +
+                  number_text(spacing) + " apart (doubles near " + number_text(largest) + "), and " +
+                  std::to_string(rounding.lost) +
+                  " of them lose their area: the model's detail finer than that is rounded away; place it nearer "
+                  "the origin (docs/scene-format.md, Numeric ranges)");
+}
+
 // Appends `model`, scaled and placed as `mesh` says, to the scene. Triangles without area
 // once placed are left out: no ray can hit them, and their plane has no normal. So are
 // triangles smaller than the length range (renders_exactly_enough()), which only a camera
@@ -172,10 +223,15 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
                                          " a scene's meshes may take: half of this machine's memory "
                                          "(docs/robustness.md, Memory)");
     std::vector<Vec3> placed(model.positions.size());
+    PlacementRounding rounding;
+    rounding.moved.resize(placed.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {
         const Vec3& p = model.positions[i];
-        placed[i] = Vec3{p.x * mesh.scale.x, p.y * mesh.scale.y, p.z * mesh.scale.z} + mesh.position;
+        const Vec3 scaled{p.x * mesh.scale.x, p.y * mesh.scale.y, p.z * mesh.scale.z};
+        placed[i] = scaled + mesh.position;
         for (int axis = 0; axis < 3; ++axis) {
+            const double moved = std::fabs(rounding_of_sum(scaled[axis], mesh.position[axis]));
+            rounding.moved[i] = std::max(rounding.moved[i], static_cast<float>(moved));
             if (!(std::fabs(placed[i][axis]) <= kMaxCoordinate))
                 filename.fail(what + ": vertex " + std::to_string(i + 1) +
                               " lies at " + number_text(placed[i][axis]) + " once scaled and placed; " +
@@ -196,7 +252,9 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
     for (std::size_t f = 0; f < model.triangles.size(); ++f) {
         Triangle triangle;
         for (int k = 0; k < 3; ++k) triangle.corners[k] = placed[model.triangles[f][k]];
-        if (!renders_exactly_enough(triangle.corners)) continue;
+        const bool kept = renders_exactly_enough(triangle.corners);
+        rounding.count(model, f, mesh.scale, kept);
+        if (!kept) continue;
         triangle.mesh = mesh_index;
         const auto& normal_indices = model.triangle_normals[f];
         std::array<Vec3, 3> normals;
@@ -216,6 +274,7 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
                       " once scaled and placed (" + no_area_reason(longest, "repeated or collinear corners") +
                       "): it draws nothing");
     }
+    warn_about_placement_rounding(filename, what, rounding, model.triangles.size(), placed);
     scene.meshes.push_back(std::move(mesh));
 }
 

@@ -184,6 +184,28 @@ TEST(MeshLoader, TrianglesPlacedBelowTheLengthRangeAreLeftOut) {
     EXPECT_EQ(scene.meshes.at(0).triangle_count, 2u);
 }
 
+// Placed vertices are doubles, 1/8 apart near 9e14: a triangle 0.01 across placed there loses its
+// area, which is a warning naming the spacing, not a silent change of the model. A sliver 1e-16
+// wide that loses its area 1000 from the origin changed nothing visible: no warning.
+TEST(MeshLoader, TrianglesThatPlacingMovesBeyondAThousandthOfTheirSizeAreAWarning) {
+    TempFolder folder;
+    folder.write("two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0.01 0 0\nv 0 0.01 0\nf 1 2 3\nf 1 4 5\n");
+    const Scene near = load_in(folder, with_obj({{"filename", "two.obj"}}));
+    EXPECT_EQ(near.triangles.size(), 2u);
+    EXPECT_EQ(testing::scene_json::all_warnings(near), "");
+    const Scene far = load_in(folder, with_obj({{"filename", "two.obj"}, {"position", {9e14, 0, 0}}}));
+    EXPECT_EQ(far.triangles.size(), 1u);
+    EXPECT_TRUE(testing::scene_json::has_warning(far, "mesh 'two.obj': 1 of its 2 triangles move by more than a "
+                                                      "thousandth of their size once placed, where coordinates are "
+                                                      "0.125 apart (doubles near 900000000000001), and 1 of them "
+                                                      "lose their area"))
+        << testing::scene_json::all_warnings(far);
+    folder.write("sliver.obj", "v 0 0 0\nv 1 0 0\nv 0.5 1e-16 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
+    const Scene sliver = load_in(folder, with_obj({{"filename", "sliver.obj"}, {"position", {1000, 1000, 0}}}));
+    EXPECT_EQ(sliver.triangles.size(), 1u);
+    EXPECT_EQ(testing::scene_json::all_warnings(sliver), "");
+}
+
 // The message and exit code of the Error loading `scene` in `folder` with a mesh memory budget
 // of `budget` bytes; "" when it loads.
 std::pair<std::string, int> memory_error_of(const TempFolder& folder, const Json& scene, std::uint64_t budget) {
