@@ -167,6 +167,25 @@ std::string settings_text(const Scene& scene) {
            rgb(scene.background) + " }\n";
 }
 
+// What the converter does not write: the fall 2019 format's planes, point lights and
+// Blinn-Phong materials, and near/far clipping. Written without them, such a scene rendered as
+// another (its planes and lights gone, its surfaces flat) with nothing said, and the comparison
+// measured two different pictures; it is refused instead.
+void refuse_what_is_not_converted(const Scene& scene) {
+    std::string missing;
+    auto add = [&missing](bool present, const std::string& what) {
+        if (present) missing += (missing.empty() ? "" : ", ") + what;
+    };
+    add(!scene.planes.empty(), "planes");
+    add(scene.lit_by_lights(), "point lights (\"lights\")");
+    add(scene.materials.size() > 1, "Blinn-Phong materials (diffuse, specular, mirror, phong_exponent)");
+    add(scene.clips(), "near/far clipping");
+    if (!missing.empty())
+        throw SceneError(scene.path, "", "the scene has " + missing +
+                                             ", which clrender_to_povray does not write (docs/benchmarks.md, "
+                                             "Against POV-Ray)");
+}
+
 CameraKey key_of_frame(const Scene& scene, int frame) {
     try {
         return camera_at_frame(scene, frame);
@@ -187,6 +206,7 @@ int povray_trace_levels(const Scene& scene) {
 }
 
 std::string povray_scene_text(const Scene& scene, int frame) {
+    refuse_what_is_not_converted(scene);
     const CameraKey key = key_of_frame(scene, frame);
     std::ostringstream text;
     text << "// " << scene.name << ", frame " << frame << ", " << scene.width << " x " << scene.height

@@ -266,6 +266,16 @@ TEST(PovrayConverter, BadInputFailsAndWritesNothing) {
         {"frame past the animation", shell_quoted(kShowcase) + " out.pov --frame 96", 1,
          "--frame 96 is outside the animation's 96 frames"},
         {"output folder missing", shell_quoted(kDemo) + " nowhere/out.pov", 4, "nowhere"},
+        {"a plane and a light",
+         shell_quoted(kDemo) + " out.pov -D 'surfaces=[{\"type\": \"plane\", \"point\": [0, 0, 0], \"normal\": "
+                               "[0, 1, 0], \"ambient\": [1, 1, 1]}]' -D 'lights=[{\"position\": [0, 9, 0], "
+                               "\"color\": [1, 1, 1]}]'",
+         2, "the scene has planes, point lights (\"lights\"), which clrender_to_povray does not write"},
+        {"a material",
+         shell_quoted(kDemo) + " out.pov -D 'surfaces=[{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1, 0, "
+                               "0], [0, 1, 0]], \"ambient\": [1, 0, 0], \"mirror\": [1, 1, 1]}]'",
+         2, "Blinn-Phong materials"},
+        {"clipping", shell_quoted(kDemo) + " out.pov -D near=1", 2, "near/far clipping"},
     };
     for (const BadConversion& bad : cases) {
         TempFolder folder;
