@@ -53,6 +53,13 @@ void hint_billboard_keys(ObjectReader& billboard) {
     did_you_mean(billboard, {"image", "file", "texture", "img", "picture", "src", "path"}, "filename");
 }
 
+void hint_mesh_keys(ObjectReader& mesh) {
+    hint_surface_keys(mesh);
+    did_you_mean(mesh, {"file", "path", "model", "mesh", "src", "obj"}, "filename");
+    did_you_mean(mesh, {"pos", "origin", "offset", "translation", "translate", "center"}, "position");
+    did_you_mean(mesh, {"size", "scaling", "scale_factor"}, "scale");
+}
+
 void hint_impostor_keys(ObjectReader& impostor) {
     did_you_mean(impostor, {"color", "colour", "rgb"}, "ambient");
     did_you_mean(impostor, {"image", "file", "texture", "img", "picture", "src", "path"}, "filename");

@@ -12,6 +12,7 @@ void hint_scene_keys(ObjectReader& scene);
 void hint_extension_keys(ObjectReader& extensions);  // the "clrender" object
 void hint_sphere_keys(ObjectReader& sphere);
 void hint_billboard_keys(ObjectReader& billboard);
+void hint_mesh_keys(ObjectReader& mesh);  // an "obj" object
 void hint_impostor_keys(ObjectReader& impostor);
 
 }  // namespace clr

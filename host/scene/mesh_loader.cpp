@@ -16,6 +16,7 @@
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/file_names.h"
+#include "scene/key_hints.h"
 #include "scene/mesh_cache.h"
 #include "scene/mtl_library.h"
 #include "scene/obj_reader.h"
@@ -63,6 +64,7 @@ namespace {
 
 PendingMesh read_mesh_object(const Node& node) {
     ObjectReader fields(node, "obj");
+    hint_mesh_keys(fields);
     if (const auto type = fields.optional("type"); type && type->string() != "obj")
         type->fail("type must be \"obj\" here, got " + type->shown());
     PendingMesh pending = read_mesh_placement(fields, node);

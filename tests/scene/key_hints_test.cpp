@@ -58,6 +58,22 @@ TEST(KeyHints, ABillboardWithAnImageKeyIsToldAboutFilename) {
         << all_warnings(scene);
 }
 
+// A mesh is told about its keys as a sphere or billboard is: `colour` is its `ambient`, `file`
+// its `filename`.
+TEST(KeyHints, AMeshIsToldAboutItsKeys) {
+    TempFolder folder;
+    folder.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    Json json = minimal_scene();
+    json["obj"] = {{"file", "t.obj"}};
+    EXPECT_TRUE(
+        FailsAt(json, "/obj", "obj is missing required key 'filename' (it has 'file': did you mean 'filename'?)"));
+    json["obj"] = {{"filename", "t.obj"}, {"colour", {1, 0, 0}}, {"pos", {0, 1, 0}}};
+    const Scene scene = parse_scene(json.dump(), folder.file("scene.json"));
+    EXPECT_TRUE(has_warning(scene, "/obj/colour: unknown key (ignored); did you mean 'ambient'?"))
+        << all_warnings(scene);
+    EXPECT_TRUE(has_warning(scene, "/obj/pos: unknown key (ignored); did you mean 'position'?")) << all_warnings(scene);
+}
+
 TEST(KeyHints, SpellingSuggestionsStillWork) {
     Json json = minimal_scene();
     json["spheres"] = {sphere()};
