@@ -113,7 +113,7 @@ std::string check_summary(const Scene& scene, bool double_precision) {
         out << "lights:     " << scene.lights.size() << (scene.lit_by_lights() ? "" : " (off: OnlyAmbient)") << "\n";
     out << "images:     " << printable(images_line(scene)) << "\n";
     out << "features:   " << features_line(scene, double_precision) << "\n";
-    out << "warnings:   " << scene.warnings.size()
+    out << "warnings:   " << scene.warning_count
         << (scene.warnings.empty() ? "" : " (on standard error, above)") << "\n";
     return out.str();
 }

@@ -141,7 +141,7 @@ Scene load(const Options& options) {
         std::cerr << message_line("warning", printable(scene.path + ": " + warning));
     // --strict: the warnings above are the problems; this line says why they stop the run.
     if (options.strict && !scene.warnings.empty()) {
-        const std::size_t n = scene.warnings.size();
+        const std::size_t n = scene.warning_count;
         throw SceneError(printable(scene.path), "",
                          std::to_string(n) + (n == 1 ? " warning" : " warnings") + " (above), and --strict makes warnings errors");
     }

@@ -204,6 +204,9 @@ struct Scene {
     std::string digest;
 
     std::vector<std::string> warnings;  // unknown keys and similar, one line each
+    // Every warning found, also those past the first hundred that `warnings` only counts in
+    // its last line: what --check and --strict report.
+    std::size_t warning_count = 0;
     std::vector<ImageFileInfo> image_files;  // each distinct image file shown, once
 
     // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (docs/scene-format.md,

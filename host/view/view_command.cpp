@@ -50,7 +50,7 @@ Scene load_view_scene(const Options& options, const std::string& text) {
     for (const std::string& warning : scene.warnings)
         std::cerr << "clrender: warning: " << printable(scene.path + ": " + warning) << "\n";
     if (options.strict && !scene.warnings.empty()) {
-        const std::size_t n = scene.warnings.size();
+        const std::size_t n = scene.warning_count;
         throw SceneError(printable(scene.path), "",
                          std::to_string(n) + (n == 1 ? " warning" : " warnings") + " (above), and --strict makes warnings errors");
     }

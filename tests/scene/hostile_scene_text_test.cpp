@@ -156,6 +156,7 @@ TEST(HostileScene, WarningsStopAfterAHundredAndCountTheRest) {
     const Scene scene = parse(json);
     ASSERT_EQ(scene.warnings.size(), 101u);
     EXPECT_EQ(scene.warnings.back(), "150 more warnings not shown (only the first 100 are)");
+    EXPECT_EQ(scene.warning_count, 250u) << "--check and --strict count every warning, not the lines shown";
 }
 
 TEST(HostileScene, ThousandsOfLongUnknownKeysLoadQuickly) {
