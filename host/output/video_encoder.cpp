@@ -1,7 +1,8 @@
 // ffmpeg runs as a child process (output/child_process.h: never through a shell, in its own
 // process group). Its stdin is a non-blocking pipe carrying raw frames (yuv420p for an MP4,
-// RGBA read as rgb0 for a GIF), its stdout goes to /dev/null and its stderr to a log file
-// whose last lines explain a failure. It writes into a temporary file beside the final one;
+// RGBA read as rgb0 for a GIF), its stdout is the temporary file and its stderr a log file
+// whose last lines explain a failure. It writes into that temporary file beside the final one,
+// which clrender creates and ffmpeg opens as its own stdout (kEncoderOutput), never by name;
 // after ffmpeg has exited successfully, ffprobe must read back exactly the frames sent
 // (output/video_probe.h) before the file is renamed into place (rename is atomic within one
 // file system). Until then an earlier video under the final name stays as it was.
@@ -143,6 +144,14 @@ void ignore_sigpipe() {
     (void)ignored;
 }
 
+// Where ffmpeg writes: the file it was given as its stdout, which clrender created. Given the
+// temporary file's name, ffmpeg opened it by that name after clrender had made it, following
+// whatever stood there by then: another user who may write into the folder could replace it
+// with a symbolic link in between, and ffmpeg overwrote the link's target, a file of the user
+// who renders. Opened through /proc, the name leads to the file itself (also for the second
+// open of an MP4's +faststart), however the folder's names change meanwhile.
+constexpr const char* kEncoderOutput = "/proc/self/fd/1";
+
 // A short temporary name in the folder of `final_path` (temp_files.h: it fits wherever the
 // final name fits, with the log's ".log" added, and a later run removes it if this one is
 // killed). The same counter as AtomicFile's keeps the two kinds of temporary file apart.
@@ -156,6 +165,16 @@ int create_exclusive(const FolderEntry& entry, const std::string& final_path) {
     const int fd = entry.open(O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) throw OutputError(final_path + ": cannot create a file in its folder: " + std::strerror(errno));
     return fd;
+}
+
+// create_exclusive(), closing `open_fd` when it fails.
+int create_exclusive_or_close(const FolderEntry& entry, const std::string& final_path, int open_fd) {
+    try {
+        return create_exclusive(entry, final_path);
+    } catch (...) {
+        ::close(open_fd);
+        throw;
+    }
 }
 
 // The size of the file at `path`, -1 if it cannot be read.
@@ -272,11 +291,11 @@ VideoEncoder::~VideoEncoder() { abandon(); }
 void VideoEncoder::start() {
     temp_path_ = temp_path_beside(settings_.path);
     FolderEntry temp_entry(temp_path_);
-    ::close(create_exclusive(temp_entry, settings_.path));  // reserves the name; ffmpeg overwrites it
+    const int video_fd = create_exclusive(temp_entry, settings_.path);  // ffmpeg's stdout: it writes here
     temp_entry_ = std::move(temp_entry);  // only a file this run made is ever removed
     log_path_ = temp_path_ + ".log";
     FolderEntry log_entry(log_path_);
-    const int log_fd = create_exclusive(log_entry, settings_.path);
+    const int log_fd = create_exclusive_or_close(log_entry, settings_.path, video_fd);
     log_entry_ = std::move(log_entry);
 
     // Close-on-exec on both ends: the child gets the read end as its stdin through dup2, and
@@ -286,6 +305,7 @@ void VideoEncoder::start() {
     if (::pipe2(pipe_fds, O_CLOEXEC) != 0) {
         const int error = errno;
         ::close(log_fd);
+        ::close(video_fd);
         throw OutputError(settings_.path + ": cannot create a pipe to the video encoder: " + std::strerror(error));
     }
     stdin_fd_ = pipe_fds[1];
@@ -295,14 +315,16 @@ void VideoEncoder::start() {
     ::fcntl(stdin_fd_, F_SETFL, O_NONBLOCK);
     widen_pipe(stdin_fd_, frame_bytes(settings_, format_));
     try {
-        encoder_ = std::make_unique<ChildProcess>(encoder_arguments(program_, settings_, format_, temp_path_),
-                                                  pipe_fds[0], -1, log_fd);
+        encoder_ = std::make_unique<ChildProcess>(encoder_arguments(program_, settings_, format_, kEncoderOutput),
+                                                  pipe_fds[0], video_fd, log_fd);
     } catch (const OutputError& error) {
         ::close(pipe_fds[0]);
+        ::close(video_fd);
         ::close(log_fd);
         throw OutputError(settings_.path + ": video encoder: " + error.what());
     }
     ::close(pipe_fds[0]);
+    ::close(video_fd);
     ::close(log_fd);
 }
 

@@ -347,6 +347,26 @@ TEST(VideoEncoder, AFolderRemovedMeanwhileIsNamedAsTheCause) {
     EXPECT_TRUE(entries(folder.path()).empty()) << joined(entries(folder.path()));
 }
 
+// Another user who may write into the video's folder replaces the temporary file clrender made
+// with a symbolic link before ffmpeg starts (here the encoder does it itself, first): ffmpeg,
+// given the name, opened it through the link and overwrote its target, a file of the user who
+// renders, and the "video" renamed into place was that link. It writes into the file clrender
+// made, whatever the folder's names lead to meanwhile.
+TEST(VideoEncoder, ALinkPlantedAtTheTemporaryNameIsNotFollowed) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder scripts, folder, elsewhere;
+    elsewhere.write("mine.txt", "the user's own file\n");
+    const std::string planting = write_script(
+        scripts, "planting-ffmpeg",
+        "for temp in '" + folder.path() + "'/.clrender-*.tmp; do rm -f \"$temp\"; ln -s '" + elsewhere.file("mine.txt") +
+            "' \"$temp\"; done\nexec '" + *encoder + "' \"$@\"");
+    const std::string video = folder.file("out.mp4");
+    output_error_of([&] { encode({video, 16, 16}, planting, 3); });
+    EXPECT_EQ(read_bytes(elsewhere.file("mine.txt")), "the user's own file\n");
+    EXPECT_FALSE(fs::is_symlink(video));
+}
+
 TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {
     TempFolder scripts, folder;
     const std::string fake = write_script(scripts, "fake-ffmpeg", "cat >/dev/null");
