@@ -30,6 +30,8 @@ Environment:
                              user's own); default the temporary folder
   CLRENDER_STOP_WITH_PARENT  Set by clrender view for its video's render: the process id
                              whose end stops the render (SIGTERM)
+  CLRENDER_LINKS_REPLACED    Set by clrender view for its video's render (1): a symbolic link
+                             at an output's name is replaced, not written through
 
 Exit status:
   0    Done

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -27,6 +28,14 @@ OutputError refusal(const std::string& path, const std::string& what) {
     return OutputError(path + ": " + what + "; clrender writes outputs only to regular files (or through symbolic links to them)");
 }
 
+// Whether a symbolic link at an output's name is replaced rather than written through: in the
+// render of the viewer's video, whose name another program may link elsewhere meanwhile (the
+// video then replaced a file outside --output-dir).
+bool links_replaced() {
+    const char* value = std::getenv(kLinksReplacedVariable);
+    return value != nullptr && std::string(value) == "1";
+}
+
 }  // namespace
 
 std::string resolve_output_target(const std::string& path) {
@@ -37,6 +46,7 @@ std::string resolve_output_target(const std::string& path) {
         return path;
     }
     if (S_ISREG(link_info.st_mode)) return path;
+    if (S_ISLNK(link_info.st_mode) && links_replaced()) return path;  // the rename replaces the link
     if (!S_ISLNK(link_info.st_mode)) throw refusal(path, "is " + kind_of(link_info.st_mode));
 
     struct stat target_info {};

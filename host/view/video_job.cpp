@@ -16,6 +16,7 @@
 #include "core/printable_text.h"
 #include "core/stop_with_parent.h"
 #include "output/child_process.h"
+#include "output/output_target.h"
 
 namespace clr {
 
@@ -70,7 +71,8 @@ int VideoJobs::start(Place&& place, const std::string& scene_path, const std::st
     watcher_ = std::thread([this, arguments, fds, started = std::move(started)]() mutable {
         try {
             child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1], kOwnProgram,
-                                                    std::vector<std::string>{stop_with_parent_entry()});
+                                                    std::vector<std::string>{stop_with_parent_entry(),
+                                                                             std::string(kLinksReplacedVariable) + "=1"});
         } catch (...) {
             ::close(fds[0]);
             ::close(fds[1]);

@@ -599,6 +599,23 @@ TEST(ViewExport, StoppingTheViewerStopsTheVideoAndLeavesNoPartialFile) {
     expect_only_the_long_videos_scene(folder);
 }
 
+// A symbolic link made at the video's name while it renders (by another program, or another
+// user who may write into --output-dir) is replaced by the video, as a file made there would
+// be: the render wrote through it, replacing the file it led to, outside the output folder.
+TEST(ViewExport, AVideoReplacesALinkMadeAtItsNameNotTheFileItLeadsTo) {
+    TempFolder folder, elsewhere;
+    elsewhere.write("holiday.mp4", "the user's own video");
+    ViewerProcess viewer(kSlowDemo, folder.path());
+    ASSERT_NO_FATAL_FAILURE(start_long_video(viewer));
+    fs::create_symlink(elsewhere.file("holiday.mp4"), folder.file("long.mp4"));
+    const json state = finished_job(viewer, 1);
+    EXPECT_EQ(state["state"], "done") << state.dump();
+    EXPECT_TRUE(read_bytes(elsewhere.file("holiday.mp4")) == "the user's own video") << "replaced by the video";
+    EXPECT_FALSE(fs::is_symlink(folder.file("long.mp4")));
+    EXPECT_GT(fs::file_size(folder.file("long.mp4")), 0u);
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 // The processes whose parent is `parent`.
 std::vector<pid_t> children_of(pid_t parent) {
     std::vector<pid_t> children;
