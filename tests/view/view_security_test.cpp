@@ -181,6 +181,7 @@ TEST_F(ViewSecurity, EveryAnswerCarriesTheSameHeadersRefusalsIncluded) {
          "405"},
         {"PROPFIND " + path + " HTTP/1.1\r\n" + host + "\r\n", "400"},
         {"GET " + path + " HTTP/1.1\r\n" + host + "X-Long: " + std::string(70 * 1024, 'a') + "\r\n\r\n", "431"},
+        {"GET " + path + "&pad=" + std::string(9000, 'a') + " HTTP/1.1\r\n" + host + "\r\n", "414"},
     };
     const std::vector<std::string> headers = {"Cache-Control: no-store",
                                               "X-Content-Type-Options: nosniff",
