@@ -1,5 +1,7 @@
 #include "app/plan_json.h"
 
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 namespace clr {
@@ -17,6 +19,27 @@ json split(const Options& options, const Scene& scene, const OutputPlan& plan) {
     // The rectangle the run renders (the crop, else the whole frame), to cut into bands of rows.
     const PixelRect rect = options.crop ? *options.crop : PixelRect{0, scene.width, 0, scene.height};
     return {{"by", "rows"}, {"x0", rect.x0}, {"x1", rect.x1}, {"y0", rect.y0}, {"y1", rect.y1}};
+}
+
+// Every file the render reads, each once: the scene, its images, its OBJ files and the .mtl
+// files they name (what a node needs besides the program). A missing file that --placeholders
+// stands in for is not read, so not listed.
+json inputs(const Scene& scene) {
+    json files = json::array();
+    std::set<std::string> listed;
+    const auto add = [&](const std::string& path) {
+        if (!path.empty() && listed.insert(path).second) files.push_back(path);
+    };
+    add(scene.path);
+    for (const ImageFileInfo& image : scene.image_files)
+        if (image.format != "placeholder") add(image.path);
+    std::set<const std::vector<std::string>*> seen;  // the placements of a file share its list
+    for (const Mesh& mesh : scene.meshes) {
+        if (!mesh.placeholder) add(mesh.path);
+        if (mesh.material_paths && seen.insert(mesh.material_paths.get()).second)
+            for (const std::string& material : *mesh.material_paths) add(material);
+    }
+    return files;
 }
 
 }  // namespace
@@ -51,6 +74,7 @@ std::string plan_json(const Options& options, const Scene& scene, const OutputPl
         {"images", images},
         {"video", or_null(plan.video_name)},
         {"stats", plan.stats_to_standard_output ? json("-") : or_null(plan.stats_path)},
+        {"reads", inputs(scene)},
         {"writes", writes},
         {"reads_back", reads_back},
         // The device selector the render would use (-d, else $CLRENDER_DEVICE); --plan opens

@@ -1,5 +1,5 @@
 // --plan (docs/command-line.md, Planning a run): what a run will do, as JSON, for a program that
-// splits the run (scripts/slurm-render.sh): the frames, the image size, every file the run
+// splits the run (scripts/slurm-render.sh): the frames, the image size, every file the run reads,
 // writes or reads back, and how the work can be split. Printed only after every check a render
 // makes without a device has passed.
 #pragma once

@@ -119,6 +119,28 @@ TEST(PlanCli, AStillSplitsByRowsOfTheRenderedRectangle) {
 
 // With --resume the plan says which frames are finished (read back, not written), as the
 // render then finds them: a frame of this very render (the reference's, as this run's).
+// A farm without a shared folder copies each node its inputs: the plan names every file the
+// render reads, each once, relative to the working folder: the scene, its images, its OBJ
+// files (a `surfaces` mesh too) and the .mtl files they name.
+TEST(PlanCli, ThePlanNamesEveryFileTheRenderReads) {
+    TempFolder folder;
+    fs::create_directories(folder.file("s/m"));
+    folder.write("s/m/cube.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("s/m/cube.obj", "mtllib cube.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("s/sign.ppm", std::string("P6\n1 1\n255\n") + std::string(3, '\x80'));
+    folder.write("s/scene.json", R"({
+  "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60, "width": 30, "height": 20,
+  "obj": [{"filename": "m/cube.obj"}, {"filename": "m/cube.obj", "position": [1, 0, 0]}],
+  "surfaces": [{"type": "mesh", "filename": "m/cube.obj", "ambient": [0, 1, 0]}],
+  "billboards": [{"filename": "sign.ppm",
+                  "UpperLeft": [-2, 2, -1], "LowerLeft": [-2, 1, -1], "UpperRight": [-1, 2, -1]}]
+})");
+    const json plan = plan_of("s/scene.json", folder);
+    EXPECT_EQ(plan["reads"], json({"s/scene.json", "s/sign.ppm", "s/m/cube.obj", "s/m/cube.mtl"}));
+    const json join = plan_of("s/scene.json --join t.png", folder);
+    EXPECT_EQ(join["reads"], plan["reads"]);  // the tiles are in reads_back
+}
+
 TEST(PlanCli, ResumeMarksTheFinishedFrames) {
     TempFolder folder;
     folder.write("anim.json", kAnimation);
