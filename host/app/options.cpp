@@ -1,6 +1,7 @@
 #include "app/options.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
@@ -95,7 +96,8 @@ void read_scene_check_options(const SceneCheckOptions& values, Options& options)
 }
 
 // "unknown option '--sp'; did you mean --spp?" for the first unknown option that is a likely
-// typo of a known one ("--sp", "-spp", "--sp=4"), else "" (CLI11's message then stands).
+// typo of a known one ("--sp", "-spp", "--sp=4"), a note for a known one given after "--",
+// else "" (CLI11's message then stands).
 std::string did_you_mean_option(const CLI::App& app) {
     std::vector<std::string> names;
     for (const CLI::Option* option : app.get_options())
@@ -103,6 +105,9 @@ std::string did_you_mean_option(const CLI::App& app) {
     for (const std::string& extra : app.remaining()) {
         if (extra.size() < 2 || extra[0] != '-') continue;
         const std::string option = extra.substr(0, extra.find('='));
+        // A known option left over came after "--", which makes every later word a file name.
+        if (std::find(names.begin(), names.end(), option) != names.end())
+            return "'" + option + "' comes after '--', which ends the options: give the options before it";
         const std::string best = closest_spelling(option, names);
         if (!best.empty()) return "unknown option '" + option + "'; did you mean " + best + "?";
     }

@@ -275,6 +275,19 @@ TEST(SceneOverridesCli, AMistypedOptionGetsASuggestion) {
     EXPECT_EQ(far_off.output.find("did you mean"), std::string::npos) << far_off.output;
 }
 
+// After "--" every word is a file name (a scene named -s.json): an option given there is not
+// a typo of itself.
+TEST(SceneOverridesCli, AnOptionAfterTheEndOfOptionsIsNamedAsSuch) {
+    TempFolder folder;
+    folder.write("-s.json", kScene);
+    const auto scene = run_clrender("--check -- -s.json", folder.path());
+    EXPECT_EQ(scene.exit_code, 0) << scene.output;
+    const auto late = run_clrender("-- -s.json --check", folder.path());
+    EXPECT_EQ(late.exit_code, 1) << late.output;
+    EXPECT_EQ(late.output.find("did you mean"), std::string::npos) << late.output;
+    EXPECT_NE(late.output.find("'--check' comes after '--', which ends the options"), std::string::npos) << late.output;
+}
+
 TEST(SceneOverridesCli, HelpAndTheCommandLineDocumentEachOption) {
     const auto help = run_clrender("--help");
     const std::string doc = read_bytes(fs::path(CLRENDER_SOURCE_DIR) / "docs/command-line.md");
