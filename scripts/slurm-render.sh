@@ -53,6 +53,8 @@ while [ $# -gt 0 ]; do
 done
 [ $# -ge 1 ] || { usage; die "no scene file given"; }
 scene="$1"; shift
+# A scene named like an option (-s.json, given after --) reaches clrender as a path.
+case "$scene" in -*) scene="./$scene" ;; esac
 for number in tasks tiles; do
     value="${!number}"
     [ -z "$value" ] || [[ "$value" =~ ^[1-9][0-9]{0,5}$ ]] || die "--$number must be a whole number from 1, got '$value'"

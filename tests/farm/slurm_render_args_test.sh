@@ -271,5 +271,18 @@ run_farm_named --tiles 3 'demo/still%d#.json' --size 48x27 && run_tasks_here
 (cd "$work/run" && "$clrender" 'demo/still%d#.json' --size 48x27 -o one.png -q)
 cmp -s "$work/run/still%d#.png" "$work/run/one.png" || fail "a still named with a placeholder: the image differs: $(cat "$work/err.txt")"
 
+# A scene whose name starts with '-', given after '--': clrender is given it as a path, not as
+# an option, and the image is the one-process image.
+run_farm_dash() {
+    export FAKE_SLURM="$work/slurm"
+    rm -rf "$FAKE_SLURM" "$work/run"; mkdir -p "$FAKE_SLURM" "$work/run"
+    cp "$source_dir/scenes/demo/"* "$work/run/" && cp "$work/run/demo.json" "$work/run/-still.json"
+    (cd "$work/run" && bash "$source_dir/scripts/slurm-render.sh" "$@") >"$work/out.txt" 2>"$work/err.txt"
+}
+run_farm_dash --tiles 3 -- -still.json --size 48x27 -o out.png && run_tasks_here ||
+    fail "a scene named -still.json is submitted: $(cat "$work/err.txt")"
+(cd "$work/run" && "$clrender" ./-still.json --size 48x27 -o one.png -q)
+cmp -s "$work/run/out.png" "$work/run/one.png" || fail "a scene named -still.json: the image differs"
+
 [ $failures -eq 0 ] || { echo "$failures check(s) failed" >&2; exit 1; }
 echo "passed"
