@@ -21,7 +21,7 @@ bool equal_but_for_case(std::string_view a, std::string_view b) {
 MtlMiscasedStatement first_miscased_statement(std::string_view text) {
     constexpr std::array<std::string_view, 3> kStatementsRead{"newmtl", "Kd", "map_Kd"};
     MtlMiscasedStatement first;
-    for_each_keyword(text, [&](std::uint64_t line, std::string_view keyword) {
+    for_each_keyword(text, [&](std::uint64_t line, std::string_view keyword, std::string_view) {
         for (const std::string_view statement : kStatementsRead) {
             if (keyword == statement || !equal_but_for_case(keyword, statement)) continue;
             if (first.line != 0) {

@@ -276,18 +276,18 @@ std::string_view without_byte_order_mark(std::string_view text) {
     return text;
 }
 
-void for_each_keyword(std::string_view text, const std::function<void(std::uint64_t, std::string_view)>& visit) {
+void for_each_keyword(std::string_view text,
+                      const std::function<void(std::uint64_t, std::string_view, std::string_view)>& visit) {
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
-        if (const std::string_view keyword = keyword_of(line); !keyword.empty()) visit(number, keyword);
+        if (const std::string_view keyword = keyword_of(line); !keyword.empty()) visit(number, keyword, line);
         return true;
     });
 }
 
 void for_each_statement(std::string_view text, std::string_view keyword,
                         const std::function<void(std::uint64_t, std::string_view)>& visit) {
-    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
-        if (keyword_of(line) == keyword) visit(number, line);
-        return true;
+    for_each_keyword(text, [&](std::uint64_t number, std::string_view first_word, std::string_view line) {
+        if (first_word == keyword) visit(number, line);
     });
 }
 

@@ -76,8 +76,9 @@ constexpr double kMaxMaterialColor = 1e6;
 // kMaxMaterialColor. Returns the first problem (line 0: none).
 ObjTextProblem check_mtl_text(std::string_view text);
 
-// Calls `visit(line_number, keyword)` for each line of `text` that has a first word.
-void for_each_keyword(std::string_view text, const std::function<void(std::uint64_t, std::string_view)>& visit);
+// Calls `visit(line_number, keyword, line)` for each line of `text` that has a first word.
+void for_each_keyword(std::string_view text,
+                      const std::function<void(std::uint64_t, std::string_view, std::string_view)>& visit);
 
 // Calls `visit(line_number, line)` for each line of `text` whose first word is `keyword`.
 void for_each_statement(std::string_view text, std::string_view keyword,
