@@ -181,10 +181,13 @@ struct PlacementRounding {
     std::size_t changed = 0;
     std::size_t lost = 0;
 
-    void count(const ObjMesh& model, std::size_t f, const Vec3& scale, bool kept) {
+    // Counts triangle f of `model`, placed at `corners` (kept: it renders).
+    void count(const ObjMesh& model, std::size_t f, const Vec3& scale, const std::array<Vec3, 3>& corners, bool kept) {
         const auto& corner = model.triangles[f];
         const double most = std::max({moved[corner[0]], moved[corner[1]], moved[corner[2]]});
-        if (most == 0) return;
+        // Nearly every triangle moves far less than the tolerance: decided from its placed
+        // corners, without scaling it again (a mesh's load made 10% slower otherwise).
+        if (most == 0 || most <= 0.5 * kPlacementTolerance * longest_edge(corners)) return;
         std::array<Vec3, 3> scaled;
         for (int k = 0; k < 3; ++k) {
             const Vec3& p = model.positions[corner[k]];
@@ -255,7 +258,7 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const Node& filenam
         Triangle triangle;
         for (int k = 0; k < 3; ++k) triangle.corners[k] = placed[model.triangles[f][k]];
         const bool kept = renders_exactly_enough(triangle.corners);
-        rounding.count(model, f, mesh.scale, kept);
+        rounding.count(model, f, mesh.scale, triangle.corners, kept);
         if (!kept) continue;
         triangle.mesh = mesh_index;
         const auto& normal_indices = model.triangle_normals[f];
