@@ -59,21 +59,16 @@ ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, c
 
 namespace {
 
-// Whether corner p comes before corner q by x, then y, then z, compared as the kernel
-// compares the same floats.
-bool corner_before(const cl_float4& p, const cl_float4& q) {
-    return p.s[0] < q.s[0] || (p.s[0] == q.s[0] && (p.s[1] < q.s[1] || (p.s[1] == q.s[1] && p.s[2] < q.s[2])));
-}
-
-// ClrTriangle::edge_order of corners as stored: both triangles that share an edge find its
-// order from the same floats, so both compute its volume from the same corner first.
-cl_uint edge_order(const ClrTriangle& device) {
-    return (corner_before(device.corner2, device.corner1) ? 1u : 0u) |
-           (corner_before(device.corner0, device.corner2) ? 2u : 0u) |
-           (corner_before(device.corner1, device.corner0) ? 4u : 0u);
-}
-
 Vec3 xyz(const cl_float4& v) { return {v.s[0], v.s[1], v.s[2]}; }
+
+// ClrTriangle::longest_edge: each edge's |x| + |y| + |z| from the corners as stored, in double,
+// a millionth larger before it is rounded to float, so that no float sum the kernels could make
+// of the same corners exceeds it.
+cl_float longest_edge(const ClrTriangle& device) {
+    const Vec3 c0 = xyz(device.corner0), c1 = xyz(device.corner1), c2 = xyz(device.corner2);
+    const auto norm1 = [](const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); };
+    return static_cast<cl_float>(std::max({norm1(c1 - c0), norm1(c2 - c1), norm1(c0 - c2)}) * (1 + 1e-6));
+}
 
 // The plane's normal (c1 - c0) x (c2 - c0) of the corners as stored, into the corners' w:
 // the kernels decide the side of the plane by (c0 - o).n and d.n, as the reference finds t,
@@ -133,7 +128,7 @@ void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec
     device.corner0 = to_float4(triangle.corners[0] - origin);
     device.corner1 = to_float4(triangle.corners[1] - origin);
     device.corner2 = to_float4(triangle.corners[2] - origin);
-    device.edge_order = edge_order(device);
+    device.longest_edge = longest_edge(device);
     store_plane_normal(device);
     store_plane_offset(device, triangle, origin);
     device.flags = near_eye(triangle, origin) ? device.flags | CLR_SURFACE_NEAR_EYE : device.flags & ~CLR_SURFACE_NEAR_EYE;

@@ -2,12 +2,16 @@
 // lecture's formulas: the ray meets the triangle's plane at t = (c0 - o).n / d.n, and the
 // point P there has the barycentric coordinates of the orientation test
 // (((c_{i+1} - c_i) x (P - c_i)).n / n.n for each edge, counter-clockwise about n). Whether
-// the ray passes inside is decided by the sides of the edges as seen along the ray, the signed
-// volumes d.((p - o) x (q - o)) (the same sides: each is d.n times its coordinate), made so that
-// the triangle on the other side of a shared edge gets exactly the negated volume: a ray
-// through a shared edge is inside one of them. Each triangle's own orientation test rounds
-// in its own plane, and both neighbours could refuse a point on their edge (a crack).
+// the ray passes inside is decided by the sides of the edges as seen along the ray: each
+// corner, relative to the ray's origin, becomes a point of the plane across the ray, and each
+// edge's side is the exact sign of the 2D orientation of its two points (the same sides: each
+// is d.n times its coordinate). Every triangle around a vertex or an edge computes the same
+// points and signs, so a ray through a shared vertex or edge is inside one of them
+// (kernels/kinds/triangle_sides.cl decides the same way in float). Each triangle's own
+// orientation test rounds in its own plane, and both neighbours could refuse a point on their
+// edge (a crack).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "kinds/triangle_kind.h"
@@ -29,21 +33,49 @@ namespace {
 // (kernels/kinds/triangle.cl, whose float share is larger).
 constexpr double kSelfGap = 1e-9;
 
-// Whether corner p comes before corner q in the order that makes an edge's volume the same
-// operations in both triangles that share it: by x, then y, then z.
-bool corner_before(const Vec3& p, const Vec3& q) {
-    return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && p.z < q.z)));
+// Two unit vectors across the unit direction d, with across1 x across2 = d (Duff et al.'s
+// branchless basis, as the kernels make it).
+struct RayAcross {
+    Vec3 across1, across2;
+};
+
+RayAcross ray_across(const Vec3& d) {
+    const double sign = std::copysign(1.0, d.z);
+    const double a = -1.0 / (sign + d.z);
+    const double b = d.x * d.y * a;
+    return {{1.0 + sign * d.x * d.x * a, sign * b, -sign * d.x}, {b, sign + d.y * d.y * a, -d.y}};
 }
 
-// d.((p - o) x (q - o)) for the ray and the edge (p, q), computed as d.((s - o) x (t - s)) from
-// the corners in corner_before() order and negated for (q, p): the triangle on the other side
-// of the edge makes the same operations and negates them, so its value is exactly the negation.
-double edge_volume(const Vec3& p, const Vec3& q, const reference::Ray& ray) {
-    const bool negated = corner_before(q, p);
-    const Vec3& s = negated ? q : p;
-    const Vec3& t = negated ? p : q;
-    const double volume = dot(ray.direction, cross(s - ray.origin, t - s));
-    return negated ? -volume : volume;
+struct Across {
+    double x, y;
+};
+
+Across across_ray(const Vec3& corner, const RayAcross& across) {
+    return {dot(corner, across.across1), dot(corner, across.across2)};
+}
+
+// p.x q.y - p.y q.x with its sign exact: two products rounded each on its own keep their order,
+// so a difference that is not zero has the right sign; where it is zero, Kahan's difference of
+// products (each product's rounding exactly, by fused multiply-adds) decides. q, p gives exactly
+// the negation.
+double edge_orientation(const Across& p, const Across& q) {
+    const double difference = p.x * q.y - p.y * q.x;
+    if (difference != 0) return difference;
+    const double product = p.y * q.x;
+    return std::fma(p.x, q.y, -product) + std::fma(-p.y, q.x, product);
+}
+
+// Whether the ray passes inside the triangle: the three edges' orientations across the ray
+// have one sign, or are zero where it passes through an edge or a corner; one seen edge on
+// (all three zero) is not met. Each corner is taken relative to the origin once, the same
+// whichever triangle asks.
+bool passes_inside(const std::array<Vec3, 3>& c, const reference::Ray& ray) {
+    const RayAcross across = ray_across(ray.direction);
+    const Across a = across_ray(c[0] - ray.origin, across), b = across_ray(c[1] - ray.origin, across),
+                 cc = across_ray(c[2] - ray.origin, across);
+    const double u = edge_orientation(b, cc), v = edge_orientation(cc, a), w = edge_orientation(a, b);
+    const bool one_sign = (u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0);
+    return one_sign && !(u == 0 && v == 0 && w == 0);
 }
 
 reference::detail::TriangleTest test_triangle(const Triangle& triangle, const reference::Ray& ray) {
@@ -61,8 +93,7 @@ reference::detail::TriangleTest test_triangle(const Triangle& triangle, const re
     test.weights[0] = dot(cross(c[2] - c[1], p - c[1]), n) / area2;
     test.weights[1] = dot(cross(c[0] - c[2], p - c[2]), n) / area2;
     test.weights[2] = dot(cross(c[1] - c[0], p - c[0]), n) / area2;
-    const double u = edge_volume(c[1], c[2], ray), v = edge_volume(c[2], c[0], ray), w = edge_volume(c[0], c[1], ray);
-    test.inside = (u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0);
+    test.inside = passes_inside(c, ray);
     const double gap = kSelfGap * (std::fabs(ray.origin.x) + std::fabs(ray.origin.y) + std::fabs(ray.origin.z));
     test.ahead = test.t > gap;
     return test;

@@ -2,16 +2,15 @@
  * meets it, one ray and 16 at a time, its normal and its colour, as kinds/kinds.cl asks
  * every kind.
  *
- * The test is watertight: a ray through an edge that two triangles share hits at least one
- * of them, never neither (docs/scene-format.md, Meshes). Each edge's side test is the signed
- * volume d.((p - o) x (q - o)) of the ray and the edge's corners p, q relative to the ray's
- * origin o, computed as d.((s - o) x (t - s)) with the edge's corners in a fixed order (s
- * before t by x, then y, then z: edge_volume_normal()). The triangle on the other side of the edge makes the same
- * operations on the same corners and negates the result, which in IEEE arithmetic without
- * fused multiply-adds (common/math.cl) is exactly the negated value. So no rounding can put
- * the ray outside both triangles: either one of them sees it inside, or the value is exactly
- * zero and both do. The three volumes are also the hit's barycentric weights (Woop, Benthin
- * and Wald 2013 use the same edge functions, after a shear).
+ * The test is watertight: a ray through a vertex or an edge that triangles share hits at
+ * least one of them, never none (docs/scene-format.md, Meshes). Each edge's side is first the
+ * signed volume d.((p - o) x (q - o)) of the ray and the edge's corners p, q relative to the ray's
+ * origin o, computed as d.((p - o) x (q - p)) (edge_volume_normal()); the three volumes are also
+ * the hit's barycentric weights (Woop, Benthin and Wald 2013 use the same edge functions, after
+ * a shear). Each rounds on its own, so near zero their signs could leave a ray through a
+ * shared vertex or edge outside every triangle there; where a volume lies within its rounding
+ * of zero and the ray is outside as the volumes are, an exact test decides
+ * (kinds/triangle_sides.cl).
  *
  * The hit's t blends the corners' distances along the ray by those weights: a convex blend,
  * accurate even where the ray grazes a far triangle. Where the origin lies in the
@@ -37,6 +36,7 @@
 
 #include "common/math.cl"
 #include "common/scene_params.cl"
+#include "kinds/triangle_sides.cl"
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 #include "shared/clr_types.h"
@@ -160,24 +160,19 @@ real3 edge_cross(real3 p, real3 q)
 }
 
 /* X such that d.X is the volume d.((p - o) x (q - o)) of a ray from `origin` and the edge
- * (p, q), for every direction d, or its negation where `reversed`: (s - o) x (t - s) from the
- * edge's corners in the order of x, then y, then z ((q, p) where `reversed`, the bit of
- * ClrTriangle::edge_order that the host found from the same floats). The same vector
- * mathematically as (p - o) x (q - o), but without its products of the corners' distances
- * from o with each other: for a triangle a thousand times its size away those are a million
- * times its area, and their rounding swamped the volume (a far mesh's silhouette broke into
- * blocks). */
-real3 edge_volume_normal(real3 p, real3 q, bool reversed, real3 origin)
+ * (p, q), for every direction d: (p - o) x (q - p). The same vector mathematically as
+ * (p - o) x (q - o), but without its products of the corners' distances from o with each
+ * other: for a triangle a thousand times its size away those are a million times its area,
+ * and their rounding swamped the volume (a far mesh's silhouette broke into blocks). */
+real3 edge_volume_normal(real3 p, real3 q, real3 origin)
 {
-    real3 s = reversed ? q : p, t = reversed ? p : q;
-    return edge_cross(s - origin, t - s);
+    return edge_cross(p - origin, q - p);
 }
 
 /* d.((p - o) x (q - o)): see edge_volume_normal(). */
-real edge_volume(real3 p, real3 q, bool reversed, real3 origin, real3 direction)
+real edge_volume(real3 p, real3 q, real3 origin, real3 direction)
 {
-    real volume = dot3(edge_volume_normal(p, q, reversed, origin), direction);
-    return reversed ? -volume : volume;
+    return dot3(edge_volume_normal(p, q, origin), direction);
 }
 
 /* Distance along the unit direction to the triangle with t_min < t < t_max, or +inf. */
@@ -187,13 +182,16 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     real3 c0 = convert_real3(triangle->corner0.xyz);
     real3 c1 = convert_real3(triangle->corner1.xyz);
     real3 c2 = convert_real3(triangle->corner2.xyz);
-    uint order = triangle->edge_order;
-    real u = edge_volume(c1, c2, (order & 1u) != 0u, origin, direction); /* weight of corner 0 */
-    real v = edge_volume(c2, c0, (order & 2u) != 0u, origin, direction); /* weight of corner 1 */
-    real w = edge_volume(c0, c1, (order & 4u) != 0u, origin, direction); /* weight of corner 2 */
-    bool inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
+    real u = edge_volume(c1, c2, origin, direction); /* weight of corner 0 */
+    real v = edge_volume(c2, c0, origin, direction); /* weight of corner 1 */
+    real w = edge_volume(c0, c1, origin, direction); /* weight of corner 2 */
+    real longest = (real)triangle->longest_edge;
+    real bound = edge_volume_bound(norm1(k.a) + longest, longest);
     real det = u + v + w;
-    if (!inside || det == 0.0f)
+    EdgeSides sides = edge_sides(u, v, w, bound);
+    if (!sides.maybe || det == 0.0f)
+        return INFINITY;
+    if (!sides.inside && !triangle_exactly_inside(k.a, k.b, k.c, direction))
         return INFINITY;
     real3 n = triangle_plane_normal(triangle);
     bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
@@ -236,20 +234,18 @@ CLR_PACKET_INLINE void scale_weights16(mask16 hit, real16* u, real16* v, real16*
 }
 
 /* edge_volume() for 16 directions from one origin. */
-CLR_PACKET_INLINE real16 edge_volume16(real3 p, real3 q, bool reversed, real3 origin, Directions16 d)
+CLR_PACKET_INLINE real16 edge_volume16(real3 p, real3 q, real3 origin, Directions16 d)
 {
-    real16 volume = dot16(edge_volume_normal(p, q, reversed, origin), d);
-    return reversed ? -volume : volume;
+    return dot16(edge_volume_normal(p, q, origin), d);
 }
 
 /* edge_volume() for 16 rays from 16 origins, lane by lane the same operations. */
-CLR_PACKET_INLINE real16 edge_volume16_from(real3 p, real3 q, bool reversed, Points16 o, Directions16 d)
+CLR_PACKET_INLINE real16 edge_volume16_from(real3 p, real3 q, Points16 o, Directions16 d)
 {
-    real3 s = reversed ? q : p, e = (reversed ? p : q) - s;
-    real16 sx = s.x - o.x, sy = s.y - o.y, sz = s.z - o.z;
-    /* dot3(edge_cross(s - o, e), d) written out */
-    real16 volume = (sy * e.z - sz * e.y) * d.x + (sz * e.x - sx * e.z) * d.y + (sx * e.y - sy * e.x) * d.z;
-    return reversed ? -volume : volume;
+    real3 e = q - p;
+    real16 sx = p.x - o.x, sy = p.y - o.y, sz = p.z - o.z;
+    /* dot3(edge_cross(p - o, e), d) written out */
+    return (sy * e.z - sz * e.y) * d.x + (sz * e.x - sx * e.z) * d.y + (sx * e.y - sy * e.x) * d.z;
 }
 
 /* triangle_distance() for 16 rays from one origin (t_max = infinity): the edges' cross
@@ -260,15 +256,22 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     real3 c0 = convert_real3(triangle->corner0.xyz);
     real3 c1 = convert_real3(triangle->corner1.xyz);
     real3 c2 = convert_real3(triangle->corner2.xyz);
-    uint order = triangle->edge_order;
-    real16 u = edge_volume16(c1, c2, (order & 1u) != 0u, origin, d);
-    real16 v = edge_volume16(c2, c0, (order & 2u) != 0u, origin, d);
-    real16 w = edge_volume16(c0, c1, (order & 4u) != 0u, origin, d);
-    mask16 inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
+    real16 u = edge_volume16(c1, c2, origin, d);
+    real16 v = edge_volume16(c2, c0, origin, d);
+    real16 w = edge_volume16(c0, c1, origin, d);
+    real longest = (real)triangle->longest_edge;
+    real16 bound = (real16)(edge_volume_bound(norm1(k.a) + longest, longest));
     real16 det = u + v + w;
-    mask16 hit = inside && det != 0.0f;
+    EdgeSides16 sides = edge_sides16(u, v, w, bound);
+    mask16 hit = sides.maybe && det != 0.0f;
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
+    if (any_lanes16(hit && !sides.inside)) {
+        hit = hit && (sides.inside ||
+                      exactly_inside16(uniform_points16(k.a), uniform_points16(k.b), uniform_points16(k.c), d));
+        if (!any_lanes16(hit))
+            return (real16)(INFINITY);
+    }
     real3 n = triangle_plane_normal(triangle);
     bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
     PlaneOffset plane = near_eye ? triangle_offset(triangle, k.a, n, origin) : (PlaneOffset){dot3(k.a, n), 0.0f};
@@ -307,15 +310,24 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     real16 ax = c0.x - o.x, ay = c0.y - o.y, az = c0.z - o.z;
     real16 bx = c1.x - o.x, by = c1.y - o.y, bz = c1.z - o.z;
     real16 cx = c2.x - o.x, cy = c2.y - o.y, cz = c2.z - o.z;
-    uint order = triangle->edge_order;
-    real16 u = edge_volume16_from(c1, c2, (order & 1u) != 0u, o, d);
-    real16 v = edge_volume16_from(c2, c0, (order & 2u) != 0u, o, d);
-    real16 w = edge_volume16_from(c0, c1, (order & 4u) != 0u, o, d);
-    mask16 inside = (u >= 0.0f && v >= 0.0f && w >= 0.0f) || (u <= 0.0f && v <= 0.0f && w <= 0.0f);
+    real16 u = edge_volume16_from(c1, c2, o, d);
+    real16 v = edge_volume16_from(c2, c0, o, d);
+    real16 w = edge_volume16_from(c0, c1, o, d);
+    /* each lane's reach bounded by corner 0's from the eye, the longest edge and the origin's */
+    real longest = (real)triangle->longest_edge;
+    real16 reach = (norm1(c0) + longest) + (fabs(o.x) + fabs(o.y) + fabs(o.z));
+    real16 bound = edge_volume_bound16(reach, longest);
     real16 det = u + v + w;
-    mask16 hit = inside && det != 0.0f;
+    EdgeSides16 sides = edge_sides16(u, v, w, bound);
+    mask16 hit = sides.maybe && det != 0.0f;
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
+    if (any_lanes16(hit && !sides.inside)) {
+        Points16 a = {ax, ay, az}, b = {bx, by, bz}, c = {cx, cy, cz};
+        hit = hit && (sides.inside || exactly_inside16(a, b, c, d));
+        if (!any_lanes16(hit))
+            return (real16)(INFINITY);
+    }
     real3 n = triangle_plane_normal(triangle);
     bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
     real16 offset = ax * n.x + ay * n.y + az * n.z, offset_error = (real16)(0.0f);

@@ -46,7 +46,7 @@
     CLR_LAYOUT_FIELD(ClrTriangle, flags)            \
     CLR_LAYOUT_FIELD(ClrTriangle, normals)          \
     CLR_LAYOUT_FIELD(ClrTriangle, material)         \
-    CLR_LAYOUT_FIELD(ClrTriangle, edge_order)       \
+    CLR_LAYOUT_FIELD(ClrTriangle, longest_edge)     \
     CLR_LAYOUT_STRUCT(ClrPlane)                     \
     CLR_LAYOUT_FIELD(ClrPlane, point)               \
     CLR_LAYOUT_FIELD(ClrPlane, normal)              \

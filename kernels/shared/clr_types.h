@@ -112,10 +112,9 @@ typedef struct {
     clr_uint flags;     /* CLR_SURFACE_* */
     clr_int normals;    /* first of its three corner normals in triangle_normals, or -1 */
     clr_uint material;  /* its mesh's Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */
-    /* Bit k (k = 0, 1, 2) set where edge k, (c1, c2), (c2, c0), (c0, c1), has its second corner
-     * first in the order of x, then y, then z of corner0..2 as stored: edge_volume() in
-     * kernels/kinds/triangle.cl reverses such an edge. */
-    clr_uint edge_order;
+    /* The largest |x| + |y| + |z| of its edges as stored, rounded up: what bounds its edge
+     * volumes' rounding (kernels/kinds/triangle_sides.cl). */
+    clr_float longest_edge;
 } ClrTriangle;
 
 /* An infinite plane through `point` with unit normal `normal`, seen from both sides. Planes
