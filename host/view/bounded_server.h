@@ -12,6 +12,8 @@
 //     cpp-httplib would take that body for the next request;
 //   - sends every answer whole, ignoring a Range header (cpp-httplib would build a part for
 //     each range in memory);
+//   - sends each piece of an answer at once (TCP_NODELAY): the head and the body are written
+//     apart, and the body waited for the client's delayed acknowledgement of the head (40 ms);
 //   - closes a connection that has not started its next request within kIdleWhileOthersWait
 //     (from its acceptance, or from its last answer) while other connections wait for a
 //     thread: cpp-httplib's pool queues connections without bound, and each connection that
