@@ -36,8 +36,15 @@ function clrenderAddress(path, token, params = {}) {
 }
 
 // The text of a failed response: the server answers errors as JSON {"error": ...} or text.
+// Its 403 says nothing (to a foreign page): to the page itself it means that the page's token is
+// not the viewer's, the viewer having been started again (with a new token) since the page was
+// opened. "403: Forbidden" alone read as a refusal of the camera.
+const clrenderForbiddenText = "403: the viewer does not take this page's requests: it was started again since " +
+                              "the page was opened (each start has a new token); open the address it printed last";
+
 async function clrenderErrorText(response) {
   const text = await response.text();
+  if (response.status === 403 && !text.trim()) return clrenderForbiddenText;
   try {
     const parsed = JSON.parse(text);
     if (parsed && parsed.error) {
@@ -173,8 +180,8 @@ class ClrenderLiveView {
         // Not asked again until the camera changes: a refused camera stays refused, and a
         // stopped server would only be asked in a tight loop.
         this.failedVersion = version;
-        this.onError(error instanceof TypeError
-          ? "clrender view does not answer (has it stopped?)" : `the server refused this view: ${error.message}`);
+        this.onError(error instanceof TypeError ? "clrender view does not answer (has it stopped?)"
+          : error.forbidden ? error.message : `the server refused this view: ${error.message}`);
       }
     } finally {
       this.inFlight = null;
@@ -187,6 +194,7 @@ class ClrenderLiveView {
   // it gives (taken as a refusal, the view stayed unsharpened until the camera moved).
   async failure(response) {
     const error = new Error(await clrenderErrorText(response));
+    error.forbidden = response.status === 403;  // the page's, not this camera's
     const seconds = Number(response.headers.get("Retry-After"));
     if (response.status === 503 && seconds > 0) error.retryAfterMs = Math.min(seconds, 60) * 1000;
     return error;

@@ -16,6 +16,9 @@ const frame = () => new Response(new Uint8Array(2 * 2 * 4),
 const busy = () => new Response('{"error": "frames of 400 MiB are still being sent to other clients"}',
                                 { status: 503, headers: { "Retry-After": "1" } });
 const refused = () => new Response('{"error": "fov must be between 0 and 180", "parameter": "fov"}', { status: 400 });
+// The server's 403: no body, as it answers a wrong token (a viewer started again since the page
+// was opened) or a foreign Host.
+const forbidden = () => new Response(null, { status: 403, statusText: "Forbidden" });
 
 // Starts a live view whose server gives `answers` in turn; after `ms`, the requests it made and
 // whether a frame is on the canvas.
@@ -47,6 +50,14 @@ function run(answers, ms) {
   const refusal = await run([refused], 1600);
   check(refusal.asked.length === 1 && !refusal.shown, `a refused view asked ${refusal.asked.length} times, not once`);
   check(refusal.errors.length === 1 && refusal.errors[0].includes("400 (fov)"), `the refusal shown: ${refusal.errors}`);
+
+  // A 403 is the page's token or address, not the camera: the message says what to do, and is
+  // not "the server refused this view: 403: Forbidden".
+  const stale = await run([forbidden], 300);
+  check(stale.asked.length === 1 && !stale.shown, `a forbidden view asked ${stale.asked.length} times, not once`);
+  check(stale.errors.length === 1 && stale.errors[0].startsWith("403: ") &&
+        stale.errors[0].includes("open the address it printed") && !stale.errors[0].includes("refused this view"),
+        `the 403 shown: ${stale.errors}`);
 
   if (failures) process.exit(1);
   console.log("live view: every check held");
