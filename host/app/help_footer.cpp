@@ -32,6 +32,8 @@ Environment:
                              whose end stops the render (SIGTERM)
   CLRENDER_LINKS_REPLACED    Set by clrender view for its video's render (1): a symbolic link
                              at an output's name is replaced, not written through
+  CLRENDER_SCENE_ON_STDIN    Set by clrender view for its video's render (1): the scene's text
+                             is read from standard input; its path only names it
 
 Exit status:
   0    Done

@@ -628,7 +628,17 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
 }
 
 Scene load_scene(const std::string& path, const LoadOptions& options) {
-    return parse_scene(read_scene_text(path), path, options);
+    const char* on_stdin = std::getenv(kSceneOnStdinVariable);
+    if (on_stdin == nullptr || std::string(on_stdin) != "1") return parse_scene(read_scene_text(path), path, options);
+    std::string text;
+    try {
+        text = read_bounded_file("/proc/self/fd/0", kMaxSceneFileBytes);
+    } catch (const BoundedFileError& error) {
+        throw SceneError(printable(path), "",
+                         std::string("cannot read the scene from standard input (") + kSceneOnStdinVariable +
+                             "=1): " + printable(error.what()));
+    }
+    return parse_scene(text, path, options);
 }
 
 }  // namespace clr

@@ -17,6 +17,12 @@ namespace clr {
 // parsed document takes several times its text in memory.
 constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(64) << 20;
 
+// Set ("1") by `clrender view` for the render of its video: load_scene() reads the scene's text
+// from standard input, where the viewer hands over the text it wrote and checked, and the path
+// only names the scene (in messages). Read by its name, the file was whatever another program
+// writing into --output-dir had put there meanwhile.
+inline constexpr const char* kSceneOnStdinVariable = "CLRENDER_SCENE_ON_STDIN";
+
 struct LoadOptions {
     // Render a placeholder image (see make_placeholder_image) for a billboard image that is
     // missing or unreadable, with a warning, instead of failing.
@@ -49,8 +55,9 @@ struct LoadOptions {
     std::optional<std::uint64_t> mesh_memory_budget;
 };
 
-// Reads and validates the scene file at `path`. Relative image paths are resolved against
-// the scene file's folder. Throws SceneError.
+// Reads and validates the scene file at `path` (its text from standard input under
+// kSceneOnStdinVariable). Relative image paths are resolved against the scene file's folder.
+// Throws SceneError.
 Scene load_scene(const std::string& path, const LoadOptions& options = {});
 
 // The same for scene text already in memory; `path` names it in messages and anchors

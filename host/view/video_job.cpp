@@ -1,6 +1,7 @@
 #include "view/video_job.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include "core/stop_with_parent.h"
 #include "output/child_process.h"
 #include "output/output_target.h"
+#include "scene/scene_loader.h"
 
 namespace clr {
 
@@ -32,6 +34,31 @@ namespace {
 // A path as the render's command line must get it: one that begins with '-' (under an
 // --output-dir named "-out") would be read as an option, so it is given as "./-out/...".
 std::string never_an_option(const std::string& path) { return !path.empty() && path[0] == '-' ? "./" + path : path; }
+
+// A file in memory that holds `text` and can no longer change (sealed), for the render's
+// standard input: the scene the viewer wrote and checked, whatever happens to its file in
+// --output-dir meanwhile (another program that may write there renamed a scene of its own over
+// it, and the render, which read it by name, rendered that into the video).
+int sealed_text(const std::string& text) {
+    const int file = ::memfd_create("clrender-video-scene", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+    if (file < 0) throw OutputError(std::string("cannot hand the scene to the video render: ") + std::strerror(errno));
+    for (std::size_t written = 0; written < text.size();) {
+        const ssize_t now = ::write(file, text.data() + written, text.size() - written);
+        if (now < 0 && errno == EINTR) continue;
+        if (now <= 0) {
+            const int error = errno;
+            ::close(file);
+            throw OutputError(std::string("cannot hand the scene to the video render: ") + std::strerror(error));
+        }
+        written += static_cast<std::size_t>(now);
+    }
+    if (::fcntl(file, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL) != 0) {
+        const int error = errno;
+        ::close(file);
+        throw OutputError(std::string("cannot hand the scene to the video render: ") + std::strerror(error));
+    }
+    return file;
+}
 
 }  // namespace
 
@@ -52,7 +79,8 @@ std::optional<VideoJobs::Place> VideoJobs::reserve() {
     return Place(*this);
 }
 
-int VideoJobs::start(Place&& place, const std::string& scene_path, const std::string& video_path) {
+int VideoJobs::start(Place&& place, const std::string& scene_path, const std::string& scene_text,
+                     const std::string& video_path) {
     std::lock_guard<std::mutex> lock(mutex_);
     place.owner_ = nullptr;  // taken here: the job runs, or the render could not start
     reserved_ = false;
@@ -61,24 +89,32 @@ int VideoJobs::start(Place&& place, const std::string& scene_path, const std::st
     std::vector<std::string> arguments{clrender_program_path(), never_an_option(scene_path), "--video",
                                        never_an_option(video_path), "--progress", "json", "-q"};
     arguments.insert(arguments.end(), render_arguments_.begin(), render_arguments_.end());
+    const int scene = sealed_text(scene_text);
     int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) throw OutputError(std::string("cannot create a pipe for the video render: ") + std::strerror(errno));
+    if (::pipe2(fds, O_CLOEXEC) != 0) {
+        const int error = errno;
+        ::close(scene);
+        throw OutputError(std::string("cannot create a pipe for the video render: ") + std::strerror(error));
+    }
     // The render is started by the thread that watches it, which ends only once the render has
     // been reaped: the render stops when the thread that started it ends (stop_with_parent.h),
     // which is then when the viewer's process ends, killed outright too, and never before.
     std::promise<std::exception_ptr> started;
     std::future<std::exception_ptr> start_result = started.get_future();
-    watcher_ = std::thread([this, arguments, fds, started = std::move(started)]() mutable {
+    watcher_ = std::thread([this, arguments, fds, scene, started = std::move(started)]() mutable {
         try {
-            child_ = std::make_unique<ChildProcess>(arguments, -1, -1, fds[1], kOwnProgram,
-                                                    std::vector<std::string>{stop_with_parent_entry(),
-                                                                             std::string(kLinksReplacedVariable) + "=1"});
+            const std::vector<std::string> environment{stop_with_parent_entry(),
+                                                       std::string(kLinksReplacedVariable) + "=1",
+                                                       std::string(kSceneOnStdinVariable) + "=1"};
+            child_ = std::make_unique<ChildProcess>(arguments, scene, -1, fds[1], kOwnProgram, environment);
         } catch (...) {
+            ::close(scene);
             ::close(fds[0]);
             ::close(fds[1]);
             started.set_value(std::current_exception());
             return;
         }
+        ::close(scene);
         ::close(fds[1]);
         started.set_value(nullptr);
         watch(fds[0]);

@@ -50,9 +50,12 @@ public:
     // The place for a video; nullopt while another renders or holds its place.
     std::optional<Place> reserve();
 
-    // Starts rendering `scene_path` to `video_path` in `place`; returns the job's id. Throws
-    // OutputError when the render cannot start (the place is given back).
-    int start(Place&& place, const std::string& scene_path, const std::string& video_path);
+    // Starts rendering `scene_path`, whose text is `scene_text`, to `video_path` in `place`;
+    // returns the job's id. The render is handed the text (kSceneOnStdinVariable), not the
+    // file's name to read again. Throws OutputError when the render cannot start (the place is
+    // given back).
+    int start(Place&& place, const std::string& scene_path, const std::string& scene_text,
+              const std::string& video_path);
 
     // The job's state; nullopt for an id that names no job.
     std::optional<VideoJobState> state(int id) const;

@@ -262,7 +262,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             const ExportedScene exported = session.exporter.export_keys(keys, {".mp4"});
             const std::string video = session.exporter.output_dir() + "/" + exported.name + ".mp4";
             session.exporter.check_output("video", video);
-            const int job = session.videos.start(std::move(*place), exported.path, video);
+            const int job = session.videos.start(std::move(*place), exported.path, exported.text, video);
             send_json(response, 200, {{"job", job},
                                       {"file", shown_name(video)},
                                       {"scene", shown_name(exported.path)},

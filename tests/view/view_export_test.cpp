@@ -645,6 +645,40 @@ TEST(ViewExport, AVideoStopsWhenTheViewerIsKilled) {
     expect_only_the_long_videos_scene(folder);
 }
 
+// Another program that may write into --output-dir (a shared folder) renames a scene of its own
+// over the video's exported scene as soon as the viewer has written it: the render read the scene
+// by its name and rendered the other one (31 frames here) into the video, job done. The render is
+// handed the text the viewer wrote and checked (CLRENDER_SCENE_ON_STDIN), not the name.
+TEST(ViewExport, AVideoRendersTheSceneTheViewerWroteNotOneRenamedOverIt) {
+    TempFolder folder;
+    folder.write(".other.json", R"({"up": [0, 1, 0], "fov_angle": 60, "width": 32, "height": 18, "spheres": [],
+        "eyeLocations": [[0, 0, 5], [0, 0, 6]], "lookatLocations": [[0, 0, 0], [0, 0, 0]],
+        "clrender": {"frames_per_segment": 30}})");
+    ViewerProcess viewer("'" + kDemo + "demo.json' --size 32x18", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    std::atomic<bool> swapped{false};
+    std::thread other_program([&] {
+        const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        while (std::chrono::steady_clock::now() < give_up) {
+            if (fs::exists(folder.file("tour.json"))) {
+                fs::rename(folder.file(".other.json"), folder.file("tour.json"));
+                swapped = true;
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+    });
+    const httplib::Result started = post(viewer, "/render-video", kTwoKeys);
+    other_program.join();
+    ASSERT_TRUE(started);
+    ASSERT_EQ(started->status, 200) << started->body;
+    ASSERT_TRUE(swapped) << "the scene was never renamed over: the test tested nothing";
+    const json state = finished_job(viewer, json::parse(started->body)["job"].get<int>());
+    EXPECT_EQ(state["state"], "done") << state.dump();
+    EXPECT_EQ(state["total"], 11) << "frames of the scene the viewer wrote (31: the other one's)";
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+}
+
 // Clicks on "Render video" while a video is being started or rendered are refused (409) before
 // they write anything: four at once leave one scene, the video's.
 TEST(ViewExport, ARefusedVideoWritesNothing) {
