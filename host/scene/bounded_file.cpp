@@ -78,8 +78,14 @@ Bytes read_bounded(const std::string& path, std::uint64_t max_bytes) {
     // nothing for a regular file, the only kind read.
     const FileDescriptor file(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY));
     if (file.get() < 0) {
-        if (errno == ENOENT) throw BoundedFileError("no such file");
-        throw BoundedFileError(std::string("cannot open: ") + std::strerror(errno));
+        const int error = errno;
+        if (error == ENOENT) throw BoundedFileError("no such file");
+        // A socket cannot be opened at all (ENXIO, "No such device or address", as for a
+        // device without its driver), though it is there: it is named for what it is.
+        struct stat status {};
+        if (::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) && !S_ISDIR(status.st_mode))
+            throw BoundedFileError(kind_of(status.st_mode));
+        throw BoundedFileError(std::string("cannot open: ") + std::strerror(error));
     }
     struct stat status {};
     if (::fstat(file.get(), &status) != 0) throw BoundedFileError(std::string("cannot read: ") + std::strerror(errno));

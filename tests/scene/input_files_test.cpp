@@ -3,7 +3,9 @@
 // memory, and with a message that says what the file is.
 #include <gtest/gtest.h>
 
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -99,6 +101,28 @@ TEST(InputFiles, FifoAsAnImageIsRefused) {
         }
         return false;
     }));
+}
+
+// A socket cannot be opened (ENXIO: "No such device or address", which said nothing of the
+// file that is there): it is named for what it is, as a FIFO or a device is.
+TEST(InputFiles, ASocketIsNamedAsSuch) {
+    TempFolder folder;
+    const std::string path = folder.file("scene.json");
+    const int listener = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    ASSERT_GE(listener, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    ASSERT_LT(path.size(), sizeof address.sun_path);
+    path.copy(address.sun_path, path.size());
+    ASSERT_EQ(::bind(listener, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+    EXPECT_TRUE(scene_fails_with(path, "cannot read scene file: it is a socket, not a regular file"));
+    try {
+        read_bounded_file(path, 1 << 20);
+        ADD_FAILURE() << "a socket read as a file";
+    } catch (const BoundedFileError& error) {
+        EXPECT_STREQ(error.what(), "it is a socket, not a regular file");
+    }
+    ::close(listener);
 }
 
 TEST(InputFiles, ReadsUpToTheLimitAndNoFurther) {
