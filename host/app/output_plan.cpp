@@ -172,6 +172,7 @@ void add_scene_inputs(const Scene& scene, OutputRoles& roles) {
         if (mesh.material_paths && listed.insert(mesh.material_paths.get()).second)
             for (const std::string& material : *mesh.material_paths) roles.add_input("mesh material", material);
     }
+    for (const std::string& texture : scene.mesh_texture_paths) roles.add_input("mesh texture", texture);
 }
 
 std::string OutputPlan::image_path(int frame) const {

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -383,6 +384,21 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     // spellings of one .mtl copied for each of 300 placements took 4.4 GB, and the output check
     // 88 s to look at every name of every copy.
     std::map<ModelKey, std::shared_ptr<const std::vector<std::string>>> material_lists;
+    // The textures that each .mtl file names, listed in the scene once for every OBJ file and
+    // every name that reach it (.mtl files told apart by their identity and their folder's, as
+    // models are): 500 OBJ files naming one library of 10,000 materials list its textures once.
+    std::set<ModelKey> textures_listed;
+    std::set<std::string> texture_paths;
+    const auto list_textures = [&](const std::vector<std::string>& material_files) {
+        for (const std::string& material : material_files) {
+            if (!textures_listed.insert(model_key(material)).second) continue;
+            const fs::path folder = fs::path(material).parent_path();
+            for (const std::string& name : materials.read(material)->texture_files) {
+                std::string texture = fs::path(name).is_absolute() ? name : (folder / name).string();
+                if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
+            }
+        }
+    };
     // A file that cannot be read, for its later placements (a placeholder each, with
     // --placeholders): 40 placements of a broken 50 MB OBJ read it 40 times.
     std::map<ModelKey, ObjError> failed;
@@ -427,7 +443,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             model = &read;
             mesh.placeholder = true;
             std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
-            if (!list) list = std::make_shared<const std::vector<std::string>>(error.material_files);
+            if (!list) {
+                list = std::make_shared<const std::vector<std::string>>(error.material_files);
+                list_textures(*list);
+            }
             mesh.material_paths = list;
             // A placement the cube cannot take must still say why there is a cube at all.
             what = "the placeholder cube for " + what + " (" + problem + ")";
@@ -439,7 +458,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         mesh.path = path;
         if (!mesh.placeholder) {
             std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
-            if (!list) list = std::make_shared<const std::vector<std::string>>(model->mesh.material_files);
+            if (!list) {
+                list = std::make_shared<const std::vector<std::string>>(model->mesh.material_files);
+                list_textures(*list);
+            }
             mesh.material_paths = list;
         }
         if (!each.ambient_given)

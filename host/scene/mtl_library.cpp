@@ -33,6 +33,7 @@ MtlFileRead read_mtl_file(const std::string& path) {
     file.texture_maps = diffuse_texture_maps(text);
     file.miscased = first_miscased_statement(text);
     file.materials = read_mtl_materials(mtl_statements_used(text), file.problem);
+    if (file.problem.empty() && file.materials.count <= kMaxObjMaterials) file.texture_files = mtl_texture_files(text);
     return file;
 }
 
@@ -43,6 +44,7 @@ std::uint64_t bytes_held(const MtlFileRead& file) {
         bytes += sizeof(MtlDefinition) + 3 * (definition.name.size() + 64);  // with `defined` and `first`
     for (const auto& [name, map] : file.texture_maps) bytes += name.size() + map.statement.size() + 96;
     bytes += file.miscased.written.size() + file.miscased.meant.size();
+    for (const std::string& name : file.texture_files) bytes += name.size() + 32;
     return bytes;
 }
 

@@ -521,6 +521,40 @@ MtlMaterials read_mtl_materials(const std::string& used, std::string& problem) {
     return read;
 }
 
+std::vector<std::string> mtl_texture_files(std::string_view text) {
+    // Each statement LoadMtl reads a texture from, and the texture of the material it sets
+    // (`map_bump`, `map_Bump` and `bump` set one, `map_disp`, `map_Disp` and `disp` another).
+    static constexpr std::pair<std::string_view, int> kTextures[] = {
+        {"map_Ka", 0},  {"map_Kd", 1},  {"map_Ks", 2},   {"map_Ns", 3},   {"map_bump", 4}, {"map_Bump", 4},
+        {"bump", 4},    {"map_d", 5},   {"map_disp", 6}, {"map_Disp", 6}, {"disp", 6},     {"refl", 7},
+        {"map_Pr", 8},  {"map_Pm", 9},  {"map_Ps", 10},  {"map_Ke", 11},  {"norm", 12}};
+    std::vector<std::string> names;  // each slot's name, in the order of the slots' first statements
+    std::map<std::pair<std::uint64_t, int>, std::size_t> slots;  // (material, texture): its slot in `names`
+    std::uint64_t material = 0;
+    for_each_keyword(text, [&](std::uint64_t, std::string_view keyword, std::string_view line) {
+        if (keyword == "newmtl") ++material;
+        const auto texture = std::find_if(std::begin(kTextures), std::end(kTextures),
+                                          [&](const auto& statement) { return statement.first == keyword; });
+        if (texture == std::end(kTextures)) return;
+        // The rest of the line, without the trailing blanks LoadMtl trims, read up to a NUL.
+        std::string rest(line.substr(line.find(keyword) + keyword.size()));
+        while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.pop_back();
+        std::string name;
+        tinyobj::texture_option_t options;
+        if (!tinyobj::ParseTextureNameAndOption(&name, &options, rest.c_str()) || name.empty()) return;
+        const auto [slot, added] = slots.try_emplace({material, texture->second}, names.size());
+        if (added)
+            names.push_back(std::move(name));
+        else
+            names[slot->second] = std::move(name);  // LoadMtl keeps the last
+    });
+    std::vector<std::string> files;
+    std::unordered_set<std::string> listed;
+    for (std::string& name : names)
+        if (listed.insert(name).second) files.push_back(std::move(name));
+    return files;
+}
+
 ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) throw ObjError(encoding);
     ObjTextProblem problem;

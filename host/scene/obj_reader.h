@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/sha256.h"
@@ -92,6 +93,13 @@ ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::num
 
 class MtlLibrary;
 struct MtlMaterials;
+
+// The image files the texture statements of a .mtl text name (`map_Kd`, `map_Ks`, `bump`, `norm`,
+// ... every one tinyobjloader's LoadMtl reads), each as the file writes it, in the order of their
+// first statement: the name LoadMtl keeps for each kind of texture of each material (its last
+// such statement; "map_Kd -s 1 1 1 wood.png" names "wood.png"). clrender draws none of them, but
+// they are the model's files, which no output may replace.
+std::vector<std::string> mtl_texture_files(std::string_view text);
 
 // The materials of a .mtl's used statements (mtl_statements_used) as tinyobjloader's LoadMtl
 // reads them, with the `newmtl` statements that define a name again; `problem` says where the

@@ -208,6 +208,10 @@ struct Scene {
     // its last line: what --check and --strict report.
     std::size_t warning_count = 0;
     std::vector<ImageFileInfo> image_files;  // each distinct image file shown, once
+    // The image files that the meshes' .mtl files name as textures (`map_Kd`, `bump`, ...),
+    // relative to their .mtl's folder, each once: never read, but the models' own files, which no
+    // output may replace.
+    std::vector<std::string> mesh_texture_paths;
 
     // Sun lighting applies when a sun is given and OnlyAmbient is not 1 (docs/scene-format.md,
     // Conventions: Lighting and shadows).

@@ -108,6 +108,8 @@ void PathExporter::check_output(const std::string& role, const std::string& path
             for (const std::string& material : *mesh.material_paths)
                 roles.add_input("mesh material '" + material + "'", material);
     }
+    for (const std::string& texture : scene_.mesh_texture_paths)
+        roles.add_input("mesh texture '" + texture + "'", texture);
     roles.add_output(role, path);
 }
 

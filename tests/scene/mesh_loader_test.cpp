@@ -445,6 +445,34 @@ TEST(MeshLoader, PlaceholdersKeepTheFilesTheyStandInForAsInputs) {
     EXPECT_TRUE(scene.meshes[1].material_paths->empty());
 }
 
+// The image files a model's .mtl names as textures are never read, but they are the model's:
+// exported as table.obj, table.mtl and table.png beside a scene table.json, the default output
+// table.png replaced the texture. Each file a material keeps (the last statement of each kind,
+// as tinyobjloader reads it, past its options) is an input no output may replace, relative to
+// the .mtl's folder, listed once for the scene however many OBJ files and names reach the .mtl.
+TEST(MeshLoader, TheTexturesItsMtlNamesAreInputsNoOutputMayReplace) {
+    TempFolder folder;
+    fs::create_directories(folder.file("model/tex"));
+    const std::string elsewhere = folder.file("spec.png");
+    const std::string faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    folder.write("model/table.obj", "mtllib table.mtl\nusemtl wood\n" + faces);
+    folder.write("model/chair.obj", "mtllib ./table.mtl tex/../table.mtl\nusemtl metal\n" + faces);
+    folder.write("model/table.mtl", "newmtl wood\nKd 0.6 0.4 0.2\nmap_Kd old.png\nmap_Kd -s 1 1 1 -clamp on table.png\n"
+                                    "bump tex/bump.png\t\nnewmtl metal\nKd 0.5 0.5 0.5\nmap_Ks " +
+                                        elsewhere + "\nnorm tex/bump.png\nmap_Kd\n");
+    const Scene scene = load_in(folder, with_obj(Json::array({{{"filename", "model/table.obj"}},
+                                                              {{"filename", "model/chair.obj"}},
+                                                              {{"filename", "model/table.obj"}, {"position", {2, 0, 0}}}})));
+    ASSERT_EQ(scene.meshes.size(), 3u);
+    EXPECT_EQ(scene.mesh_texture_paths,
+              (std::vector<std::string>{folder.file("model/table.png"), folder.file("model/tex/bump.png"), elsewhere}));
+    for (const std::string& texture : {"model/table.png", "model/tex/bump.png", "spec.png"}) {
+        OutputRoles roles;
+        add_scene_inputs(scene, roles);
+        EXPECT_THROW(roles.add_output("image", folder.file(texture)), OutputError) << texture << " is an input";
+    }
+}
+
 // A placement that even the cube cannot take says why the cube is there: the file's problem.
 TEST(MeshLoader, APlaceholderOutOfRangeNamesTheFilesProblem) {
     TempFolder folder;
