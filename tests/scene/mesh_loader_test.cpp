@@ -466,7 +466,7 @@ TEST(MeshLoader, TheTexturesItsMtlNamesAreInputsNoOutputMayReplace) {
     ASSERT_EQ(scene.meshes.size(), 3u);
     EXPECT_EQ(scene.mesh_texture_paths,
               (std::vector<std::string>{folder.file("model/table.png"), folder.file("model/tex/bump.png"), elsewhere}));
-    for (const std::string& texture : {"model/table.png", "model/tex/bump.png", "spec.png"}) {
+    for (const char* texture : {"model/table.png", "model/tex/bump.png", "spec.png"}) {
         OutputRoles roles;
         add_scene_inputs(scene, roles);
         EXPECT_THROW(roles.add_output("image", folder.file(texture)), OutputError) << texture << " is an input";
