@@ -139,15 +139,19 @@
 
   function wireInput(sceneCamera, frames) {
     // Drag: orbit (a quarter turn across 300 CSS pixels). A press without movement is a click.
+    // One pointer drags: a second finger (a pinch) or a pen while it is down is left out. It had
+    // taken the drag over, and the first drag's hold of the view was never given back: the view
+    // stayed at 1 sample per pixel, "moving", until the page was loaded again.
     let drag = null;
     canvas.addEventListener("pointerdown", (event) => {
-      if (event.button !== 0) return;
+      if (event.button !== 0 || drag) return;
       canvas.setPointerCapture(event.pointerId);
       canvas.focus();
-      drag = { x: event.clientX, y: event.clientY, startX: event.clientX, startY: event.clientY, moved: false };
+      drag = { id: event.pointerId, x: event.clientX, y: event.clientY, startX: event.clientX, startY: event.clientY,
+               moved: false };
     });
     canvas.addEventListener("pointermove", (event) => {
-      if (!drag) return;
+      if (!drag || event.pointerId !== drag.id) return;
       const dx = event.clientX - drag.x, dy = event.clientY - drag.y;
       if (!drag.moved && Math.hypot(event.clientX - drag.startX, event.clientY - drag.startY) < 4) return;
       if (!drag.moved) { drag.moved = true; live.hold(); }
@@ -157,7 +161,7 @@
       api.setCamera(ClrenderCamera.orbit(live.camera, -dx * perPixel, -dy * perPixel), null, event.timeStamp);
     });
     const endDrag = (event, cancelled) => {
-      if (!drag) return;
+      if (!drag || event.pointerId !== drag.id) return;
       const wasDrag = drag.moved;
       drag = null;
       if (wasDrag) live.release();
@@ -169,6 +173,9 @@
     };
     canvas.addEventListener("pointerup", (event) => endDrag(event, false));
     canvas.addEventListener("pointercancel", (event) => endDrag(event, true));
+    // The capture lost without a pointerup (the pointer's element taken away, a capture taken by
+    // another element): the drag ends, not a click. After a pointerup the drag has ended already.
+    canvas.addEventListener("lostpointercapture", (event) => endDrag(event, true));
 
     // Wheel: zoom towards the look-at point, 10% per notch.
     canvas.addEventListener("wheel", (event) => {

@@ -604,6 +604,43 @@ class ViewerPage(unittest.TestCase):
                              "the page opened without the token")
         finally:
             self.load(self.viewer)
+    def test_q_a_second_finger_on_the_image_does_not_keep_the_view_moving(self):
+        # A pinch: one finger drags, a second comes down and both move apart. The second finger
+        # had taken the drag over, and the first drag's hold was never given back: the view
+        # stayed at 1 sample per pixel, "moving", for good.
+        from selenium.webdriver.common.actions import interaction
+        from selenium.webdriver.common.actions.action_builder import ActionBuilder
+        self.reset()
+        left, top, width, height = self.driver.execute_script(
+            "const r = document.getElementById('view').getBoundingClientRect(); return [r.left, r.top, r.width, r.height]")
+        x, y = int(left + width / 2), int(top + height / 2)
+        actions = ActionBuilder(self.driver)
+        first = actions.add_pointer_input(interaction.POINTER_TOUCH, "first")
+        second = actions.add_pointer_input(interaction.POINTER_TOUCH, "second")
+        first.create_pointer_move(x=x - 10, y=y)
+        second.create_pause(0)
+        first.create_pointer_down()
+        second.create_pause(0)
+        first.create_pointer_move(x=x - 50, y=y, duration=200)
+        second.create_pause(0.2)
+        first.create_pause(0)
+        second.create_pointer_move(x=x + 10, y=y)
+        first.create_pause(0)
+        second.create_pointer_down()
+        first.create_pointer_move(x=x - 80, y=y, duration=200)
+        second.create_pointer_move(x=x + 40, y=y, duration=200)
+        first.create_pointer_up(0)
+        second.create_pause(0)
+        first.create_pause(0)
+        second.create_pointer_up(0)
+        actions.perform()
+        try:
+            self.wait_until("return window.clrenderViewer.isStill()", timeout=15, what="the still view after a pinch")
+        except AssertionError:
+            self.load(self.viewer)  # a page whose view can become still, for the tests after this one
+            raise
+        self.assertIn("still", self.driver.find_element("id", "fps").text)
+
 
 def main():
     global BINARY, SOURCE_DIR
