@@ -211,8 +211,12 @@
     // An image arrived before the next display frame moved the camera: move it now, so that
     // the next request need not wait for the display.
     live.onIdle = () => { if (flying !== null && held.size > 0) advance(performance.now()); };
+    // A key pressed with Ctrl, Alt or Meta is the browser's shortcut (Ctrl+S, Ctrl+D, Alt+Left),
+    // not a move: it had flown the camera and been kept from the browser, and on macOS a letter
+    // pressed with Cmd sends no keyup, so the camera flew on until the window lost the focus.
+    const shortcut = (event) => event.ctrlKey || event.altKey || event.metaKey;
     document.addEventListener("keydown", (event) => {
-      if (typing(event) || !(event.code in moves) || !live) return;
+      if (typing(event) || shortcut(event) || !(event.code in moves) || !live) return;
       event.preventDefault();
       held.add(event.code);
       if (flying === null) {

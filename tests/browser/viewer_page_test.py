@@ -641,6 +641,19 @@ class ViewerPage(unittest.TestCase):
             raise
         self.assertIn("still", self.driver.find_element("id", "fps").text)
 
+    def test_r_a_key_pressed_with_ctrl_alt_or_meta_is_the_browsers(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        from selenium.webdriver.common.keys import Keys
+        self.reset()
+        self.driver.find_element("id", "view").click()  # the focus on the image, as after a drag
+        self.wait_still()
+        before = self.camera()
+        # (Alt+Left, the browser's Back, would leave the page once the page lets it through.)
+        for modifier, key in ((Keys.CONTROL, "s"), (Keys.CONTROL, "d"), (Keys.ALT, "a"), (Keys.META, "w")):
+            ActionChains(self.driver).key_down(modifier).key_down(key).pause(0.3).key_up(key).key_up(modifier).perform()
+        time.sleep(0.3)
+        self.assertEqual(self.camera(), before, "a browser shortcut flew the camera")
+
 
 def main():
     global BINARY, SOURCE_DIR
