@@ -22,6 +22,7 @@ class ClrenderPaths {
     document.getElementById("export").addEventListener("click", () => this.exportScene());
     this.videoButton = document.getElementById("render-video");
     this.videoButton.addEventListener("click", () => this.renderVideo());
+    this.rendering = false;     // this page's video is being started or rendered
     this.showKeys();
   }
 
@@ -45,9 +46,13 @@ class ClrenderPaths {
       item.textContent = `eye [${format(key.eye)}]  look-at [${format(key.lookat)}]`;
       return item;
     }));
-    // A video moves from key to key: with fewer than two there is none to render.
-    this.videoButton.disabled = this.keys.length < 2;
-    this.videoButton.title = this.keys.length < 2 ? "record two or more keys for a video" : "";
+    // A video moves from key to key: with fewer than two there is none to render. While this
+    // page's video renders the button is off: a second click (a double click) had been answered
+    // 409 ("a video is rendering already") and shown as a failure, and the first video's
+    // progress and its "Video written" then in the colour of that error.
+    this.videoButton.disabled = this.keys.length < 2 || this.rendering;
+    this.videoButton.title = this.rendering ? "a video is rendering"
+      : this.keys.length < 2 ? "record two or more keys for a video" : "";
   }
 
   body() {
@@ -130,7 +135,9 @@ class ClrenderPaths {
   }
 
   async renderVideo() {
-    if (!this.needKeys(this.videoStatus, 2)) return;
+    if (this.rendering || !this.needKeys(this.videoStatus, 2)) return;
+    this.rendering = true;
+    this.showKeys();
     this.videoStatus.className = "";
     this.videoStatus.textContent = "starting the video…";
     this.progress.hidden = false;
@@ -155,6 +162,9 @@ class ClrenderPaths {
     } catch (error) {
       this.videoStatus.className = "error";
       this.videoStatus.textContent = `Video failed: ${error.message}`;
+    } finally {
+      this.rendering = false;
+      this.showKeys();
     }
   }
 }

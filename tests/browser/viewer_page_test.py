@@ -654,6 +654,32 @@ class ViewerPage(unittest.TestCase):
         time.sleep(0.3)
         self.assertEqual(self.camera(), before, "a browser shortcut flew the camera")
 
+    def test_s_a_double_click_on_render_video_renders_one_video_and_says_so(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        self.reset()
+        self.driver.find_element("id", "clear-keys").click()
+        first = self.camera()
+        self.driver.find_element("id", "record").click()
+        self.set_camera(dict(first, eye=[first["eye"][0] + 2.0, first["eye"][1], first["eye"][2]]))
+        self.driver.find_element("id", "record").click()
+        self.wait_until("return !document.getElementById('render-video').disabled", what="Render video with two keys")
+        videos = {name for name in os.listdir(self.work.name) if name.endswith(".mp4")}
+        ActionChains(self.driver).double_click(self.driver.find_element("id", "render-video")).perform()
+        seen = set()
+        deadline = time.monotonic() + 240
+        while time.monotonic() < deadline:
+            text, kind = self.driver.execute_script(
+                "const s = document.getElementById('video-status'); return [s.textContent, s.className]")
+            seen.add((text.split(":")[0], kind))
+            if text.startswith("Video written") or text.startswith("Video failed"):
+                break
+            time.sleep(0.02)
+        self.assertTrue(text.startswith("Video written to"), f"{text} (seen: {sorted(seen)})")
+        self.assertNotEqual(kind, "error", "the video written is shown as an error")
+        self.assertNotIn("Video failed", {t for t, _ in seen}, "a double click was reported as a failed video")
+        self.assertEqual(len({name for name in os.listdir(self.work.name) if name.endswith(".mp4")} - videos), 1)
+        self.driver.find_element("id", "clear-keys").click()
+
 
 def main():
     global BINARY, SOURCE_DIR
