@@ -680,6 +680,24 @@ class ViewerPage(unittest.TestCase):
         self.assertEqual(len({name for name in os.listdir(self.work.name) if name.endswith(".mp4")} - videos), 1)
         self.driver.find_element("id", "clear-keys").click()
 
+    def test_t_the_keyboard_reaches_every_control_and_the_panels_are_announced(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        from selenium.webdriver.common.keys import Keys
+        self.driver.execute_script("document.activeElement.blur()")
+        reached = []
+        for _ in range(25):
+            ActionChains(self.driver).send_keys(Keys.TAB).perform()
+            reached.append(self.driver.execute_script("return document.activeElement.id"))
+        for control in ("view", "fov", "still-spp", "reset", "compare-file", "tolerance", "record", "play",
+                        "clear-keys", "export"):
+            self.assertIn(control, reached, f"Tab does not reach #{control}: {reached}")
+        # What a panel says after a click (an export failed, the video written, the comparison,
+        # an explanation) is read out by a screen reader, as the image's status is.
+        for panel in ("status", "export-status", "video-status", "diff-share", "explain"):
+            element = self.driver.find_element("id", panel)
+            self.assertTrue(element.get_attribute("role") in ("status", "alert") or element.get_attribute("aria-live"),
+                            f"#{panel} is not a live region")
+
 
 def main():
     global BINARY, SOURCE_DIR
