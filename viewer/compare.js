@@ -133,7 +133,7 @@ class ClrenderCompare {
       this.fileName = file.name;
       this.show();
     } catch (error) {
-      this.message(`Cannot compare ${file.name}: ${error.message}`, true);
+      this.message(`Cannot compare ${file.name}: ${clrenderFailureText(error)}`, true);
     }
   }
 

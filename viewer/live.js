@@ -54,6 +54,13 @@ async function clrenderErrorText(response) {
   return `${response.status}: ${text.trim() || response.statusText}`;
 }
 
+// The text of a request that got no answer at all: fetch rejects with a TypeError ("Failed to
+// fetch") when the viewer has stopped or cannot be reached. Every panel says so in these words;
+// the export, video, explanation and comparison panels had shown "Failed to fetch".
+function clrenderFailureText(error) {
+  return error instanceof TypeError ? "clrender view does not answer (has it stopped?)" : error.message;
+}
+
 class ClrenderLiveView {
   // options: token, size [w, h], stillSpp, channel ("rgba" or "png"), onShown(info), onError(text)
   constructor(canvas, options) {
@@ -180,8 +187,8 @@ class ClrenderLiveView {
         // Not asked again until the camera changes: a refused camera stays refused, and a
         // stopped server would only be asked in a tight loop.
         this.failedVersion = version;
-        this.onError(error instanceof TypeError ? "clrender view does not answer (has it stopped?)"
-          : error.forbidden ? error.message : `the server refused this view: ${error.message}`);
+        this.onError(error instanceof TypeError || error.forbidden ? clrenderFailureText(error)
+          : `the server refused this view: ${error.message}`);
       }
     } finally {
       this.inFlight = null;

@@ -130,7 +130,7 @@ class ClrenderPaths {
       this.exportStatus.textContent = answer.file ? `Written to ${answer.file}` : "Exported.";
     } catch (error) {
       this.exportStatus.className = "error";
-      this.exportStatus.textContent = `Export failed: ${error.message}`;
+      this.exportStatus.textContent = `Export failed: ${clrenderFailureText(error)}`;
     }
   }
 
@@ -161,7 +161,7 @@ class ClrenderPaths {
       }
     } catch (error) {
       this.videoStatus.className = "error";
-      this.videoStatus.textContent = `Video failed: ${error.message}`;
+      this.videoStatus.textContent = `Video failed: ${clrenderFailureText(error)}`;
     } finally {
       this.rendering = false;
       this.showKeys();

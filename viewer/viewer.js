@@ -58,7 +58,7 @@
       if (!response.ok) throw new Error(await clrenderErrorText(response));
       scene = await response.json();
     } catch (error) {
-      setStatus(`Cannot load the scene: ${error.message}`, true);
+      setStatus(`Cannot load the scene: ${clrenderFailureText(error)}`, true);
       return;
     }
     api.sceneName = scene.name || "";
@@ -73,7 +73,9 @@
         setStatus(`${shown.size[0]}x${shown.size[1]}, ${shown.spp} sample${shown.spp > 1 ? "s" : ""} per pixel` +
                   (live.isStill() ? " (the still frame, as clrender renders it)" : ""));
       },
-      onError: (text) => setStatus(text.charAt(0).toUpperCase() + text.slice(1), true),
+      // (the program's name stays as it is written: "clrender view does not answer ...")
+      onError: (text) => setStatus(text.startsWith("clrender") ? text : text.charAt(0).toUpperCase() + text.slice(1),
+                                   true),
     });
     // Still samples: the scene's (the batch image) by default; 16 smooths a scene of 1.
     const stillSelect = document.getElementById("still-spp");
@@ -133,7 +135,8 @@
       explainBox.textContent = `Pixel (${x}, ${y}) of the ${request.size[0]}x${request.size[1]} view` +
                                `${note ? `\n${note}` : ""}\n\n${text}`;
     } catch (error) {
-      if (serial === explainSerial) explainBox.textContent = `Pixel (${x}, ${y}): cannot explain it: ${error.message}`;
+      if (serial !== explainSerial) return;
+      explainBox.textContent = `Pixel (${x}, ${y}): cannot explain it: ${clrenderFailureText(error)}`;
     }
   }
 
@@ -264,7 +267,7 @@
         const camera = fromScene(await response.json());
         if (serial === placingSerial && live.version === version) api.setCamera(camera, k, inputTime);
       } catch (error) {
-        if (serial === placingSerial) setStatus(`Cannot place frame ${k}: ${error.message}`, true);
+        if (serial === placingSerial) setStatus(`Cannot place frame ${k}: ${clrenderFailureText(error)}`, true);
       } finally {
         live.release();
       }

@@ -698,6 +698,35 @@ class ViewerPage(unittest.TestCase):
             self.assertTrue(element.get_attribute("role") in ("status", "alert") or element.get_attribute("aria-live"),
                             f"#{panel} is not a live region")
 
+    def test_u_a_stopped_viewer_is_named_in_every_panel(self):
+        from selenium.webdriver.common.action_chains import ActionChains
+        viewer = Viewer(BINARY, self.scene_path, ["--size", f"{SIZE[0]}x{SIZE[1]}", "--spp", "1",
+                                                  "--output-dir", self.work.name], cwd=self.work.name)
+        try:
+            self.load(viewer)
+            first = self.camera()
+            self.driver.find_element("id", "record").click()
+            self.set_camera(dict(first, eye=[first["eye"][0] + 2.0, first["eye"][1], first["eye"][2]]))
+            self.driver.find_element("id", "record").click()
+            self.wait_until("return !document.getElementById('render-video').disabled", what="two keys")
+            viewer.stop()
+            self.driver.find_element("id", "export").click()
+            self.driver.find_element("id", "render-video").click()
+            ActionChains(self.driver).move_to_element(self.driver.find_element("id", "view")).click().perform()
+            expected = "clrender view does not answer (has it stopped?)"
+            for panel, prefix in (("export-status", "Export failed: "), ("video-status", "Video failed: "),
+                                  ("explain", "cannot explain it: ")):
+                text = self.wait_until(f"const t = document.getElementById('{panel}').textContent;"
+                                       f"return t.includes({json.dumps(prefix)}) ? t : ''", timeout=20, what=panel)
+                self.assertIn(prefix + expected, text)
+            self.driver.execute_script("window.clrenderViewer.setCamera(window.clrenderViewer.camera())")
+            text = self.wait_until("const t = document.getElementById('status').textContent;"
+                                   "return t.includes('answer') ? t : ''", timeout=20, what="the image's status")
+            self.assertEqual(text, expected)
+        finally:
+            viewer.stop()
+            self.load(self.viewer)
+
 
 def main():
     global BINARY, SOURCE_DIR
