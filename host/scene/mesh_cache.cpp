@@ -83,7 +83,8 @@ public:
     bool get_all(std::vector<T>& values, std::uint64_t count) {
         if (count > left() / sizeof(T)) return false;
         values.resize(count);
-        std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
+        // memcpy's pointers must not be null even for no bytes, and an empty vector's may be.
+        if (count > 0) std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
         at_ += count * sizeof(T);
         return true;
     }
