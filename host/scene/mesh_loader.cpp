@@ -393,7 +393,10 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
         for (const std::string& material : material_files) {
             if (!textures_listed.insert(model_key(material)).second) continue;
             const fs::path folder = fs::path(material).parent_path();
-            for (const std::string& name : materials.read(material)->texture_files) {
+            // Held here: the library may keep no other reference (a file it could not read),
+            // and a loop over a member of the returned temporary read it after it was freed.
+            const auto read = materials.read(material);
+            for (const std::string& name : read->texture_files) {
                 std::string texture = fs::path(name).is_absolute() ? name : (folder / name).string();
                 if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
             }
