@@ -341,6 +341,24 @@ TEST(MeshLoader, ADotMtlThatSeveralObjFilesNameIsReadOnce) {
 // The process's CPU time, in seconds.
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
+// The scene of the OBJ `objects`, and the CPU seconds that loading it took against loading the
+// first object alone: what more objects cost, in a ratio that holds on a slow or busy machine.
+struct LoadCost {
+    Scene scene;
+    double one = 0, all = 0;
+};
+
+LoadCost load_cost(const TempFolder& folder, const Json& objects) {
+    LoadCost cost;
+    double start = cpu_seconds();
+    load_in(folder, with_obj(Json::array({objects[0]})));
+    cost.one = cpu_seconds() - start;
+    start = cpu_seconds();
+    cost.scene = load_in(folder, with_obj(objects));
+    cost.all = cpu_seconds() - start;
+    return cost;
+}
+
 // A library of many materials, as an exporter writes one beside one OBJ file per object: its
 // materials are listed once for the scene, not parsed by tinyobjloader again for each OBJ file
 // (LoadMtl of 10,000 materials took 27 ms: 500 OBJ files naming the library loaded in 13.5 s).
@@ -359,12 +377,7 @@ TEST(MeshLoader, TheMaterialsOfADotMtlThatManyObjFilesNameAreListedOnce) {
                                "\nf 1 2 3\n");
         objects.push_back({{"filename", name}, {"position", {i, 0, 0}}});
     }
-    double start = cpu_seconds();
-    load_in(folder, with_obj(Json::array({objects[0]})));
-    const double one = cpu_seconds() - start;
-    start = cpu_seconds();
-    const Scene scene = load_in(folder, with_obj(objects));
-    const double all = cpu_seconds() - start;
+    const auto [scene, one, all] = load_cost(folder, objects);
     ASSERT_EQ(scene.meshes.size(), 200u);
     // Within a rounding: tinyobjloader's own reading of "0.375000" is a unit off.
     for (int i = 0; i < 200; ++i) EXPECT_NEAR(scene.meshes[i].ambient.x, i % 8 / 8.0, 1e-12) << i;
@@ -659,12 +672,7 @@ TEST(MeshLoader, APositionNoFaceUsesIsNotPlaced) {
     folder.write("cloud.obj", cloud);
     Json copies = Json::array();
     for (int i = 0; i < 400; ++i) copies.push_back({{"filename", "cloud.obj"}, {"position", {0, 0, -i}}});
-    double start = cpu_seconds();
-    load_in(folder, with_obj(Json::array({copies[0]})));
-    const double one = cpu_seconds() - start;
-    start = cpu_seconds();
-    const Scene scene = load_in(folder, with_obj(copies));
-    const double all = cpu_seconds() - start;
+    const auto [scene, one, all] = load_cost(folder, copies);
     ASSERT_EQ(scene.triangles.size(), 400u);
     EXPECT_EQ(scene.triangles[399].corners[1], (Vec3{1, 0, -399}));
     EXPECT_LT(all, 2 * one + 0.2) << "placed once: " << one << " s";
