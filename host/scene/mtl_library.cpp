@@ -22,6 +22,9 @@ MtlFileRead read_mtl_file(const std::string& path) {
     }
     file.read = true;
     file.digest = sha256(text.data(), text.size());
+    // Whatever is wrong with it: with --placeholders the run goes on with a cube in the model's
+    // place, and an output must not replace the textures of the model it stands in for.
+    file.texture_files = mtl_texture_files(text);
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) {
         file.problem = encoding;
         return file;
@@ -33,7 +36,6 @@ MtlFileRead read_mtl_file(const std::string& path) {
     file.texture_maps = diffuse_texture_maps(text);
     file.miscased = first_miscased_statement(text);
     file.materials = read_mtl_materials(mtl_statements_used(text), file.problem);
-    if (file.problem.empty() && file.materials.count <= kMaxObjMaterials) file.texture_files = mtl_texture_files(text);
     return file;
 }
 

@@ -54,8 +54,8 @@ struct MtlFileRead {
     Sha256Digest digest{};
     MtlMaterials materials;  // of its statements that clrender uses (mtl_statements_used)
     std::map<std::string, MtlTextureMap> texture_maps;  // diffuse_texture_maps of the whole text
-    // mtl_texture_files of the whole text, for a file whose materials can be used: the files it
-    // names as textures, as written (relative to its folder, or absolute).
+    // mtl_texture_files of the whole text, for any file read (also one whose materials cannot be
+    // used): the files it names as textures, as written (relative to its folder, or absolute).
     std::vector<std::string> texture_files;
     MtlMiscasedStatement miscased;                      // first_miscased_statement of the whole text
 };

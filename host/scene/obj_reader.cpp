@@ -533,6 +533,9 @@ std::vector<std::string> mtl_texture_files(std::string_view text) {
     std::uint64_t material = 0;
     for_each_keyword(text, [&](std::uint64_t, std::string_view keyword, std::string_view line) {
         if (keyword == "newmtl") ++material;
+        // A file of more materials than an OBJ may have is refused; the textures of its first
+        // ones are still listed, and the list stays bounded (at most 13 names a material).
+        if (material > kMaxObjMaterials) return;
         const auto texture = std::find_if(std::begin(kTextures), std::end(kTextures),
                                           [&](const auto& statement) { return statement.first == keyword; });
         if (texture == std::end(kTextures)) return;

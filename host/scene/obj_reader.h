@@ -98,7 +98,8 @@ struct MtlMaterials;
 // ... every one tinyobjloader's LoadMtl reads), each as the file writes it, in the order of their
 // first statement: the name LoadMtl keeps for each kind of texture of each material (its last
 // such statement; "map_Kd -s 1 1 1 wood.png" names "wood.png"). clrender draws none of them, but
-// they are the model's files, which no output may replace.
+// they are the model's files, which no output may replace. Materials past kMaxObjMaterials
+// (a file that is refused) add none.
 std::vector<std::string> mtl_texture_files(std::string_view text);
 
 // The materials of a .mtl's used statements (mtl_statements_used) as tinyobjloader's LoadMtl

@@ -486,6 +486,41 @@ TEST(MeshLoader, TheTexturesItsMtlNamesAreInputsNoOutputMayReplace) {
     }
 }
 
+// With --placeholders a model whose .mtl cannot be used becomes a cube and the run goes on:
+// table.json beside table.obj, a table.mtl with a bad colour line naming map_Kd table.png, and
+// the default output table.png replaced the texture.
+TEST(MeshLoader, TheTexturesOfAnMtlThatCannotBeUsedAreStillInputs) {
+    TempFolder folder;
+    const std::string faces = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    folder.write("table.obj", "mtllib table.mtl\nusemtl wood\n" + faces);
+    folder.write("table.mtl", "newmtl wood\nKd 1 0 0 0.5\nmap_Kd table.png\n");
+    folder.write("latin1.obj", "mtllib latin1.mtl\nusemtl wood\n" + faces);
+    folder.write("latin1.mtl", "newmtl wood\nmap_Kd caf\xe9.png\nKd 1 nan 0\nbump bump.png\n");
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene =
+        load_in(folder, with_obj(Json::array({{{"filename", "table.obj"}}, {{"filename", "latin1.obj"}}})), options);
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_TRUE(scene.meshes[0].placeholder);
+    EXPECT_TRUE(scene.meshes[1].placeholder);
+    EXPECT_EQ(scene.mesh_texture_paths, (std::vector<std::string>{folder.file("table.png"), folder.file("caf\xe9.png"),
+                                                                   folder.file("bump.png")}));
+    OutputRoles roles;
+    add_scene_inputs(scene, roles);
+    EXPECT_THROW(roles.add_output("image", folder.file("table.png")), OutputError);
+}
+
+// The textures of a file of more materials than an OBJ may have: those of its first
+// kMaxObjMaterials materials, no more (a bounded list for a refused file).
+TEST(MeshLoader, TheTexturesOfMaterialsPastTheLimitAreNotListed) {
+    std::string text;
+    for (std::uint64_t m = 0; m <= kMaxObjMaterials; ++m)
+        text += "newmtl m" + std::to_string(m) + "\nmap_Kd t" + std::to_string(m) + ".png\n";
+    const std::vector<std::string> files = mtl_texture_files(text);
+    ASSERT_EQ(files.size(), kMaxObjMaterials);
+    EXPECT_EQ(files.back(), "t" + std::to_string(kMaxObjMaterials - 1) + ".png");
+}
+
 // A placement that even the cube cannot take says why the cube is there: the file's problem.
 TEST(MeshLoader, APlaceholderOutOfRangeNamesTheFilesProblem) {
     TempFolder folder;
