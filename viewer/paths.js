@@ -83,7 +83,7 @@ class ClrenderPaths {
   // clrender renders), else clrender's defaults: 10 frames per segment, 24 frames per second.
   togglePlay() {
     if (this.playTimer !== null) { this.stop(); return; }
-    if (this.keys.length === 0) return;
+    if (!this.needKeys(this.exportStatus, 1)) return;  // (it had said nothing at all)
     const settings = (this.exported && this.exported.clrender) || {};
     const perSegment = settings.frames_per_segment || 10;
     const fps = settings.fps || 24;
@@ -156,7 +156,9 @@ class ClrenderPaths {
           return;
         }
         if (state.state === "failed") throw new Error("the render failed");
-        this.videoStatus.textContent = `rendering frame ${state.done} of ${state.total}`;
+        // (until the render has counted its frames the job says 0 of 0)
+        this.videoStatus.textContent = state.total > 0 ? `${state.done} of ${state.total} frames rendered`
+          : "starting the video…";
         await new Promise((resolve) => setTimeout(resolve, 250));
       }
     } catch (error) {

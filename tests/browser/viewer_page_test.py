@@ -487,6 +487,9 @@ class ViewerPage(unittest.TestCase):
     def test_l_play_moves_the_camera_through_the_keys(self):
         self.reset()
         self.driver.find_element("id", "clear-keys").click()
+        self.driver.find_element("id", "play").click()  # no key yet: says so, plays nothing
+        self.assertEqual(self.driver.find_element("id", "export-status").text, "Record at least one key first.")
+        self.assertEqual(self.driver.find_element("id", "play").text, "Play")
         start = self.camera()
         end = dict(start, eye=[start["eye"][0] + 4.0, start["eye"][1], start["eye"][2] - 4.0])
         self.driver.find_element("id", "record").click()
@@ -677,6 +680,7 @@ class ViewerPage(unittest.TestCase):
         self.assertTrue(text.startswith("Video written to"), f"{text} (seen: {sorted(seen)})")
         self.assertNotEqual(kind, "error", "the video written is shown as an error")
         self.assertNotIn("Video failed", {t for t, _ in seen}, "a double click was reported as a failed video")
+        self.assertFalse([t for t, _ in seen if re.search(r"\bof 0\b", t)], f"a count of no frames: {sorted(seen)}")
         self.assertEqual(len({name for name in os.listdir(self.work.name) if name.endswith(".mp4")} - videos), 1)
         self.driver.find_element("id", "clear-keys").click()
 
