@@ -355,7 +355,20 @@ TEST(Meshes, AnEyeInATrianglesPlaneSeesNothingOfItThere) {
         }
         return scene;
     };
+    // The eye on a triangle's corner (its second), its other corners where the doubles of the
+    // eye's distance from the plane, measured from the first corner, came to 7e-15: the kernels
+    // took that for "in front" and drew the triangle over nine tenths of the view.
+    auto on_corner = [&](bool sun) {
+        Scene scene = scene_from({0, 0, 50}, {0, 0, 0}, sun);
+        scene.spheres.clear();
+        testing::TestMesh triangle;
+        triangle.triangles.push_back({Vec3{-63, -49, -50}, Vec3{0, 0, 50}, Vec3{-35.25, -48.75, -25}});
+        add_mesh(scene, triangle, {0.4, 0.8, 0.4});
+        return scene;
+    };
     const std::vector<std::pair<Scene, std::string>> cases = {
+        {on_corner(false), "eye on a triangle's corner"},
+        {on_corner(true), "eye on a triangle's corner, sunlit"},
         {with_floor(0, false), "eye on the floor"},
         {with_floor(0, true), "eye on the floor, sunlit"},
         {with_floor(1e-9, false), "eye 1e-9 above the floor"},
