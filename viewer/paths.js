@@ -22,8 +22,9 @@ class ClrenderPaths {
     document.getElementById("export").addEventListener("click", () => this.exportScene());
     this.videoButton = document.getElementById("render-video");
     this.videoButton.addEventListener("click", () => this.renderVideo());
-    this.rendering = false;     // this page's video is being started or rendered
+    this.rendering = false;     // a video is being started or rendered, shown on this page
     this.showKeys();
+    this.followRunningVideo();
   }
 
   // The camera shown: a path frame's camera still on its way from the server is waited for.
@@ -136,6 +137,26 @@ class ClrenderPaths {
 
   async renderVideo() {
     if (this.rendering || !this.needKeys(this.videoStatus, 2)) return;
+    await this.follow(async () => (await this.post("render-video")).job);
+  }
+
+  // A page loaded while a video renders (loaded again, or a second tab) shows that video's
+  // progress, with Render video off until it ends, rather than a 409 at the next click.
+  async followRunningVideo() {
+    let state;
+    try {
+      const response = await fetch(clrenderAddress("job", this.viewer.token), { cache: "no-store" });
+      if (!response.ok) return;  // 404: no video yet in this viewer's session
+      state = await response.json();
+    } catch (error) {
+      return;  // the viewer does not answer: the image's panel says so
+    }
+    if (state.state !== "running" || this.rendering || !Number.isInteger(state.id)) return;
+    await this.follow(async () => state.id);
+  }
+
+  // Shows the progress of the job that `start` returns (its number), until it ends.
+  async follow(start) {
     this.rendering = true;
     this.showKeys();
     this.videoStatus.className = "";
@@ -143,7 +164,7 @@ class ClrenderPaths {
     this.progress.hidden = false;
     this.progress.value = 0;
     try {
-      const { job } = await this.post("render-video");
+      const job = await start();
       for (;;) {
         const response = await fetch(clrenderAddress("job", this.viewer.token, { id: job }), { cache: "no-store" });
         if (!response.ok) throw new Error(await clrenderErrorText(response));

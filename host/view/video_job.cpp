@@ -191,6 +191,12 @@ std::optional<VideoJobState> VideoJobs::state(int id) const {
     return jobs_[static_cast<std::size_t>(id) - 1];
 }
 
+std::optional<VideoJobState> VideoJobs::latest() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (jobs_.empty()) return std::nullopt;
+    return jobs_.back();
+}
+
 void VideoJobs::stop() {
     std::unique_lock<std::mutex> lock(mutex_);
     if (running_ && child_) {

@@ -60,6 +60,10 @@ public:
     // The job's state; nullopt for an id that names no job.
     std::optional<VideoJobState> state(int id) const;
 
+    // The session's last job's state (a page loaded again follows a video that renders);
+    // nullopt before the first.
+    std::optional<VideoJobState> latest() const;
+
     // Stops a running render (it removes its unfinished files) and waits for it.
     void stop();
 

@@ -276,13 +276,20 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             const auto id_text = request.params.find("id");
             if (id_text != request.params.end() && !std::regex_match(id_text->second, whole))
                 throw ParameterError("id", "id must be a job number as /render-video answered it (1, 2, ...)");
-            const std::optional<VideoJobState> job =
-                id_text == request.params.end() ? std::nullopt : session.videos.state(std::stoi(id_text->second));
+            // Without an id, the session's last job: a page loaded again while a video renders
+            // (whose own number it has lost) follows it.
+            const std::optional<VideoJobState> job = id_text == request.params.end()
+                                                         ? session.videos.latest()
+                                                         : session.videos.state(std::stoi(id_text->second));
             if (!job) {
                 send_error(response, 404, "no such job", "id");
                 return;
             }
-            nlohmann::json body = {{"state", job->state}, {"done", job->done}, {"total", job->total}, {"file", shown_name(job->file)}};
+            nlohmann::json body = {{"id", job->id},
+                                   {"state", job->state},
+                                   {"done", job->done},
+                                   {"total", job->total},
+                                   {"file", shown_name(job->file)}};
             body["error"] = job->error.empty() ? nlohmann::json(nullptr) : nlohmann::json(job->error);
             send_json(response, 200, body);
         });

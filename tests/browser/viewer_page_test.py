@@ -17,6 +17,7 @@ import tempfile
 import time
 import unittest
 import urllib.parse
+import urllib.request
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -727,6 +728,38 @@ class ViewerPage(unittest.TestCase):
             text = self.wait_until("const t = document.getElementById('status').textContent;"
                                    "return t.includes('answer') ? t : ''", timeout=20, what="the image's status")
             self.assertEqual(text, expected)
+        finally:
+            viewer.stop()
+            self.load(self.viewer)
+
+    def test_v_a_page_loaded_while_a_video_renders_follows_it(self):
+        # A video started (here by a request, as by a page since closed or loaded again), and
+        # then the page loaded: it shows that video's progress with Render video off, and its
+        # end, where its next click had been answered 409.
+        viewer = Viewer(BINARY, self.scene_path, ["--size", "640x360", "--spp", "4", "--output-dir", self.work.name],
+                        cwd=self.work.name)
+        try:
+            keys = [{"eye": [-3 + k, 2, 12 - k], "lookat": [0, 1, 0]} for k in range(6)]
+            request = urllib.request.Request(
+                f"{viewer.base}render-video?token={viewer.token}", method="POST",
+                data=json.dumps({"keys": keys, "name": "earlier"}).encode(),
+                headers={"Content-Type": "application/json", "Origin": viewer.base.rstrip("/")})
+            with urllib.request.urlopen(request, timeout=60) as response:
+                self.assertEqual(json.loads(response.read())["job"], 1)
+            self.load(viewer)
+            seen = set()
+            deadline = time.monotonic() + 240
+            while time.monotonic() < deadline:
+                text, off = self.driver.execute_script(
+                    "return [document.getElementById('video-status').textContent,"
+                    " document.getElementById('render-video').disabled]")
+                seen.add((text, off))
+                if text.startswith("Video"):
+                    break
+                time.sleep(0.02)
+            self.assertEqual(text, f"Video written to {os.path.join(self.work.name, 'earlier.mp4')}", f"seen: {sorted(seen)}")
+            self.assertTrue([t for t, off in seen if "frames rendered" in t and off],
+                            f"no progress with the button off: {sorted(seen)}")
         finally:
             viewer.stop()
             self.load(self.viewer)

@@ -463,6 +463,14 @@ TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
     EXPECT_GT(fs::file_size(folder.file("tour.mp4")), 0u);
     EXPECT_TRUE(fs::exists(folder.file("tour.json")));
     EXPECT_EQ(viewer.client()->Get(viewer.with_token("/job?id=99").c_str())->status, 404);
+    // Without an id, the last job, named: what a page loaded again follows.
+    const httplib::Result latest = viewer.client()->Get(viewer.with_token("/job").c_str());
+    ASSERT_TRUE(latest);
+    ASSERT_EQ(latest->status, 200) << latest->body;
+    const json last = json::parse(latest->body);
+    EXPECT_EQ(last["id"], job["job"]);
+    EXPECT_EQ(last["state"], "done");
+    EXPECT_EQ(last["file"], "./tour.mp4");
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 

@@ -721,7 +721,7 @@ TEST_F(ViewSecurity, AJobIsNamedByItsWholeNumber) {
         EXPECT_NE(result->body.find("\"parameter\":\"id\""), std::string::npos) << id << ": " << result->body;
     }
     EXPECT_EQ(client->Get(viewer_->with_token("/job?id=1").c_str())->status, 404) << "no job yet";
-    EXPECT_EQ(client->Get(viewer_->with_token("/job").c_str())->status, 404);
+    EXPECT_EQ(client->Get(viewer_->with_token("/job").c_str())->status, 404) << "no job yet, the last neither";
 }
 
 TEST_F(ViewSecurity, TenClientsAtOnceBesideOnesThatHangUpStallOrReadSlowly) {
