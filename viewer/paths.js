@@ -169,7 +169,9 @@ class ClrenderPaths {
         const response = await fetch(clrenderAddress("job", this.viewer.token, { id: job }), { cache: "no-store" });
         if (!response.ok) throw new Error(await clrenderErrorText(response));
         const state = await response.json();
-        if (state.total > 0) { this.progress.max = state.total; this.progress.value = state.done; }
+        // (a video's frames are "done" only once it is written: until then the frame it is on)
+        const rendered = Math.max(state.done, (state.frame || 0) - 1);
+        if (state.total > 0) { this.progress.max = state.total; this.progress.value = rendered; }
         if (state.error) throw new Error(state.error);
         if (state.state === "done") {
           this.videoStatus.textContent = `Video written to ${state.file}`;
@@ -178,7 +180,7 @@ class ClrenderPaths {
         }
         if (state.state === "failed") throw new Error("the render failed");
         // (until the render has counted its frames the job says 0 of 0)
-        this.videoStatus.textContent = state.total > 0 ? `${state.done} of ${state.total} frames rendered`
+        this.videoStatus.textContent = state.total > 0 ? `rendering frame ${Math.max(state.frame || 0, 1)} of ${state.total}`
           : "starting the video…";
         await new Promise((resolve) => setTimeout(resolve, 250));
       }

@@ -149,6 +149,9 @@ void VideoJobs::watch(int read_fd) {
                 std::lock_guard<std::mutex> lock(mutex_);
                 jobs_.back().done = progress["frames_done"].get<int>();
                 jobs_.back().total = progress["frames"].get<int>();
+                // A video's frames are done only once it is in place: its progress is the frame.
+                if (progress.contains("frame") && progress["frame"].is_number_integer())
+                    jobs_.back().frame = progress["frame"].get<int>() + 1;
             } else if (progress.is_object() && progress.contains("message") && progress["message"].is_string()) {
                 // An error or warning line of --progress json: its message, as the page shows it.
                 last_message = shortened(printable(progress["message"].get<std::string>()), kLongestDetail);

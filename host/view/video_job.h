@@ -17,7 +17,8 @@ namespace clr {
 struct VideoJobState {
     int id = 0;
     std::string state;  // "running", "done" or "failed"
-    int done = 0;       // frames rendered
+    int done = 0;       // frames in place (a video's count only once it is renamed into place)
+    int frame = 0;      // the frame the render is on or has just finished, from 1 (0 before the first)
     int total = 0;      // frames of the video (0 until the render reports them)
     std::string file;   // the video's path
     std::string error;  // why it failed: the render's last message (of its --progress json line)

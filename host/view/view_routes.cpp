@@ -288,6 +288,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             nlohmann::json body = {{"id", job->id},
                                    {"state", job->state},
                                    {"done", job->done},
+                                   {"frame", job->frame},
                                    {"total", job->total},
                                    {"file", shown_name(job->file)}};
             body["error"] = job->error.empty() ? nlohmann::json(nullptr) : nlohmann::json(job->error);

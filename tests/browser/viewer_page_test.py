@@ -736,10 +736,12 @@ class ViewerPage(unittest.TestCase):
         # A video started (here by a request, as by a page since closed or loaded again), and
         # then the page loaded: it shows that video's progress with Render video off, and its
         # end, where its next click had been answered 409.
-        viewer = Viewer(BINARY, self.scene_path, ["--size", "640x360", "--spp", "4", "--output-dir", self.work.name],
+        # (a video long enough, 111 frames at 16 samples a pixel, to be rendering when the page
+        # has loaded: about 2 s here)
+        viewer = Viewer(BINARY, self.scene_path, ["--size", "640x360", "--spp", "16", "--output-dir", self.work.name],
                         cwd=self.work.name)
         try:
-            keys = [{"eye": [-3 + k, 2, 12 - k], "lookat": [0, 1, 0]} for k in range(6)]
+            keys = [{"eye": [-3 + 0.5 * k, 2, 12 - 0.5 * k], "lookat": [0, 1, 0]} for k in range(12)]
             request = urllib.request.Request(
                 f"{viewer.base}render-video?token={viewer.token}", method="POST",
                 data=json.dumps({"keys": keys, "name": "earlier"}).encode(),
@@ -758,8 +760,9 @@ class ViewerPage(unittest.TestCase):
                     break
                 time.sleep(0.02)
             self.assertEqual(text, f"Video written to {os.path.join(self.work.name, 'earlier.mp4')}", f"seen: {sorted(seen)}")
-            self.assertTrue([t for t, off in seen if "frames rendered" in t and off],
-                            f"no progress with the button off: {sorted(seen)}")
+            frames = [int(m.group(1)) for t, off in seen if off for m in [re.match(r"rendering frame (\d+) of 111$", t)] if m]
+            self.assertTrue(frames, f"no progress with the button off: {sorted(seen)}")
+            self.assertGreater(max(frames), min(frames), f"the frame shown never moved: {sorted(seen)}")
         finally:
             viewer.stop()
             self.load(self.viewer)

@@ -459,6 +459,7 @@ TEST(ViewExport, RenderVideoWritesTheMp4InTheBackground) {
     ASSERT_EQ(state["state"], "done") << state.dump();
     EXPECT_EQ(state["total"], 11);  // two keys, 10 frames per segment, and the last key's
     EXPECT_EQ(state["done"], 11);
+    EXPECT_EQ(state["frame"], 11) << "the last frame rendered";
     EXPECT_EQ(state["file"], "./tour.mp4");
     EXPECT_GT(fs::file_size(folder.file("tour.mp4")), 0u);
     EXPECT_TRUE(fs::exists(folder.file("tour.json")));
