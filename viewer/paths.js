@@ -28,9 +28,18 @@ class ClrenderPaths {
   }
 
   // The camera shown: a path frame's camera still on its way from the server is waited for.
+  // A camera equal to the last key is not recorded again: a double click on Record key had
+  // stored it twice (a video then stood still for a segment).
   async record() {
     if (this.viewer.settled) await this.viewer.settled();
-    this.keys.push(this.viewer.camera());
+    const camera = this.viewer.camera();
+    const last = this.keys[this.keys.length - 1];
+    if (last && ClrenderCamera.equal(last, camera)) {
+      this.exportStatus.className = "";
+      this.exportStatus.textContent = "This camera is the last key already: move it to record another.";
+      return;
+    }
+    this.keys.push(camera);
     this.showKeys();
   }
 

@@ -493,7 +493,11 @@ class ViewerPage(unittest.TestCase):
         self.assertEqual(self.driver.find_element("id", "play").text, "Play")
         start = self.camera()
         end = dict(start, eye=[start["eye"][0] + 4.0, start["eye"][1], start["eye"][2] - 4.0])
-        self.driver.find_element("id", "record").click()
+        from selenium.webdriver.common.action_chains import ActionChains
+        ActionChains(self.driver).double_click(self.driver.find_element("id", "record")).perform()
+        self.wait_until("return document.getElementById('export-status').textContent.includes('last key')",
+                        what="the second click of a double click on Record key")
+        self.assertEqual(len(self.driver.find_elements("css selector", "#keys li")), 1, "a double click recorded two keys")
         self.set_camera(end)
         self.driver.find_element("id", "record").click()
         self.reset()
