@@ -99,20 +99,27 @@ void store_plane_normal(ClrTriangle& device) {
 // only about that point: from the corner, (c0 - eye).n put the plane of a triangle 1e8 across
 // units off near the eye, as its corner is that far away.
 //
-// The distance is measured from the corner nearest the eye, and is exactly 0 where the doubles
-// put the eye in the plane through a corner or along an edge (a triple product of the corners
-// relative to the eye that comes out 0): an eye on a mesh's vertex measured 7e-15 from the far
-// corner, and a primary ray allows no slack, so half the view saw the triangle over everything.
+// Where that distance is within rounding of 0, it is measured again from the corner nearest the
+// eye, and is exactly 0 where the doubles put the eye in the plane through a corner or along an
+// edge (a triple product of the corners relative to the eye that comes out 0): an eye on a
+// mesh's vertex measured 7e-15 from the far corner, and a primary ray allows no slack, so half
+// the view saw the triangle over everything.
 void store_plane_offset(ClrTriangle& device, const Triangle& triangle, const Vec3& origin) {
     const Vec3 stored{device.corner0.s[3], device.corner1.s[3], device.corner2.s[3]};
     const auto& c = triangle.corners;
     const Vec3 plane = normalize(cross(c[1] - c[0], c[2] - c[0]));
-    const Vec3 a = c[0] - origin, b = c[1] - origin, d = c[2] - origin;
-    const bool in_plane = dot(cross(a, b), d) == 0 || dot(cross(b, d), a) == 0 || dot(cross(d, a), b) == 0;
-    Vec3 nearest = a;
-    if (dot(b, b) < dot(nearest, nearest)) nearest = b;
-    if (dot(d, d) < dot(nearest, nearest)) nearest = d;
-    const double distance = in_plane ? 0.0 : dot(nearest, plane);
+    const Vec3 a = c[0] - origin;
+    double distance = dot(a, plane);
+    // Within rounding of the plane (rare; every triangle of every frame comes here), again from
+    // the corner nearest the eye, and 0 where a triple product is.
+    if (distance * distance <= 1e-24 * dot(a, a)) {
+        const Vec3 b = c[1] - origin, d = c[2] - origin;
+        Vec3 nearest = a;
+        if (dot(b, b) < dot(nearest, nearest)) nearest = b;
+        if (dot(d, d) < dot(nearest, nearest)) nearest = d;
+        const bool in_plane = dot(cross(a, b), d) == 0 || dot(cross(b, d), a) == 0 || dot(cross(d, a), b) == 0;
+        distance = in_plane ? 0.0 : dot(nearest, plane);
+    }
     const double side = dot(stored, plane) < 0 ? -1.0 : 1.0;
     const double offset = side * distance * length(stored);
     // The loader keeps no triangle without area; should one come all the same, the corner's.
