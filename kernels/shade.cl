@@ -92,6 +92,11 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     result.color = info.background.xyz;
     if (hit.kind == CLR_HIT_NONE)
         return result;
+#if CLR_FEATURE_TRIANGLES
+    /* A hit on a shared edge or corner is shaded as the triangle that owns it (triangle_ties). */
+    if (hit.kind == CLR_HIT_TRIANGLE)
+        hit.index = triangle_settled_index(hit.index, origin + hit.t * direction, hit.t, CLR_SCENE_ARGS);
+#endif
 #if CLR_FEATURE_MIRRORS
     if (kind_flags(hit.kind, hit.index, CLR_SCENE_ARGS) & CLR_SURFACE_MIRROR) {
         real3 point = origin + hit.t * direction;

@@ -44,6 +44,35 @@ Color lit_color(const Scene& scene, const Color& ambient, const SurfacePoint& su
 
 Color times(const Color& a, const Color& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
+double norm1(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
+
+// A hit on a triangle within t 2^-16 (|.|_1) of one of its corners becomes the lowest triangle
+// of its mesh placement around that corner; else one within that band of one of its edge lines
+// (|(P - a) x e|_1 <= band |e|_1) the lowest along that edge (Scene::triangle_ties); t stays.
+// The kernels settle alike (kernels/kinds/triangle.cl, triangle_settled_index()).
+Hit settled(const Scene& scene, const Ray& ray, Hit hit) {
+    if (hit.kind != HitKind::Triangle || scene.triangle_ties.size() != scene.triangles.size()) return hit;
+    const auto& c = scene.triangles[hit.index].corners;
+    const auto& ties = scene.triangle_ties[hit.index];
+    const Vec3 p = detail::point_at(ray, hit.t);
+    const double band = hit.t * 0x1p-16;
+    for (int k = 0; k < 3; ++k) {
+        if (norm1(p - c[k]) <= band) {
+            hit.index = ties[3 + k];
+            return hit;
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        const Vec3& a = c[(k + 1) % 3];
+        const Vec3 e = c[(k + 2) % 3] - a;
+        if (norm1(cross(p - a, e)) <= band * norm1(e)) {
+            hit.index = ties[k];
+            return hit;
+        }
+    }
+    return hit;
+}
+
 
 // The Blinn-Phong model with the scene's point lights (docs/scene-format.md, Lights and
 // materials): the ambient colour plus, for each light with n.l > 0 that nothing opaque hides,
@@ -117,8 +146,9 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
         if (observer)
             observer->ray_cast(reflections == 0 ? RayRole::Primary : RayRole::Reflected, reflections, current, kInfinity);
         // The primary ray sees only the depths the camera's clip distances keep.
-        const Hit hit = reflections == 0 ? intersect_in_view(scene, current, observer)
-                                         : intersect(scene, current, kInfinity, leaving, observer);
+        const Hit hit = settled(scene, current,
+                                reflections == 0 ? intersect_in_view(scene, current, observer)
+                                                 : intersect(scene, current, kInfinity, leaving, observer));
         if (hit.kind == HitKind::None)
             return sum + times(weight, found(observer, ColourSource::Background, scene.background));
         const SurfacePoint surface = detail::surface_at(scene, current, hit);

@@ -148,6 +148,8 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         // Corner normals do not move with the eye: uploaded once, not with each frame's geometry.
         scene_args_.triangle_normals = upload(device_.context(), compiled_.triangle_normals);
         compiled_.triangle_normals = {};  // the buffer's now, as the texels are
+        scene_args_.triangle_ties = upload(device_.context(), compiled_.triangle_ties);
+        compiled_.triangle_ties = {};
         scene_args_.materials = upload(device_.context(), compiled_.materials);
         upload_geometry();
         uploaded_ = true;

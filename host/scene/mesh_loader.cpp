@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -11,6 +12,7 @@
 #include <new>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "core/errors.h"
@@ -474,6 +476,72 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             kept.erase(key);
             material_lists.erase(key);
             failed.erase(key);
+        }
+    }
+}
+
+namespace {
+
+struct CornerKey {
+    double x, y, z;
+    bool operator==(const CornerKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+
+struct CornerKeyHash {
+    std::size_t operator()(const CornerKey& k) const {
+        // +0.0 and -0.0 are one position.
+        const auto bits = [](double v) {
+            if (v == 0) v = 0;
+            std::uint64_t u;
+            std::memcpy(&u, &v, sizeof u);
+            return u;
+        };
+        std::uint64_t h = bits(k.x) * 0x9E3779B97F4A7C15ull;
+        h ^= bits(k.y) + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+        h ^= bits(k.z) + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
+        return static_cast<std::size_t>(h);
+    }
+};
+
+}  // namespace
+
+void compute_triangle_ties(Scene& scene) {
+    const std::size_t count = scene.triangles.size();
+    scene.triangle_ties.resize(count);
+    for (std::size_t t = 0; t < count; ++t) scene.triangle_ties[t].fill(static_cast<std::int32_t>(t));  // a triangle of no mesh ties only itself
+    for (const Mesh& mesh : scene.meshes) {
+        const std::size_t first = mesh.first_triangle, end = std::min(count, first + mesh.triangle_count);
+        if (first >= end) continue;
+        // Each distinct position of the placement numbered; a vertex's owner is the lowest triangle
+        // around it, an edge's (a pair of numbers) the lowest triangle along it.
+        std::unordered_map<CornerKey, std::int32_t, CornerKeyHash> numbers;
+        numbers.reserve((end - first) * 2);
+        std::vector<std::int32_t> vertex_owner;
+        std::vector<std::array<std::int32_t, 3>> ids(end - first);
+        for (std::size_t t = first; t < end; ++t)
+            for (int k = 0; k < 3; ++k) {
+                const Vec3& c = scene.triangles[t].corners[k];
+                const auto [it, added] = numbers.emplace(CornerKey{c.x, c.y, c.z}, static_cast<std::int32_t>(vertex_owner.size()));
+                if (added) vertex_owner.push_back(static_cast<std::int32_t>(t));  // t ascends: the first is the lowest
+                ids[t - first][k] = it->second;
+            }
+        std::unordered_map<std::uint64_t, std::int32_t> edge_owner;
+        edge_owner.reserve((end - first) * 2);
+        const auto edge_key = [](std::int32_t a, std::int32_t b) {
+            if (a > b) std::swap(a, b);
+            return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+        };
+        for (std::size_t t = first; t < end; ++t)
+            for (int k = 0; k < 3; ++k)
+                edge_owner.emplace(edge_key(ids[t - first][(k + 1) % 3], ids[t - first][(k + 2) % 3]),
+                                   static_cast<std::int32_t>(t));
+        for (std::size_t t = first; t < end; ++t) {
+            auto& ties = scene.triangle_ties[t];
+            const auto& id = ids[t - first];
+            for (int k = 0; k < 3; ++k) {
+                ties[k] = edge_owner.at(edge_key(id[(k + 1) % 3], id[(k + 2) % 3]));
+                ties[3 + k] = vertex_owner[id[k]];
+            }
         }
     }
 }

@@ -621,6 +621,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const LoadOp
             load_meshes(scene, meshes, options.placeholder_images,
                         options.mesh_memory_budget ? *options.mesh_memory_budget : default_memory_budget());
     }
+    if (!scene.triangles.empty()) compute_triangle_ties(scene);
     if (options.decode_images) scene.digest = scene_digest(text, options.overrides, scene);
     scene.warning_count = scene.warnings.size() + diagnostics.unshown_warnings;
     diagnostics.summarise_warnings();

@@ -572,4 +572,36 @@ CLR_PACKET_INLINE void triangle_prefetch(int index, CLR_SCENE_PARAMS)
 {
 }
 
+/* The triangle a hit at `point`, distance t along its ray, on triangle `index` is shaded as
+ * (Scene::triangle_ties): a point within t 2^-16 (|.|_1) of a corner goes to the lowest
+ * triangle of its mesh placement around that corner; else one within that band of an edge line
+ * (|(P - a) x e|_1 <= band |e|_1) to the lowest triangle along that edge; else it stays. So a
+ * ray through a shared ridge is shaded alike whichever side its rounding took, here and in the
+ * reference (reference/shade.cpp settles with the same numbers). */
+int triangle_settled_index(int index, real3 point, real t, CLR_SCENE_PARAMS)
+{
+    __global const ClrTriangle* triangle = &triangles[index];
+    real3 c[3];
+    c[0] = convert_real3(triangle->corner0.xyz);
+    c[1] = convert_real3(triangle->corner1.xyz);
+    c[2] = convert_real3(triangle->corner2.xyz);
+    int ties[8];
+    vstore8(triangle_ties[index], 0, ties);
+    real band = t * (real)(1.0f / 65536.0f);
+    for (int k = 0; k < 3; ++k) {
+        real3 p = point - c[k];
+        if (fabs(p.x) + fabs(p.y) + fabs(p.z) <= band)
+            return ties[3 + k];
+    }
+    for (int k = 0; k < 3; ++k) {
+        real3 a = c[(k + 1) % 3];
+        real3 e = c[(k + 2) % 3] - a;
+        real3 p = point - a;
+        real3 x = (real3)(p.y * e.z - p.z * e.y, p.z * e.x - p.x * e.z, p.x * e.y - p.y * e.x);
+        if (fabs(x.x) + fabs(x.y) + fabs(x.z) <= band * (fabs(e.x) + fabs(e.y) + fabs(e.z)))
+            return ties[k];
+    }
+    return index;
+}
+
 #endif /* CLR_KINDS_TRIANGLE_CL */
