@@ -146,12 +146,15 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
         if (observer)
             observer->ray_cast(reflections == 0 ? RayRole::Primary : RayRole::Reflected, reflections, current, kInfinity);
         // The primary ray sees only the depths the camera's clip distances keep.
-        const Hit hit = settled(scene, current,
-                                reflections == 0 ? intersect_in_view(scene, current, observer)
-                                                 : intersect(scene, current, kInfinity, leaving, observer));
+        const Hit found_hit = reflections == 0 ? intersect_in_view(scene, current, observer)
+                                               : intersect(scene, current, kInfinity, leaving, observer);
+        const Hit hit = settled(scene, current, found_hit);
         if (hit.kind == HitKind::None)
             return sum + times(weight, found(observer, ColourSource::Background, scene.background));
-        const SurfacePoint surface = detail::surface_at(scene, current, hit);
+        SurfacePoint surface = detail::surface_at(scene, current, hit);
+        // Shaded as the settled triangle; its shadow and reflected rays leave the one hit, on
+        // whose plane the point lies (the kernels' shade_hit() alike).
+        surface.id.index = found_hit.index;
         if (observer) observer->surface_reached(hit, surface);
         if (!surface.is_mirror) {
             sum = sum + times(weight, surface_color(scene, hit, current, surface, reflections, observer));

@@ -45,7 +45,7 @@ typedef struct {
 /* The lanes of `hits` on triangles in a lit scene, shaded as sunlit_colors16() shades a lane
  * (each lane's values the same bits), 16 at once: a lane facing away from the sun turns black,
  * a lane facing it gets its lit colour and its shadow ray. */
-CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits, SunlitLanes16* out,
+CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits, int16 leaving, SunlitLanes16* out,
                                           CLR_SCENE_PARAMS)
 {
     int16 on = hits.kind == (int16)(CLR_HIT_TRIANGLE);
@@ -93,7 +93,7 @@ CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits
     vstore16(select(vload16(0, rays->dz), light.z, ray), 0, rays->dz);
     vstore16(select(vload16(0, rays->t_max), sun_distance, ray), 0, rays->t_max);
     vstore16(select(vload16(0, rays->skip_kind), (int16)(CLR_HIT_TRIANGLE), lit), 0, rays->skip_kind);
-    vstore16(select(vload16(0, rays->skip_index), hits.index, lit), 0, rays->skip_index);
+    vstore16(select(vload16(0, rays->skip_index), leaving, lit), 0, rays->skip_index);
 }
 #endif
 
@@ -186,6 +186,7 @@ CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hit
     vstore16((int16)(CLR_HIT_NONE), 0, rays->skip_kind);
     vstore16((int16)(-1), 0, rays->skip_index);
 #if CLR_FEATURE_TRIANGLES
+    int16 leaving = hits.index; /* the triangles hit, which their shadow rays skip (shade_hit()) */
     hits = settled_hits16(eye, d, hits, CLR_SCENE_ARGS);
 #endif
     /* Lanes on other lit kinds (and every lit lane of a scene the sun does not light), one by
@@ -201,7 +202,7 @@ CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hit
         sunlit_lanes_one_by_one16(eye, d, hits, by_lane, &out, CLR_SCENE_ARGS);
 #if CLR_FEATURE_TRIANGLES
     if (info.lit)
-        sunlit_triangles16(eye, d, hits, &out, CLR_SCENE_ARGS);
+        sunlit_triangles16(eye, d, hits, leaving, &out, CLR_SCENE_ARGS);
 #endif
     int16 wanted = vload16(0, rays->wanted) != (int16)(0);
     if (!any_lanes16(wanted))
