@@ -87,7 +87,7 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
         for (uint k = node->first; k < node->first + node->count; ++k) {
             int kind = item_kind(bvh_items[k]);
             int index = item_index(bvh_items[k]);
-            if (kind == skip_kind && index == skip_index)
+            if (skips_surface(kind, index, skip_kind, skip_index))
                 continue;
             /* Not t_max = hit.t: an equally near hit may still win on (kind, index). */
             real t = kind_hit_distance(kind, index, origin, direction, INFINITY, CLR_SCENE_ARGS);

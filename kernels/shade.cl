@@ -27,7 +27,7 @@ typedef struct {
  * ambient colour, plus for each light on the side of the surface the ray sees (n.l > 0) and
  * hidden by no opaque surface, its colour times k_d n.l + k_s max(0, n.h)^p, where l and
  * h = unit(l + v) are unit vectors towards the light and halfway between it and the eye. */
-float3 phong_color(Hit hit, int leaving, float3 ambient, real3 origin, real3 direction, CLR_SCENE_PARAMS)
+float3 phong_color(Hit hit, int leaving_kind, int leaving, float3 ambient, real3 origin, real3 direction, CLR_SCENE_PARAMS)
 {
     ClrMaterial material = materials[kind_material(hit.kind, hit.index, CLR_SCENE_ARGS)];
     real3 point = origin + hit.t * direction;
@@ -42,7 +42,7 @@ float3 phong_color(Hit hit, int leaving, float3 ambient, real3 origin, real3 dir
         real cosine = dot3(normal, light);
         if (cosine <= 0.0f)
             continue; /* behind the surface: no shadow ray needed */
-        if (occluded(point, light, distance, hit.kind, leaving, CLR_SCENE_ARGS))
+        if (occluded(point, light, distance, leaving_kind, leaving, CLR_SCENE_ARGS))
             continue;
         real3 half_vector = unit3(light - direction);
         real highlight = pow(fmax(dot3(normal, half_vector), (real)0.0f), (real)material.diffuse.w);
@@ -59,12 +59,12 @@ float3 phong_color(Hit hit, int leaving, float3 ambient, real3 origin, real3 dir
  * uses dot3() and unit3(), never the built-in dot(), length() or normalize(): their order,
  * FMAs and scaling are the implementation's, and Intel's CPU runtime and PoCL gave pixels one
  * display step apart; with + - * / and sqrt alone both give the same bytes. */
-float3 surface_color(Hit hit, int leaving, real3 origin, real3 direction, CLR_SCENE_PARAMS)
+float3 surface_color(Hit hit, int leaving_kind, int leaving, real3 origin, real3 direction, CLR_SCENE_PARAMS)
 {
     float3 color = kind_surface_color(hit.kind, hit.index, origin, direction, hit.t, CLR_SCENE_ARGS);
 #if CLR_FEATURE_LIGHTS
     if (info.light_count > 0 && kind_is_lit(hit.kind))
-        return phong_color(hit, leaving, color, origin, direction, CLR_SCENE_ARGS);
+        return phong_color(hit, leaving_kind, leaving, color, origin, direction, CLR_SCENE_ARGS);
 #endif
 #if CLR_FEATURE_SUN
     if (!info.lit || !kind_is_lit(hit.kind))
@@ -77,7 +77,7 @@ float3 surface_color(Hit hit, int leaving, real3 origin, real3 direction, CLR_SC
     real cosine = dot3(normal, light);
     if (cosine <= 0.0f)
         return (float3)(0.0f); /* facing away: no shadow ray needed */
-    return occluded(point, light, sun_distance, hit.kind, leaving, CLR_SCENE_ARGS) ? (float3)(0.0f)
+    return occluded(point, light, sun_distance, leaving_kind, leaving, CLR_SCENE_ARGS) ? (float3)(0.0f)
                                                                                       : color * (float)cosine;
 #else
     return color;
@@ -92,7 +92,9 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     result.color = info.background.xyz;
     if (hit.kind == CLR_HIT_NONE)
         return result;
-    /* The surface the point lies on, which its shadow and reflected rays leave (skip). */
+    /* What its shadow and reflected rays leave (skip): the surface hit, and for a hit settled
+     * onto another triangle that one too (CLR_SKIP_PAIR). */
+    int leaving_kind = hit.kind;
     const int leaving = hit.index;
 #if CLR_FEATURE_TRIANGLES
     /* A hit on a shared edge or corner is shaded as the triangle that owns it (triangle_ties);
@@ -100,7 +102,10 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
      * may lie up to the band off the owner's (a shadow ray skipping only the owner met the
      * triangle hit again at t ~ 0 in double, whose plane slack is below float corners' rounding). */
     if (hit.kind == CLR_HIT_TRIANGLE)
+    {
         hit.index = triangle_settled_index(hit.index, origin + hit.t * direction, hit.t, CLR_SCENE_ARGS);
+        leaving_kind = skip_kind_of_pair(leaving, hit.index);
+    }
 #endif
 #if CLR_FEATURE_MIRRORS
     if (kind_flags(hit.kind, hit.index, CLR_SCENE_ARGS) & CLR_SURFACE_MIRROR) {
@@ -119,12 +124,12 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
 #endif
         result.next_origin = point;
         result.next_direction = unit3(reflect_direction(direction, normal));
-        result.leaving_kind = hit.kind;
+        result.leaving_kind = leaving_kind;
         result.leaving_index = leaving;
         return result;
     }
 #endif
-    result.color = surface_color(hit, leaving, origin, direction, CLR_SCENE_ARGS);
+    result.color = surface_color(hit, leaving_kind, leaving, origin, direction, CLR_SCENE_ARGS);
 #if CLR_FEATURE_LIGHTS
     /* A material with a mirror share k_m adds that share of the reflected ray's colour. */
     if (info.light_count > 0 && kind_is_lit(hit.kind)) {
@@ -140,7 +145,7 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
             result.weight = mirror;
             result.next_origin = point;
             result.next_direction = unit3(reflect_direction(direction, normal));
-            result.leaving_kind = hit.kind;
+            result.leaving_kind = leaving_kind;
             result.leaving_index = leaving;
         }
     }

@@ -28,7 +28,7 @@ double sphere_hit_t(const Sphere& sphere, const Ray& ray, double t_max);
 
 // Whether surface (kind, index) is the one a secondary ray leaves.
 inline bool is_leaving(SurfaceId leaving, HitKind kind, int index) {
-    return leaving.kind == kind && leaving.index == index;
+    return leaving.kind == kind && (leaving.index == index || (leaving.also >= 0 && leaving.also == index));
 }
 
 // Where a ray's line meets a billboard's plane, in billboard coordinates:

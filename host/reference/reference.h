@@ -71,6 +71,9 @@ struct Hit {
 struct SurfaceId {
     HitKind kind = HitKind::None;
     int index = -1;
+    // A second surface of the same kind left too: for a triangle hit settled onto another
+    // (reference/shade.cpp, settled()), the one shaded; -1: none.
+    int also = -1;
 };
 
 // intersect(), decision_margin() and trace() see spheres, billboards and mesh triangles, not

@@ -152,9 +152,10 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
         if (hit.kind == HitKind::None)
             return sum + times(weight, found(observer, ColourSource::Background, scene.background));
         SurfacePoint surface = detail::surface_at(scene, current, hit);
-        // Shaded as the settled triangle; its shadow and reflected rays leave the one hit, on
-        // whose plane the point lies (the kernels' shade_hit() alike).
+        // Shaded as the settled triangle; its shadow and reflected rays leave both the one hit,
+        // on whose plane the point lies, and the one shaded (the kernels' shade_hit() alike).
         surface.id.index = found_hit.index;
+        if (hit.index != found_hit.index) surface.id.also = hit.index;
         if (observer) observer->surface_reached(hit, surface);
         if (!surface.is_mirror) {
             sum = sum + times(weight, surface_color(scene, hit, current, surface, reflections, observer));

@@ -40,6 +40,21 @@ typedef struct {
     real3 direction; /* unit length */
 } Ray;
 
+/* A secondary ray leaves surface (skip_kind, skip_index). From a hit settled onto another
+ * triangle (kinds/triangle.cl, triangle_settled_index()) it leaves two triangles: the one hit
+ * (skip_index) and the one shaded, encoded in skip_kind as CLR_SKIP_PAIR - owner. */
+#define CLR_SKIP_PAIR (-16)
+int skip_kind_of_pair(int hit_index, int owner)
+{
+    return owner == hit_index ? CLR_HIT_TRIANGLE : CLR_SKIP_PAIR - owner;
+}
+bool skips_surface(int kind, int index, int skip_kind, int skip_index)
+{
+    if (skip_kind <= CLR_SKIP_PAIR)
+        return kind == CLR_HIT_TRIANGLE && (index == skip_index || index == CLR_SKIP_PAIR - skip_kind);
+    return kind == skip_kind && index == skip_index;
+}
+
 /* A hit inside the kernels; ClrHit is its float form in buffers. */
 typedef struct {
     real t;    /* distance along the unit direction; +inf when kind is CLR_HIT_NONE */

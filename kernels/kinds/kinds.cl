@@ -71,7 +71,7 @@ CLR_PACKET_INLINE real16 kind_hit_distance16(int kind, int index, real3 origin, 
 #define CLR_KIND_NEAREST(KIND, name, FEATURE)                                                 \
     if (FEATURE) {                                                                            \
         for (int i = 0; i < info.name##_count; ++i) {                                         \
-            if (skip_kind == KIND && skip_index == i)                                         \
+            if (skips_surface(KIND, i, skip_kind, skip_index))                                \
                 continue;                                                                     \
             real t = name##_hit_distance(i, origin, direction, hit.t, CLR_SCENE_ARGS);        \
             if (t < hit.t) {                                                                  \

@@ -44,7 +44,7 @@ typedef struct {
  * test with first_hit). */
 bool lane_meets16(const ShadowRays16* rays, int lane, int kind, int index, CLR_SCENE_PARAMS)
 {
-    if (kind == rays->skip_kind[lane] && index == rays->skip_index[lane])
+    if (skips_surface(kind, index, rays->skip_kind[lane], rays->skip_index[lane]))
         return false;
     real3 origin = (real3)(rays->ox[lane], rays->oy[lane], rays->oz[lane]);
     real3 direction = (real3)(rays->dx[lane], rays->dy[lane], rays->dz[lane]);
@@ -61,7 +61,12 @@ bool lane_meets16(const ShadowRays16* rays, int lane, int kind, int index, CLR_S
 CLR_PACKET_INLINE int16 lanes_met16(real16 t, int kind, int index, mask16 reach, int16 skip_kind, int16 skip_index,
                                     real16 t_max)
 {
-    mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
+    int16 pair = skip_kind <= (int16)(CLR_SKIP_PAIR);
+    int16 skipped = select(skip_kind == (int16)(kind) && skip_index == (int16)(index),
+                           (int16)(kind == CLR_HIT_TRIANGLE ? -1 : 0) &
+                               (skip_index == (int16)(index) || ((int16)(CLR_SKIP_PAIR) - skip_kind) == (int16)(index)),
+                           pair);
+    mask16 tested = reach & convert_mask16(!skipped);
     return convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
 }
 

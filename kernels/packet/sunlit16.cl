@@ -92,7 +92,9 @@ CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits
     vstore16(select(vload16(0, rays->dy), light.y, ray), 0, rays->dy);
     vstore16(select(vload16(0, rays->dz), light.z, ray), 0, rays->dz);
     vstore16(select(vload16(0, rays->t_max), sun_distance, ray), 0, rays->t_max);
-    vstore16(select(vload16(0, rays->skip_kind), (int16)(CLR_HIT_TRIANGLE), lit), 0, rays->skip_kind);
+    /* The triangle hit and, where it was settled onto another, that one too (skip_kind_of_pair()). */
+    int16 pair_kind = select((int16)(CLR_SKIP_PAIR) - hits.index, (int16)(CLR_HIT_TRIANGLE), hits.index == leaving);
+    vstore16(select(vload16(0, rays->skip_kind), pair_kind, lit), 0, rays->skip_kind);
     vstore16(select(vload16(0, rays->skip_index), leaving, lit), 0, rays->skip_index);
 }
 #endif
