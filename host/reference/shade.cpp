@@ -46,7 +46,7 @@ Color times(const Color& a, const Color& b) { return {a.x * b.x, a.y * b.y, a.z 
 
 double norm1(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
 
-// A hit on a triangle within t 2^-16 (|.|_1) of one of its corners becomes the lowest triangle
+// A hit on a triangle within t 2^-20 (|.|_1) of one of its corners becomes the lowest triangle
 // of its mesh placement around that corner; else one within that band of one of its edge lines
 // (|(P - a) x e|_1 <= band |e|_1) the lowest along that edge (Scene::triangle_ties); t stays.
 // The kernels settle alike (kernels/kinds/triangle.cl, triangle_settled_index()).
@@ -55,7 +55,7 @@ Hit settled(const Scene& scene, const Ray& ray, Hit hit) {
     const auto& c = scene.triangles[hit.index].corners;
     const auto& ties = scene.triangle_ties[hit.index];
     const Vec3 p = detail::point_at(ray, hit.t);
-    const double band = hit.t * 0x1p-16;
+    const double band = hit.t * 0x1p-20;
     for (int k = 0; k < 3; ++k) {
         if (norm1(p - c[k]) <= band) {
             hit.index = ties[3 + k];
