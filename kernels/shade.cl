@@ -98,11 +98,12 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     const int leaving = hit.index;
 #if CLR_FEATURE_TRIANGLES
     /* A hit on a shared edge or corner is shaded as the triangle that owns it (triangle_ties);
-     * its secondary rays still leave the triangle hit: the point lies in that one's plane, and
-     * may lie up to the band off the owner's (a shadow ray skipping only the owner met the
-     * triangle hit again at t ~ 0 in double, whose plane slack is below float corners' rounding). */
-    if (hit.kind == CLR_HIT_TRIANGLE)
-    {
+     * its secondary rays leave both that one and the triangle hit. The point lies in the plane
+     * of the one hit but up to the band off the owner's: skipping only the owner, a shadow ray
+     * met the triangle hit again at t ~ 0 in double (whose plane slack is below the rounding of
+     * float corners); skipping only the one hit, it met the owner a band's width away under
+     * narrow lenses. */
+    if (hit.kind == CLR_HIT_TRIANGLE) {
         hit.index = triangle_settled_index(hit.index, origin + hit.t * direction, hit.t, CLR_SCENE_ARGS);
         leaving_kind = skip_kind_of_pair(leaving, hit.index);
     }
