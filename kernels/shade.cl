@@ -92,20 +92,21 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
     result.color = info.background.xyz;
     if (hit.kind == CLR_HIT_NONE)
         return result;
-    /* What its shadow and reflected rays leave (skip): the surface hit, and for a hit settled
-     * onto another triangle that one too (CLR_SKIP_PAIR). */
+    /* What its shadow and reflected rays leave (skip): the surface hit, and for a settled
+     * triangle hit also the lowest other triangle at that edge or corner (CLR_SKIP_PAIR). */
     int leaving_kind = hit.kind;
     const int leaving = hit.index;
 #if CLR_FEATURE_TRIANGLES
-    /* A hit on a shared edge or corner is shaded as the triangle that owns it (triangle_ties);
-     * its secondary rays leave both that one and the triangle hit. The point lies in the plane
-     * of the one hit but up to the band off the owner's: skipping only the owner, a shadow ray
-     * met the triangle hit again at t ~ 0 in double (whose plane slack is below the rounding of
-     * float corners); skipping only the one hit, it met the owner a band's width away under
-     * narrow lenses. */
+    /* A hit on a shared edge or corner is shaded as the lowest triangle there (triangle_ties).
+     * The point lies in the plane of the triangle hit, but only to the band in the other's: a
+     * shadow ray that skipped only the triangle shaded met the one hit again at t ~ 0 in double
+     * (whose plane slack is below the rounding of float corners); one that skipped only the one
+     * hit met the other a band's width away under narrow lenses; and where the one hit is the
+     * lowest, the double kernel met a valley's other side again at t ~ 0. */
     if (hit.kind == CLR_HIT_TRIANGLE) {
-        hit.index = triangle_settled_index(hit.index, origin + hit.t * direction, hit.t, CLR_SCENE_ARGS);
-        leaving_kind = skip_kind_of_pair(leaving, hit.index);
+        int other;
+        hit.index = triangle_settled_index(hit.index, origin + hit.t * direction, hit.t, &other, CLR_SCENE_ARGS);
+        leaving_kind = skip_kind_of_pair(leaving, other);
     }
 #endif
 #if CLR_FEATURE_MIRRORS

@@ -49,8 +49,11 @@ double norm1(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs
 // A hit on a triangle within t 2^-20 (|.|_1) of one of its corners becomes the lowest triangle
 // of its mesh placement around that corner; else one within that band of one of its edge lines
 // (|(P - a) x e|_1 <= band |e|_1) the lowest along that edge (Scene::triangle_ties); t stays.
-// The kernels settle alike (kernels/kinds/triangle.cl, triangle_settled_index()).
-Hit settled(const Scene& scene, const Ray& ray, Hit hit) {
+// `other` receives the lowest triangle there other than the one hit (that one where there is
+// none): secondary rays leave both. The kernels settle alike (kernels/kinds/triangle.cl,
+// triangle_settled_index()).
+Hit settled(const Scene& scene, const Ray& ray, Hit hit, int& other) {
+    other = hit.index;
     if (hit.kind != HitKind::Triangle || scene.triangle_ties.size() != scene.triangles.size()) return hit;
     const auto& c = scene.triangles[hit.index].corners;
     const auto& ties = scene.triangle_ties[hit.index];
@@ -58,7 +61,8 @@ Hit settled(const Scene& scene, const Ray& ray, Hit hit) {
     const double band = hit.t * 0x1p-20;
     for (int k = 0; k < 3; ++k) {
         if (norm1(p - c[k]) <= band) {
-            hit.index = ties[3 + k];
+            other = ties[3 + k];
+            hit.index = std::min(hit.index, other);
             return hit;
         }
     }
@@ -66,7 +70,8 @@ Hit settled(const Scene& scene, const Ray& ray, Hit hit) {
         const Vec3& a = c[(k + 1) % 3];
         const Vec3 e = c[(k + 2) % 3] - a;
         if (norm1(cross(p - a, e)) <= band * norm1(e)) {
-            hit.index = ties[k];
+            other = ties[k];
+            hit.index = std::min(hit.index, other);
             return hit;
         }
     }
@@ -148,14 +153,16 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
         // The primary ray sees only the depths the camera's clip distances keep.
         const Hit found_hit = reflections == 0 ? intersect_in_view(scene, current, observer)
                                                : intersect(scene, current, kInfinity, leaving, observer);
-        const Hit hit = settled(scene, current, found_hit);
+        int other = found_hit.index;
+        const Hit hit = settled(scene, current, found_hit, other);
         if (hit.kind == HitKind::None)
             return sum + times(weight, found(observer, ColourSource::Background, scene.background));
         SurfacePoint surface = detail::surface_at(scene, current, hit);
         // Shaded as the settled triangle; its shadow and reflected rays leave both the one hit,
-        // on whose plane the point lies, and the one shaded (the kernels' shade_hit() alike).
+        // on whose plane the point lies, and the lowest other one there (the kernels' shade_hit()
+        // alike).
         surface.id.index = found_hit.index;
-        if (hit.index != found_hit.index) surface.id.also = hit.index;
+        if (other != found_hit.index) surface.id.also = other;
         if (observer) observer->surface_reached(hit, surface);
         if (!surface.is_mirror) {
             sum = sum + times(weight, surface_color(scene, hit, current, surface, reflections, observer));

@@ -509,38 +509,52 @@ void compute_triangle_ties(Scene& scene) {
     const std::size_t count = scene.triangles.size();
     scene.triangle_ties.resize(count);
     for (std::size_t t = 0; t < count; ++t) scene.triangle_ties[t].fill(static_cast<std::int32_t>(t));  // a triangle of no mesh ties only itself
+    // The two lowest triangles around a vertex or along an edge: the lowest other than t is the
+    // first unless that is t.
+    struct Lowest {
+        std::int32_t first = -1, second = -1;
+        void add(std::int32_t t) {
+            if (first < 0 || t < first) {
+                second = first;
+                first = t;
+            } else if (t != first && (second < 0 || t < second)) {
+                second = t;
+            }
+        }
+        std::int32_t other_than(std::int32_t t) const { return first != t ? first : second >= 0 ? second : t; }
+    };
     for (const Mesh& mesh : scene.meshes) {
         const std::size_t first = mesh.first_triangle, end = std::min(count, first + mesh.triangle_count);
         if (first >= end) continue;
-        // Each distinct position of the placement numbered; a vertex's owner is the lowest triangle
-        // around it, an edge's (a pair of numbers) the lowest triangle along it.
+        // Each distinct position of the placement numbered, by its exact coordinates.
         std::unordered_map<CornerKey, std::int32_t, CornerKeyHash> numbers;
         numbers.reserve((end - first) * 2);
-        std::vector<std::int32_t> vertex_owner;
+        std::vector<Lowest> around;
         std::vector<std::array<std::int32_t, 3>> ids(end - first);
         for (std::size_t t = first; t < end; ++t)
             for (int k = 0; k < 3; ++k) {
                 const Vec3& c = scene.triangles[t].corners[k];
-                const auto [it, added] = numbers.emplace(CornerKey{c.x, c.y, c.z}, static_cast<std::int32_t>(vertex_owner.size()));
-                if (added) vertex_owner.push_back(static_cast<std::int32_t>(t));  // t ascends: the first is the lowest
+                const auto [it, added] = numbers.emplace(CornerKey{c.x, c.y, c.z}, static_cast<std::int32_t>(around.size()));
+                if (added) around.emplace_back();
+                around[it->second].add(static_cast<std::int32_t>(t));
                 ids[t - first][k] = it->second;
             }
-        std::unordered_map<std::uint64_t, std::int32_t> edge_owner;
-        edge_owner.reserve((end - first) * 2);
+        std::unordered_map<std::uint64_t, Lowest> along;
+        along.reserve((end - first) * 2);
         const auto edge_key = [](std::int32_t a, std::int32_t b) {
             if (a > b) std::swap(a, b);
             return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
         };
         for (std::size_t t = first; t < end; ++t)
             for (int k = 0; k < 3; ++k)
-                edge_owner.emplace(edge_key(ids[t - first][(k + 1) % 3], ids[t - first][(k + 2) % 3]),
-                                   static_cast<std::int32_t>(t));
+                along[edge_key(ids[t - first][(k + 1) % 3], ids[t - first][(k + 2) % 3])].add(static_cast<std::int32_t>(t));
         for (std::size_t t = first; t < end; ++t) {
             auto& ties = scene.triangle_ties[t];
             const auto& id = ids[t - first];
+            const std::int32_t self = static_cast<std::int32_t>(t);
             for (int k = 0; k < 3; ++k) {
-                ties[k] = edge_owner.at(edge_key(id[(k + 1) % 3], id[(k + 2) % 3]));
-                ties[3 + k] = vertex_owner[id[k]];
+                ties[k] = along.at(edge_key(id[(k + 1) % 3], id[(k + 2) % 3])).other_than(self);
+                ties[3 + k] = around[id[k]].other_than(self);
             }
         }
     }

@@ -195,11 +195,13 @@ struct Scene {
     // Unit normals at a triangle's three corners, where its face names one for every corner
     // (transformed by the mesh's scale as normals are: divided by it, then normalised).
     std::vector<std::array<Vec3, 3>> corner_normals;
-    // Which triangle a hit on a shared edge or vertex is shaded as (kernels/kinds/triangle_ties.cl,
-    // reference/shade.cpp): for each triangle, [k] (k = 0..2) the lowest index of the triangles of
-    // its mesh placement sharing its edge opposite corner k (corners k+1, k+2), [3 + k] the lowest
-    // sharing its corner k, by exact corner positions (compute_triangle_ties(), mesh_loader.h).
-    // Empty, or another size than `triangles`: no settling.
+    // Which triangle a hit on a shared edge or vertex is shaded as (kernels/kinds/triangle.cl,
+    // reference/shade.cpp): for each triangle, [k] (k = 0..2) the lowest index other than its own
+    // among the triangles of its mesh placement sharing its edge opposite corner k (corners k+1,
+    // k+2), [3 + k] the same around its corner k, by exact corner positions; its own index where
+    // none shares it (compute_triangle_ties(), mesh_loader.h). A settled hit is shaded as the lower
+    // of the two and its secondary rays leave both. Empty, or another size than `triangles`: no
+    // settling.
     std::vector<std::array<std::int32_t, 6>> triangle_ties;
     // The double-precision reference's own index over `triangles` (reference/triangle_tree.h),
     // made for the eye-relative copy it traces; null: the reference tests every triangle.

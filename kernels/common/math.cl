@@ -40,13 +40,14 @@ typedef struct {
     real3 direction; /* unit length */
 } Ray;
 
-/* A secondary ray leaves surface (skip_kind, skip_index). From a hit settled onto another
- * triangle (kinds/triangle.cl, triangle_settled_index()) it leaves two triangles: the one hit
- * (skip_index) and the one shaded, encoded in skip_kind as CLR_SKIP_PAIR - owner. */
+/* A secondary ray leaves surface (skip_kind, skip_index). From a settled triangle hit
+ * (kinds/triangle.cl, triangle_settled_index()) it leaves two triangles: the one hit
+ * (skip_index) and the lowest other one at its edge or corner, encoded in skip_kind as
+ * CLR_SKIP_PAIR - other. */
 #define CLR_SKIP_PAIR (-16)
-int skip_kind_of_pair(int hit_index, int owner)
+int skip_kind_of_pair(int hit_index, int other)
 {
-    return owner == hit_index ? CLR_HIT_TRIANGLE : CLR_SKIP_PAIR - owner;
+    return other == hit_index ? CLR_HIT_TRIANGLE : CLR_SKIP_PAIR - other;
 }
 bool skips_surface(int kind, int index, int skip_kind, int skip_index)
 {

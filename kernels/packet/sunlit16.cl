@@ -45,7 +45,8 @@ typedef struct {
 /* The lanes of `hits` on triangles in a lit scene, shaded as sunlit_colors16() shades a lane
  * (each lane's values the same bits), 16 at once: a lane facing away from the sun turns black,
  * a lane facing it gets its lit colour and its shadow ray. */
-CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits, int16 leaving, SunlitLanes16* out,
+CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits, int16 leaving, int16 others,
+                                          SunlitLanes16* out,
                                           CLR_SCENE_PARAMS)
 {
     int16 on = hits.kind == (int16)(CLR_HIT_TRIANGLE);
@@ -92,8 +93,8 @@ CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits
     vstore16(select(vload16(0, rays->dy), light.y, ray), 0, rays->dy);
     vstore16(select(vload16(0, rays->dz), light.z, ray), 0, rays->dz);
     vstore16(select(vload16(0, rays->t_max), sun_distance, ray), 0, rays->t_max);
-    /* The triangle hit and, where it was settled onto another, that one too (skip_kind_of_pair()). */
-    int16 pair_kind = select((int16)(CLR_SKIP_PAIR) - hits.index, (int16)(CLR_HIT_TRIANGLE), hits.index == leaving);
+    /* The triangle hit and, where it was settled, the lowest other one there (skip_kind_of_pair()). */
+    int16 pair_kind = select((int16)(CLR_SKIP_PAIR) - others, (int16)(CLR_HIT_TRIANGLE), others == leaving);
     vstore16(select(vload16(0, rays->skip_kind), pair_kind, lit), 0, rays->skip_kind);
     vstore16(select(vload16(0, rays->skip_index), leaving, lit), 0, rays->skip_index);
 }
@@ -146,11 +147,12 @@ CLR_PACKET_INLINE void sunlit_lanes_one_by_one16(real3 eye, Directions16 d, Hits
 
 #if CLR_FEATURE_TRIANGLES
 /* `hits` with each lane on a triangle settled as shade_hit() settles it (triangle_settled_index()). */
-CLR_PACKET_INLINE Hits16 settled_hits16(real3 eye, Directions16 d, Hits16 hits, CLR_SCENE_PARAMS)
+CLR_PACKET_INLINE Hits16 settled_hits16(real3 eye, Directions16 d, Hits16 hits, int16* others, CLR_SCENE_PARAMS)
 {
+    *others = hits.index;
     if (!any_lanes16(hits.kind == (int16)(CLR_HIT_TRIANGLE)))
         return hits;
-    int kinds[16], indices[16];
+    int kinds[16], indices[16], other[16];
     real ts[16], dx[16], dy[16], dz[16];
     vstore16(hits.kind, 0, kinds);
     vstore16(hits.index, 0, indices);
@@ -159,12 +161,14 @@ CLR_PACKET_INLINE Hits16 settled_hits16(real3 eye, Directions16 d, Hits16 hits, 
     vstore16(d.y, 0, dy);
     vstore16(d.z, 0, dz);
     for (int lane = 0; lane < 16; ++lane) {
+        other[lane] = indices[lane];
         if (kinds[lane] != CLR_HIT_TRIANGLE)
             continue;
         real3 point = eye + ts[lane] * (real3)(dx[lane], dy[lane], dz[lane]);
-        indices[lane] = triangle_settled_index(indices[lane], point, ts[lane], CLR_SCENE_ARGS);
+        indices[lane] = triangle_settled_index(indices[lane], point, ts[lane], &other[lane], CLR_SCENE_ARGS);
     }
     hits.index = vload16(0, indices);
+    *others = vload16(0, other);
     return hits;
 }
 #endif
@@ -189,7 +193,8 @@ CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hit
     vstore16((int16)(-1), 0, rays->skip_index);
 #if CLR_FEATURE_TRIANGLES
     int16 leaving = hits.index; /* the triangles hit, which their shadow rays skip (shade_hit()) */
-    hits = settled_hits16(eye, d, hits, CLR_SCENE_ARGS);
+    int16 others;               /* and the lowest other triangle where a hit was settled */
+    hits = settled_hits16(eye, d, hits, &others, CLR_SCENE_ARGS);
 #endif
     /* Lanes on other lit kinds (and every lit lane of a scene the sun does not light), one by
      * one: surface_color() in sun mode, up to its shadow ray. */
@@ -204,7 +209,7 @@ CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hit
         sunlit_lanes_one_by_one16(eye, d, hits, by_lane, &out, CLR_SCENE_ARGS);
 #if CLR_FEATURE_TRIANGLES
     if (info.lit)
-        sunlit_triangles16(eye, d, hits, leaving, &out, CLR_SCENE_ARGS);
+        sunlit_triangles16(eye, d, hits, leaving, others, &out, CLR_SCENE_ARGS);
 #endif
     int16 wanted = vload16(0, rays->wanted) != (int16)(0);
     if (!any_lanes16(wanted))
