@@ -7,6 +7,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "scene/triangle_ties.h"
 #include "support/scene_builder.h"
 
 namespace clr::bench {
@@ -345,6 +346,7 @@ Scene make_bench_scene(const BenchSceneSpec& spec, int width, int height) {
         std::uint64_t seed = 0x5EEDB0A4D000ull + 1000003ull * spec.spheres + spec.billboards + 7919ull * spec.impostors;
         add_field_objects(scene, spec, seed);
     }
+    compute_triangle_ties(scene);  // as a scene file's meshes have them
     return scene;
 }
 

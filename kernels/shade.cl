@@ -96,7 +96,7 @@ ShadeResult shade_hit(Hit hit, real3 origin, real3 direction, int reflections, C
      * triangle hit also the lowest other triangle at that edge or corner (CLR_SKIP_PAIR). */
     int leaving_kind = hit.kind;
     const int leaving = hit.index;
-#if CLR_FEATURE_TRIANGLES
+#if CLR_FEATURE_TRIANGLE_TIES
     /* A hit on a shared edge or corner is shaded as the lowest triangle there (triangle_ties).
      * The point lies in the plane of the triangle hit, but only to the band in the other's: a
      * shadow ray that skipped only the triangle shaded met the one hit again at t ~ 0 in double

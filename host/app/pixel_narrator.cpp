@@ -253,6 +253,26 @@ void PixelNarrator::nearest_found(const reference::Hit& hit) {
              << (clip_start_ > 0 ? " from the eye (t = " + explain_number(hit.t) + " from o')" : "") << "\n";
 }
 
+void PixelNarrator::hit_settled(const reference::Hit& hit, const reference::TieSettled& tie) {
+    const std::string corner = "c" + std::to_string(tie.k);
+    const std::string edge = "c" + std::to_string((tie.k + 1) % 3) + "-c" + std::to_string((tie.k + 2) % 3);
+    out_ << "the hit point lies on " << (tie.at_corner ? "corner " + corner : "edge " + edge) << " of "
+         << surface_name(HitKind::Triangle, hit.index) << " to within the band t 2^-20 = " << explain_number(tie.band)
+         << (tie.at_corner ? " (|P - " + corner + "|_1 = " : " (its distance |(P - a) x e|_1 / |e|_1 = ")
+         << explain_number(tie.measure) << "): ";
+    const std::string where = tie.at_corner ? "corner" : "edge";
+    if (tie.other == hit.index)
+        out_ << "no other triangle of its mesh shares that " << where << ", so it is shaded as itself\n";
+    else if (tie.shaded == hit.index)
+        out_ << "it is the lowest-numbered triangle there (beside " << surface_name(HitKind::Triangle, tie.other)
+             << "), so it is shaded as itself whichever side of the " << where << " the rounding took; shadow and "
+             << "reflected rays leave both\n";
+    else
+        out_ << "the lowest-numbered triangle there is " << surface_name(HitKind::Triangle, tie.shaded)
+             << ", shaded in its place whichever side of the " << where << " the rounding took; shadow and "
+             << "reflected rays leave both\n";
+}
+
 void PixelNarrator::surface_reached(const reference::Hit& hit, const reference::detail::SurfacePoint& surface) {
     surface_hit_ = hit;
     surface_ = surface;

@@ -38,6 +38,7 @@ public:
     void plane_tested(int index, double t) override;
     void nearest_found(const reference::Hit& hit) override;
     void light_seen(int index, double cosine, bool hidden, double highlight) override;
+    void hit_settled(const reference::Hit& hit, const reference::TieSettled& tie) override;
     void surface_reached(const reference::Hit& hit, const reference::detail::SurfacePoint& surface) override;
     void sun_seen(const reference::detail::SunDirection& sun, double cosine) override;
     void colour_found(reference::ColourSource source, const Color& colour) override;

@@ -2,6 +2,7 @@
 // shadows; docs/scene-format.md, Conventions: Mirrors).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "kinds/kinds.h"
 #include "reference/geometry.h"
@@ -49,33 +50,33 @@ double norm1(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs
 // A hit on a triangle within t 2^-20 (|.|_1) of one of its corners becomes the lowest triangle
 // of its mesh placement around that corner; else one within that band of one of its edge lines
 // (|(P - a) x e|_1 <= band |e|_1) the lowest along that edge (Scene::triangle_ties); t stays.
-// `other` receives the lowest triangle there other than the one hit (that one where there is
-// none): secondary rays leave both. The kernels settle alike (kernels/kinds/triangle.cl,
-// triangle_settled_index()).
-Hit settled(const Scene& scene, const Ray& ray, Hit hit, int& other) {
-    other = hit.index;
-    if (hit.kind != HitKind::Triangle || scene.triangle_ties.size() != scene.triangles.size()) return hit;
+// The tie's `other` is the lowest triangle there other than the one hit (that one where there
+// is none): secondary rays leave both. The kernels settle alike (kernels/kinds/triangle.cl,
+// triangle_settled_index()). Nothing (no settling) for a hit off every edge and corner.
+std::optional<TieSettled> settled(const Scene& scene, const Ray& ray, const Hit& hit) {
+    if (hit.kind != HitKind::Triangle || scene.triangle_ties.size() != scene.triangles.size()) return std::nullopt;
     const auto& c = scene.triangles[hit.index].corners;
     const auto& ties = scene.triangle_ties[hit.index];
     const Vec3 p = detail::point_at(ray, hit.t);
-    const double band = hit.t * 0x1p-20;
-    for (int k = 0; k < 3; ++k) {
-        if (norm1(p - c[k]) <= band) {
-            other = ties[3 + k];
-            hit.index = std::min(hit.index, other);
-            return hit;
-        }
-    }
+    TieSettled tie;
+    tie.band = hit.t * 0x1p-20;
+    const auto found = [&](bool at_corner, int k, double measure) {
+        tie.at_corner = at_corner;
+        tie.k = k;
+        tie.measure = measure;
+        tie.other = ties[at_corner ? 3 + k : k];
+        tie.shaded = std::min(hit.index, tie.other);
+        return tie;
+    };
+    for (int k = 0; k < 3; ++k)
+        if (norm1(p - c[k]) <= tie.band) return found(true, k, norm1(p - c[k]));
     for (int k = 0; k < 3; ++k) {
         const Vec3& a = c[(k + 1) % 3];
         const Vec3 e = c[(k + 2) % 3] - a;
-        if (norm1(cross(p - a, e)) <= band * norm1(e)) {
-            other = ties[k];
-            hit.index = std::min(hit.index, other);
-            return hit;
-        }
+        const double across = norm1(cross(p - a, e));
+        if (across <= tie.band * norm1(e)) return found(false, k, across / norm1(e));
     }
-    return hit;
+    return std::nullopt;
 }
 
 
@@ -153,16 +154,20 @@ Color trace(const Scene& scene, const Ray& ray, TraceObserver* observer) {
         // The primary ray sees only the depths the camera's clip distances keep.
         const Hit found_hit = reflections == 0 ? intersect_in_view(scene, current, observer)
                                                : intersect(scene, current, kInfinity, leaving, observer);
-        int other = found_hit.index;
-        const Hit hit = settled(scene, current, found_hit, other);
-        if (hit.kind == HitKind::None)
+        if (found_hit.kind == HitKind::None)
             return sum + times(weight, found(observer, ColourSource::Background, scene.background));
+        const std::optional<TieSettled> tie = settled(scene, current, found_hit);
+        Hit hit = found_hit;
+        if (tie) {
+            if (observer) observer->hit_settled(found_hit, *tie);
+            hit.index = tie->shaded;
+        }
         SurfacePoint surface = detail::surface_at(scene, current, hit);
         // Shaded as the settled triangle; its shadow and reflected rays leave both the one hit,
         // on whose plane the point lies, and the lowest other one there (the kernels' shade_hit()
         // alike).
         surface.id.index = found_hit.index;
-        if (other != found_hit.index) surface.id.also = other;
+        if (tie && tie->other != found_hit.index) surface.id.also = tie->other;
         if (observer) observer->surface_reached(hit, surface);
         if (!surface.is_mirror) {
             sum = sum + times(weight, surface_color(scene, hit, current, surface, reflections, observer));

@@ -31,6 +31,17 @@ enum class ColourSource {
     PhongLit,          // a surface lit by the scene's lights (Blinn-Phong), mirror share not yet added
 };
 
+// A triangle hit on a shared edge or corner of its mesh, shaded as the lowest triangle there
+// (reference/shade.cpp; docs/scene-format.md, Meshes, "Shared edges and vertices").
+struct TieSettled {
+    bool at_corner = false;  // a corner of the triangle hit, else one of its edges
+    int k = 0;               // that corner k, or the edge opposite corner k
+    double measure = 0;      // |P - c_k|_1, or |(P - a) x e|_1 / |e|_1 for the edge from a along e
+    double band = 0;         // t 2^-20: the measure is at most this
+    int other = -1;          // the lowest triangle there other than the one hit (itself if none)
+    int shaded = -1;         // the one shaded: the lower of the two
+};
+
 class TraceObserver {
 public:
     virtual ~TraceObserver() = default;
@@ -64,6 +75,8 @@ public:
     // What the search found (kind None: nothing).
     virtual void nearest_found(const Hit& /*hit*/) {}
 
+    // The triangle hit lies on a shared edge or corner: `tie.shaded` is shaded in its place.
+    virtual void hit_settled(const Hit& /*hit*/, const TieSettled& /*tie*/) {}
     // The surface a hit landed on.
     virtual void surface_reached(const Hit& /*hit*/, const detail::SurfacePoint& /*surface*/) {}
     // The direction to the sun from a lit point and the cosine n.l.

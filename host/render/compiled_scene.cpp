@@ -76,14 +76,6 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     compiled.triangle_normals.reserve(scene.corner_normals.size() * 3);
     for (const auto& normals : scene.corner_normals)
         for (const Vec3& normal : normals) compiled.triangle_normals.push_back(to_float4(normal));
-    // Which triangle a hit on a shared edge or corner is shaded as (kernels/kinds/triangle_ties.cl);
-    // without Scene::triangle_ties each triangle ties only itself.
-    const bool tied = scene.triangle_ties.size() == scene.triangles.size();
-    compiled.triangle_ties.resize(scene.triangles.size());
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-        cl_int8& ties = compiled.triangle_ties[i];
-        for (int k = 0; k < 8; ++k) ties.s[k] = tied && k < 6 ? scene.triangle_ties[i][k] : static_cast<cl_int>(i);
-    }
     for (const Plane& plane : scene.planes) compiled.planes.push_back(PlaneKind::device(plane, origin));
     compiled.lights.resize(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) compiled.lights[i].color = to_float4(scene.lights[i].color);

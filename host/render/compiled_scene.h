@@ -21,7 +21,6 @@ struct CompiledScene {
     std::vector<ClrBillboard> billboards;  // the frame's billboards, in FrameGeometry's order
     std::vector<ClrTriangle> triangles;    // the scene's mesh triangles
     std::vector<cl_float4> triangle_normals;  // Scene::corner_normals, three a triangle
-    std::vector<cl_int8> triangle_ties;       // Scene::triangle_ties, one a triangle (s6, s7 unused)
     std::vector<ClrPlane> planes;
     std::vector<ClrLight> lights;        // the scene's point lights (positions move with the origin)
     std::vector<ClrMaterial> materials;  // Scene::materials

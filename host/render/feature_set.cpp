@@ -6,10 +6,29 @@
 #include "kinds/kinds.h"
 
 namespace clr {
+namespace {
+
+// Whether two `triangle` surfaces of the scene differ in flat colour: each mesh has one, so only
+// those, which share corners as one mesh (Mesh::surface_triangle), can show two at an edge.
+bool surface_triangle_colors_differ(const Scene& scene) {
+    const Mesh* first = nullptr;
+    for (const Mesh& mesh : scene.meshes) {
+        if (!mesh.surface_triangle) continue;
+        if (!first)
+            first = &mesh;
+        else if (!(mesh.ambient.x == first->ambient.x && mesh.ambient.y == first->ambient.y &&
+                   mesh.ambient.z == first->ambient.z))
+            return true;
+    }
+    return false;
+}
+
+}  // namespace
 
 FeatureSet FeatureSet::all() {
     FeatureSet features;
     features.spheres = features.billboards = features.triangles = features.planes = features.textures = true;
+    features.triangle_ties = true;
     features.lights = features.clip = true;
     features.alpha = features.sun = features.mirrors = true;
     features.bvh = true;
@@ -55,6 +74,8 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     // Primary rays are culled by screen tiles; shadow and mirror rays test every object
     // unless a BVH is compiled in, which pays from a few dozen objects on.
     features.bvh = (features.sun || features.lights || features.mirrors) && bvh_objects(scene) > kBvhMinObjects;
+    features.triangle_ties = features.triangles && (features.sun || features.lights || features.mirrors ||
+                                                    surface_triangle_colors_differ(scene));
     return features;
 }
 
@@ -67,7 +88,7 @@ std::string FeatureSet::build_options() const {
         {"CLR_FEATURE_LIGHTS", lights},       {"CLR_FEATURE_MIRRORS", mirrors},
         {"CLR_FEATURE_PLANES", planes},       {"CLR_FEATURE_SPHERES", spheres},
         {"CLR_FEATURE_SUN", sun},             {"CLR_FEATURE_TEXTURES", textures},
-        {"CLR_FEATURE_TRIANGLES", triangles},
+        {"CLR_FEATURE_TRIANGLES", triangles}, {"CLR_FEATURE_TRIANGLE_TIES", triangle_ties},
     };
     std::string options;
     for (const auto& [name, on] : macros) options += (options.empty() ? "" : " ") + ("-D" + name + "=" + (on ? "1" : "0"));

@@ -16,6 +16,10 @@ struct FeatureSet {
     bool spheres = false;      // at least one sphere
     bool billboards = false;   // at least one billboard
     bool triangles = false;    // at least one mesh triangle
+    // Hits on shared mesh edges and corners settled on one triangle (Scene::triangle_ties): where
+    // the triangles there can shade differently (lit, mirrors, or `triangle` surfaces of
+    // different colours sharing corners).
+    bool triangle_ties = false;
     bool planes = false;       // at least one plane (unbounded: outside the BVH and the tiles)
     bool lights = false;       // Blinn-Phong point lights (the fall 2019 format), with shadow rays
     bool clip = false;         // near/far clip depths for primary rays (the 2025 WebGL scenes)

@@ -22,7 +22,7 @@ struct SceneArgs {
     cl::Buffer billboards;  // ClrBillboard[info.billboard_count]
     cl::Buffer triangles;   // ClrTriangle[info.triangle_count]
     cl::Buffer triangle_normals;  // float4: three corner normals per triangle that has them
-    cl::Buffer triangle_ties;     // int8 per triangle: Scene::triangle_ties (s0..s5)
+    cl::Buffer triangle_ties;     // int, six a triangle: Scene::triangle_ties (CLR_FEATURE_TRIANGLE_TIES)
     cl::Buffer planes;      // ClrPlane[info.plane_count]
     cl::Buffer lights;      // ClrLight[info.light_count]
     cl::Buffer materials;   // ClrMaterial: [0] the default, then each distinct material

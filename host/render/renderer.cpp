@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <future>
 #include <stdexcept>
@@ -148,8 +149,7 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         // Corner normals do not move with the eye: uploaded once, not with each frame's geometry.
         scene_args_.triangle_normals = upload(device_.context(), compiled_.triangle_normals);
         compiled_.triangle_normals = {};  // the buffer's now, as the texels are
-        scene_args_.triangle_ties = upload(device_.context(), compiled_.triangle_ties);
-        compiled_.triangle_ties = {};
+        scene_args_.triangle_ties = upload_triangle_ties();
         scene_args_.materials = upload(device_.context(), compiled_.materials);
         upload_geometry();
         uploaded_ = true;
@@ -159,6 +159,19 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
         throw DeviceError(describe_cl_error(error, "uploading the scene to '" + device_.entry().device_name + "'"));
     }
     if (options.max_buffer_bytes) max_buffer_bytes_ = std::min(max_buffer_bytes_, options.max_buffer_bytes);
+}
+
+cl::Buffer Renderer::upload_triangle_ties() const {
+    // Only programs that settle hits on shared edges read the neighbours (six ints a triangle,
+    // as Scene::triangle_ties holds them, uploaded without a copy); others get the one-element
+    // stand-in. A scene built without them ties each triangle to itself.
+    using Ties = std::array<std::int32_t, 6>;
+    static_assert(sizeof(Ties) == 6 * sizeof(cl_int));
+    if (!features_.triangle_ties) return upload(device_.context(), std::vector<Ties>{});
+    if (scene_.triangle_ties.size() == scene_.triangles.size()) return upload(device_.context(), scene_.triangle_ties);
+    std::vector<Ties> alone(scene_.triangles.size());
+    for (std::size_t t = 0; t < alone.size(); ++t) alone[t].fill(static_cast<std::int32_t>(t));
+    return upload(device_.context(), alone);
 }
 
 void Renderer::upload_geometry() {

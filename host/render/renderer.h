@@ -139,6 +139,7 @@ private:
     // the packets walk the BVH, uploads tiles without lists.
     const ScreenTiles& upload_screen_tiles(const FrameCamera& camera);
     void upload_geometry();
+    cl::Buffer upload_triangle_ties() const;  // SceneArgs::triangle_ties
 
     DeviceContext& device_;
     Scene scene_;  // the renderer's own copy (images are shared)

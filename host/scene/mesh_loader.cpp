@@ -3,7 +3,6 @@
 #include <sys/stat.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -12,7 +11,6 @@
 #include <new>
 #include <set>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 #include "core/errors.h"
@@ -23,6 +21,7 @@
 #include "scene/mesh_cache.h"
 #include "scene/mtl_library.h"
 #include "scene/obj_reader.h"
+#include "scene/triangle_ties.h"
 #include "scene/value_ranges.h"
 
 namespace clr {
@@ -295,12 +294,15 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const std::vector<s
     reserve_more(scene.triangles, model.triangles.size());
     if (!model.triangle_normals.empty() && model.triangle_normals.front()[0] >= 0)
         reserve_more(scene.corner_normals, model.triangles.size());
+    std::vector<std::array<std::uint32_t, 3>> kept_faces;  // the vertices of each triangle kept
+    kept_faces.reserve(model.triangles.size());
     for (std::size_t f = 0; f < model.triangles.size(); ++f) {
         Triangle triangle;
         for (int k = 0; k < 3; ++k) triangle.corners[k] = placed[model.triangles[f][k]];
         const bool kept = renders_exactly_enough(triangle.corners);
         rounding.count(model, f, mesh.scale, triangle.corners, kept);
         if (!kept) continue;
+        kept_faces.push_back(model.triangles[f]);
         triangle.mesh = mesh_index;
         const auto& normal_indices = model.triangle_normals[f];
         std::array<Vec3, 3> normals;
@@ -321,6 +323,11 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const std::vector<s
                       "): it draws nothing");
     }
     warn_about_placement_rounding(filename, what, rounding, model.triangles.size(), placed);
+    // A scene's `triangle` surfaces share edges with each other: compute_triangle_ties() ties them.
+    if (!mesh.surface_triangle) {
+        tie_placed_mesh(scene, mesh.first_triangle, placed, kept_faces);
+        mesh.tied = true;
+    }
     scene.meshes.push_back(std::move(mesh));
 }
 
@@ -476,86 +483,6 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             kept.erase(key);
             material_lists.erase(key);
             failed.erase(key);
-        }
-    }
-}
-
-namespace {
-
-struct CornerKey {
-    double x, y, z;
-    bool operator==(const CornerKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-
-struct CornerKeyHash {
-    std::size_t operator()(const CornerKey& k) const {
-        // +0.0 and -0.0 are one position.
-        const auto bits = [](double v) {
-            if (v == 0) v = 0;
-            std::uint64_t u;
-            std::memcpy(&u, &v, sizeof u);
-            return u;
-        };
-        std::uint64_t h = bits(k.x) * 0x9E3779B97F4A7C15ull;
-        h ^= bits(k.y) + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
-        h ^= bits(k.z) + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
-        return static_cast<std::size_t>(h);
-    }
-};
-
-}  // namespace
-
-void compute_triangle_ties(Scene& scene) {
-    const std::size_t count = scene.triangles.size();
-    scene.triangle_ties.resize(count);
-    for (std::size_t t = 0; t < count; ++t) scene.triangle_ties[t].fill(static_cast<std::int32_t>(t));  // a triangle of no mesh ties only itself
-    // The two lowest triangles around a vertex or along an edge: the lowest other than t is the
-    // first unless that is t.
-    struct Lowest {
-        std::int32_t first = -1, second = -1;
-        void add(std::int32_t t) {
-            if (first < 0 || t < first) {
-                second = first;
-                first = t;
-            } else if (t != first && (second < 0 || t < second)) {
-                second = t;
-            }
-        }
-        std::int32_t other_than(std::int32_t t) const { return first != t ? first : second >= 0 ? second : t; }
-    };
-    for (const Mesh& mesh : scene.meshes) {
-        const std::size_t first = mesh.first_triangle, end = std::min(count, first + mesh.triangle_count);
-        if (first >= end) continue;
-        // Each distinct position of the placement numbered, by its exact coordinates.
-        std::unordered_map<CornerKey, std::int32_t, CornerKeyHash> numbers;
-        numbers.reserve((end - first) * 2);
-        std::vector<Lowest> around;
-        std::vector<std::array<std::int32_t, 3>> ids(end - first);
-        for (std::size_t t = first; t < end; ++t)
-            for (int k = 0; k < 3; ++k) {
-                const Vec3& c = scene.triangles[t].corners[k];
-                const auto [it, added] = numbers.emplace(CornerKey{c.x, c.y, c.z}, static_cast<std::int32_t>(around.size()));
-                if (added) around.emplace_back();
-                around[it->second].add(static_cast<std::int32_t>(t));
-                ids[t - first][k] = it->second;
-            }
-        std::unordered_map<std::uint64_t, Lowest> along;
-        along.reserve((end - first) * 2);
-        const auto edge_key = [](std::int32_t a, std::int32_t b) {
-            if (a > b) std::swap(a, b);
-            return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-        };
-        for (std::size_t t = first; t < end; ++t)
-            for (int k = 0; k < 3; ++k)
-                along[edge_key(ids[t - first][(k + 1) % 3], ids[t - first][(k + 2) % 3])].add(static_cast<std::int32_t>(t));
-        for (std::size_t t = first; t < end; ++t) {
-            auto& ties = scene.triangle_ties[t];
-            const auto& id = ids[t - first];
-            const std::int32_t self = static_cast<std::int32_t>(t);
-            for (int k = 0; k < 3; ++k) {
-                ties[k] = along.at(edge_key(id[(k + 1) % 3], id[(k + 2) % 3])).other_than(self);
-                ties[3 + k] = around[id[k]].other_than(self);
-            }
         }
     }
 }

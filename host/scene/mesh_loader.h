@@ -48,8 +48,4 @@ std::vector<PendingMesh> read_mesh_objects(ObjectReader& file);
 // run with exit 6 (kExitOutOfMemory) at the "filename" that brings it there.
 void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool placeholders, std::uint64_t memory_budget);
 
-// Fills Scene::triangle_ties from the triangles' exact corner positions, mesh placement by mesh
-// placement: for each triangle, the lowest index sharing each of its edges and each of its corners.
-void compute_triangle_ties(Scene& scene);
-
 }  // namespace clr

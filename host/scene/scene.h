@@ -82,6 +82,10 @@ struct Mesh {
     Color ambient;  // the scene's, else the OBJ material's Kd, else 0.8 grey
     bool is_mirror = false;
     bool placeholder = false;  // --placeholders stood in a cube for a missing file
+    // A `triangle` surface of the scene (the fall 2019 format): all of them share edges and
+    // corners as one mesh (compute_triangle_ties(), scene/triangle_ties.h).
+    bool surface_triangle = false;
+    bool tied = false;  // its Scene::triangle_ties were found as it was placed (tie_placed_mesh())
     std::uint32_t material = 0;  // Scene::materials, for every triangle of the mesh
     std::size_t first_triangle = 0;
     std::size_t triangle_count = 0;
@@ -199,9 +203,9 @@ struct Scene {
     // reference/shade.cpp): for each triangle, [k] (k = 0..2) the lowest index other than its own
     // among the triangles of its mesh placement sharing its edge opposite corner k (corners k+1,
     // k+2), [3 + k] the same around its corner k, by exact corner positions; its own index where
-    // none shares it (compute_triangle_ties(), mesh_loader.h). A settled hit is shaded as the lower
-    // of the two and its secondary rays leave both. Empty, or another size than `triangles`: no
-    // settling.
+    // none shares it (compute_triangle_ties(), scene/triangle_ties.h). A settled hit is shaded as
+    // the lower of the two and its secondary rays leave both. Empty, or another size than
+    // `triangles` (scenes built in code that did not ask for it): no settling.
     std::vector<std::array<std::int32_t, 6>> triangle_ties;
     // The double-precision reference's own index over `triangles` (reference/triangle_tree.h),
     // made for the eye-relative copy it traces; null: the reference tests every triangle.

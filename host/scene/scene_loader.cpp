@@ -21,6 +21,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/scene_digest.h"
 #include "scene/surfaces_loader.h"
+#include "scene/triangle_ties.h"
 #include "scene/scene_overrides.h"
 #include "core/printable_text.h"
 #include "scene/value_ranges.h"

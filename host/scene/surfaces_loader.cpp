@@ -85,6 +85,7 @@ void read_triangle_surface(ObjectReader& fields, Scene& scene) {
     for (int k = 0; k < 3; ++k) corners[k] = read_position(elements[k]);
     Mesh mesh;
     mesh.filename = "triangle";
+    mesh.surface_triangle = true;
     mesh.material = read_material(fields, scene, mesh.ambient);
     add_triangle(scene, mesh, corners, vertices);
 }

@@ -51,8 +51,10 @@ int skip_kind_of_pair(int hit_index, int other)
 }
 bool skips_surface(int kind, int index, int skip_kind, int skip_index)
 {
+#if CLR_FEATURE_TRIANGLE_TIES
     if (skip_kind <= CLR_SKIP_PAIR)
         return kind == CLR_HIT_TRIANGLE && (index == skip_index || index == CLR_SKIP_PAIR - skip_kind);
+#endif
     return kind == skip_kind && index == skip_index;
 }
 

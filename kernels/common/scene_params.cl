@@ -12,7 +12,7 @@
 #define CLR_SCENE_PARAMS                                                                      \
     __global const ClrSphere *spheres, __global const ClrBillboard *billboards,              \
         __global const ClrTriangle *triangles, __global const float4 *triangle_normals,      \
-        __global const int8 *triangle_ties,                                                   \
+        __global const int *triangle_ties,                                                    \
         __global const ClrPlane *planes, __global const ClrLight *lights,                    \
         __global const ClrMaterial *materials, __global const uchar4 *texels,                \
         __global const uint *coverage, ClrSceneInfo info, __global const ClrBvhNode *bvh_nodes, \

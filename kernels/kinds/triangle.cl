@@ -572,16 +572,18 @@ CLR_PACKET_INLINE void triangle_prefetch(int index, CLR_SCENE_PARAMS)
 {
 }
 
+#if CLR_FEATURE_TRIANGLE_TIES
 /* The triangle a hit at `point`, distance t along its ray, on triangle `index` is shaded as
- * (Scene::triangle_ties): for a point within t 2^-20 (|.|_1) of a corner, the lowest triangle of
- * its mesh placement around that corner; else for one within that band of an edge line
- * (|(P - a) x e|_1 <= band |e|_1), the lowest along that edge; else `index`. `*other` receives
- * the lowest triangle there other than `index` (`index` where there is none), which secondary
- * rays leave too. So a ray through a shared ridge is shaded alike whichever side its rounding
- * took, here and in the reference (reference/shade.cpp settles with the same numbers). The band
- * is 16 float ulps of t: 2^-16 (first tried) was wider than a pixel under narrow lenses (fov
- * 0.05 deg: about 3 pixels each side of every edge shaded with the neighbour's normal; 7153 of
- * 19200 reference pixels of a fov 0.02 grid changed). */
+ * (docs/scene-format.md, Meshes, "Shared edges and vertices"): for a point within t 2^-20
+ * (|.|_1) of a corner, the lowest triangle of its mesh placement around that corner; else for
+ * one within that band of an edge line (|(P - a) x e|_1 <= band |e|_1), the lowest along that
+ * edge; else `index`. `*other` receives the lowest triangle there other than `index` (`index`
+ * where there is none), which secondary rays leave too. So a ray through a shared ridge is
+ * shaded alike whichever side its rounding took, here and in the reference
+ * (reference/shade.cpp, settled(), with the same neighbours: host/scene/triangle_ties.h).
+ * `triangle_ties` holds six a triangle: the lowest other along the edges opposite corners 0, 1,
+ * 2, then around corners 0, 1, 2. The band is 16 float ulps of t: 2^-16 was wider than a pixel
+ * under narrow lenses (fov 0.05 deg: about 3 pixels each side of every edge). */
 int triangle_settled_index(int index, real3 point, real t, int* other, CLR_SCENE_PARAMS)
 {
     __global const ClrTriangle* triangle = &triangles[index];
@@ -589,28 +591,31 @@ int triangle_settled_index(int index, real3 point, real t, int* other, CLR_SCENE
     c[0] = convert_real3(triangle->corner0.xyz);
     c[1] = convert_real3(triangle->corner1.xyz);
     c[2] = convert_real3(triangle->corner2.xyz);
-    int ties[8];
-    vstore8(triangle_ties[index], 0, ties);
     real band = t * (real)(1.0f / 1048576.0f); /* 2^-20 */
     *other = index;
+    int3 around = vload3(2 * index + 1, triangle_ties);
+    int corners_other[3] = {around.x, around.y, around.z};
     for (int k = 0; k < 3; ++k) {
         real3 p = point - c[k];
         if (fabs(p.x) + fabs(p.y) + fabs(p.z) <= band) {
-            *other = ties[3 + k];
+            *other = corners_other[k];
             return min(index, *other);
         }
     }
+    int3 along = vload3(2 * index, triangle_ties);
+    int edges_other[3] = {along.x, along.y, along.z};
     for (int k = 0; k < 3; ++k) {
         real3 a = c[(k + 1) % 3];
         real3 e = c[(k + 2) % 3] - a;
         real3 p = point - a;
         real3 x = (real3)(p.y * e.z - p.z * e.y, p.z * e.x - p.x * e.z, p.x * e.y - p.y * e.x);
         if (fabs(x.x) + fabs(x.y) + fabs(x.z) <= band * (fabs(e.x) + fabs(e.y) + fabs(e.z))) {
-            *other = ties[k];
+            *other = edges_other[k];
             return min(index, *other);
         }
     }
     return index;
 }
+#endif
 
 #endif /* CLR_KINDS_TRIANGLE_CL */

@@ -12,6 +12,7 @@
 #include "packet/lane_masks.cl"
 #include "packet/lanes16.cl"
 #include "packet/packet_types.cl"
+#include "packet/settled16.cl"
 #include "packet/shading_modes.cl"
 #include "packet/sunlit16.cl"
 #include "shared/clr_samples.h"
@@ -106,10 +107,15 @@ CLR_PACKET_INLINE Colors16 traced_colors16(real3 eye, Directions16 d, Hits16 hit
 /* The colours of 16 rays from the eye with nearest hits `hits`, in the program's shading mode
  * (shading_modes.cl). `flat` holds the intersection loop's flat colours (CLR_LOOP_COLORS). */
 #if CLR_FLAT_SHADING
-/* Flat: the loop's colours are the pixels' colours. */
+/* Flat: the loop's colours are the pixels' colours (a lane on a shared mesh edge or corner
+ * takes the colour of the triangle it settles on, where that can differ). */
 CLR_PACKET_INLINE Colors16 shaded_colors16(real3 eye, Directions16 d, Hits16 hits, Colors16 flat, CLR_SCENE_PARAMS)
 {
+#if CLR_FEATURE_TRIANGLE_TIES && CLR_FEATURE_TRIANGLES
+    return settled_flat_colors16(eye, d, hits, flat, CLR_SCENE_ARGS);
+#else
     return flat;
+#endif
 }
 #elif CLR_LOOP_COLORS
 /* Sun without mirrors: the loop's flat colours, with lanes on lit kinds lit one by one. */

@@ -61,12 +61,17 @@ bool lane_meets16(const ShadowRays16* rays, int lane, int kind, int index, CLR_S
 CLR_PACKET_INLINE int16 lanes_met16(real16 t, int kind, int index, mask16 reach, int16 skip_kind, int16 skip_index,
                                     real16 t_max)
 {
+#if CLR_FEATURE_TRIANGLE_TIES
+    /* A pair (skips_surface()): the triangle skip_index and the one CLR_SKIP_PAIR - skip_kind. */
     int16 pair = skip_kind <= (int16)(CLR_SKIP_PAIR);
     int16 skipped = select(skip_kind == (int16)(kind) && skip_index == (int16)(index),
                            (int16)(kind == CLR_HIT_TRIANGLE ? -1 : 0) &
                                (skip_index == (int16)(index) || ((int16)(CLR_SKIP_PAIR) - skip_kind) == (int16)(index)),
                            pair);
     mask16 tested = reach & convert_mask16(!skipped);
+#else
+    mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
+#endif
     return convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
 }
 

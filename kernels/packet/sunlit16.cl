@@ -10,6 +10,7 @@
 #include "packet/lane_masks.cl"
 #include "packet/lanes16.cl"
 #include "packet/packet_types.cl"
+#include "packet/settled16.cl"
 #include "packet/shading_modes.cl"
 #include "packet/shadows16.cl"
 #include "shared/clr_types.h"
@@ -145,34 +146,6 @@ CLR_PACKET_INLINE void sunlit_lanes_one_by_one16(real3 eye, Directions16 d, Hits
     out->lit.b = vload16(0, lit_b);
 }
 
-#if CLR_FEATURE_TRIANGLES
-/* `hits` with each lane on a triangle settled as shade_hit() settles it (triangle_settled_index()). */
-CLR_PACKET_INLINE Hits16 settled_hits16(real3 eye, Directions16 d, Hits16 hits, int16* others, CLR_SCENE_PARAMS)
-{
-    *others = hits.index;
-    if (!any_lanes16(hits.kind == (int16)(CLR_HIT_TRIANGLE)))
-        return hits;
-    int kinds[16], indices[16], other[16];
-    real ts[16], dx[16], dy[16], dz[16];
-    vstore16(hits.kind, 0, kinds);
-    vstore16(hits.index, 0, indices);
-    vstore16(hits.t, 0, ts);
-    vstore16(d.x, 0, dx);
-    vstore16(d.y, 0, dy);
-    vstore16(d.z, 0, dz);
-    for (int lane = 0; lane < 16; ++lane) {
-        other[lane] = indices[lane];
-        if (kinds[lane] != CLR_HIT_TRIANGLE)
-            continue;
-        real3 point = eye + ts[lane] * (real3)(dx[lane], dy[lane], dz[lane]);
-        indices[lane] = triangle_settled_index(indices[lane], point, ts[lane], &other[lane], CLR_SCENE_ARGS);
-    }
-    hits.index = vload16(0, indices);
-    *others = vload16(0, other);
-    return hits;
-}
-#endif
-
 /* traced_colors16() with `flat` in the sun-alone mode: each lane on a lit kind shaded as
  * surface_color() shades it, with the 16 lanes' shadow rays traced together
  * (occluded_lanes16()): the same colours. Lanes without a shadow ray still take part in its
@@ -193,8 +166,10 @@ CLR_PACKET_INLINE Colors16 sunlit_colors16(real3 eye, Directions16 d, Hits16 hit
     vstore16((int16)(-1), 0, rays->skip_index);
 #if CLR_FEATURE_TRIANGLES
     int16 leaving = hits.index; /* the triangles hit, which their shadow rays skip (shade_hit()) */
-    int16 others;               /* and the lowest other triangle where a hit was settled */
+    int16 others = hits.index;  /* and the lowest other triangle where a hit was settled */
+#if CLR_FEATURE_TRIANGLE_TIES
     hits = settled_hits16(eye, d, hits, &others, CLR_SCENE_ARGS);
+#endif
 #endif
     /* Lanes on other lit kinds (and every lit lane of a scene the sun does not light), one by
      * one: surface_color() in sun mode, up to its shadow ray. */

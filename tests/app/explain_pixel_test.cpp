@@ -442,6 +442,40 @@ TEST(ExplainPixel, TriangleHitPrintsThePlaneTestAndBarycentricCoordinates) {
     EXPECT_NE(text.find("bytes the OpenCL kernels write"), std::string::npos);
 }
 
+// A faceted pyramid seen along its axis at an odd image size: the centre pixel's ray runs
+// through its apex, those on the image's diagonals along its ridges. Such a hit is settled on
+// the lowest-numbered triangle there, and the narration says so; the kernels give the bytes.
+TEST(ExplainPixel, AHitOnASharedEdgeOrCornerNamesTheTriangleShadedThere) {
+    TempFolder folder;
+    folder.write("pyramid.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+      "width": 161, "height": 121, "DefaultColor": [0.1, 0.1, 0.2], "SunLocation": [10, 20, 30],
+      "obj": {"filename": "pyramid.obj", "ambient": [0.9, 0.7, 0.3]}})");
+    folder.write("pyramid.obj", "v 0 0 1\nv 1 1 0\nv -1 1 0\nv -1 -1 0\nv 1 -1 0\nf 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 2\n");
+    const std::string lowest = "triangle 0 of mesh 0 ('pyramid.obj')";
+    const auto explained = [&](const std::string& where) {
+        const auto result = run_clrender("pyramid.json --explain-pixel " + where, folder.path());
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(bytes_after(result.output, "bytes the reference writes"),
+                  bytes_after(result.output, "bytes the OpenCL kernels write"))
+            << result.output;
+        return result.output;
+    };
+    // The apex is corner c0 of every face; face 0 is the lowest around it.
+    const std::string apex = explained("80,60");
+    EXPECT_NE(apex.find("the hit point lies on corner c0 of triangle "), std::string::npos) << apex;
+    EXPECT_TRUE(apex.find("the lowest-numbered triangle there is " + lowest) != std::string::npos ||
+                apex.find("corner c0 of " + lowest) != std::string::npos)
+        << apex;
+    // Ten pixels right and up: the ridge x = y, shared by faces 0 and 3 (its edge c0-c1 or c2-c0).
+    const std::string ridge = explained("90,50");
+    EXPECT_NE(ridge.find("the hit point lies on edge "), std::string::npos) << ridge;
+    EXPECT_NE(ridge.find(lowest), std::string::npos) << ridge;
+    EXPECT_NE(ridge.find("triangle 3 of mesh 0 ('pyramid.obj')"), std::string::npos) << ridge;
+    // Twenty pixels right of the centre: inside face 3, nothing to settle.
+    const std::string inside = explained("100,60");
+    EXPECT_EQ(inside.find("the hit point lies on"), std::string::npos) << inside;
+}
+
 // The fall 2019 format: a plane lit by a point light, in the model's terms.
 TEST(ExplainPixel, PlaneLitByAPointLightPrintsTheBlinnPhongTerms) {
     TempFolder folder;
