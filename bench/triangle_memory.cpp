@@ -1,6 +1,7 @@
 #include "bench/triangle_memory.h"
 
 #include "render/bvh.h"
+#include "render/feature_set.h"
 #include "render/scene_bvh.h"
 #include "render/frame_geometry.h"
 #include "shared/clr_types.h"
@@ -13,6 +14,7 @@ TriangleMemory triangle_memory(const Scene& scene) {
     if (memory.triangles == 0) return memory;
     memory.triangle_bytes = memory.triangles * sizeof(ClrTriangle);
     memory.normal_bytes = scene.corner_normals.size() * 3 * sizeof(cl_float4);
+    if (FeatureSet::of(scene).triangle_ties) memory.tie_bytes = memory.triangles * 6 * sizeof(cl_int);
     FrameGeometry frame(scene);
     frame.place_impostors(scene.camera_path.front());
     const Bvh bvh = build_bvh(frame);

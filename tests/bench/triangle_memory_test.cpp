@@ -26,6 +26,7 @@ TEST(TriangleMemory, TrianglesNormalsAndTree) {
     EXPECT_EQ(memory.triangles, flat + smooth);
     EXPECT_EQ(memory.triangle_bytes, (flat + smooth) * 80);
     EXPECT_EQ(memory.normal_bytes, smooth * 3 * 16) << "three float4 normals for each smooth triangle only";
+    EXPECT_EQ(memory.tie_bytes, 0u) << "unlit: no neighbours on the device";
     // Every triangle is in one leaf (a 4-byte item) and there is at least a root node (48
     // bytes); a binary tree over n objects has at most 2n - 1 nodes.
     const std::size_t n = flat + smooth;
@@ -33,6 +34,9 @@ TEST(TriangleMemory, TrianglesNormalsAndTree) {
     EXPECT_LE(memory.bvh_bytes, n * 4 + (2 * n - 1) * 48);
     EXPECT_DOUBLE_EQ(memory.per_triangle(),
                      static_cast<double>(memory.triangle_bytes + memory.normal_bytes + memory.bvh_bytes) / n);
+    scene.has_sun = true;  // lit: six neighbour numbers a triangle
+    scene.sun_location = {1, 5, 2};
+    EXPECT_EQ(triangle_memory(scene).tie_bytes, n * 24);
 }
 
 }  // namespace
