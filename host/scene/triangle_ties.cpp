@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <random>
 #include <tuple>
 #include <vector>
 
@@ -19,8 +20,12 @@ std::uint64_t position_bits(double v) {
     return bits;
 }
 
+// Seeded once a run: the numbers do not depend on it (first appearance decides them), but a
+// file cannot be made whose positions all fall in one run of the table.
+const std::uint64_t kHashSeed = (std::uint64_t(std::random_device{}()) << 32) ^ std::random_device{}();
+
 std::uint64_t position_hash(const Vec3& p) {
-    std::uint64_t h = position_bits(p.x) * 0x9E3779B97F4A7C15ull;
+    std::uint64_t h = (position_bits(p.x) ^ kHashSeed) * 0x9E3779B97F4A7C15ull;
     h = (h ^ (h >> 29) ^ position_bits(p.y)) * 0xBF58476D1CE4E5B9ull;
     h = (h ^ (h >> 31) ^ position_bits(p.z)) * 0x94D049BB133111EBull;
     return h ^ (h >> 32);
@@ -70,7 +75,8 @@ struct Lowest {
 
 // The ties of `triangles` (scene indices), among themselves, from the vertex numbers of their
 // corners (three a triangle, `vertex_count` distinct): the lowest triangles around each vertex,
-// and along each edge (a, b), a < b, listed under a.
+// and along each edge (a, b), a < b, listed under a and sorted, so that an edge or a vertex that
+// a million triangles share (a fan, a file made to be slow) costs a sort, not a million scans.
 void tie_group(Scene& scene, const std::vector<std::uint32_t>& triangles, const std::vector<std::uint32_t>& vertex,
                std::uint32_t vertex_count) {
     std::vector<Lowest> around(vertex_count);
@@ -85,21 +91,27 @@ void tie_group(Scene& scene, const std::vector<std::uint32_t>& triangles, const 
             ++start[edge(t, k).first + 1];
         }
     for (std::uint32_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-    std::vector<std::pair<std::uint32_t, std::int32_t>> edges(start.back());
-    std::vector<std::uint32_t> filled(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const auto [a, b] = edge(t, k);
-            edges[filled[a]++] = {b, static_cast<std::int32_t>(triangles[t])};
-        }
+    std::vector<std::pair<std::uint32_t, std::int32_t>> edges(start.back());  // (b, triangle) under a
+    {
+        std::vector<std::uint32_t> filled(start.begin(), start.end() - 1);
+        for (std::size_t t = 0; t < triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const auto [a, b] = edge(t, k);
+                edges[filled[a]++] = {b, static_cast<std::int32_t>(triangles[t])};
+            }
+    }
+    for (std::uint32_t v = 0; v < vertex_count; ++v)
+        if (start[v + 1] - start[v] > 1) std::sort(edges.begin() + start[v], edges.begin() + start[v + 1]);
     for (std::size_t t = 0; t < triangles.size(); ++t) {
         const std::int32_t self = static_cast<std::int32_t>(triangles[t]);
         Ties& ties = scene.triangle_ties[self];
         for (int k = 0; k < 3; ++k) {
             const auto [a, b] = edge(t, k);
+            // The edge's entries, lowest triangle first: the lowest other is among the first two.
+            const auto end = edges.begin() + start[a + 1];
+            auto e = std::lower_bound(edges.begin() + start[a], end, std::pair{b, std::int32_t{-1}});
             Lowest along;
-            for (std::uint32_t e = start[a]; e < start[a + 1]; ++e)
-                if (edges[e].first == b) along.add(edges[e].second);
+            for (int taken = 0; e != end && e->first == b && taken < 3; ++e, ++taken) along.add(e->second);
             ties[k] = along.other_than(self);
             ties[3 + k] = around[vertex[3 * t + k]].other_than(self);
         }

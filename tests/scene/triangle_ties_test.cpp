@@ -83,6 +83,32 @@ TEST(TriangleTies, PlacementsShareNothingAndAPlacedCopyIsShiftedOrFoundAgain) {
     EXPECT_EQ(scene.triangle_ties[14], (Ties{14, 13, 15, 12, 15, 13}));
 }
 
+// A vertex or an edge that every triangle shares, as a file made to be slow would have: each
+// triangle's neighbours are still found (by sorting, not by scanning every triangle there for
+// each; that took about 10^11 steps for these).
+TEST(TriangleTies, AFanAndABookOfTwoHundredThousandTrianglesAreTiedCorrectly) {
+    constexpr int kCount = 200000;
+    const auto rim = [](int i) {
+        const double angle = 6.0 * i / kCount;  // less than a turn: an open fan
+        return Vec3{std::cos(angle), std::sin(angle), 0};
+    };
+    Scene scene = empty();
+    testing::TestMesh fan, book;
+    for (int i = 0; i < kCount; ++i) fan.triangles.push_back({Vec3{0, 0, 0}, rim(i), rim(i + 1)});
+    for (int i = 0; i < kCount; ++i) book.triangles.push_back({Vec3{0, 0, 0}, Vec3{0, 0, 1}, rim(i)});
+    testing::add_mesh(scene, fan, {1, 1, 1});
+    testing::add_mesh(scene, book, {1, 1, 1});
+    compute_triangle_ties(scene);
+    for (int i : {0, 1, kCount / 2, kCount - 1}) {
+        // Fan triangle i: (hub, r_i, r_i+1); its neighbours are i - 1 and i + 1, every one shares the hub.
+        const int before = i > 0 ? i - 1 : i, after = i + 1 < kCount ? i + 1 : i;
+        EXPECT_EQ(scene.triangle_ties[i], (Ties{i, after, before, i == 0 ? 1 : 0, before, after})) << "fan " << i;
+        // Book page i: (A, B, r_i), every page on the edge AB; r_i is its own.
+        const int page = kCount + i, lowest = kCount + (i == 0 ? 1 : 0);
+        EXPECT_EQ(scene.triangle_ties[page], (Ties{page, page, lowest, lowest, lowest, page})) << "book " << i;
+    }
+}
+
 TEST(TriangleTies, TheTriangleSurfacesOfAScenesShareEdgesAsOneMesh) {
     // The fall 2019 format's `triangle` surfaces, each its own mesh, and an OBJ-less scene.
     const std::string text = R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
