@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/printable_text.h"
+#include "render/compiled_scene.h"
 #include "render/feature_set.h"
 #include "scene/camera_path.h"
 #include "shared/clr_types.h"
@@ -40,7 +41,8 @@ std::string objects_line(const std::vector<Object>& objects) {
 }
 
 // "2 (1 mirror, 1 placeholder), 5120 triangles (2.2 MB on the device)": the device holds
-// each triangle's struct and, where the mesh gives them, its three corner normals.
+// each triangle's struct, where the mesh gives them its three corner normals, and where the
+// program settles hits on shared edges its neighbours there (triangle_device_bytes()).
 std::string meshes_line(const Scene& scene) {
     std::size_t mirrors = 0, placeholders = 0;
     for (const Mesh& mesh : scene.meshes) {
@@ -50,8 +52,7 @@ std::string meshes_line(const Scene& scene) {
     std::string notes;
     if (mirrors) notes += count_of(mirrors, "mirror", "mirrors");
     if (placeholders) notes += (notes.empty() ? "" : ", ") + count_of(placeholders, "placeholder", "placeholders");
-    const double bytes = static_cast<double>(scene.triangles.size() * sizeof(ClrTriangle) +
-                                             scene.corner_normals.size() * 3 * sizeof(cl_float4));
+    const double bytes = static_cast<double>(triangle_device_bytes(scene));
     char size[32];
     std::snprintf(size, sizeof size, "%.3g", bytes / 1e6);
     return std::to_string(scene.meshes.size()) + (notes.empty() ? "" : " (" + notes + ")") + ", " +

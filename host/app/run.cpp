@@ -29,6 +29,7 @@
 #include "shared/clr_types.h"
 #include "core/usable_cpus.h"
 #include "core/worker_threads.h"
+#include "render/compiled_scene.h"
 #include "app/output_plan.h"
 #include "app/progress.h"
 #include "core/errors.h"
@@ -82,8 +83,7 @@ nlohmann::json scene_objects(const Scene& scene) {
             {"triangles", scene.triangles.size()},
             {"planes", scene.planes.size()},
             {"lights", scene.lights.size()},
-            {"triangle_device_bytes", scene.triangles.size() * sizeof(ClrTriangle) +
-                                          scene.corner_normals.size() * 3 * sizeof(cl_float4)}};
+            {"triangle_device_bytes", triangle_device_bytes(scene)}};
 }
 
 std::string stats_text(const RunReport& report) {

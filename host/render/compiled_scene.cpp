@@ -65,6 +65,11 @@ const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& c
 
 }  // namespace
 
+std::size_t triangle_device_bytes(const Scene& scene) {
+    const std::size_t ties = FeatureSet::of(scene).triangle_ties ? scene.triangles.size() * 6 * sizeof(cl_int) : 0;
+    return scene.triangles.size() * sizeof(ClrTriangle) + scene.corner_normals.size() * 3 * sizeof(cl_float4) + ties;
+}
+
 CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     const Scene& scene = frame.scene();
     CompiledScene compiled;

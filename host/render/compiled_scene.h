@@ -49,4 +49,8 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin = {})
 // left as they are. What each frame of an animation needs, without repacking images.
 void compile_frame(CompiledScene& compiled, const FrameGeometry& frame, const Vec3& origin);
 
+// What the scene's triangles take on the device: their structs, their corner normals, and their
+// neighbours on shared edges where the scene's program settles hits there (--check, --stats).
+std::size_t triangle_device_bytes(const Scene& scene);
+
 }  // namespace clr

@@ -18,13 +18,19 @@
 namespace clr {
 namespace {
 
+// A view of the origin from `eye` (up y), against a dark blue, lit by the sun at `sun`.
+Scene sunlit_view(const Vec3& eye, double fov, int width, int height, const Vec3& sun) {
+    Scene scene = testing::make_scene(eye, {0, 0, 0}, {0, 1, 0}, fov, width, height);
+    scene.background = {0.1, 0.1, 0.2};
+    scene.has_sun = true;
+    scene.sun_location = sun;
+    return scene;
+}
+
 // Apex (0, 0, 1) over the square base +-1, seen along its axis from (0, 0, distance): with an
 // even image size the pixel centres on the image's diagonals look exactly along its four ridges.
 Scene pyramid_scene(double distance, double fov, int width, int height, bool mirror = false) {
-    Scene scene = testing::make_scene({0, 0, distance}, {0, 0, 0}, {0, 1, 0}, fov, width, height);
-    scene.background = {0.1, 0.1, 0.2};
-    scene.has_sun = true;
-    scene.sun_location = {10, 20, 30};
+    Scene scene = sunlit_view({0, 0, distance}, fov, width, height, {10, 20, 30});
     const Vec3 apex{0, 0, 1};
     const std::array<Vec3, 4> base = {Vec3{1, 1, 0}, Vec3{-1, 1, 0}, Vec3{-1, -1, 0}, Vec3{1, -1, 0}};
     testing::TestMesh mesh;
@@ -40,10 +46,7 @@ Scene pyramid_scene(double distance, double fov, int width, int height, bool mir
 
 // A roof whose ridge (y = 2.75 at z = 16) lies on a row of pixel centres of a 64 x 64 image.
 Scene roof_scene() {
-    Scene scene = testing::make_scene({0, 0, 32}, {0, 0, 0}, {0, 1, 0}, 90, 64, 64);
-    scene.background = {0.1, 0.1, 0.2};
-    scene.has_sun = true;
-    scene.sun_location = {-5, 8, 12};
+    Scene scene = sunlit_view({0, 0, 32}, 90, 64, 64, {-5, 8, 12});
     const Vec3 a{-16, 2.75, 16}, b{16, 2.75, 16}, c{-16, 14.75, 0}, d{16, 14.75, 0}, e{-16, -9.25, 0}, f{16, -9.25, 0};
     testing::TestMesh mesh;
     mesh.triangles = {{a, b, d}, {a, d, c}, {b, a, e}, {b, e, f}};
@@ -55,10 +58,7 @@ Scene roof_scene() {
 // An 8 x 8 grid on whole coordinates with heights 0 and 0.5 in a checkerboard, each square
 // split along its x = y diagonal: creases and vertices under pixel rays of a 160 x 120 view.
 Scene folded_scene() {
-    Scene scene = testing::make_scene({0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 60, 160, 120);
-    scene.background = {0.1, 0.1, 0.2};
-    scene.has_sun = true;
-    scene.sun_location = {10, 20, 30};
+    Scene scene = sunlit_view({0, 0, 10}, 60, 160, 120, {10, 20, 30});
     const auto at = [](int i, int j) { return Vec3{double(i), double(j), (i + j) % 2 ? 0.5 : 0.0}; };
     testing::TestMesh mesh;
     for (int i = -4; i < 4; ++i)
