@@ -74,8 +74,8 @@ FeatureSet FeatureSet::of(const Scene& scene) {
     // Primary rays are culled by screen tiles; shadow and mirror rays test every object
     // unless a BVH is compiled in, which pays from a few dozen objects on.
     features.bvh = (features.sun || features.lights || features.mirrors) && bvh_objects(scene) > kBvhMinObjects;
-    features.triangle_ties = features.triangles && (features.sun || features.lights || features.mirrors ||
-                                                    surface_triangle_colors_differ(scene));
+    features.triangle_ties = features.triangles && scene.has_triangle_ties &&
+                             (features.sun || features.lights || features.mirrors || surface_triangle_colors_differ(scene));
     return features;
 }
 

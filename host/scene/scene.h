@@ -203,10 +203,15 @@ struct Scene {
     // reference/shade.cpp): for each triangle, [k] (k = 0..2) the lowest index other than its own
     // among the triangles of its mesh placement sharing its edge opposite corner k (corners k+1,
     // k+2), [3 + k] the same around its corner k, by exact corner positions; its own index where
-    // none shares it (compute_triangle_ties(), scene/triangle_ties.h). A settled hit is shaded as
-    // the lower of the two and its secondary rays leave both. Empty, or another size than
-    // `triangles` (scenes built in code that did not ask for it): no settling.
+    // none shares it, or where every triangle there has the same corner normal at that vertex
+    // (at both ends of that edge): a smooth surface shades alike on both sides
+    // (compute_triangle_ties(), scene/triangle_ties.h). A settled hit is shaded as the lower of
+    // the two and its secondary rays leave both. Empty, or another size than `triangles` (scenes
+    // built in code that did not ask for it): no settling.
     std::vector<std::array<std::int32_t, 6>> triangle_ties;
+    // Whether any entry of triangle_ties names another triangle: without, nothing is settled
+    // and the kernels leave the rule out (FeatureSet::triangle_ties).
+    bool has_triangle_ties = false;
     // The double-precision reference's own index over `triangles` (reference/triangle_tree.h),
     // made for the eye-relative copy it traces; null: the reference tests every triangle.
     std::shared_ptr<const reference::TriangleTree> triangle_tree;

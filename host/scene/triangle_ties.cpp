@@ -59,6 +59,8 @@ std::vector<std::uint32_t> numbered(std::size_t count, const At& at, std::uint32
     return numbers;
 }
 
+bool same_position(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
 // The two lowest triangles seen: the lowest other than t is the first unless that is t.
 struct Lowest {
     std::int32_t first = -1, second = -1;
@@ -80,16 +82,25 @@ struct Lowest {
 void tie_group(Scene& scene, const std::vector<std::uint32_t>& triangles, const std::vector<std::uint32_t>& vertex,
                std::uint32_t vertex_count) {
     std::vector<Lowest> around(vertex_count);
+    // Whether every corner at the vertex has a corner normal, all the same (1), or not (0).
+    std::vector<std::uint8_t> smooth(vertex_count, 1);
+    std::vector<const Vec3*> normal_at(vertex_count, nullptr);
     std::vector<std::uint32_t> start(vertex_count + 1, 0);
     const auto edge = [&](std::size_t t, int k) {
         const std::uint32_t a = vertex[3 * t + (k + 1) % 3], b = vertex[3 * t + (k + 2) % 3];
         return std::pair{std::min(a, b), std::max(a, b)};
     };
-    for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& triangle = scene.triangles[triangles[t]];
         for (int k = 0; k < 3; ++k) {
-            around[vertex[3 * t + k]].add(static_cast<std::int32_t>(triangles[t]));
+            const std::uint32_t v = vertex[3 * t + k];
+            around[v].add(static_cast<std::int32_t>(triangles[t]));
             ++start[edge(t, k).first + 1];
+            const Vec3* normal = triangle.normals >= 0 ? &scene.corner_normals[triangle.normals][k] : nullptr;
+            if (!normal || (normal_at[v] && !same_position(*normal, *normal_at[v]))) smooth[v] = 0;
+            normal_at[v] = normal;
         }
+    }
     for (std::uint32_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
     std::vector<std::pair<std::uint32_t, std::int32_t>> edges(start.back());  // (b, triangle) under a
     {
@@ -112,8 +123,10 @@ void tie_group(Scene& scene, const std::vector<std::uint32_t>& triangles, const 
             auto e = std::lower_bound(edges.begin() + start[a], end, std::pair{b, std::int32_t{-1}});
             Lowest along;
             for (int taken = 0; e != end && e->first == b && taken < 3; ++e, ++taken) along.add(e->second);
-            ties[k] = along.other_than(self);
-            ties[3 + k] = around[vertex[3 * t + k]].other_than(self);
+            const bool smooth_edge = smooth[a] && smooth[b];
+            ties[k] = smooth_edge ? self : along.other_than(self);
+            ties[3 + k] = smooth[vertex[3 * t + k]] ? self : around[vertex[3 * t + k]].other_than(self);
+            for (int j : {k, 3 + k}) scene.has_triangle_ties |= ties[j] != self;
         }
     }
 }
@@ -126,8 +139,6 @@ void tie_by_corners(Scene& scene, const std::vector<std::uint32_t>& triangles) {
         [&](std::uint32_t c) -> const Vec3& { return scene.triangles[triangles[c / 3]].corners[c % 3]; }, distinct);
     tie_group(scene, triangles, vertex, distinct);
 }
-
-bool same_position(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 // Whether `triangle` has a corner at `p`.
 bool has_corner(const Triangle& triangle, const Vec3& p) {
@@ -154,6 +165,7 @@ bool copy_ties(Scene& scene, const Mesh& from, const Mesh& to) {
             if (k < 3 && !has_corner(neighbour, triangle.corners[(k + 2) % 3])) return false;
         }
         scene.triangle_ties[t] = ties;
+        for (int k = 0; k < 6; ++k) scene.has_triangle_ties |= ties[k] != static_cast<std::int32_t>(t);
     }
     return true;
 }

@@ -4,6 +4,7 @@
 
 #include "bench/bench_scenes.h"
 #include "bench/triangle_memory.h"
+#include "scene/triangle_ties.h"
 #include "support/scene_builder.h"
 
 namespace clr::bench {
@@ -34,8 +35,9 @@ TEST(TriangleMemory, TrianglesNormalsAndTree) {
     EXPECT_LE(memory.bvh_bytes, n * 4 + (2 * n - 1) * 48);
     EXPECT_DOUBLE_EQ(memory.per_triangle(),
                      static_cast<double>(memory.triangle_bytes + memory.normal_bytes + memory.bvh_bytes) / n);
-    scene.has_sun = true;  // lit: six neighbour numbers a triangle
+    scene.has_sun = true;  // lit, the grid faceted: six neighbour numbers a triangle
     scene.sun_location = {1, 5, 2};
+    compute_triangle_ties(scene);
     EXPECT_EQ(triangle_memory(scene).tie_bytes, n * 24);
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "render/feature_set.h"
 #include "scene/scene_loader.h"
 #include "scene/triangle_ties.h"
 #include "support/scene_builder.h"
@@ -107,6 +108,38 @@ TEST(TriangleTies, AFanAndABookOfTwoHundredThousandTrianglesAreTiedCorrectly) {
         const int page = kCount + i, lowest = kCount + (i == 0 ? 1 : 0);
         EXPECT_EQ(scene.triangle_ties[page], (Ties{page, page, lowest, lowest, lowest, page})) << "book " << i;
     }
+}
+
+// Where every triangle at a vertex has the same corner normal there, both sides of it shade
+// alike and nothing is settled; corner normals that differ (a crease given by `vn`) are settled
+// as faceted triangles are. The kernels leave the rule out when nothing is.
+TEST(TriangleTies, ASmoothSurfaceIsNotSettledAndACreaseIs) {
+    const Vec3 a{0, 0, 0}, b{1, 0, 0}, up{0, 0, 1}, tilted = normalize(Vec3{0, 1, 1});
+    const auto roof = [&](const Vec3& far_normal) {
+        testing::TestMesh mesh;
+        mesh.triangles = {{a, b, Vec3{0, 1, 0}}, {b, a, Vec3{0, -1, 1}}};
+        mesh.normals = {{up, up, up}, {far_normal, far_normal, far_normal}};
+        return mesh;
+    };
+    Scene smooth = empty();
+    smooth.has_sun = true;
+    testing::add_mesh(smooth, roof(up), {1, 1, 1});
+    compute_triangle_ties(smooth);
+    EXPECT_EQ(smooth.triangle_ties[0], (Ties{0, 0, 0, 0, 0, 0}));
+    EXPECT_EQ(smooth.triangle_ties[1], (Ties{1, 1, 1, 1, 1, 1}));
+    EXPECT_FALSE(smooth.has_triangle_ties);
+    EXPECT_FALSE(FeatureSet::of(smooth).triangle_ties);
+
+    Scene crease = empty();
+    crease.has_sun = true;
+    testing::add_mesh(crease, roof(tilted), {1, 1, 1});
+    compute_triangle_ties(crease);
+    EXPECT_EQ(crease.triangle_ties[0], (Ties{0, 0, 1, 1, 1, 0}));
+    EXPECT_EQ(crease.triangle_ties[1], (Ties{1, 1, 0, 0, 0, 1}));
+    EXPECT_TRUE(crease.has_triangle_ties);
+    EXPECT_TRUE(FeatureSet::of(crease).triangle_ties);
+    crease.has_sun = false;  // unlit, one colour: nothing to settle either
+    EXPECT_FALSE(FeatureSet::of(crease).triangle_ties);
 }
 
 TEST(TriangleTies, TheTriangleSurfacesOfAScenesShareEdgesAsOneMesh) {
