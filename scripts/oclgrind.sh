@@ -100,7 +100,7 @@ tests='Intersect*:Raygen*:Shade*:Seeds/*:Cameras/*:StructLayout*:BandedRender*'
 tests+=':Antialiasing.PartlyCovered*:Antialiasing.SameSeed*:ScreenTiles.FlatShading*:DoublePrecision*'
 tests+=':ImpostorFrames*:Mirrors.MaxDepthZero*:FeatureVariants.SpheresOnly:FeatureVariants.BillboardsOnlyWithAlpha'
 tests+=':FeatureVariants.SunAndMirrors:FeatureVariants.EmptyScene:CoverageMask.*'
-tests+=':BvhPackets.FlatColours*:BvhPackets.AMovingCamera*:SharedEdges.ARoofsRidgeOnAPixelRow*'
+tests+=':BvhPackets.FlatColours*:BvhPackets.AMovingCamera*'
 tests+=':Course/*grads*:Course/*Undergrad*:Course/*v1_*:Course/*mickey*:Course/*SingleBB*:Course/*close*:Course/*scene1*'
 # Left out: thousands of triangles through the brute-force kernel on one simulated thread; the
 # mesh trees it checks are host code (SceneBvh tests), and the kernels run on the forest test.
