@@ -115,25 +115,24 @@ TEST(TriangleTies, AFanAndABookOfTwoHundredThousandTrianglesAreTiedCorrectly) {
 // as faceted triangles are. The kernels leave the rule out when nothing is.
 TEST(TriangleTies, ASmoothSurfaceIsNotSettledAndACreaseIs) {
     const Vec3 a{0, 0, 0}, b{1, 0, 0}, up{0, 0, 1}, tilted = normalize(Vec3{0, 1, 1});
+    // Two triangles on the edge a-b, the second with `far_normal` at every corner, lit by the sun.
     const auto roof = [&](const Vec3& far_normal) {
         testing::TestMesh mesh;
         mesh.triangles = {{a, b, Vec3{0, 1, 0}}, {b, a, Vec3{0, -1, 1}}};
         mesh.normals = {{up, up, up}, {far_normal, far_normal, far_normal}};
-        return mesh;
+        Scene scene = empty();
+        scene.has_sun = true;
+        testing::add_mesh(scene, mesh, {1, 1, 1});
+        compute_triangle_ties(scene);
+        return scene;
     };
-    Scene smooth = empty();
-    smooth.has_sun = true;
-    testing::add_mesh(smooth, roof(up), {1, 1, 1});
-    compute_triangle_ties(smooth);
+    const Scene smooth = roof(up);
     EXPECT_EQ(smooth.triangle_ties[0], (Ties{0, 0, 0, 0, 0, 0}));
     EXPECT_EQ(smooth.triangle_ties[1], (Ties{1, 1, 1, 1, 1, 1}));
     EXPECT_FALSE(smooth.has_triangle_ties);
     EXPECT_FALSE(FeatureSet::of(smooth).triangle_ties);
 
-    Scene crease = empty();
-    crease.has_sun = true;
-    testing::add_mesh(crease, roof(tilted), {1, 1, 1});
-    compute_triangle_ties(crease);
+    Scene crease = roof(tilted);
     EXPECT_EQ(crease.triangle_ties[0], (Ties{0, 0, 1, 1, 1, 0}));
     EXPECT_EQ(crease.triangle_ties[1], (Ties{1, 1, 0, 0, 0, 1}));
     EXPECT_TRUE(crease.has_triangle_ties);
