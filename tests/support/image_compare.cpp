@@ -26,6 +26,16 @@ bool on_reference_edge(const Image& reference, int col, int row) {
     return false;
 }
 
+// "(col, row): kernel r,g,b vs reference r,g,b".
+std::string describe_pixel(const Image& kernel, const Image& reference, int col, int row) {
+    std::ostringstream text;
+    text << "(" << col << ", " << row << "): kernel " << int(kernel.at(col, row, 0)) << ","
+         << int(kernel.at(col, row, 1)) << "," << int(kernel.at(col, row, 2)) << " vs reference "
+         << int(reference.at(col, row, 0)) << "," << int(reference.at(col, row, 1)) << ","
+         << int(reference.at(col, row, 2));
+    return text.str();
+}
+
 }  // namespace
 
 ImageComparison compare_images(const Image& kernel, const Image& reference) {
@@ -41,16 +51,9 @@ ImageComparison compare_images(const Image& kernel, const Image& reference) {
             int difference = channel_difference(kernel, col, row, reference, col, row);
             result.max_channel_difference = std::max(result.max_channel_difference, difference);
             if (difference <= 1) continue;
-            ++result.differing;
+            if (result.differing++ == 0) result.first_differing = describe_pixel(kernel, reference, col, row);
             if (on_reference_edge(reference, col, row)) continue;
-            if (result.differing_off_edge++ == 0) {
-                std::ostringstream text;
-                text << "(" << col << ", " << row << "): kernel " << int(kernel.at(col, row, 0)) << ","
-                     << int(kernel.at(col, row, 1)) << "," << int(kernel.at(col, row, 2)) << " vs reference "
-                     << int(reference.at(col, row, 0)) << "," << int(reference.at(col, row, 1)) << ","
-                     << int(reference.at(col, row, 2));
-                result.first_off_edge = text.str();
-            }
+            if (result.differing_off_edge++ == 0) result.first_off_edge = describe_pixel(kernel, reference, col, row);
         }
     return result;
 }

@@ -13,7 +13,8 @@ struct ImageComparison {
     long long differing_off_edge = 0;  // ... and no 8-neighbour of it in the reference differs
                                        // from it, i.e. not on a silhouette or texture edge
     int max_channel_difference = 0;
-    std::string first_off_edge;        // "(col, row): kernel r,g,b vs reference r,g,b"
+    std::string first_differing;       // "(col, row): kernel r,g,b vs reference r,g,b"
+    std::string first_off_edge;        // the same for the first differing off an edge
 
     double differing_fraction() const { return pixels ? static_cast<double>(differing) / pixels : 0; }
 };

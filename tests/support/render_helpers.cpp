@@ -22,7 +22,8 @@ Image render_with_reference(const Scene& scene) {
 void expect_kernels_match_reference(const Scene& scene, const std::string& what, const RendererOptions& options,
                                     double differing_fraction) {
     const ImageComparison comparison = compare_images(render_with_kernels(scene, options), render_with_reference(scene));
-    EXPECT_LE(comparison.differing_fraction(), differing_fraction) << what << ": " << comparison.differing << " pixels differ";
+    EXPECT_LE(comparison.differing_fraction(), differing_fraction) << what << ": " << comparison.differing << " pixels differ, the first "
+                                                                  << comparison.first_differing;
     EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
 }
 
