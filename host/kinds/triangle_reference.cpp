@@ -5,11 +5,11 @@
 // the ray passes inside is decided by the sides of the edges as seen along the ray: each
 // corner, relative to the ray's origin, becomes a point of the plane across the ray, and each
 // edge's side is the exact sign of the 2D orientation of its two points (the same sides: each
-// is d.n times its coordinate). Every triangle around a vertex or an edge computes the same
-// points and signs, so a ray through a shared vertex or edge is inside one of them
-// (kernels/kinds/triangle_sides.cl decides the same way in float). Each triangle's own
-// orientation test rounds in its own plane, and both neighbours could refuse a point on their
-// edge (a crack).
+// is d.n times its coordinate), zero where it lies within the edges' band of zero, as the
+// kernels decide in float and double (kernels/kinds/triangle_sides.cl). Every triangle around a
+// vertex or an edge computes the same points and signs, so a ray through a shared vertex or
+// edge is inside one of them. Each triangle's own orientation test rounds in its own plane,
+// and both neighbours could refuse a point on their edge (a crack).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -65,17 +65,56 @@ double edge_orientation(const Across& p, const Across& q) {
     return std::fma(p.x, q.y, -product) + std::fma(-p.y, q.x, product);
 }
 
-// Whether the ray passes inside the triangle: the three edges' orientations across the ray
-// have one sign, or are zero where it passes through an edge or a corner; one seen edge on
-// (all three zero) is not met. Each corner is taken relative to the origin once, the same
-// whichever triangle asks.
-bool passes_inside(const std::array<Vec3, 3>& c, const reference::Ray& ray) {
+double norm1(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
+
+// The band of the edges' orientations (docs/scene-format.md, Meshes, "Edges and the band"):
+// 2^-17 M (L + 2^-22 M), M the norm1() of corner 0 from the ray's origin plus L, L the
+// longest edge's norm1(), as the kernels take it (kernels/kinds/triangle_sides.cl).
+double edge_band(const std::array<Vec3, 3>& c, const reference::Ray& ray) {
+    const double longest = std::max({norm1(c[1] - c[0]), norm1(c[2] - c[1]), norm1(c[0] - c[2])});
+    const double reach = norm1(c[0] - ray.origin) + longest;
+    return std::ldexp(1.0, -17) * reach * (longest + std::ldexp(1.0, -22) * reach);
+}
+
+// How the ray passes the triangle's edges: inside, where each edge's orientation across the
+// ray (its volume with the ray) is of one sign or within the band of zero (the ray passes
+// through that edge) and their sum is beyond the band on that sign (one seen within the band of
+// edge on is not met); and whether it is inside by the band alone, one orientation of the
+// other sign. Each corner is taken relative to the origin once, the same whichever triangle asks.
+struct EdgeSides {
+    bool inside = false, by_band = false;
+};
+
+EdgeSides edge_sides(const std::array<Vec3, 3>& c, const reference::Ray& ray) {
     const RayAcross across = ray_across(ray.direction);
     const Across a = across_ray(c[0] - ray.origin, across), b = across_ray(c[1] - ray.origin, across),
                  cc = across_ray(c[2] - ray.origin, across);
     const double u = edge_orientation(b, cc), v = edge_orientation(cc, a), w = edge_orientation(a, b);
-    const bool one_sign = (u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0);
-    return one_sign && !(u == 0 && v == 0 && w == 0);
+    const double band = edge_band(c, ray), det = u + v + w;
+    EdgeSides sides;
+    sides.inside = (u >= -band && v >= -band && w >= -band && det > band) ||
+                   (u <= band && v <= band && w <= band && det < -band);
+    sides.by_band = det > 0 ? std::min({u, v, w}) < 0 : std::max({u, v, w}) > 0;
+    return sides;
+}
+
+// Whether p lies within the box of the corners widened by 2^-21 of their largest coordinate (all
+// relative to the eye): a hit the band alone admits counts only there, as in the kernels
+// (kernels/kinds/triangle_sides.cl, CLR_EDGE_BAND_BOX), inside every box of the reference's tree.
+bool within_corner_box(const Vec3& p, const std::array<Vec3, 3>& c) {
+    double largest = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lower = std::min({c[0][axis], c[1][axis], c[2][axis]});
+        const double upper = std::max({c[0][axis], c[1][axis], c[2][axis]});
+        largest = std::max({largest, std::fabs(lower), std::fabs(upper)});
+    }
+    const double room = std::ldexp(largest, -21);
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lower = std::min({c[0][axis], c[1][axis], c[2][axis]});
+        const double upper = std::max({c[0][axis], c[1][axis], c[2][axis]});
+        if (!(p[axis] >= lower - room && p[axis] <= upper + room)) return false;
+    }
+    return true;
 }
 
 reference::detail::TriangleTest test_triangle(const Triangle& triangle, const reference::Ray& ray) {
@@ -93,7 +132,8 @@ reference::detail::TriangleTest test_triangle(const Triangle& triangle, const re
     test.weights[0] = dot(cross(c[2] - c[1], p - c[1]), n) / area2;
     test.weights[1] = dot(cross(c[0] - c[2], p - c[2]), n) / area2;
     test.weights[2] = dot(cross(c[1] - c[0], p - c[0]), n) / area2;
-    test.inside = passes_inside(c, ray);
+    const EdgeSides sides = edge_sides(c, ray);
+    test.inside = sides.inside && (!sides.by_band || within_corner_box(p, c));
     const double gap = kSelfGap * (std::fabs(ray.origin.x) + std::fabs(ray.origin.y) + std::fabs(ray.origin.z));
     test.ahead = test.t > gap;
     return test;

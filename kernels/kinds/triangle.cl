@@ -8,9 +8,8 @@
  * origin o, computed as d.((p - o) x (q - p)) (edge_volume_normal()); the three volumes are also
  * the hit's barycentric weights (Woop, Benthin and Wald 2013 use the same edge functions, after
  * a shear). Each rounds on its own, so near zero their signs could leave a ray through a
- * shared vertex or edge outside every triangle there; where a volume lies within its rounding
- * of zero and the ray is outside as the volumes are, an exact test decides
- * (kinds/triangle_sides.cl).
+ * shared vertex or edge outside every triangle there, or put a ray through an open edge on
+ * either side of it; a volume within a band of zero counts as zero (kinds/triangle_sides.cl).
  *
  * The hit's t blends the corners' distances along the ray by those weights: a convex blend,
  * accurate even where the ray grazes a far triangle. Where the origin lies in the
@@ -186,12 +185,8 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     real v = edge_volume(c2, c0, origin, direction); /* weight of corner 1 */
     real w = edge_volume(c0, c1, origin, direction); /* weight of corner 2 */
     real longest = (real)triangle->longest_edge;
-    real bound = edge_volume_bound(norm1(k.a) + longest, longest);
     real det = u + v + w;
-    EdgeSides sides = edge_sides(u, v, w, bound);
-    if (!sides.maybe || det == 0.0f)
-        return INFINITY;
-    if (!sides.inside && !triangle_exactly_inside(k.a, k.b, k.c, direction))
+    if (!banded_inside(u, v, w, det, edge_band(norm1(k.a) + longest, longest)))
         return INFINITY;
     real3 n = triangle_plane_normal(triangle);
     bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
@@ -216,7 +211,12 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     real least = triangle_least_t(offset, n, triangle_plane_slack(origin));
     if (!(t > least))
         t = t_plane;
-    return t > least && t < t_max ? t : INFINITY;
+    if (!(t > least && t < t_max))
+        return INFINITY;
+    if (outside_by_volumes(u, v, w, det) &&
+        !within_corner_box(origin.x + t * direction.x, origin.y + t * direction.y, origin.z + t * direction.z, c0, c1, c2))
+        return INFINITY;
+    return t;
 }
 
 /* triangle_distance()'s scaling of the weights of the lanes in `hit` whose det is out of its
@@ -260,18 +260,10 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     real16 v = edge_volume16(c2, c0, origin, d);
     real16 w = edge_volume16(c0, c1, origin, d);
     real longest = (real)triangle->longest_edge;
-    real16 bound = (real16)(edge_volume_bound(norm1(k.a) + longest, longest));
     real16 det = u + v + w;
-    EdgeSides16 sides = edge_sides16(u, v, w, bound);
-    mask16 hit = sides.maybe && det != 0.0f;
+    mask16 hit = banded_inside16(u, v, w, det, (real16)(edge_band(norm1(k.a) + longest, longest)));
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
-    if (any_lanes16(hit && !sides.inside)) {
-        hit = hit && (sides.inside ||
-                      exactly_inside16(uniform_points16(k.a), uniform_points16(k.b), uniform_points16(k.c), d));
-        if (!any_lanes16(hit))
-            return (real16)(INFINITY);
-    }
     real3 n = triangle_plane_normal(triangle);
     bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
     PlaneOffset plane = near_eye ? triangle_offset(triangle, k.a, n, origin) : (PlaneOffset){dot3(k.a, n), 0.0f};
@@ -294,6 +286,10 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     if (any_lanes16(behind))
         t = select(t, offset / facing, behind);
     hit = hit && t > nearest;
+    mask16 outside = hit && outside_by_volumes16(u, v, w, det);
+    if (any_lanes16(outside))
+        hit = hit && !(outside && !within_corner_box16(origin.x + t * d.x, origin.y + t * d.y, origin.z + t * d.z,
+                                                       c0, c1, c2));
     return select((real16)(INFINITY), t, hit);
 }
 
@@ -313,21 +309,13 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     real16 u = edge_volume16_from(c1, c2, o, d);
     real16 v = edge_volume16_from(c2, c0, o, d);
     real16 w = edge_volume16_from(c0, c1, o, d);
-    /* each lane's reach bounded by corner 0's from the eye, the longest edge and the origin's */
+    /* each lane's reach as triangle_distance() finds it: norm1() of corner 0 from its origin */
     real longest = (real)triangle->longest_edge;
-    real16 reach = (norm1(c0) + longest) + (fabs(o.x) + fabs(o.y) + fabs(o.z));
-    real16 bound = edge_volume_bound16(reach, longest);
+    real16 reach = (fabs(ax) + fabs(ay) + fabs(az)) + longest;
     real16 det = u + v + w;
-    EdgeSides16 sides = edge_sides16(u, v, w, bound);
-    mask16 hit = sides.maybe && det != 0.0f;
+    mask16 hit = banded_inside16(u, v, w, det, edge_band16(reach, longest));
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
-    if (any_lanes16(hit && !sides.inside)) {
-        Points16 a = {ax, ay, az}, b = {bx, by, bz}, c = {cx, cy, cz};
-        hit = hit && (sides.inside || exactly_inside16(a, b, c, d));
-        if (!any_lanes16(hit))
-            return (real16)(INFINITY);
-    }
     real3 n = triangle_plane_normal(triangle);
     bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
     real16 offset = ax * n.x + ay * n.y + az * n.z, offset_error = (real16)(0.0f);
@@ -361,6 +349,9 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     if (any_lanes16(behind))
         t = select(t, offset / facing, behind);
     hit = hit && t > least;
+    mask16 outside = hit && outside_by_volumes16(u, v, w, det);
+    if (any_lanes16(outside))
+        hit = hit && !(outside && !within_corner_box16(o.x + t * d.x, o.y + t * d.y, o.z + t * d.z, c0, c1, c2));
     return select((real16)(INFINITY), t, hit);
 }
 

@@ -43,13 +43,6 @@ typedef struct {
     real16 x, y, z;
 } Points16;
 
-/* One point in all 16 lanes. */
-CLR_PACKET_INLINE Points16 uniform_points16(real3 p)
-{
-    Points16 points = {(real16)(p.x), (real16)(p.y), (real16)(p.z)};
-    return points;
-}
-
 /* The 16 rays' nearest hits so far, lane by lane as in Hit. */
 typedef struct {
     real16 t;
