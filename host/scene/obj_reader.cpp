@@ -81,8 +81,10 @@ class MaterialFiles {
 public:
     MaterialFiles(std::filesystem::path folder, MtlLibrary& library) : folder_(std::move(folder)), library_(library) {}
 
-    // Adds the materials of .mtl `name`; false (and problem() says why) where it cannot.
-    bool read(const std::string& name) {
+    // Adds the materials of the .mtl `library` names; false (and problem() says why, from the
+    // OBJ's line naming it, as every other problem of the OBJ) where it cannot.
+    bool read(const ObjLibraryName& library) {
+        const std::string& name = library.name;
         const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
         tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
         // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
@@ -97,29 +99,29 @@ public:
                 return true;
             }
         }
+        const std::string shown = "mtllib " + printable(shortened(name, 200)) + ": ";
+        const std::string where = "line " + std::to_string(library.line) + ": " + shown;
         if (read_.size() >= kMaxMtlFiles) {
             if (problem_.empty())
-                problem_ = "mtllib " + printable(shortened(name, 200)) + ": the OBJ reads more than " +
-                           std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
+                problem_ = where + "the OBJ reads more than " + std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
             return false;
         }
         // Read, checked and its materials listed once for all the scene's OBJ files that name it
         // (MtlLibrary).
         std::shared_ptr<const MtlFileRead> file = library_.read(path.string());
-        const std::string shown = "mtllib " + printable(shortened(name, 200)) + ": ";
         if (file->read) {
             if (identified) read_.insert({{info.st_dev, info.st_ino}, digests_.size()});
             files_.push_back(path.string());
             digests_.push_back(file->digest);
         }
         if (!file->problem.empty()) {
-            if (problem_.empty()) problem_ = shown + file->problem;
+            if (problem_.empty()) problem_ = where + file->problem;
             return false;
         }
         const MtlMaterials& materials = file->materials;
         if (material_count_ + materials.count > kMaxObjMaterials) {
             if (problem_.empty())
-                problem_ = shown + "it brings the OBJ's materials to " +
+                problem_ = where + "it brings the OBJ's materials to " +
                            std::to_string(material_count_ + materials.count) + ", more than the limit of " +
                            std::to_string(kMaxObjMaterials);
             return false;
@@ -279,9 +281,9 @@ void warn_about_undefined_materials(const ObjMaterialStatements& statements, con
 // problem kept by `material_files`.
 void read_material_libraries(const ObjMaterialStatements& statements, MaterialFiles& material_files) {
     std::set<std::string> named;
-    for (const std::string& name : statements.libraries) {
-        if (!named.insert(name).second) continue;
-        if (!material_files.read(name)) return;
+    for (const ObjLibraryName& library : statements.libraries) {
+        if (!named.insert(library.name).second) continue;
+        if (!material_files.read(library)) return;
     }
 }
 

@@ -344,6 +344,15 @@ std::string whole_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
+// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet.
+void add_new_library_names(std::string_view line, std::uint64_t number, std::unordered_set<std::string>& seen,
+                           std::vector<ObjLibraryName>& libraries) {
+    std::vector<std::string> names;
+    add_library_names(line, names);
+    for (std::string& name : names)
+        if (seen.insert(name).second) libraries.push_back({std::move(name), number});
+}
+
 }  // namespace
 
 // Each name once, however many lines repeat it: a file of millions of `usemtl` or `mtllib`
@@ -352,15 +361,11 @@ ObjMaterialStatements material_statements(std::string_view text) {
     ObjMaterialStatements found;
     std::unordered_set<std::string> libraries;
     std::unordered_map<std::string, std::size_t> uses;  // a name's entry in found.uses
-    std::vector<std::string> names;
     bool faces_begun = false;
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         const std::string_view keyword = keyword_of(line);
         if (keyword == "mtllib") {
-            names.clear();
-            add_library_names(line, names);
-            for (std::string& name : names)
-                if (libraries.insert(name).second) found.libraries.push_back(std::move(name));
+            add_new_library_names(line, number, libraries, found.libraries);
         } else if (keyword == "usemtl") {
             std::string name = used_material_name(line), whole = whole_material_name(line);
             if (!faces_begun) found.first_face_material = name, found.first_face_whole = whole;

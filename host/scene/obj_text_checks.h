@@ -95,6 +95,13 @@ std::string obj_statements_used(std::string_view text);
 // The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.
 std::string mtl_statements_used(std::string_view text);
 
+// A .mtl file an OBJ names: the name as its `mtllib` statement writes it, and the line (from 1)
+// of the first statement naming it, which a problem reading the file names.
+struct ObjLibraryName {
+    std::string name;
+    std::uint64_t line = 0;
+};
+
 // What the OBJ `text` says of materials, read in one pass:
 struct ObjMaterialStatements {
     // The .mtl files it names: every name of every `mtllib` statement, in the file's order, as
@@ -103,7 +110,7 @@ struct ObjMaterialStatements {
     // them all before the faces, so a `usemtl` finds a material whichever line names its file
     // (tinyobjloader itself reads only the first name of a statement that it can read, and a
     // `usemtl` only among the files named above it).
-    std::vector<std::string> libraries;  // each name once, where it first appears
+    std::vector<ObjLibraryName> libraries;  // each name once, where it first appears
     // Each material that `usemtl` statements use, once, in the order of first use: its name (the
     // statement's first word, as tinyobjloader reads it), the whole name (the rest of the
     // statement, blanks around it left out: "my mat" of `usemtl my mat # note`, which a
