@@ -73,6 +73,11 @@ std::vector<bool> materials_giving_diffuse(const std::string& text) {
     return gives;
 }
 
+// The path of the .mtl file `name` (as an `mtllib` statement writes it) of an OBJ in `folder`.
+std::string material_file_path(const std::filesystem::path& folder, const std::string& name) {
+    return (std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder / name).string();
+}
+
 // Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any
 // input file; the first failure is kept for read_obj to report. The materials are combined as
 // tinyobjloader's LoadMtl would list them, file after file, a name's first definition kept,
@@ -85,8 +90,7 @@ public:
     // OBJ's line naming it, as every other problem of the OBJ) where it cannot.
     bool read(const ObjLibraryName& library) {
         const std::string& name = library.name;
-        const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
-        tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
+        const std::filesystem::path path = material_file_path(folder_, name);  // as the system resolves it
         // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
         // in the list already. It is still one of the OBJ's files, with the digest of its first read: the mesh cache
         // checks each name, so that a name later made to point elsewhere is seen.
@@ -155,7 +159,6 @@ public:
     }
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
-    const std::vector<std::string>& tried() const { return tried_; }
     bool defines(const std::string& material) const { return material_named(material) != nullptr; }
     // The `Kd` of material `name` (its first definition, as LoadMtl keeps), where a .mtl file
     // gives it one.
@@ -218,7 +221,6 @@ private:
     std::filesystem::path folder_;
     MtlLibrary& library_;
     std::string problem_;
-    std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
     std::map<std::pair<dev_t, ino_t>, std::size_t> read_;  // each .mtl read, by identity: its digest's index
@@ -560,13 +562,23 @@ std::vector<std::string> mtl_texture_files(std::string_view text) {
     return files;
 }
 
-ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
+namespace {
+
+// The counts of an OBJ text that passes clrender's checks of its encoding and lines; ObjError
+// (with the line) where it does not.
+ObjTextCounts checked_counts(const std::string& text) {
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) throw ObjError(encoding);
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
+    return counts;
+}
+
+// MeshMemoryError where parsing a text of `text_bytes` and `counts` would take more than
+// `memory_budget` (obj_reader.h).
+void check_parse_memory(std::uint64_t text_bytes, const ObjTextCounts& counts, std::uint64_t memory_budget) {
     const std::uint64_t vertex_lines = counts.positions + counts.texcoords + counts.normals;
-    const std::uint64_t needed = 2 * text.size() + counts.triangles * kParsedTriangleBytes +
+    const std::uint64_t needed = 2 * text_bytes + counts.triangles * kParsedTriangleBytes +
                                  counts.named_statements * kStatementBytes + vertex_lines * kVertexLineBytes;
     if (needed > memory_budget) {
         throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles and " +
@@ -574,12 +586,29 @@ ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_
                               gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +
                               " a scene's meshes may take: half of this machine's memory (docs/robustness.md, Memory)");
     }
-    MtlLibrary own_library;
-    MaterialFiles material_files(std::filesystem::path(path).parent_path(), library ? *library : own_library);
+}
+
+// The path of every .mtl file the OBJ `text` names, each name once, whichever line the OBJ fails
+// at: they are the model's files, which no output may replace.
+std::vector<std::string> named_material_files(const std::string& text, const std::filesystem::path& folder) {
+    std::vector<std::string> paths;
+    for (const ObjLibraryName& library : material_library_names(text))
+        paths.push_back(material_file_path(folder, library.name));
+    return paths;
+}
+
+}  // namespace
+
+ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     try {
+        const ObjTextCounts counts = checked_counts(text);
+        check_parse_memory(text.size(), counts, memory_budget);
+        MtlLibrary own_library;
+        MaterialFiles material_files(folder, library ? *library : own_library);
         return parse_checked(text, counts, material_files);
     } catch (ObjError& failure) {
-        failure.material_files = material_files.tried();
+        failure.material_files = named_material_files(text, folder);
         throw;
     }
 }

@@ -24,8 +24,8 @@ namespace clr {
 class ObjError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
-    // The .mtl files the reader had tried to read when it failed, as paths: they stay inputs
-    // of the run (never replaced by an output) even when a placeholder stands in for the mesh.
+    // Every .mtl file the OBJ names, as paths, whichever line it failed at: they stay inputs of
+    // the run (never replaced by an output) even when a placeholder stands in for the mesh.
     std::vector<std::string> material_files;
 };
 

@@ -380,6 +380,16 @@ ObjMaterialStatements material_statements(std::string_view text) {
     return found;
 }
 
+std::vector<ObjLibraryName> material_library_names(std::string_view text) {
+    std::vector<ObjLibraryName> found;
+    std::unordered_set<std::string> seen;
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        if (keyword_of(line) == "mtllib") add_new_library_names(line, number, seen, found);
+        return true;
+    });
+    return found;
+}
+
 std::string mtl_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) { return keyword == "newmtl" || keyword == "Kd"; });
 }

@@ -129,4 +129,8 @@ struct ObjMaterialStatements {
 };
 ObjMaterialStatements material_statements(std::string_view text);
 
+// The `libraries` of material_statements alone, for a text that fails its checks: the .mtl
+// files it names stay inputs of the run however far it was read.
+std::vector<ObjLibraryName> material_library_names(std::string_view text);
+
 }  // namespace clr
