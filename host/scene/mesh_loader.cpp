@@ -420,7 +420,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             // and a loop over a member of the returned temporary read it after it was freed.
             const auto read = materials.read(material);
             for (const std::string& name : read->texture_files) {
-                std::string texture = fs::path(name).is_absolute() ? name : (folder / name).string();
+                std::string texture = path_in_folder(folder, name);  // "./wood.png" is "wood.png"
                 if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
             }
         }

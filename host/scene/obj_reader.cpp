@@ -17,6 +17,7 @@
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
+#include "scene/file_names.h"
 #include "scene/mtl_library.h"
 #include "scene/mtl_texture_maps.h"
 #include "scene/obj_text_checks.h"
@@ -73,9 +74,10 @@ std::vector<bool> materials_giving_diffuse(const std::string& text) {
     return gives;
 }
 
-// The path of the .mtl file `name` (as an `mtllib` statement writes it) of an OBJ in `folder`.
+// The path of the .mtl file `name` (as an `mtllib` statement writes it) of an OBJ in `folder`:
+// "./a.mtl" is "a.mtl", one file listed once among the run's inputs, as an OBJ's name is.
 std::string material_file_path(const std::filesystem::path& folder, const std::string& name) {
-    return (std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder / name).string();
+    return path_in_folder(folder, name);
 }
 
 // Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any

@@ -161,6 +161,20 @@ TEST(PlanCli, ThePlanNamesTheFilesReadOfAMeshThatAPlaceholderStandsInFor) {
     EXPECT_EQ(plan["reads"], json({"scene.json", "bad.obj", "lib.mtl"}));
 }
 
+// A file named two ways is one file, listed once: an OBJ placed as "m.obj" and "./m.obj", and
+// a .mtl it names as "red.mtl" and "./red.mtl" (listed twice before).
+TEST(PlanCli, AFileNamedTwoWaysIsListedOnce) {
+    TempFolder folder;
+    folder.write("red.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("m.obj", "mtllib red.mtl ./red.mtl\nmtllib .//red.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                          "f 1 2 3\n");
+    folder.write("scene.json", R"({
+  "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60, "width": 30, "height": 20,
+  "obj": [{"filename": "m.obj"}, {"filename": "./m.obj", "position": [1, 0, 0]}]
+})");
+    EXPECT_EQ(plan_of("scene.json", folder)["reads"], json({"scene.json", "m.obj", "red.mtl"}));
+}
+
 TEST(PlanCli, ResumeMarksTheFinishedFrames) {
     TempFolder folder;
     folder.write("anim.json", kAnimation);

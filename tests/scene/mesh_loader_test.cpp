@@ -525,6 +525,16 @@ TEST(MeshLoader, TheTexturesItsMtlNamesAreInputsNoOutputMayReplace) {
     }
 }
 
+// A texture named two ways ("wood.png", "./wood.png") is one file, listed once.
+TEST(MeshLoader, ATextureNamedTwoWaysIsListedOnce) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl a\nKd 1 0 0\nmap_Kd wood.png\nnewmtl b\nKd 0 1 0\nmap_Kd ./wood.png\n"
+                          "bump .//wood.png\n");
+    folder.write("m.obj", "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Scene scene = load_in(folder, with_obj({{"filename", "m.obj"}}));
+    EXPECT_EQ(scene.mesh_texture_paths, (std::vector<std::string>{folder.file("wood.png")}));
+}
+
 // With --placeholders a model whose .mtl cannot be used becomes a cube and the run goes on:
 // table.json beside table.obj, a table.mtl with a bad colour line naming map_Kd table.png, and
 // the default output table.png replaced the texture.
