@@ -581,11 +581,16 @@ ObjTextCounts checked_counts(const std::string& text) {
 void check_parse_memory(std::uint64_t text_bytes, const ObjTextCounts& counts, std::uint64_t memory_budget) {
     const std::uint64_t vertex_lines = counts.positions + counts.texcoords + counts.normals;
     const std::uint64_t needed = 2 * text_bytes + counts.triangles * kParsedTriangleBytes +
-                                 counts.named_statements * kStatementBytes + vertex_lines * kVertexLineBytes;
+                                 counts.named_statements * kStatementBytes +
+                                 counts.grouping_statement_bytes * kStatementTextBytes + vertex_lines * kVertexLineBytes;
     if (needed > memory_budget) {
+        const std::uint64_t grouping = counts.grouping_statement_bytes;
         throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles and " +
-                              std::to_string(vertex_lines) + " v, vt and vn lines would take about " +
-                              gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +
+                              std::to_string(vertex_lines) + " v, vt and vn lines" +
+                              (grouping > 0 ? " (and " + std::to_string(grouping) + " bytes of o, g, s, usemtl and "
+                                              "mtllib lines)" : "") +
+                              " would take about " + gib_text(needed) + " to read, more than the " +
+                              gib_text(memory_budget) +
                               " a scene's meshes may take: half of this machine's memory (docs/robustness.md, Memory)");
     }
 }

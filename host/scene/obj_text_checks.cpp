@@ -212,12 +212,14 @@ std::string check_corner(std::string_view corner, const ObjTextCounts& before, c
 }
 
 // The entries each keyword adds, counted in a first pass so that a face may name a position
-// defined after it, as tinyobjloader allows.
-void count_entry(std::string_view keyword, ObjTextCounts& counts) {
+// defined after it, as tinyobjloader allows; `line`: the whole line, comment included.
+void count_entry(std::string_view keyword, std::string_view line, ObjTextCounts& counts) {
     if (keyword == "v") ++counts.positions;
     else if (keyword == "vn") ++counts.normals;
     else if (keyword == "vt") ++counts.texcoords;
     else if (keyword == "o" || keyword == "g" || keyword == "usemtl" || keyword == "mtllib") ++counts.named_statements;
+    if (keyword == "o" || keyword == "g" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib")
+        counts.grouping_statement_bytes += line.size();
 }
 
 // Whether `keyword` starts a statement of the OBJ format (vertex data, elements, grouping,
@@ -455,7 +457,7 @@ PieceCounts count_piece(std::string_view piece) {
         ++counts.lines;
         const std::string_view line = statement_of(whole_line);
         const std::string_view keyword = keyword_of(line);
-        count_entry(keyword, counts.entries);
+        count_entry(keyword, whole_line, counts.entries);
         if (!keyword.empty() && !is_obj_statement(keyword) && counts.entries.unknown_statements++ == 0) {
             counts.entries.first_unknown_line = counts.lines;  // within the piece
             counts.entries.first_unknown_keyword = std::string(keyword.substr(0, 64));
@@ -515,7 +517,7 @@ ObjTextProblem check_piece(std::string_view piece, std::uint64_t lines_before, O
             problem = {lines_before + number, detail};
             return false;
         }
-        count_entry(keyword, counts);
+        count_entry(keyword, line, counts);
         return true;
     });
     return problem;
@@ -528,6 +530,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
     sum.faces += more.faces;
     sum.triangles += more.triangles;
     sum.named_statements += more.named_statements;
+    sum.grouping_statement_bytes += more.grouping_statement_bytes;
     sum.unknown_statements += more.unknown_statements;
     sum.coloured_positions += more.coloured_positions;
 }

@@ -33,6 +33,9 @@ struct ObjTextCounts {
     // `o`, `g`, `usemtl` and `mtllib` lines: each may start a shape of tinyobjloader's or name a
     // material or a .mtl file, memory beside the triangles' (obj_reader.h, kStatementBytes).
     std::uint64_t named_statements = 0;
+    // The bytes of the `o`, `g`, `s`, `usemtl` and `mtllib` lines: the names and groups they hold
+    // are copied several times over (obj_reader.h, kStatementTextBytes), which a long one shows.
+    std::uint64_t grouping_statement_bytes = 0;
     // Lines whose first word is no OBJ statement ("V", a typo, or a `v` line behind the byte
     // order mark of a file joined on, "\xEF\xBB\xBFv"), which tinyobjloader skips in silence:
     // a position skipped so shifts the corners of every face after it. The first one's line

@@ -853,9 +853,38 @@ TEST(ObjReader, ShapesAndMaterialLinesCountTowardsTheParseBudget) {
     const std::string text = kSquare + "o a\nf 1 2 3\ng b\nf 1 3 4\nusemtl c\nmtllib m.mtl\n";
     folder.write("m.mtl", "newmtl c\nKd 1 0 0\n");
     const std::string path = folder.write("mesh.obj", text);
-    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes + 4 * kVertexLineBytes;
+    const std::uint64_t statement_bytes = std::string("o ag busemtl cmtllib m.mtl").size();
+    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes +
+                                 statement_bytes * kStatementTextBytes + 4 * kVertexLineBytes;
     EXPECT_EQ(parse_obj(text, path, needed).triangles.size(), 2u);
     EXPECT_THROW(parse_obj(text, path, needed - 1), MeshMemoryError);
+}
+
+// ... and the bytes of those lines and of `s` lines, which their names take several times over:
+// a 100 MB `usemtl` line peaked at 1.55 GB (`g a a ...` at 2.43 GB) where twice its text, 200 MB,
+// had been counted, so that a budget of 1 GB let it be parsed.
+TEST(ObjReader, LongNamesCountTowardsTheParseBudgetByTheirLength) {
+    const std::string triangle = "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n";
+    for (const std::string keyword : {"usemtl", "mtllib", "g", "o", "s"}) {
+        const std::string line = keyword + " " + std::string(std::size_t(1) << 20, 'a');
+        const std::string text = triangle + line + "\n";
+        const std::uint64_t statements = keyword == "s" ? 0 : 1;
+        const std::uint64_t needed = 2 * text.size() + kParsedTriangleBytes + statements * kStatementBytes +
+                                     line.size() * kStatementTextBytes + 3 * kVertexLineBytes;
+        try {
+            parse_obj(text, "long.obj", needed - 1);
+            ADD_FAILURE() << keyword << ": a long line was parsed on a budget one byte short of it";
+        } catch (const MeshMemoryError& error) {
+            EXPECT_NE(std::string(error.what()).find("(and " + std::to_string(line.size()) +
+                                                     " bytes of o, g, s, usemtl and mtllib lines) would take"),
+                      std::string::npos)
+                << error.what();
+        }
+        try {
+            parse_obj(text, "long.obj", needed);
+        } catch (const ObjError&) {  // the .mtl named is missing: the budget passed
+        }
+    }
 }
 
 // ... and each `v`, `vt` and `vn` line: a point cloud or scan with a face took about 60 bytes a
