@@ -599,7 +599,7 @@ void check_parse_memory(std::uint64_t text_bytes, const ObjTextCounts& counts, s
 // at: they are the model's files, which no output may replace.
 std::vector<std::string> named_material_files(const std::string& text, const std::filesystem::path& folder) {
     std::vector<std::string> paths;
-    for (const ObjLibraryName& library : material_library_names(text))
+    for (const ObjLibraryName& library : material_library_names(text, kMaxMtlFiles))
         paths.push_back(material_file_path(folder, library.name));
     return paths;
 }

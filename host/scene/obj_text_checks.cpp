@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -304,7 +305,8 @@ namespace {
 
 // The names of an `mtllib` statement, as tinyobjloader cuts them: the text after "mtllib" and
 // one blank, cut at spaces, a backslash keeping the next character; empty names dropped.
-void add_library_names(std::string_view line, std::vector<std::string>& names) {
+void add_library_names(std::string_view line, std::vector<std::string>& names,
+                       std::size_t most = std::numeric_limits<std::size_t>::max()) {
     const std::size_t at = line.find("mtllib") + 6;
     if (at >= line.size()) return;  // "mtllib" alone
     std::string name;
@@ -316,6 +318,7 @@ void add_library_names(std::string_view line, std::vector<std::string>& names) {
         }
         if (!escaped && c == ' ') {
             if (!name.empty()) names.push_back(name);
+            if (names.size() >= most) return;
             name.clear();
             continue;
         }
@@ -346,11 +349,13 @@ std::string whole_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
-// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet.
+// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet, of
+// its first `most` names.
 void add_new_library_names(std::string_view line, std::uint64_t number, std::unordered_set<std::string>& seen,
-                           std::vector<ObjLibraryName>& libraries) {
+                           std::vector<ObjLibraryName>& libraries,
+                           std::size_t most = std::numeric_limits<std::size_t>::max()) {
     std::vector<std::string> names;
-    add_library_names(line, names);
+    add_library_names(line, names, most);
     for (std::string& name : names)
         if (seen.insert(name).second) libraries.push_back({std::move(name), number});
 }
@@ -382,13 +387,15 @@ ObjMaterialStatements material_statements(std::string_view text) {
     return found;
 }
 
-std::vector<ObjLibraryName> material_library_names(std::string_view text) {
+std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most) {
     std::vector<ObjLibraryName> found;
     std::unordered_set<std::string> seen;
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
-        if (keyword_of(line) == "mtllib") add_new_library_names(line, number, seen, found);
-        return true;
+        // Of a line naming millions (a text that failed its checks has had no memory estimate), no more than needed.
+        if (keyword_of(line) == "mtllib") add_new_library_names(line, number, seen, found, most);
+        return found.size() < most;
     });
+    if (found.size() > most) found.resize(most);
     return found;
 }
 

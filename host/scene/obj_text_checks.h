@@ -132,8 +132,9 @@ struct ObjMaterialStatements {
 };
 ObjMaterialStatements material_statements(std::string_view text);
 
-// The `libraries` of material_statements alone, for a text that fails its checks: the .mtl
-// files it names stay inputs of the run however far it was read.
-std::vector<ObjLibraryName> material_library_names(std::string_view text);
+// The `libraries` of material_statements alone, the first `most` of them, for a text that fails
+// its checks: the .mtl files it names stay inputs of the run however far it was read. A broken
+// file naming millions holds no more of them than a reader would read (kMaxMtlFiles).
+std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most);
 
 }  // namespace clr
