@@ -1,5 +1,6 @@
 #include "app/plan_json.h"
 
+#include <filesystem>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -21,6 +22,13 @@ json split(const Options& options, const Scene& scene, const OutputPlan& plan) {
     return {{"by", "rows"}, {"x0", rect.x0}, {"x1", rect.x1}, {"y0", rect.y0}, {"y1", rect.y1}};
 }
 
+// Whether a file of a mesh that a placeholder stands in for was read: an OBJ refused for a bad
+// line and the .mtl files it names were; a missing file, a folder or a FIFO was not.
+bool read_for_placeholder(const std::string& path) {
+    std::error_code error;
+    return std::filesystem::is_regular_file(path, error);
+}
+
 // Every file the render reads, each once: the scene, its images, its OBJ files and the .mtl
 // files they name (what a node needs besides the program). A missing file that --placeholders
 // stands in for is not read, so not listed.
@@ -35,9 +43,10 @@ json inputs(const Scene& scene) {
         if (image.format != "placeholder") add(image.path);
     std::set<const std::vector<std::string>*> seen;  // the placements of a file share its list
     for (const Mesh& mesh : scene.meshes) {
-        if (!mesh.placeholder) add(mesh.path);
+        if (!mesh.placeholder || read_for_placeholder(mesh.path)) add(mesh.path);
         if (mesh.material_paths && seen.insert(mesh.material_paths.get()).second)
-            for (const std::string& material : *mesh.material_paths) add(material);
+            for (const std::string& material : *mesh.material_paths)
+                if (!mesh.placeholder || read_for_placeholder(material)) add(material);
     }
     return files;
 }

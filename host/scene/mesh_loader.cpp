@@ -188,6 +188,14 @@ bool any_triangle_has_area(const ObjMesh& model) {
     return false;
 }
 
+// Refuses a model that was read but is no mesh the scene can use, with the reason `why`: its
+// .mtl files stay inputs of the run all the same (ObjError::material_files).
+[[noreturn]] void refuse_model(const ObjMesh& model, const std::string& why) {
+    ObjError error(why);
+    error.material_files = model.material_files;
+    throw error;
+}
+
 // Ends the run with exit 6 and a message at `node`, as a scene error names its place.
 [[noreturn]] void fail_out_of_memory(const Node& node, const std::string& detail) {
     throw Error(SceneError(node.diagnostics().file, node.location(), "out of memory: " + detail).what(), kExitOutOfMemory);
@@ -399,14 +407,20 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     std::set<ModelKey> textures_listed;
     std::set<std::string> texture_paths;
     const auto list_textures = [&](const std::vector<std::string>& material_files) {
+        // An OBJ that fails may name any number of .mtl files (all of them inputs): the textures
+        // of as many as an OBJ may read, no more, so that a broken file costs no more reads
+        // than a good one.
+        std::size_t files_read = 0;
         for (const std::string& material : material_files) {
+            if (files_read == kMaxMtlFiles) break;
             if (!textures_listed.insert(model_key(material)).second) continue;
+            ++files_read;
             const fs::path folder = fs::path(material).parent_path();
             // Held here: the library may keep no other reference (a file it could not read),
             // and a loop over a member of the returned temporary read it after it was freed.
             const auto read = materials.read(material);
             for (const std::string& name : read->texture_files) {
-                std::string texture = fs::path(name).is_absolute() ? name : (folder / name).string();
+                std::string texture = path_in_folder(folder, name);  // "./wood.png" is "wood.png"
                 if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
             }
         }
@@ -434,12 +448,12 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             // Any text reads as an OBJ of unknown statements: a file without one face is
             // not the mesh the scene asks for (a wrong file, or points and lines only).
             if (model->mesh.triangles.empty())
-                throw ObjError("it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
+                refuse_model(model->mesh, "it has no faces ('f' lines): it is not a mesh, or not an OBJ file");
             if (!any_triangle_has_area(model->mesh))
-                throw ObjError("all its faces have zero area (" +
-                               no_area_reason(longest_edge(model->mesh.positions, model->mesh.triangles),
-                                              "repeated or collinear corners") +
-                               "): it draws nothing");
+                refuse_model(model->mesh, "all its faces have zero area (" +
+                                              no_area_reason(longest_edge(model->mesh.positions, model->mesh.triangles),
+                                                             "repeated or collinear corners") +
+                                              "): it draws nothing");
         } catch (const MeshMemoryError& error) {
             fail_out_of_memory(each.filename, "OBJ '" + printable(path) + "': " + error.what());
         } catch (const std::bad_alloc&) {

@@ -17,6 +17,7 @@
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
 #include "scene/bounded_file.h"
+#include "scene/file_names.h"
 #include "scene/mtl_library.h"
 #include "scene/mtl_texture_maps.h"
 #include "scene/obj_text_checks.h"
@@ -73,6 +74,12 @@ std::vector<bool> materials_giving_diffuse(const std::string& text) {
     return gives;
 }
 
+// The path of the .mtl file `name` (as an `mtllib` statement writes it) of an OBJ in `folder`:
+// "./a.mtl" is "a.mtl", one file listed once among the run's inputs, as an OBJ's name is.
+std::string material_file_path(const std::filesystem::path& folder, const std::string& name) {
+    return path_in_folder(folder, name);
+}
+
 // Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any
 // input file; the first failure is kept for read_obj to report. The materials are combined as
 // tinyobjloader's LoadMtl would list them, file after file, a name's first definition kept,
@@ -81,10 +88,11 @@ class MaterialFiles {
 public:
     MaterialFiles(std::filesystem::path folder, MtlLibrary& library) : folder_(std::move(folder)), library_(library) {}
 
-    // Adds the materials of .mtl `name`; false (and problem() says why) where it cannot.
-    bool read(const std::string& name) {
-        const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : folder_ / name;
-        tried_.push_back(path.string());  // as the system resolves it: no lexically_normal()
+    // Adds the materials of the .mtl `library` names; false (and problem() says why, from the
+    // OBJ's line naming it, as every other problem of the OBJ) where it cannot.
+    bool read(const ObjLibraryName& library) {
+        const std::string& name = library.name;
+        const std::filesystem::path path = material_file_path(folder_, name);  // as the system resolves it
         // One file named several ways ("a.mtl", "./a.mtl") is read once: its materials are
         // in the list already. It is still one of the OBJ's files, with the digest of its first read: the mesh cache
         // checks each name, so that a name later made to point elsewhere is seen.
@@ -97,29 +105,29 @@ public:
                 return true;
             }
         }
+        const std::string shown = "mtllib " + printable(shortened(name, 200)) + ": ";
+        const std::string where = "line " + std::to_string(library.line) + ": " + shown;
         if (read_.size() >= kMaxMtlFiles) {
             if (problem_.empty())
-                problem_ = "mtllib " + printable(shortened(name, 200)) + ": the OBJ reads more than " +
-                           std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
+                problem_ = where + "the OBJ reads more than " + std::to_string(kMaxMtlFiles) + " .mtl files, the limit";
             return false;
         }
         // Read, checked and its materials listed once for all the scene's OBJ files that name it
         // (MtlLibrary).
         std::shared_ptr<const MtlFileRead> file = library_.read(path.string());
-        const std::string shown = "mtllib " + printable(shortened(name, 200)) + ": ";
         if (file->read) {
             if (identified) read_.insert({{info.st_dev, info.st_ino}, digests_.size()});
             files_.push_back(path.string());
             digests_.push_back(file->digest);
         }
         if (!file->problem.empty()) {
-            if (problem_.empty()) problem_ = shown + file->problem;
+            if (problem_.empty()) problem_ = where + file->problem;
             return false;
         }
         const MtlMaterials& materials = file->materials;
         if (material_count_ + materials.count > kMaxObjMaterials) {
             if (problem_.empty())
-                problem_ = shown + "it brings the OBJ's materials to " +
+                problem_ = where + "it brings the OBJ's materials to " +
                            std::to_string(material_count_ + materials.count) + ", more than the limit of " +
                            std::to_string(kMaxObjMaterials);
             return false;
@@ -153,7 +161,6 @@ public:
     }
     const std::vector<std::string>& files() const { return files_; }
     const std::vector<Sha256Digest>& digests() const { return digests_; }
-    const std::vector<std::string>& tried() const { return tried_; }
     bool defines(const std::string& material) const { return material_named(material) != nullptr; }
     // The `Kd` of material `name` (its first definition, as LoadMtl keeps), where a .mtl file
     // gives it one.
@@ -216,7 +223,6 @@ private:
     std::filesystem::path folder_;
     MtlLibrary& library_;
     std::string problem_;
-    std::vector<std::string> tried_;  // each .mtl named, read or not: inputs even when the read fails
     std::vector<std::string> files_;  // each .mtl read, for the run's list of inputs
     std::vector<Sha256Digest> digests_;  // of each, as read (the mesh cache's check)
     std::map<std::pair<dev_t, ino_t>, std::size_t> read_;  // each .mtl read, by identity: its digest's index
@@ -279,9 +285,9 @@ void warn_about_undefined_materials(const ObjMaterialStatements& statements, con
 // problem kept by `material_files`.
 void read_material_libraries(const ObjMaterialStatements& statements, MaterialFiles& material_files) {
     std::set<std::string> named;
-    for (const std::string& name : statements.libraries) {
-        if (!named.insert(name).second) continue;
-        if (!material_files.read(name)) return;
+    for (const ObjLibraryName& library : statements.libraries) {
+        if (!named.insert(library.name).second) continue;
+        if (!material_files.read(library)) return;
     }
 }
 
@@ -558,26 +564,58 @@ std::vector<std::string> mtl_texture_files(std::string_view text) {
     return files;
 }
 
-ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
+namespace {
+
+// The counts of an OBJ text that passes clrender's checks of its encoding and lines; ObjError
+// (with the line) where it does not.
+ObjTextCounts checked_counts(const std::string& text) {
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) throw ObjError(encoding);
     ObjTextProblem problem;
     const ObjTextCounts counts = check_obj_text(text, kMaxObjTriangles, problem);
     if (problem.line != 0) throw ObjError("line " + std::to_string(problem.line) + ": " + problem.detail);
+    return counts;
+}
+
+// MeshMemoryError where parsing a text of `text_bytes` and `counts` would take more than
+// `memory_budget` (obj_reader.h).
+void check_parse_memory(std::uint64_t text_bytes, const ObjTextCounts& counts, std::uint64_t memory_budget) {
     const std::uint64_t vertex_lines = counts.positions + counts.texcoords + counts.normals;
-    const std::uint64_t needed = 2 * text.size() + counts.triangles * kParsedTriangleBytes +
-                                 counts.named_statements * kStatementBytes + vertex_lines * kVertexLineBytes;
+    const std::uint64_t needed = 2 * text_bytes + counts.triangles * kParsedTriangleBytes +
+                                 counts.named_statements * kStatementBytes +
+                                 counts.grouping_statement_bytes * kStatementTextBytes + vertex_lines * kVertexLineBytes;
     if (needed > memory_budget) {
+        const std::uint64_t grouping = counts.grouping_statement_bytes;
         throw MeshMemoryError("its " + std::to_string(counts.triangles) + " triangles and " +
-                              std::to_string(vertex_lines) + " v, vt and vn lines would take about " +
-                              gib_text(needed) + " to read, more than the " + gib_text(memory_budget) +
+                              std::to_string(vertex_lines) + " v, vt and vn lines" +
+                              (grouping > 0 ? " (and " + std::to_string(grouping) + " bytes of o, g, s, usemtl and "
+                                              "mtllib lines)" : "") +
+                              " would take about " + gib_text(needed) + " to read, more than the " +
+                              gib_text(memory_budget) +
                               " a scene's meshes may take: half of this machine's memory (docs/robustness.md, Memory)");
     }
-    MtlLibrary own_library;
-    MaterialFiles material_files(std::filesystem::path(path).parent_path(), library ? *library : own_library);
+}
+
+// The path of every .mtl file the OBJ `text` names, each name once, whichever line the OBJ fails
+// at: they are the model's files, which no output may replace.
+std::vector<std::string> named_material_files(const std::string& text, const std::filesystem::path& folder) {
+    std::vector<std::string> paths;
+    for (const ObjLibraryName& library : material_library_names(text, kMaxMtlFiles))
+        paths.push_back(material_file_path(folder, library.name));
+    return paths;
+}
+
+}  // namespace
+
+ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_t memory_budget, MtlLibrary* library) {
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     try {
+        const ObjTextCounts counts = checked_counts(text);
+        check_parse_memory(text.size(), counts, memory_budget);
+        MtlLibrary own_library;
+        MaterialFiles material_files(folder, library ? *library : own_library);
         return parse_checked(text, counts, material_files);
     } catch (ObjError& failure) {
-        failure.material_files = material_files.tried();
+        failure.material_files = named_material_files(text, folder);
         throw;
     }
 }

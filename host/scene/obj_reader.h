@@ -24,8 +24,8 @@ namespace clr {
 class ObjError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
-    // The .mtl files the reader had tried to read when it failed, as paths: they stay inputs
-    // of the run (never replaced by an output) even when a placeholder stands in for the mesh.
+    // Every .mtl file the OBJ names, as paths, whichever line it failed at: they stay inputs of
+    // the run (never replaced by an output) even when a placeholder stands in for the mesh.
     std::vector<std::string> material_files;
 };
 
@@ -45,6 +45,13 @@ constexpr std::uint64_t kParsedTriangleBytes = 300;
 // bytes a triangle besides the 300; a material name is kept once. A margin on top. The text
 // counts twice: the checks read it, tinyobjloader its copy without the lines it must not see.
 constexpr std::uint64_t kStatementBytes = 512;
+// What each byte of an `o`, `g`, `s`, `usemtl` or `mtllib` line may take besides twice the text:
+// its names are copied several times over (clrender's lists of material and .mtl names,
+// tinyobjloader's shape names, each word a string of its own). A 100 MB line peaked, text
+// included, at 1.55 GB (`usemtl name`), 1.48 GB (`mtllib name`), 0.63 GB (`g name`), 0.33 GB
+// (`s name`), and of one-letter words at 2.43 GB (`g a a ...`) and 2.21 GB (`mtllib a a ...`):
+// 22 bytes a byte besides twice the text. A margin on top.
+constexpr std::uint64_t kStatementTextBytes = 28;
 // What a `v`, `vt` or `vn` line may take besides twice its text: tinyobjloader keeps its
 // numbers as doubles (and a weight for each `v`), and clrender a copy of each position and
 // normal. A file of such lines and one face (a point cloud, a scan) took, text included, 61
@@ -86,9 +93,9 @@ struct ObjMesh {
 // missing, not a regular file, too large, a bad line (with its number), too many triangles.
 // Throws MeshMemoryError, before the parse, when twice the text, its triangles at
 // kParsedTriangleBytes each, its `o`, `g`, `usemtl` and `mtllib` lines at kStatementBytes
-// each and its `v`, `vt` and `vn` lines at kVertexLineBytes each would take more than
-// `memory_budget` bytes; std::bad_alloc when
-// memory runs out all the same.
+// each (and those and its `s` lines at kStatementTextBytes a byte) and its `v`, `vt` and `vn`
+// lines at kVertexLineBytes each would take more than `memory_budget` bytes; std::bad_alloc
+// when memory runs out all the same.
 ObjMesh read_obj(const std::string& path, std::uint64_t memory_budget = std::numeric_limits<std::uint64_t>::max());
 
 class MtlLibrary;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -212,12 +213,14 @@ std::string check_corner(std::string_view corner, const ObjTextCounts& before, c
 }
 
 // The entries each keyword adds, counted in a first pass so that a face may name a position
-// defined after it, as tinyobjloader allows.
-void count_entry(std::string_view keyword, ObjTextCounts& counts) {
+// defined after it, as tinyobjloader allows; `line`: the whole line, comment included.
+void count_entry(std::string_view keyword, std::string_view line, ObjTextCounts& counts) {
     if (keyword == "v") ++counts.positions;
     else if (keyword == "vn") ++counts.normals;
     else if (keyword == "vt") ++counts.texcoords;
     else if (keyword == "o" || keyword == "g" || keyword == "usemtl" || keyword == "mtllib") ++counts.named_statements;
+    if (keyword == "o" || keyword == "g" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib")
+        counts.grouping_statement_bytes += line.size();
 }
 
 // Whether `keyword` starts a statement of the OBJ format (vertex data, elements, grouping,
@@ -302,7 +305,8 @@ namespace {
 
 // The names of an `mtllib` statement, as tinyobjloader cuts them: the text after "mtllib" and
 // one blank, cut at spaces, a backslash keeping the next character; empty names dropped.
-void add_library_names(std::string_view line, std::vector<std::string>& names) {
+void add_library_names(std::string_view line, std::vector<std::string>& names,
+                       std::size_t most = std::numeric_limits<std::size_t>::max()) {
     const std::size_t at = line.find("mtllib") + 6;
     if (at >= line.size()) return;  // "mtllib" alone
     std::string name;
@@ -314,6 +318,7 @@ void add_library_names(std::string_view line, std::vector<std::string>& names) {
         }
         if (!escaped && c == ' ') {
             if (!name.empty()) names.push_back(name);
+            if (names.size() >= most) return;
             name.clear();
             continue;
         }
@@ -344,6 +349,17 @@ std::string whole_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
+// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet, of
+// its first `most` names.
+void add_new_library_names(std::string_view line, std::uint64_t number, std::unordered_set<std::string>& seen,
+                           std::vector<ObjLibraryName>& libraries,
+                           std::size_t most = std::numeric_limits<std::size_t>::max()) {
+    std::vector<std::string> names;
+    add_library_names(line, names, most);
+    for (std::string& name : names)
+        if (seen.insert(name).second) libraries.push_back({std::move(name), number});
+}
+
 }  // namespace
 
 // Each name once, however many lines repeat it: a file of millions of `usemtl` or `mtllib`
@@ -352,15 +368,11 @@ ObjMaterialStatements material_statements(std::string_view text) {
     ObjMaterialStatements found;
     std::unordered_set<std::string> libraries;
     std::unordered_map<std::string, std::size_t> uses;  // a name's entry in found.uses
-    std::vector<std::string> names;
     bool faces_begun = false;
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         const std::string_view keyword = keyword_of(line);
         if (keyword == "mtllib") {
-            names.clear();
-            add_library_names(line, names);
-            for (std::string& name : names)
-                if (libraries.insert(name).second) found.libraries.push_back(std::move(name));
+            add_new_library_names(line, number, libraries, found.libraries);
         } else if (keyword == "usemtl") {
             std::string name = used_material_name(line), whole = whole_material_name(line);
             if (!faces_begun) found.first_face_material = name, found.first_face_whole = whole;
@@ -372,6 +384,18 @@ ObjMaterialStatements material_statements(std::string_view text) {
         }
         return true;
     });
+    return found;
+}
+
+std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most) {
+    std::vector<ObjLibraryName> found;
+    std::unordered_set<std::string> seen;
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        // Of a line naming millions (a text that failed its checks has had no memory estimate), no more than needed.
+        if (keyword_of(line) == "mtllib") add_new_library_names(line, number, seen, found, most);
+        return found.size() < most;
+    });
+    if (found.size() > most) found.resize(most);
     return found;
 }
 
@@ -440,7 +464,7 @@ PieceCounts count_piece(std::string_view piece) {
         ++counts.lines;
         const std::string_view line = statement_of(whole_line);
         const std::string_view keyword = keyword_of(line);
-        count_entry(keyword, counts.entries);
+        count_entry(keyword, whole_line, counts.entries);
         if (!keyword.empty() && !is_obj_statement(keyword) && counts.entries.unknown_statements++ == 0) {
             counts.entries.first_unknown_line = counts.lines;  // within the piece
             counts.entries.first_unknown_keyword = std::string(keyword.substr(0, 64));
@@ -500,7 +524,7 @@ ObjTextProblem check_piece(std::string_view piece, std::uint64_t lines_before, O
             problem = {lines_before + number, detail};
             return false;
         }
-        count_entry(keyword, counts);
+        count_entry(keyword, line, counts);
         return true;
     });
     return problem;
@@ -513,6 +537,7 @@ void add(ObjTextCounts& sum, const ObjTextCounts& more) {
     sum.faces += more.faces;
     sum.triangles += more.triangles;
     sum.named_statements += more.named_statements;
+    sum.grouping_statement_bytes += more.grouping_statement_bytes;
     sum.unknown_statements += more.unknown_statements;
     sum.coloured_positions += more.coloured_positions;
 }

@@ -33,6 +33,9 @@ struct ObjTextCounts {
     // `o`, `g`, `usemtl` and `mtllib` lines: each may start a shape of tinyobjloader's or name a
     // material or a .mtl file, memory beside the triangles' (obj_reader.h, kStatementBytes).
     std::uint64_t named_statements = 0;
+    // The bytes of the `o`, `g`, `s`, `usemtl` and `mtllib` lines: the names and groups they hold
+    // are copied several times over (obj_reader.h, kStatementTextBytes), which a long one shows.
+    std::uint64_t grouping_statement_bytes = 0;
     // Lines whose first word is no OBJ statement ("V", a typo, or a `v` line behind the byte
     // order mark of a file joined on, "\xEF\xBB\xBFv"), which tinyobjloader skips in silence:
     // a position skipped so shifts the corners of every face after it. The first one's line
@@ -95,6 +98,13 @@ std::string obj_statements_used(std::string_view text);
 // The same for a .mtl file: only `newmtl` and `Kd`, the diffuse colour that clrender reads.
 std::string mtl_statements_used(std::string_view text);
 
+// A .mtl file an OBJ names: the name as its `mtllib` statement writes it, and the line (from 1)
+// of the first statement naming it, which a problem reading the file names.
+struct ObjLibraryName {
+    std::string name;
+    std::uint64_t line = 0;
+};
+
 // What the OBJ `text` says of materials, read in one pass:
 struct ObjMaterialStatements {
     // The .mtl files it names: every name of every `mtllib` statement, in the file's order, as
@@ -103,7 +113,7 @@ struct ObjMaterialStatements {
     // them all before the faces, so a `usemtl` finds a material whichever line names its file
     // (tinyobjloader itself reads only the first name of a statement that it can read, and a
     // `usemtl` only among the files named above it).
-    std::vector<std::string> libraries;  // each name once, where it first appears
+    std::vector<ObjLibraryName> libraries;  // each name once, where it first appears
     // Each material that `usemtl` statements use, once, in the order of first use: its name (the
     // statement's first word, as tinyobjloader reads it), the whole name (the rest of the
     // statement, blanks around it left out: "my mat" of `usemtl my mat # note`, which a
@@ -121,5 +131,10 @@ struct ObjMaterialStatements {
     std::string first_face_whole;
 };
 ObjMaterialStatements material_statements(std::string_view text);
+
+// The `libraries` of material_statements alone, the first `most` of them, for a text that fails
+// its checks: the .mtl files it names stay inputs of the run however far it was read. A broken
+// file naming millions holds no more of them than a reader would read (kMaxMtlFiles).
+std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most);
 
 }  // namespace clr

@@ -159,6 +159,37 @@ TEST(OutputSafety, OutputsNamingAMeshThatFailedToLoadAreRefused) {
     EXPECT_FALSE(fs::exists(folder.file("out.png")));
 }
 
+// So is a model that clrender's own checks refuse (a corner out of range, no face with an area),
+// with the texture its .mtl names: `-o wood.png` replaced the texture, and `--stats lib.mtl`
+// the .mtl, of a model whose face named a missing position.
+TEST(OutputSafety, OutputsNamingTheFilesOfAMeshThatFailedItsChecksAreRefused) {
+    TempFolder folder;
+    const std::string mtl = "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n", texture = "PRECIOUS";
+    folder.write("lib.mtl", mtl);
+    folder.write("wood.png", texture);
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 8, "height": 6, "obj": {"filename": "model.obj"}})");
+    const auto run = [&](const std::string& arguments) {
+        return run_clrender(arguments + " --placeholders --reference -q", folder.path(), "timeout 60");
+    };
+    const auto expect_refused_with_a_cube = [&](const std::string& arguments, const std::string& refusal) {
+        const auto result = run(arguments);
+        EXPECT_EQ(result.exit_code, 4) << arguments << ": " << result.output;
+        EXPECT_TRUE(contains(result.output, refusal)) << arguments << ": " << result.output;
+    };
+    for (const std::string face : {"f 1 2 9\n", "f 1 1 2\n"}) {
+        folder.write("model.obj", "mtllib lib.mtl\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\n" + face);
+        expect_refused_with_a_cube("scene.json -o wood.png", "the image (-o) would replace the mesh texture");
+        expect_refused_with_a_cube("scene.json -o out.png --stats lib.mtl",
+                                   "the --stats report would replace the mesh material");
+        expect_refused_with_a_cube("scene.json -o out.png --stats wood.png",
+                                   "the --stats report would replace the mesh texture");
+    }
+    EXPECT_EQ(read_bytes(folder.file("lib.mtl")), mtl);
+    EXPECT_EQ(read_bytes(folder.file("wood.png")), texture);
+    EXPECT_FALSE(fs::exists(folder.file("out.png")));
+}
+
 // A mesh named "models/../m.obj" through a symbolic link `models` is the file the system
 // opens (beside the link's target): that file is the input an output may not replace.
 TEST(OutputSafety, AMeshNamedThroughALinkAndDotDotIsProtectedAsOpened) {

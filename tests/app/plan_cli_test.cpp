@@ -141,6 +141,40 @@ TEST(PlanCli, ThePlanNamesEveryFileTheRenderReads) {
     EXPECT_EQ(join["reads"], plan["reads"]);  // the tiles are in reads_back
 }
 
+// With --placeholders an OBJ refused for a bad line was read all the same, and so were the
+// .mtl files it names (for the textures they name, which no output may replace): the plan
+// lists them, as it lists the files of a model that loads. A missing OBJ was not read.
+TEST(PlanCli, ThePlanNamesTheFilesReadOfAMeshThatAPlaceholderStandsInFor) {
+    TempFolder folder;
+    folder.write("lib.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
+    folder.write("bad.obj", "mtllib lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    folder.write("scene.json", R"({
+  "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60, "width": 30, "height": 20,
+  "obj": [{"filename": "bad.obj"}, {"filename": "gone.obj"}]
+})");
+    const auto result = run_clrender("scene.json --placeholders --plan", folder.path());
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    // The placeholders' warnings come first (standard error, while the scene loads), a line each.
+    const std::size_t plan_start = result.output.find("\n{");
+    ASSERT_NE(plan_start, std::string::npos) << result.output;
+    const json plan = json::parse(result.output.substr(plan_start + 1));
+    EXPECT_EQ(plan["reads"], json({"scene.json", "bad.obj", "lib.mtl"}));
+}
+
+// A file named two ways is one file, listed once: an OBJ placed as "m.obj" and "./m.obj", and
+// a .mtl it names as "red.mtl" and "./red.mtl" (listed twice before).
+TEST(PlanCli, AFileNamedTwoWaysIsListedOnce) {
+    TempFolder folder;
+    folder.write("red.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("m.obj", "mtllib red.mtl ./red.mtl\nmtllib .//red.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                          "f 1 2 3\n");
+    folder.write("scene.json", R"({
+  "eye": [0, 0, 6], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60, "width": 30, "height": 20,
+  "obj": [{"filename": "m.obj"}, {"filename": "./m.obj", "position": [1, 0, 0]}]
+})");
+    EXPECT_EQ(plan_of("scene.json", folder)["reads"], json({"scene.json", "m.obj", "red.mtl"}));
+}
+
 TEST(PlanCli, ResumeMarksTheFinishedFrames) {
     TempFolder folder;
     folder.write("anim.json", kAnimation);

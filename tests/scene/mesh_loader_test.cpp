@@ -458,6 +458,45 @@ TEST(MeshLoader, PlaceholdersKeepTheFilesTheyStandInForAsInputs) {
     EXPECT_TRUE(scene.meshes[1].material_paths->empty());
 }
 
+// Whatever makes a model unusable, with --placeholders the .mtl files it names (on lines before
+// or after the failing one) and the textures they name stay inputs no output may replace: the
+// line checks, and the faces checked once read, failed before the list of its .mtl files was
+// kept, and `-o wood.png` replaced the model's texture.
+TEST(MeshLoader, PlaceholdersKeepTheMtlFilesAndTexturesOfAModelThatFailsAnyCheck) {
+    const std::string triangle = "v -1 -1 0\nv 1 -1 0\nv 0 1 0\n";
+    std::string corners;
+    for (int i = 0; i < 256; ++i) corners += " " + std::to_string(i % 3 + 1);
+    const std::vector<std::string> broken = {
+        triangle + "f 1 2 9\n",                          // a corner out of range
+        "v nan 0 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n",    // a position that is no number
+        triangle + "f" + corners + "\n",                  // more corners than a face may have
+        triangle,                                         // no faces
+        "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",       // faces without area
+    };
+    for (const std::string& body : broken) {
+        TempFolder folder;
+        folder.write("lib.mtl", "newmtl red\nKd 1 0 0\nmap_Kd wood.png\n");
+        folder.write("late.mtl", "newmtl blue\nKd 0 0 1\nbump late.png\n");
+        folder.write("model.obj", "mtllib lib.mtl\n" + body + "mtllib late.mtl\n");
+        LoadOptions options;
+        options.placeholder_images = true;
+        const Scene scene = load_in(folder, with_obj({{"filename", "model.obj"}}), options);
+        ASSERT_EQ(scene.meshes.size(), 1u) << body;
+        EXPECT_TRUE(scene.meshes[0].placeholder) << body;
+        ASSERT_TRUE(scene.meshes[0].material_paths) << body;
+        EXPECT_EQ(*scene.meshes[0].material_paths,
+                  (std::vector<std::string>{folder.file("lib.mtl"), folder.file("late.mtl")}))
+            << body;
+        EXPECT_EQ(scene.mesh_texture_paths, (std::vector<std::string>{folder.file("wood.png"), folder.file("late.png")}))
+            << body;
+        for (const char* input : {"model.obj", "lib.mtl", "wood.png", "late.mtl", "late.png"}) {
+            OutputRoles roles;
+            add_scene_inputs(scene, roles);
+            EXPECT_THROW(roles.add_output("image", folder.file(input)), OutputError) << input << " of " << body;
+        }
+    }
+}
+
 // The image files a model's .mtl names as textures are never read, but they are the model's:
 // exported as table.obj, table.mtl and table.png beside a scene table.json, the default output
 // table.png replaced the texture. Each file a material keeps (the last statement of each kind,
@@ -484,6 +523,16 @@ TEST(MeshLoader, TheTexturesItsMtlNamesAreInputsNoOutputMayReplace) {
         add_scene_inputs(scene, roles);
         EXPECT_THROW(roles.add_output("image", folder.file(texture)), OutputError) << texture << " is an input";
     }
+}
+
+// A texture named two ways ("wood.png", "./wood.png") is one file, listed once.
+TEST(MeshLoader, ATextureNamedTwoWaysIsListedOnce) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl a\nKd 1 0 0\nmap_Kd wood.png\nnewmtl b\nKd 0 1 0\nmap_Kd ./wood.png\n"
+                          "bump .//wood.png\n");
+    folder.write("m.obj", "mtllib m.mtl\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Scene scene = load_in(folder, with_obj({{"filename", "m.obj"}}));
+    EXPECT_EQ(scene.mesh_texture_paths, (std::vector<std::string>{folder.file("wood.png")}));
 }
 
 // With --placeholders a model whose .mtl cannot be used becomes a cube and the run goes on:

@@ -115,7 +115,8 @@ TEST(ObjReader, AUtf8ByteOrderMarkIsSkipped) {
         read_obj(folder.write("bad.obj", "mtllib bad.mtl\n" + kSquare + "f 1 2 3\n"));
         ADD_FAILURE() << "a Kd of two numbers after a byte order mark was read";
     } catch (const ObjError& error) {
-        EXPECT_EQ(std::string(error.what()), "mtllib bad.mtl: line 1: 'Kd' needs 3 numbers (r g b), the line has 2");
+        EXPECT_EQ(std::string(error.what()),
+                  "line 1: mtllib bad.mtl: line 1: 'Kd' needs 3 numbers (r g b), the line has 2");
     }
     // Only at the start: elsewhere it is text.
     EXPECT_EQ(error_for("v 0 0 0\n" + bom + "v 1 0 0\nv 0 1 0\nf 1 2 3\n"),
@@ -305,7 +306,8 @@ TEST(ObjReader, TheMaterialsOfAnObjAreLimited) {
         read_obj(folder.write("over.obj", "mtllib full.mtl\nmtllib more.mtl\n" + faces));
         ADD_FAILURE() << "10001 materials were read";
     } catch (const ObjError& error) {
-        EXPECT_EQ(std::string(error.what()), "mtllib more.mtl: it brings the OBJ's materials to 10001, more than the limit of 10000");
+        EXPECT_EQ(std::string(error.what()),
+                  "line 2: mtllib more.mtl: it brings the OBJ's materials to 10001, more than the limit of 10000");
     }
 }
 
@@ -351,7 +353,7 @@ TEST(ObjReader, EveryMaterialFileIsReadBeforeTheFaces) {
             read_obj(folder.write("gone.obj", libraries + kSquare + "f 1 2 3\n"));
             ADD_FAILURE() << libraries << "read without its missing .mtl";
         } catch (const ObjError& error) {
-            EXPECT_EQ(std::string(error.what()).rfind("mtllib gone.mtl: ", 0), 0u) << libraries << error.what();
+            EXPECT_EQ(std::string(error.what()).rfind("line 1: mtllib gone.mtl: ", 0), 0u) << libraries << error.what();
         }
     }
 }
@@ -405,20 +407,39 @@ TEST(ObjReader, TheMaterialFilesOfAnObjAreLimited) {
         read_obj(folder.write("over.obj", libraries + kSquare + "f 1 2 3\n"));
         ADD_FAILURE() << "1025 .mtl files were read";
     } catch (const ObjError& error) {
-        EXPECT_EQ(std::string(error.what()), "mtllib m1024.mtl: the OBJ reads more than 1024 .mtl files, the limit");
+        EXPECT_EQ(std::string(error.what()),
+                  "line 1025: mtllib m1024.mtl: the OBJ reads more than 1024 .mtl files, the limit");
     }
 }
 
 TEST(ObjReader, AMissingMaterialFileIsAnError) {
     const std::string message = error_for("mtllib gone.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n");
-    EXPECT_EQ(message.rfind("mtllib gone.mtl: ", 0), 0u) << message;
+    EXPECT_EQ(message.rfind("line 1: mtllib gone.mtl: ", 0), 0u) << message;
     EXPECT_NE(message.find("no such file"), std::string::npos) << message;
+}
+
+// A .mtl that cannot be read is named with the OBJ's line that names it, as every other problem
+// of the OBJ is: "mtllib mdir: it is a folder" said not where.
+TEST(ObjReader, AMaterialFileProblemNamesTheObjLine) {
+    TempFolder folder;
+    folder.write("ok.mtl", "newmtl red\nKd 1 0 0\n");
+    ::mkdir(folder.file("mdir").c_str(), 0755);
+    ASSERT_EQ(::mkfifo(folder.file("fifo.mtl").c_str(), 0600), 0);
+    for (const std::string name : {"mdir", "fifo.mtl", "gone.mtl"}) {
+        const std::string text = "# materials\n\nmtllib ok.mtl " + name + "\nmtllib ok.mtl\n" + kSquare + "f 1 2 3\n";
+        try {
+            read_obj(folder.write("mesh.obj", text));
+            ADD_FAILURE() << name << " was read";
+        } catch (const ObjError& error) {
+            EXPECT_EQ(std::string(error.what()).rfind("line 3: mtllib " + name + ": ", 0), 0u) << error.what();
+        }
+    }
 }
 
 // The name comes from the file: its control characters are escaped, not printed.
 TEST(ObjReader, AMaterialFileNameIsPrintedEscaped) {
     const std::string message = error_for("mtllib bad\x1b[2Jname.mtl\n" + kSquare + "f 1 2 3\n");
-    EXPECT_EQ(message.rfind("mtllib bad\\x1B[2Jname.mtl: ", 0), 0u) << message;
+    EXPECT_EQ(message.rfind("line 1: mtllib bad\\x1B[2Jname.mtl: ", 0), 0u) << message;
 }
 
 TEST(ObjReader, BadIndicesNameTheirLineAndCorner) {
@@ -458,8 +479,8 @@ TEST(ObjReader, Utf16AndGzipFilesAreNamedAsSuch) {
         read_obj(folder.write("mesh.obj", "mtllib wide.mtl\nusemtl red\n" + triangle));
         ADD_FAILURE() << "a UTF-16 .mtl was read";
     } catch (const ObjError& error) {
-        EXPECT_EQ(std::string(error.what()), "mtllib wide.mtl: it is UTF-16 (little-endian) text; save it as UTF-8 (clrender "
-                                             "reads only UTF-8)");
+        EXPECT_EQ(std::string(error.what()), "line 1: mtllib wide.mtl: it is UTF-16 (little-endian) text; save it as "
+                                             "UTF-8 (clrender reads only UTF-8)");
     }
 }
 
@@ -513,12 +534,15 @@ TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
         }
         return std::string();
     };
-    EXPECT_EQ(error_with("Kd 0e500 0 0"), "mtllib m.mtl: line 3: 'Kd': '0e500' is too long or its exponent too large "
-                                          "(clrender reads numbers of at most 64 characters with an exponent from -300 to 300)");
-    EXPECT_EQ(error_with("Kd nan 0 0"), "mtllib m.mtl: line 3: 'Kd': 'nan' is not a finite number");
-    EXPECT_EQ(error_with("Kd 0.5"), "mtllib m.mtl: line 3: 'Kd' needs 3 numbers (r g b), the line has 1");
-    EXPECT_EQ(error_with("Kd spectral red.rfl 1"), "mtllib m.mtl: line 3: 'Kd': 'spectral' is not a finite number");
-    EXPECT_EQ(error_with("Kd 0 2e6 0"), "mtllib m.mtl: line 3: 'Kd': '2e6' is out of range: a colour lies from -1e6 to 1e6");
+    EXPECT_EQ(error_with("Kd 0e500 0 0"), "line 1: mtllib m.mtl: line 3: 'Kd': '0e500' is too long or its exponent too "
+                                          "large (clrender reads numbers of at most 64 characters with an exponent "
+                                          "from -300 to 300)");
+    EXPECT_EQ(error_with("Kd nan 0 0"), "line 1: mtllib m.mtl: line 3: 'Kd': 'nan' is not a finite number");
+    EXPECT_EQ(error_with("Kd 0.5"), "line 1: mtllib m.mtl: line 3: 'Kd' needs 3 numbers (r g b), the line has 1");
+    EXPECT_EQ(error_with("Kd spectral red.rfl 1"),
+              "line 1: mtllib m.mtl: line 3: 'Kd': 'spectral' is not a finite number");
+    EXPECT_EQ(error_with("Kd 0 2e6 0"),
+              "line 1: mtllib m.mtl: line 3: 'Kd': '2e6' is out of range: a colour lies from -1e6 to 1e6");
     EXPECT_EQ(error_with("Kd 0 1.5 -0.25"), "");  // outside [0, 1] is a colour, as in a scene
 }
 
@@ -806,7 +830,11 @@ TEST(ObjReader, RepeatedMaterialStatementsAreKeptOnce) {
     for (int i = 0; i < 1000; ++i) text += "usemtl x\nmtllib b.mtl a.mtl\nusemtl y\n";
     text += "f 1 2 3\nusemtl x\n";
     const ObjMaterialStatements statements = material_statements(text);
-    EXPECT_EQ(statements.libraries, (std::vector<std::string>{"a.mtl", "b.mtl"}));
+    ASSERT_EQ(statements.libraries.size(), 2u);
+    EXPECT_EQ(statements.libraries[0].name, "a.mtl");
+    EXPECT_EQ(statements.libraries[0].line, 1u);
+    EXPECT_EQ(statements.libraries[1].name, "b.mtl");
+    EXPECT_EQ(statements.libraries[1].line, 1u);
     ASSERT_EQ(statements.uses.size(), 2u);
     EXPECT_EQ(statements.uses[0].name, "x");
     EXPECT_EQ(statements.uses[0].first_line, 2u);
@@ -825,9 +853,38 @@ TEST(ObjReader, ShapesAndMaterialLinesCountTowardsTheParseBudget) {
     const std::string text = kSquare + "o a\nf 1 2 3\ng b\nf 1 3 4\nusemtl c\nmtllib m.mtl\n";
     folder.write("m.mtl", "newmtl c\nKd 1 0 0\n");
     const std::string path = folder.write("mesh.obj", text);
-    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes + 4 * kVertexLineBytes;
+    const std::uint64_t statement_bytes = std::string("o ag busemtl cmtllib m.mtl").size();
+    const std::uint64_t needed = 2 * text.size() + 2 * kParsedTriangleBytes + 4 * kStatementBytes +
+                                 statement_bytes * kStatementTextBytes + 4 * kVertexLineBytes;
     EXPECT_EQ(parse_obj(text, path, needed).triangles.size(), 2u);
     EXPECT_THROW(parse_obj(text, path, needed - 1), MeshMemoryError);
+}
+
+// ... and the bytes of those lines and of `s` lines, which their names take several times over:
+// a 100 MB `usemtl` line peaked at 1.55 GB (`g a a ...` at 2.43 GB) where twice its text, 200 MB,
+// had been counted, so that a budget of 1 GB let it be parsed.
+TEST(ObjReader, LongNamesCountTowardsTheParseBudgetByTheirLength) {
+    const std::string triangle = "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n";
+    for (const std::string keyword : {"usemtl", "mtllib", "g", "o", "s"}) {
+        const std::string line = keyword + " " + std::string(std::size_t(1) << 20, 'a');
+        const std::string text = triangle + line + "\n";
+        const std::uint64_t statements = keyword == "s" ? 0 : 1;
+        const std::uint64_t needed = 2 * text.size() + kParsedTriangleBytes + statements * kStatementBytes +
+                                     line.size() * kStatementTextBytes + 3 * kVertexLineBytes;
+        try {
+            parse_obj(text, "long.obj", needed - 1);
+            ADD_FAILURE() << keyword << ": a long line was parsed on a budget one byte short of it";
+        } catch (const MeshMemoryError& error) {
+            EXPECT_NE(std::string(error.what()).find("(and " + std::to_string(line.size()) +
+                                                     " bytes of o, g, s, usemtl and mtllib lines) would take"),
+                      std::string::npos)
+                << error.what();
+        }
+        try {
+            parse_obj(text, "long.obj", needed);
+        } catch (const ObjError&) {  // the .mtl named is missing: the budget passed
+        }
+    }
 }
 
 // ... and each `v`, `vt` and `vn` line: a point cloud or scan with a face took about 60 bytes a
