@@ -16,6 +16,7 @@
 #include "view/camera_keys.h"
 #include "view/client_connection.h"
 #include "view/embedded_assets.h"
+#include "view/query_tokens.h"
 #include "view/render_cost.h"
 #include "view/scene_summary.h"
 #include "view/view_camera.h"
@@ -378,8 +379,7 @@ RequestFacts request_facts(const Request& request) {
     if (request.has_header("Origin"))
         facts.origin = request.get_header_value_count("Origin") == 1 ? request.get_header_value("Origin") : "";
     facts.arrived_on = request.local_addr;
-    const auto [first, last] = request.params.equal_range("token");
-    for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
+    facts.query_tokens = query_tokens_as_sent(request.target);  // not request.params (query_tokens.h)
     return facts;
 }
 
