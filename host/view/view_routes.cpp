@@ -13,6 +13,7 @@
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "output/image_writer.h"
+#include "view/bounded_server.h"
 #include "view/camera_keys.h"
 #include "view/client_connection.h"
 #include "view/embedded_assets.h"
@@ -21,6 +22,7 @@
 #include "view/scene_summary.h"
 #include "view/view_camera.h"
 #include "view/view_parameters.h"
+#include "view/view_server.h"
 
 namespace clr {
 namespace {
@@ -400,6 +402,23 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         if (request.has_header("Transfer-Encoding")) {
             response.set_header("Connection", "close");
             send_error(response, 411, "request bodies must have a Content-Length (no Transfer-Encoding)");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // A Content-Length given twice, as a list or other than as digits ("+78") leaves unclear
+        // where the body ends, and so where the next request starts: RFC 9112 has it answered
+        // 400 and the connection closed. cpp-httplib would take the first number it could read.
+        const std::optional<std::size_t> body_length = declared_body_length(request);
+        if (!body_length) {
+            response.set_header("Connection", "close");
+            send_error(response, 400, "the Content-Length must be one number, given once");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // cpp-httplib would read a body over the limit to skip it, and a client that sends none
+        // waited out the read timeout for its 413: refused before it is read.
+        if (*body_length > kMostRequestBytes) {
+            response.set_header("Connection", "close");
+            const std::string limit = std::to_string(kMostRequestBytes);
+            send_error(response, 413, "request bodies may have at most " + limit + " bytes");
             return httplib::Server::HandlerResponse::Handled;
         }
         // Such a request has no body (RFC 9112), but cpp-httplib reads one to the end of the
