@@ -578,6 +578,27 @@ TEST_F(ViewSecurity, ABodyDeclaredOverTheLimitIsRefusedAtOnce) {
     }
 }
 
+// An answer after which the connection closes says so once, and offers no keep-alive.
+TEST_F(ViewSecurity, AnAnswerThatClosesSaysSoOnce) {
+    const std::string host = "Host: " + own_host() + "\r\n";
+    const std::string exporting = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\n" + host + "Origin: " +
+                                  own_origin() + "\r\n";
+    for (const std::string& request : {"GET /scene.json HTTP/1.1\r\n" + host + "\r\n",
+                                       "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\n\r\n",
+                                       exporting + "\r\n", exporting + "Content-Length: 1, 2\r\n\r\n"}) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        const std::string answer = read_until_closed(socket, 4);
+        ::close(socket);
+        const std::string head = answer.substr(0, answer.find("\r\n\r\n") + 2);
+        const std::size_t close_at = head.find("\r\nConnection: close\r\n");
+        EXPECT_NE(close_at, std::string::npos) << request << head;
+        EXPECT_EQ(head.find("\r\nConnection:", close_at + 1), std::string::npos) << request << head;
+        EXPECT_EQ(head.find("\r\nKeep-Alive:"), std::string::npos) << request << head;
+    }
+}
+
 // Exactly one token, given whole: cpp-httplib's parse of the query drops a pair given twice and
 // keeps what follows a value's last '=', and both of these counted as the right token.
 TEST_F(ViewSecurity, OnlyOneWholeTokenOpens) {
