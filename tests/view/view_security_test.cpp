@@ -609,6 +609,23 @@ TEST_F(ViewSecurity, OnlyOneWholeTokenOpens) {
     EXPECT_EQ(client->Get(("/scene.json?token=" + token).c_str())->status, 200);
 }
 
+// A client that half-closes after its request (as `nc -N` does) looks gone to the server, which
+// cannot tell its FIN from a close: a frame of one band is answered all the same, since nobody
+// looks before its first band ends, and a small explanation is answered as that frame is.
+TEST_F(ViewSecurity, AHalfClosedClientGetsASmallFrameOrExplanation) {
+    for (const char* path : {"/frame.png", "/explain?x=1&y=1"}) {
+        const int socket = connect_to_viewer(viewer_->port());
+        ASSERT_GE(socket, 0);
+        const std::string request =
+            "GET " + viewer_->with_token(path) + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
+        ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+        ::shutdown(socket, SHUT_WR);
+        const std::string answer = read_one_answer(socket, 10);
+        ::close(socket);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << path << ": " << answer.substr(0, 300);
+    }
+}
+
 // A bare line feed after the request line is no end of the head: cpp-httplib ends it only at
 // an empty line ending in CR LF and parses every header line before it. The limit counts
 // those lines as head too, whatever the line ends: 431, where the whole 100 KB was parsed
