@@ -229,9 +229,11 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     });
     server.Get("/camera\\.json", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            // Only frame= counts: the answer is the frame's own camera, checked as /frame.png's.
+            // Only frame= counts, and only it is read: the answer is the frame's own camera,
+            // checked as /frame.png's; the page's other parameters (eye=, size=) are not its.
+            const auto [first, last] = request.params.equal_range("frame");
             ViewQuery frame_only;
-            frame_only.frame = parse_view_query(request.params).frame;
+            frame_only.frame = parse_view_query(QueryParameters(first, last)).frame;
             const ViewCamera view = resolve_view_camera(session.scene, frame_only);
             response.set_content(frame_camera_json(session.scene, view.frame), "application/json");
         });
