@@ -76,6 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     facts.path = lines[1];
     if (!lines[2].empty()) facts.host = lines[2];
     if (!lines[3].empty()) facts.origin = lines[3];
+    facts.arrived_on = "127.0.0.1";  // the bound address, as every request to this guard
     clr::QueryParameters query;
     for (std::size_t i = 5; i < lines.size(); ++i) {
         const std::size_t equals = lines[i].find('=');

@@ -41,8 +41,11 @@ AtomicFile::AtomicFile(std::string final_path) : final_path_(std::move(final_pat
     }
     target_path_ = resolve_output_target(final_path_);
     // Mode 0666 (less the umask) gives the permissions any newly written file would get.
-    temp_.emplace(temp_path_in_folder_of(target_path_), 0666);
-    if (!temp_->created()) throw output_error(final_path_, "cannot create a file in its folder", errno);
+    const std::string temp_path = create_under_temp_name(target_path_, [this](const std::string& try_path) {
+        temp_.emplace(try_path, 0666);
+        return temp_->created();
+    });
+    if (temp_path.empty()) throw OutputError(final_path_ + ": " + temp_creation_failure(errno));
     stream_ = ::fdopen(temp_->descriptor(), "wb");
     if (!stream_) throw output_error(final_path_, "cannot open a stream", errno);
     temp_->release_descriptor();  // the stream closes it

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/random.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <regex>
 #include <string>
 
@@ -54,6 +56,21 @@ const std::regex& temp_name_form() {
     return form;
 }
 
+// A number other users cannot guess, from the kernel's random bytes.
+std::uint32_t unpredictable_number() {
+    std::uint32_t number = 0;
+    if (::getrandom(&number, sizeof number, GRND_NONBLOCK) == static_cast<ssize_t>(sizeof number)) return number;
+    return std::random_device{}();  // no getrandom (a kernel before 3.17): still the OS's randomness
+}
+
+// The usual name's form with an unpredictable number for the counter (at most 10 digits),
+// so that the sweep still recognises it.
+std::string unpredictable_temp_path_in_folder_of(const std::string& final_path) {
+    const std::string name = ".clrender-" + temp_host_id() + "-" + std::to_string(::getpid()) + "-" +
+                             std::to_string(unpredictable_number()) + ".tmp";
+    return (fs::path(final_path).parent_path() / name).string();
+}
+
 bool process_is_gone(long pid) {
     if (pid <= 0 || pid == static_cast<long>(::getpid())) return false;
     return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;  // EPERM: alive, someone else's
@@ -71,6 +88,25 @@ std::string temp_path_in_folder_of(const std::string& final_path) {
     const std::string name = ".clrender-" + temp_host_id() + "-" + std::to_string(::getpid()) + "-" +
                              std::to_string(counter++) + ".tmp";
     return (fs::path(final_path).parent_path() / name).string();
+}
+
+std::string create_under_temp_name(const std::string& final_path,
+                                   const std::function<bool(const std::string& temp_path)>& create) {
+    for (int attempt = 0; attempt < kMostTempNameTries; ++attempt) {
+        const std::string temp_path =
+            attempt == 0 ? temp_path_in_folder_of(final_path) : unpredictable_temp_path_in_folder_of(final_path);
+        if (create(temp_path)) return temp_path;
+        if (errno != EEXIST) return "";
+    }
+    errno = EEXIST;
+    return "";
+}
+
+std::string temp_creation_failure(int error_number) {
+    const std::string reason = std::strerror(error_number);
+    if (error_number != EEXIST) return "cannot create a file in its folder: " + reason;
+    return "cannot create a temporary file in its folder: the " + std::to_string(kMostTempNameTries) +
+           " names tried (.clrender-*.tmp) were all taken by files this run did not make";
 }
 
 bool is_stale_temp_name(const std::string& file_name) {
@@ -100,10 +136,12 @@ void prepare_output_folder(const std::string& final_path) {
 }
 
 void probe_output_folder(const std::string& final_path) {
-    const std::string probe = temp_path_in_folder_of(final_path);
-    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) throw OutputError(final_path + ": cannot create a file in its folder: " + std::strerror(errno));
-    ::close(fd);
+    const std::string probe = create_under_temp_name(final_path, [](const std::string& temp_path) {
+        const int fd = ::open(temp_path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0) ::close(fd);
+        return fd >= 0;
+    });
+    if (probe.empty()) throw OutputError(final_path + ": " + temp_creation_failure(errno));
     ::unlink(probe.c_str());
 }
 

@@ -7,12 +7,28 @@
 // leftovers of a run that was killed (SIGKILL, a power cut) before it could clean up.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace clr {
 
+// How many temporary names are tried for one file before its creation is refused.
+constexpr int kMostTempNameTries = 16;
+
 // A fresh temporary path in the folder of `final_path` (never derived from its name).
 std::string temp_path_in_folder_of(const std::string& final_path);
+
+// Makes a temporary file in the folder of `final_path`: `create(temp_path)` makes it (with
+// O_EXCL) and returns whether it did, errno set when not. The first name is the usual one;
+// while the name is taken (EEXIST), unpredictable ones follow, since the usual names can be
+// guessed (the pid is public, the counter starts at 0) and another user who may write into
+// the folder could take them all first. Returns the path made, or "" with errno set.
+std::string create_under_temp_name(const std::string& final_path,
+                                   const std::function<bool(const std::string& temp_path)>& create);
+
+// Why create_under_temp_name() failed with `error_number`, to follow "FINAL_PATH: ". Where
+// every name was taken, it says so: "File exists" alone would blame the final name.
+std::string temp_creation_failure(int error_number);
 
 // 8 lowercase hex digits naming this machine and process-id namespace: a process id in a
 // temporary name means something only where the same processes are visible.

@@ -152,29 +152,39 @@ void ignore_sigpipe() {
 // open of an MP4's +faststart), however the folder's names change meanwhile.
 constexpr const char* kEncoderOutput = "/proc/self/fd/1";
 
-// A short temporary name in the folder of `final_path` (temp_files.h: it fits wherever the
-// final name fits, with the log's ".log" added, and a later run removes it if this one is
-// killed). The same counter as AtomicFile's keeps the two kinds of temporary file apart.
-std::string temp_path_beside(const std::string& final_path) { return temp_path_in_folder_of(final_path); }
+// The video's temporary file, ffmpeg's stdout, and the encoder's log beside it (temp_files.h:
+// the names fit wherever the final name fits, with the log's ".log" added, and a later run
+// removes them if this one is killed). Each is made in the folder its entry holds open
+// (FolderEntry::open), so that the entry removes that very file even if the folder is renamed
+// right after.
+struct EncoderFiles {
+    FolderEntry video_entry;
+    FolderEntry log_entry;
+    int video_fd = -1;
+    int log_fd = -1;
+};
 
-// Creates `path`, failing if it exists (O_EXCL: never reuse a file someone else made), and
-// returns the open descriptor.
-// Makes the file of `entry` in the folder it holds open (FolderEntry::open), so that the entry
-// removes that very file even if the folder is renamed right after.
-int create_exclusive(const FolderEntry& entry, const std::string& final_path) {
-    const int fd = entry.open(O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) throw OutputError(final_path + ": cannot create a file in its folder: " + std::strerror(errno));
-    return fd;
-}
-
-// create_exclusive(), closing `open_fd` when it fails.
-int create_exclusive_or_close(const FolderEntry& entry, const std::string& final_path, int open_fd) {
-    try {
-        return create_exclusive(entry, final_path);
-    } catch (...) {
-        ::close(open_fd);
-        throw;
+// Makes `temp_path` and its ".log", both new (O_EXCL: never reuse a file someone else made);
+// false, errno set and nothing left behind, when either cannot be made, so that a taken log
+// name makes create_under_temp_name() try another pair.
+bool create_encoder_files(const std::string& temp_path, EncoderFiles& files) {
+    FolderEntry video_entry(temp_path);
+    const int video_fd = video_entry.open(O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (video_fd < 0) return false;
+    FolderEntry log_entry(temp_path + ".log");
+    const int log_fd = log_entry.open(O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (log_fd < 0) {
+        const int error = errno;
+        ::close(video_fd);
+        video_entry.remove();
+        errno = error;
+        return false;
     }
+    files.video_entry = std::move(video_entry);
+    files.log_entry = std::move(log_entry);
+    files.video_fd = video_fd;
+    files.log_fd = log_fd;
+    return true;
 }
 
 // The size of the file at `path`, -1 if it cannot be read.
@@ -289,14 +299,15 @@ VideoEncoder::VideoEncoder(const VideoSettings& settings, const std::string& enc
 VideoEncoder::~VideoEncoder() { abandon(); }
 
 void VideoEncoder::start() {
-    temp_path_ = temp_path_beside(settings_.path);
-    FolderEntry temp_entry(temp_path_);
-    const int video_fd = create_exclusive(temp_entry, settings_.path);  // ffmpeg's stdout: it writes here
-    temp_entry_ = std::move(temp_entry);  // only a file this run made is ever removed
+    EncoderFiles files;
+    temp_path_ = create_under_temp_name(
+        settings_.path, [&files](const std::string& try_path) { return create_encoder_files(try_path, files); });
+    if (temp_path_.empty()) throw OutputError(settings_.path + ": " + temp_creation_failure(errno));
+    temp_entry_ = std::move(files.video_entry);  // only files this run made are ever removed
     log_path_ = temp_path_ + ".log";
-    FolderEntry log_entry(log_path_);
-    const int log_fd = create_exclusive_or_close(log_entry, settings_.path, video_fd);
-    log_entry_ = std::move(log_entry);
+    log_entry_ = std::move(files.log_entry);
+    const int video_fd = files.video_fd;  // ffmpeg's stdout: it writes here
+    const int log_fd = files.log_fd;
 
     // Close-on-exec on both ends: the child gets the read end as its stdin through dup2, and
     // no other child (another encoder) inherits the write end, which would keep this pipe

@@ -143,12 +143,17 @@ void linger_before_close(int socket) {
     }
 }
 
-// Makes `answer` say Connection: close (once) and no Keep-Alive.
+// Whether a Connection header of `answer` says close: a route's refusal sets one, and
+// cpp-httplib adds its own where the request asked to close.
+bool says_close(const httplib::Response& answer) {
+    const auto [first, last] = answer.headers.equal_range("Connection");
+    return std::any_of(first, last, [](const auto& header) { return header.second == "close"; });
+}
+
+// Makes `answer` say Connection: close once, and no Keep-Alive, which would contradict it.
 void say_connection_closes(httplib::Response& answer) {
-    if (answer.get_header_value("Connection") != "close") {
-        answer.headers.erase("Connection");
-        answer.set_header("Connection", "close");
-    }
+    answer.headers.erase("Connection");
+    answer.set_header("Connection", "close");
     answer.headers.erase("Keep-Alive");
 }
 
@@ -353,11 +358,14 @@ void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
 // An answer to a request whose body was not read says Connection: close, and the connection
 // closes after it. cpp-httplib would keep it open and parse the body as the next request, one
 // that no refusal had seen: the body of a request refused for its Host or Origin could carry a
-// request with the Host and Origin the refusal was about.
+// request with the Host and Origin the refusal was about. Any answer that closes says so once
+// and offers no keep-alive: a route's Connection: close and cpp-httplib's stood side by side,
+// or beside cpp-httplib's Keep-Alive.
 BoundedServer::BoundedServer(std::size_t threads) {
     new_task_queue = [this, threads] { return new ConnectionQueue(threads, waiting_connections_); };
     httplib::Server::set_post_routing_handler([](const httplib::Request&, httplib::Response& answer) {
-        if (stream_of_this_thread != nullptr && stream_of_this_thread->body_left_unread()) say_connection_closes(answer);
+        const bool body_unread = stream_of_this_thread != nullptr && stream_of_this_thread->body_left_unread();
+        if (body_unread || says_close(answer)) say_connection_closes(answer);
     });
 }
 

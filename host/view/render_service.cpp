@@ -92,8 +92,11 @@ std::string RenderService::explain(const ViewCamera& view, int x, int y, std::fu
                                               x, y);
     };
     // The reference's samples stop as a frame's bands do: many samples among deep mirrors take
-    // minutes, which neither a signal nor a client that left should wait for.
-    auto next_look = std::chrono::steady_clock::now();
+    // minutes, which neither a signal nor a client that left should wait for. The first look
+    // comes after a first stretch of work, as a frame's comes after its first band: a client
+    // that half-closed (nc -N) looks gone, and a small explanation is answered to it as a small
+    // frame is, where it got 503 before.
+    auto next_look = std::chrono::steady_clock::now() + kAbandonmentLookInterval;
     const BeforeEachSample between_samples = [&abandoned, &next_look] {
         throw_if_interrupted();
         if (!abandoned || std::chrono::steady_clock::now() < next_look) return;

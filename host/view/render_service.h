@@ -39,8 +39,8 @@ public:
     // kMostExplanationBytes long. Throws UsageError for a pixel outside the frame,
     // DeviceError from the kernels, and, as render() does, Interrupted after a signal or
     // FrameAbandoned once `abandoned` says that nobody waits for it (asked between the
-    // kernels' bands and between the reference's samples, at most every
-    // kAbandonmentLookInterval there). Explanations run one at a time.
+    // kernels' bands and between the reference's samples, there first after
+    // kAbandonmentLookInterval and then at most every interval). Explanations run one at a time.
     std::string explain(const ViewCamera& view, int x, int y, std::function<bool()> abandoned = {});
 
     const std::string& device_name() const { return device_name_; }

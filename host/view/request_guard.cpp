@@ -125,9 +125,13 @@ bool RequestGuard::origin_allowed(const std::string& origin, const std::string& 
     const std::string scheme = "http://";
     if (origin.size() <= scheme.size() || lowercase(origin.substr(0, scheme.size())) != scheme) return false;
     const std::string host = lowercase(origin.substr(scheme.size()));
+    const std::optional<std::string> address = host_of(host, port_);
+    // A page from 127.0.0.1, localhost or [::1] is one this machine served only where the
+    // request came in on loopback: one that came in from outside was sent by a browser on
+    // another machine, whose loopback is its own, another site.
+    if (address && is_loopback_address(*address) && !is_loopback_address(arrived_on)) return false;
     if (hosts_.count(host) > 0 || names_bound_address(host)) return true;
     if (!wildcard_) return false;
-    const std::optional<std::string> address = host_of(host, port_);
     const std::string bytes = address ? named_address_bytes(*address) : std::string();
     return !bytes.empty() && bytes == address_bytes(arrived_on);
 }

@@ -9,7 +9,8 @@
 //   (view/view_routes.cpp writes it into the page's own file names);
 // - a request that changes something (POST) comes from the viewer's own page: its Origin
 //   header is the server's own origin, so another web site cannot drive the viewer (bound to
-//   every address, an address in it must be the one the request arrived on).
+//   every address, an address in it must be the one the request arrived on; 127.0.0.1,
+//   localhost and [::1] only for a request that arrived on loopback).
 // Nothing here knows HTTP's wire format (cpp-httplib parses requests): the checks take the
 // facts of a request, so that the fuzz target and the tests can drive them directly.
 #pragma once
@@ -50,7 +51,8 @@ public:
     // Whether `origin` (an Origin header) is the server's own, for a request that came in on
     // the address `arrived_on`. Bound to every address, the server's pages are served from
     // whichever address a browser reached: the one its requests arrive on. Any other address
-    // in an Origin is another machine's, another site, even where a Host may name it.
+    // in an Origin is another machine's, another site, even where a Host may name it; so is a
+    // loopback one (127.0.0.1, localhost, [::1]) on a request that came in from outside.
     bool origin_allowed(const std::string& origin, const std::string& arrived_on) const;
 
 private:

@@ -67,8 +67,11 @@ UnusedNameFile write_under_unused_name(const std::string& folder, const std::str
         check(path);
         if (!temp) {
             // Mode 0666 (less the umask): the permissions any newly written file gets.
-            temp.emplace(temp_path_in_folder_of(path), 0666);
-            if (!temp->created()) throw write_error(path, "cannot create a file in its folder", errno);
+            const std::string temp_path = create_under_temp_name(path, [&temp](const std::string& try_path) {
+                temp.emplace(try_path, 0666);
+                return temp->created();
+            });
+            if (temp_path.empty()) throw OutputError(printable(path) + ": " + temp_creation_failure(errno));
             const char* data = text.data();
             std::size_t left = text.size();
             while (left > 0) {

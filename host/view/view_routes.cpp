@@ -13,13 +13,16 @@
 #include "core/interruption.h"
 #include "core/printable_text.h"
 #include "output/image_writer.h"
+#include "view/bounded_server.h"
 #include "view/camera_keys.h"
 #include "view/client_connection.h"
 #include "view/embedded_assets.h"
+#include "view/query_tokens.h"
 #include "view/render_cost.h"
 #include "view/scene_summary.h"
 #include "view/view_camera.h"
 #include "view/view_parameters.h"
+#include "view/view_server.h"
 
 namespace clr {
 namespace {
@@ -226,9 +229,11 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     });
     server.Get("/camera\\.json", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            // Only frame= counts: the answer is the frame's own camera, checked as /frame.png's.
+            // Only frame= counts, and only it is read: the answer is the frame's own camera,
+            // checked as /frame.png's; the page's other parameters (eye=, size=) are not its.
+            const auto [first, last] = request.params.equal_range("frame");
             ViewQuery frame_only;
-            frame_only.frame = parse_view_query(request.params).frame;
+            frame_only.frame = parse_view_query(QueryParameters(first, last)).frame;
             const ViewCamera view = resolve_view_camera(session.scene, frame_only);
             response.set_content(frame_camera_json(session.scene, view.frame), "application/json");
         });
@@ -378,8 +383,7 @@ RequestFacts request_facts(const Request& request) {
     if (request.has_header("Origin"))
         facts.origin = request.get_header_value_count("Origin") == 1 ? request.get_header_value("Origin") : "";
     facts.arrived_on = request.local_addr;
-    const auto [first, last] = request.params.equal_range("token");
-    for (auto it = first; it != last; ++it) facts.query_tokens.push_back(it->second);
+    facts.query_tokens = query_tokens_as_sent(request.target);  // not request.params (query_tokens.h)
     return facts;
 }
 
@@ -400,6 +404,23 @@ void add_view_routes(httplib::Server& server, ViewSession& session) {
         if (request.has_header("Transfer-Encoding")) {
             response.set_header("Connection", "close");
             send_error(response, 411, "request bodies must have a Content-Length (no Transfer-Encoding)");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // A Content-Length given twice, as a list or other than as digits ("+78") leaves unclear
+        // where the body ends, and so where the next request starts: RFC 9112 has it answered
+        // 400 and the connection closed. cpp-httplib would take the first number it could read.
+        const std::optional<std::size_t> body_length = declared_body_length(request);
+        if (!body_length) {
+            response.set_header("Connection", "close");
+            send_error(response, 400, "the Content-Length must be one number, given once");
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // cpp-httplib would read a body over the limit to skip it, and a client that sends none
+        // waited out the read timeout for its 413: refused before it is read.
+        if (*body_length > kMostRequestBytes) {
+            response.set_header("Connection", "close");
+            const std::string limit = std::to_string(kMostRequestBytes);
+            send_error(response, 413, "request bodies may have at most " + limit + " bytes");
             return httplib::Server::HandlerResponse::Handled;
         }
         // Such a request has no body (RFC 9112), but cpp-httplib reads one to the end of the

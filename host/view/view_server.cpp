@@ -151,6 +151,8 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
             response.status = 403;
         else if (request.has_header("Transfer-Encoding") || !request.has_header("Content-Length"))
             response.status = 411;  // as the routes answer it (view_routes.cpp)
+        else if (!declared_body_length(request))
+            response.status = 400;  // no clear length (view_routes.cpp)
         else if (!body_length_allowed(request))
             response.status = 413;
         else

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "support/taken_temp_names.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -41,6 +42,18 @@ TEST(AtomicFile, NothingUnderTheFinalNameBeforeCommit) {
     EXPECT_EQ(read_bytes(final_path), "complete contents");
     EXPECT_FALSE(fs::exists(file.temp_path()));
     EXPECT_EQ(folder.entry_count(), 1);
+}
+
+// The usual temporary names can be guessed and made first by another user who may write into
+// the folder: the output is written under an unpredictable one instead.
+TEST(AtomicFile, IsWrittenWhenTheUsualTemporaryNamesAreTaken) {
+    TempFolder folder;
+    const int taken = testing::take_the_next_usual_temp_names(folder, 64);
+    AtomicFile file(folder.file("out.png"));
+    write(file, "an image");
+    file.commit();
+    EXPECT_EQ(read_bytes(folder.file("out.png")), "an image");
+    EXPECT_EQ(folder.entry_count(), taken + 1);
 }
 
 TEST(AtomicFile, AbandonedWriterLeavesNothing) {

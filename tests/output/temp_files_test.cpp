@@ -6,9 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <regex>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "support/temp_folder.h"
@@ -35,6 +38,36 @@ TEST(TempFiles, NamesAreShortAndIndependentOfTheFinalName) {
     EXPECT_LE(name.size() + 4, 255u) << "with the encoder log's \".log\" it still fits NAME_MAX";
     EXPECT_NE(temp_path_in_folder_of("a.png"), temp_path_in_folder_of("a.png"));
     EXPECT_EQ(fs::path(temp_path_in_folder_of("a.png")).parent_path(), fs::path(""));
+}
+
+// While names are taken, unpredictable ones of the same form are tried (so that the sweep
+// still knows them), a bounded number of times; the failure then says what was taken.
+TEST(TempFiles, TakenNamesAreFollowedByUnpredictableOnesAndThenRefused) {
+    std::vector<std::string> tried;
+    const std::string made = create_under_temp_name("/some/folder/out.png", [&tried](const std::string& temp_path) {
+        tried.push_back(temp_path);
+        errno = EEXIST;
+        return false;
+    });
+    EXPECT_EQ(made, "");
+    EXPECT_EQ(errno, EEXIST);
+    ASSERT_EQ(tried.size(), static_cast<std::size_t>(kMostTempNameTries));
+    EXPECT_EQ(std::set<std::string>(tried.begin(), tried.end()).size(), tried.size());
+    const std::regex usual_form(R"(/some/folder/\.clrender-[0-9a-f]{8}-[0-9]{1,10}-[0-9]{1,10}\.tmp)");
+    for (const std::string& path : tried) EXPECT_TRUE(std::regex_match(path, usual_form)) << path;
+    const std::string failure = temp_creation_failure(EEXIST);
+    EXPECT_EQ(failure.find("File exists"), std::string::npos) << "the final name does not exist: " << failure;
+    EXPECT_NE(failure.find("temporary"), std::string::npos) << failure;
+
+    tried.clear();
+    EXPECT_EQ(create_under_temp_name("out.png", [&tried](const std::string& temp_path) {
+                  tried.push_back(temp_path);
+                  errno = EACCES;
+                  return false;
+              }),
+              "");
+    EXPECT_EQ(tried.size(), 1u) << "only a taken name is worth another try";
+    EXPECT_EQ(temp_creation_failure(EACCES), "cannot create a file in its folder: Permission denied");
 }
 
 TEST(TempFiles, OnlyThisHostsNamesOfDeadProcessesAreStale) {

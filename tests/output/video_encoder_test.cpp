@@ -26,6 +26,7 @@
 #include "output/video_probe.h"
 #include "output/yuv420_frame.h"
 #include "support/scoped_env.h"
+#include "support/taken_temp_names.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -365,6 +366,27 @@ TEST(VideoEncoder, ALinkPlantedAtTheTemporaryNameIsNotFollowed) {
     output_error_of([&] { encode({video, 16, 16}, planting, 3); });
     EXPECT_TRUE(read_bytes(elsewhere.file("mine.txt")) == "the user's own file\n") << "overwritten by the video";
     EXPECT_FALSE(fs::is_symlink(video));
+}
+
+// Another user who may write into the folder can guess the usual temporary names and make
+// them first; here only the logs', so that the video's file is made and its log is not: the
+// pair is given up for an unpredictable one, and the video is written all the same.
+TEST(VideoEncoder, IsWrittenWhenTheUsualLogNamesAreTaken) {
+    const std::optional<std::string> encoder = real_encoder();
+    if (!encoder) GTEST_SKIP() << "ffmpeg is not installed";
+    TempFolder folder;
+    testing::take_the_next_usual_temp_names(folder, 64);
+    for (const std::string& name : entries(folder.path()))
+        if (fs::path(name).extension() != ".log") fs::remove(folder.file(name));
+    const std::vector<std::string> taken = entries(folder.path());
+    encode({folder.file("out.mp4"), 16, 16}, *encoder, 3);
+    EXPECT_NE(probe(folder.file("out.mp4")).find("nb_read_frames=3"), std::string::npos);
+    std::vector<std::string> expected = taken;
+    expected.push_back("out.mp4");
+    std::sort(expected.begin(), expected.end());
+    std::vector<std::string> left = entries(folder.path());
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, expected) << "a temporary file left behind, or one of theirs removed";
 }
 
 TEST(VideoEncoder, FinishingWithoutFramesIsAnError) {

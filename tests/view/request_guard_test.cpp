@@ -18,6 +18,7 @@ RequestFacts get(const std::string& path, const std::string& host = "127.0.0.1:8
     facts.path = path;
     facts.host = host;
     facts.query_tokens = {kToken};
+    facts.arrived_on = "127.0.0.1";
     return facts;
 }
 
@@ -114,11 +115,15 @@ TEST(RequestGuard, WildcardBindAdmitsAsOriginOnlyTheAddressTheRequestArrivedOn) 
             post.arrived_on = arrived_on;
             return guard.check(post);
         };
-        for (const char* origin : {"http://192.168.1.20:8123", "http://127.0.0.1:8123", "http://localhost:8123"})
-            EXPECT_EQ(verdict(origin, "192.168.1.20"), RequestVerdict::Allowed) << bind << " " << origin;
+        EXPECT_EQ(verdict("http://192.168.1.20:8123", "192.168.1.20"), RequestVerdict::Allowed) << bind;
+        // A loopback Origin on a request from outside is a page of the sending machine's own.
         for (const char* origin : {"http://203.0.113.5:8123", "http://[2001:db8::1]:8123", "http://192.168.1.21:8123",
-                                   "http://192.168.1.20:8124", "http://[192.168.1.20]:8123", "http://evil.example:8123"})
+                                   "http://192.168.1.20:8124", "http://[192.168.1.20]:8123", "http://evil.example:8123",
+                                   "http://127.0.0.1:8123", "http://localhost:8123", "http://[::1]:8123"})
             EXPECT_EQ(verdict(origin, "192.168.1.20"), RequestVerdict::Forbidden) << bind << " " << origin;
+        for (const char* arrived_on : {"127.0.0.1", "::1", "::ffff:127.0.0.1"})
+            for (const char* origin : {"http://127.0.0.1:8123", "http://localhost:8123", "http://[::1]:8123"})
+                EXPECT_EQ(verdict(origin, arrived_on), RequestVerdict::Allowed) << bind << " " << origin;
         // A socket bound to :: reports an IPv4 client's address mapped into IPv6.
         EXPECT_EQ(verdict("http://192.168.1.20:8123", "::ffff:192.168.1.20"), RequestVerdict::Allowed) << bind;
         EXPECT_EQ(verdict("http://[2001:db8::7]:8123", "2001:db8::7"), RequestVerdict::Allowed) << bind;
@@ -142,6 +147,10 @@ TEST(RequestGuard, ChangesNeedTheServersOwnOrigin) {
         post.origin = origin;
         EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden) << origin;
     }
+    post.origin = "http://127.0.0.1:8123";
+    post.arrived_on = "";
+    EXPECT_EQ(guard.check(post), RequestVerdict::Forbidden) << "a loopback Origin needs a loopback arrival";
+    post.arrived_on = "127.0.0.1";
     // The token is still needed with the right Origin.
     post.origin = "http://127.0.0.1:8123";
     post.query_tokens.clear();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "support/taken_temp_names.h"
 #include "support/temp_folder.h"
 
 namespace clr {
@@ -17,6 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::read_bytes;
+using testing::take_the_next_usual_temp_names;
 using testing::TempFolder;
 
 const auto kAnyName = [](const std::string&) {};
@@ -105,6 +107,16 @@ TEST(UnusedNameFile, ANameTooLongForTheFolderIsNamedAsSuch) {
         << message;
     EXPECT_EQ(message.find("cannot look for a free name in the folder"), std::string::npos) << message;
     EXPECT_EQ(folder.entry_count(), 1) << "no temporary file is left";
+}
+
+// Another user who may write into the output folder can guess the usual temporary names and
+// make them first: the export is written all the same, and their files stay as they were.
+TEST(UnusedNameFile, IsWrittenWhenTheUsualTemporaryNamesAreTaken) {
+    TempFolder folder;
+    const int taken = take_the_next_usual_temp_names(folder, 64);
+    const UnusedNameFile written = write_under_unused_name(folder.path(), "tour", ".json", {}, "ours", kAnyName);
+    EXPECT_EQ(read_bytes(written.path), "ours");
+    EXPECT_EQ(folder.entry_count(), taken + 1) << "no temporary file is left, and none of theirs removed";
 }
 }  // namespace
 }  // namespace clr

@@ -122,6 +122,11 @@ TEST(ViewFrames, CameraJsonIsThePathFramesCameraAsTheBatchRenderPlacesIt) {
     ASSERT_TRUE(outside);
     EXPECT_EQ(outside->status, 400);
     EXPECT_NE(outside->body.find("\"parameter\":\"frame\""), std::string::npos) << outside->body;
+    // Only frame= counts: other parameters, even ones /frame.png would refuse, are not read.
+    const httplib::Result others = viewer.client()->Get(viewer.with_token("/camera.json?frame=5&eye=nan&size=0x0"));
+    ASSERT_TRUE(others);
+    EXPECT_EQ(others->status, 200) << others->body;
+    EXPECT_EQ(nlohmann::json::parse(others->body)["frame"], 5) << others->body;
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
