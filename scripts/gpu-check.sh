@@ -60,7 +60,7 @@ echo "$devices" | sed 's/^/gpu-check.sh: /'
 # Part 1: the tests, one gtest shard per two CPUs (the driver's compiler runs on the CPU).
 tests='PerPixel.*:ExactArithmetic.*:Intersect*:Raygen*:Shade*:Seeds/*:Cameras/*:StructLayout*:AnalyticImage*:Antialiasing*:BandedRender*'
 tests+=':FeatureVariants*:ScreenTiles*:DoublePrecision*:Bvh.*:ImpostorFrames*:InstructorFrames*:Mirrors*'
-tests+=':RecycledFrames*:Course/*:Scale*:Meshes.*:SharedEdges.*:Lights.*:Planes.*:Clipping.*'
+tests+=':RecycledFrames*:Course/*:Scale*:Meshes.*:SharedEdges.*:EdgeBands.*:Lights.*:Planes.*:Clipping.*'
 shards=$(( $(nproc) / 2 > 1 ? $(nproc) / 2 : 1 ))
 pids=()
 for ((shard = 0; shard < shards; shard++)); do

@@ -32,7 +32,7 @@ failures=0
 # Part 1: the tests on Intel's device.
 tests='Intersect*:Raygen*:Shade*:Seeds/*:Cameras/*:StructLayout*:AnalyticImage*:Antialiasing*:BandedRender*'
 tests+=':FeatureVariants*:ScreenTiles*:DoublePrecision*:Bvh.*:ImpostorFrames*:InstructorFrames*:Mirrors*'
-tests+=':RecycledFrames*:Course/*:Scale*:Meshes.*:SharedEdges.*:Lights.*:Planes.*:Clipping.*:BvhPackets.*'
+tests+=':RecycledFrames*:Course/*:Scale*:Meshes.*:SharedEdges.*:EdgeBands.*:Lights.*:Planes.*:Clipping.*:BvhPackets.*'
 # Most of this time is Intel's compiler, which runs on one thread: one gtest shard per CPU.
 shards="$(nproc)"
 pids=()

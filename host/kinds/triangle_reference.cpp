@@ -68,12 +68,12 @@ double edge_orientation(const Across& p, const Across& q) {
 double norm1(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
 
 // The band of the edges' orientations (docs/scene-format.md, Meshes, "Edges and the band"):
-// 2^-17 M (L + 2^-22 M), M the norm1() of corner 0 from the ray's origin plus L, L the
+// 2^-19 M (L + 2^-22 M), M the norm1() of corner 0 from the ray's origin plus L, L the
 // longest edge's norm1(), as the kernels take it (kernels/kinds/triangle_sides.cl).
 double edge_band(const std::array<Vec3, 3>& c, const reference::Ray& ray) {
     const double longest = std::max({norm1(c[1] - c[0]), norm1(c[2] - c[1]), norm1(c[0] - c[2])});
     const double reach = norm1(c[0] - ray.origin) + longest;
-    return std::ldexp(1.0, -17) * reach * (longest + std::ldexp(1.0, -22) * reach);
+    return std::ldexp(1.0, -19) * reach * (longest + std::ldexp(1.0, -22) * reach);
 }
 
 // How the ray passes the triangle's edges: inside, where each edge's orientation across the

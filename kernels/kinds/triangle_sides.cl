@@ -8,12 +8,15 @@
  *
  * The band is a rule, not a rounding: the same share of the ray's reach whatever `real` is.
  * The volume rounds in float by at most 7.1 M L roundings (M: corner 0's norm1() from the
- * ray's origin plus the longest edge, L: the longest edge); the band is 2^-17 M (L + 2^-22 M),
- * 18 times that. A volume farther than the band from zero therefore has the exact one's sign,
- * and two triangles never both refuse a ray through their shared edge or vertex: the one whose
- * volume of the edge rounds to outside sees it beyond the band, the other within it or inside.
- * Around a triangle's longest edge, on a 1920-pixel-wide image at 45 degrees, the band is
- * about 1/55 of a pixel wide. */
+ * ray's origin plus the longest edge, L: the longest edge), and the float corners and
+ * direction, rounded from the host's doubles, move it by a few more; the band is
+ * 2^-19 M (L + 2^-22 M), 32 roundings. A volume farther than the band from zero therefore has
+ * the exact one's sign, and two triangles never both refuse a ray through their shared edge or
+ * vertex: the one whose volume of the edge rounds to outside sees it beyond the band, the
+ * other within it or inside. Around a triangle's longest edge, on a 1920-pixel-wide image at
+ * 45 degrees, the band is about 1/220 of a pixel wide; it widens silhouettes and shadows by
+ * that much (the lit mesh rows of the benchmark differ from Embree's image in 0.003% of their
+ * pixels, docs/benchmarks.md). */
 #ifndef CLR_KINDS_TRIANGLE_SIDES_CL
 #define CLR_KINDS_TRIANGLE_SIDES_CL
 
@@ -21,7 +24,7 @@
 #include "packet/lane_masks.cl"
 #include "packet/packet_types.cl"
 
-#define CLR_EDGE_BAND 7.6293945e-6f       /* 2^-17 */
+#define CLR_EDGE_BAND 1.9073486e-6f       /* 2^-19 */
 #define CLR_EDGE_BAND_REACH 2.3841858e-7f /* 2^-22 */
 
 /* |x| + |y| + |z|. */

@@ -135,10 +135,9 @@ TEST(EdgeBands, AnOctahedronsSilhouetteThroughItsVerticesMatchesTheReference) {
     expect_every_path_matches_the_reference(scene, "octahedron");
 }
 
-// A cube seen along its diagonal, its silhouette through vertices of three faces. The band alone
-// would admit points outside the box of a triangle's corners near a corner or along an axis,
-// which the boxes around it refuse in one path and not another; such a hit counts only within
-// that box (widened by 2^-21 of its largest coordinate).
+// A cube seen along its diagonal, the middle column of pixel rays through two of its edges and
+// the middle pixel's through a vertex of three faces on its silhouette. (With a band four times
+// as wide, and no box for the hits the band alone admits, 10 of its pixels differed.)
 TEST(EdgeBands, ACubeSeenAlongItsDiagonalMatchesTheReference) {
     const auto along = [](int axis, double length) {
         return Vec3{axis == 0 ? length : 0, axis == 1 ? length : 0, axis == 2 ? length : 0};
@@ -155,6 +154,25 @@ TEST(EdgeBands, ACubeSeenAlongItsDiagonalMatchesTheReference) {
         add(scene, cube);
         expect_every_path_matches_the_reference(scene, "cube along its diagonal, fov " + std::to_string(fov));
     }
+}
+
+// A square whose right edge lies 1e-5 short of a column of pixel rays (64 pixels across at 90
+// degrees, from 5 away: column 38's rays meet its plane at x = 1.015625): within the band of that
+// edge, but outside the box of its triangles' corners by four times the box's widening. Such a
+// hit counts in no path, nor in the reference.
+TEST(EdgeBands, AHitTheBandAloneAdmitsCountsOnlyWithinTheTrianglesBox) {
+    Scene scene = view({0, 0, 5}, {0, 0, 0}, 90, 64, 48, false);
+    add(scene, testing::grid_mesh({-1, -1, 0}, {2.015625 - 1e-5, 0, 0}, {0, 2, 0}, 1, 1));
+    testing::expect_kernels_match_reference(scene, "screen tiles", {}, 0);
+    RendererOptions one_by_one;
+    one_by_one.screen_tiles = false;
+    testing::expect_kernels_match_reference(scene, "one ray a work-item", one_by_one, 0);
+    RendererOptions double_precision;
+    double_precision.double_precision = true;
+    testing::expect_kernels_match_reference(scene, "double", double_precision, 0);
+    // Column 38 is the background; column 37 the square.
+    const Image image = testing::render_with_reference(scene);
+    EXPECT_NE(image.at(38, 24, 0), image.at(37, 24, 0));
 }
 
 }  // namespace
