@@ -213,8 +213,8 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
         t = t_plane;
     if (!(t > least && t < t_max))
         return INFINITY;
-    if (outside_by_volumes(u, v, w, det) &&
-        !within_corner_box(origin.x + t * direction.x, origin.y + t * direction.y, origin.z + t * direction.z, c0, c1, c2))
+    real3 p = origin + t * direction;
+    if (outside_by_volumes(u, v, w, det) && !within_corner_box(p.x, p.y, p.z, c0, c1, c2))
         return INFINITY;
     return t;
 }
@@ -288,8 +288,8 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     hit = hit && t > nearest;
     mask16 outside = hit && outside_by_volumes16(u, v, w, det);
     if (any_lanes16(outside))
-        hit = hit && !(outside && !within_corner_box16(origin.x + t * d.x, origin.y + t * d.y, origin.z + t * d.z,
-                                                       c0, c1, c2));
+        hit = hit && (!outside ||
+                      within_corner_box16(origin.x + t * d.x, origin.y + t * d.y, origin.z + t * d.z, c0, c1, c2));
     return select((real16)(INFINITY), t, hit);
 }
 
@@ -351,7 +351,8 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     hit = hit && t > least;
     mask16 outside = hit && outside_by_volumes16(u, v, w, det);
     if (any_lanes16(outside))
-        hit = hit && !(outside && !within_corner_box16(o.x + t * d.x, o.y + t * d.y, o.z + t * d.z, c0, c1, c2));
+        hit = hit && (!outside || within_corner_box16(o.x + t * d.x, o.y + t * d.y, o.z + t * d.z,
+                                                      c0, c1, c2));
     return select((real16)(INFINITY), t, hit);
 }
 
