@@ -103,11 +103,8 @@ EdgeSides edge_sides(const std::array<Vec3, 3>& c, const reference::Ray& ray) {
 // (kernels/kinds/triangle_sides.cl, CLR_EDGE_BAND_BOX), inside every box of the reference's tree.
 bool within_corner_box(const Vec3& p, const std::array<Vec3, 3>& c) {
     double largest = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double lower = std::min({c[0][axis], c[1][axis], c[2][axis]});
-        const double upper = std::max({c[0][axis], c[1][axis], c[2][axis]});
-        largest = std::max({largest, std::fabs(lower), std::fabs(upper)});
-    }
+    for (const Vec3& corner : c)
+        largest = std::max({largest, std::fabs(corner.x), std::fabs(corner.y), std::fabs(corner.z)});
     const double room = std::ldexp(largest, -21);
     for (int axis = 0; axis < 3; ++axis) {
         const double lower = std::min({c[0][axis], c[1][axis], c[2][axis]});

@@ -69,16 +69,7 @@ void add(Scene& scene, const testing::TestMesh& mesh) {
 
 void expect_every_path_matches_the_reference(const Scene& scene, const std::string& what) {
     ASSERT_GT(pixels_on_edges(scene), 0) << what << ": no pixel's ray passes through an edge";
-    testing::expect_kernels_match_reference(scene, what + ", screen tiles", {}, 0);
-    RendererOptions walk;
-    walk.packets_walk_bvh = true;
-    testing::expect_kernels_match_reference(scene, what + ", packets through the BVH", walk, 0);
-    RendererOptions one_by_one;
-    one_by_one.screen_tiles = false;
-    testing::expect_kernels_match_reference(scene, what + ", one ray a work-item", one_by_one, 0);
-    RendererOptions double_precision;
-    double_precision.double_precision = true;
-    testing::expect_kernels_match_reference(scene, what + ", double", double_precision, 0);
+    testing::expect_every_kernel_path_matches_reference(scene, what);
 }
 
 // A lone triangle's open diagonal through the centre of the view: with an even image size,
@@ -163,13 +154,7 @@ TEST(EdgeBands, ACubeSeenAlongItsDiagonalMatchesTheReference) {
 TEST(EdgeBands, AHitTheBandAloneAdmitsCountsOnlyWithinTheTrianglesBox) {
     Scene scene = view({0, 0, 5}, {0, 0, 0}, 90, 64, 48, false);
     add(scene, testing::grid_mesh({-1, -1, 0}, {2.015625 - 1e-5, 0, 0}, {0, 2, 0}, 1, 1));
-    testing::expect_kernels_match_reference(scene, "screen tiles", {}, 0);
-    RendererOptions one_by_one;
-    one_by_one.screen_tiles = false;
-    testing::expect_kernels_match_reference(scene, "one ray a work-item", one_by_one, 0);
-    RendererOptions double_precision;
-    double_precision.double_precision = true;
-    testing::expect_kernels_match_reference(scene, "double", double_precision, 0);
+    testing::expect_every_kernel_path_matches_reference(scene, "a square 1e-5 short of a column");
     // Column 38 is the background; column 37 the square.
     const Image image = testing::render_with_reference(scene);
     EXPECT_NE(image.at(38, 24, 0), image.at(37, 24, 0));

@@ -111,41 +111,31 @@ int pixels_settled(const Scene& scene) {
     return pixels;
 }
 
-void expect_every_path_matches_the_reference(const Scene& scene, const std::string& what) {
-    testing::expect_kernels_match_reference(scene, what + ", screen tiles", {}, 0);
-    RendererOptions one_by_one;
-    one_by_one.screen_tiles = false;
-    testing::expect_kernels_match_reference(scene, what + ", one ray a work-item", one_by_one, 0);
-    RendererOptions double_precision;
-    double_precision.double_precision = true;
-    testing::expect_kernels_match_reference(scene, what + ", double", double_precision, 0);
-}
-
 TEST(SharedEdges, ASunlitPyramidSeenAlongItsAxisMatchesTheReferenceOnItsRidges) {
     for (double distance : {3.0, 5.0, 10.0}) {
         const Scene scene = pyramid_scene(distance, 60, 160, 120);
         const std::string what = "pyramid from " + std::to_string(distance);
         EXPECT_GT(pixels_settled(scene), 0) << what << ": no pixel on a ridge";
-        expect_every_path_matches_the_reference(scene, what);
+        testing::expect_every_kernel_path_matches_reference(scene, what);
     }
 }
 
 TEST(SharedEdges, ARoofsRidgeOnAPixelRowMatchesTheReference) {
     const Scene scene = roof_scene();
     EXPECT_GT(pixels_settled(scene), 0);
-    expect_every_path_matches_the_reference(scene, "roof");
+    testing::expect_every_kernel_path_matches_reference(scene, "roof");
 }
 
 TEST(SharedEdges, AFoldedGridsCreasesAndVerticesMatchTheReference) {
     const Scene scene = folded_scene();
     EXPECT_GT(pixels_settled(scene), 0);
-    expect_every_path_matches_the_reference(scene, "folded grid");
+    testing::expect_every_kernel_path_matches_reference(scene, "folded grid");
 }
 
 TEST(SharedEdges, AMirrorPyramidReflectsTheSameSideOfEachRidge) {
     const Scene scene = pyramid_scene(5, 60, 160, 120, true);
     EXPECT_GT(pixels_settled(scene), 0);
-    expect_every_path_matches_the_reference(scene, "mirror pyramid");
+    testing::expect_every_kernel_path_matches_reference(scene, "mirror pyramid");
 }
 
 TEST(SharedEdges, TriangleSurfacesUnderALightOrUnlitMatchTheReference) {
@@ -153,7 +143,7 @@ TEST(SharedEdges, TriangleSurfacesUnderALightOrUnlitMatchTheReference) {
         const Scene scene = surface_pyramid(lit);
         const std::string what = lit ? "triangle surfaces, a point light" : "triangle surfaces of four colours, unlit";
         EXPECT_GT(pixels_settled(scene), 0) << what;
-        expect_every_path_matches_the_reference(scene, what);
+        testing::expect_every_kernel_path_matches_reference(scene, what);
     }
 }
 

@@ -21,10 +21,24 @@ Image render_with_reference(const Scene& scene) {
 
 void expect_kernels_match_reference(const Scene& scene, const std::string& what, const RendererOptions& options,
                                     double differing_fraction) {
-    const ImageComparison comparison = compare_images(render_with_kernels(scene, options), render_with_reference(scene));
-    EXPECT_LE(comparison.differing_fraction(), differing_fraction) << what << ": " << comparison.differing << " pixels differ, the first "
-                                                                  << comparison.first_differing;
+    const ImageComparison comparison =
+        compare_images(render_with_kernels(scene, options), render_with_reference(scene));
+    EXPECT_LE(comparison.differing_fraction(), differing_fraction)
+        << what << ": " << comparison.differing << " pixels differ, the first " << comparison.first_differing;
     EXPECT_EQ(comparison.differing_off_edge, 0) << what << ": " << comparison.first_off_edge;
+}
+
+void expect_every_kernel_path_matches_reference(const Scene& scene, const std::string& what) {
+    expect_kernels_match_reference(scene, what + ", screen tiles", {}, 0);
+    RendererOptions walk;
+    walk.packets_walk_bvh = true;
+    expect_kernels_match_reference(scene, what + ", packets through the BVH", walk, 0);
+    RendererOptions one_by_one;
+    one_by_one.screen_tiles = false;
+    expect_kernels_match_reference(scene, what + ", one ray a work-item", one_by_one, 0);
+    RendererOptions double_precision;
+    double_precision.double_precision = true;
+    expect_kernels_match_reference(scene, what + ", double", double_precision, 0);
 }
 
 void expect_general_program_renders_the_same(const Scene& scene) {

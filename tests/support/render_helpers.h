@@ -17,6 +17,11 @@ Image render_with_reference(const Scene& scene);
 void expect_kernels_match_reference(const Scene& scene, const std::string& what, const RendererOptions& options = {},
                                     double differing_fraction = 0.002);
 
+// Expects every way the kernels trace primary rays (screen tiles, 16-ray packets through the
+// BVH, one ray a work-item, and in double) to give the reference's image of `scene` to the
+// pixel: for scenes whose pixel centres lie on edges, where only a shared rule makes them agree.
+void expect_every_kernel_path_matches_reference(const Scene& scene, const std::string& what);
+
 // Expects the general program that stands in for the scene's own in a still
 // (FeatureSet::general, RendererOptions::general_stand_in) to render the scene's image byte for
 // byte, in float and in double precision, with screen tiles.
