@@ -6,11 +6,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <future>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
@@ -60,7 +62,48 @@ int sealed_text(const std::string& text) {
     return file;
 }
 
+// A whole number from 0 to INT_MAX; nullopt for anything else (text, a fraction, a negative or
+// larger number), which get<int>() would throw at or wrap.
+std::optional<int> count_of(const nlohmann::json& object, const char* key) {
+    const auto value = object.find(key);
+    if (value == object.end()) return std::nullopt;
+    if (value->is_number_unsigned()) {
+        const std::uint64_t count = value->get<std::uint64_t>();
+        if (count <= std::uint64_t(std::numeric_limits<int>::max())) return static_cast<int>(count);
+    } else if (value->is_number_integer()) {
+        const std::int64_t count = value->get<std::int64_t>();
+        if (count >= 0 && count <= std::numeric_limits<int>::max()) return static_cast<int>(count);
+    }
+    return std::nullopt;
+}
+
 }  // namespace
+
+VideoProgressLine read_video_progress_line(const std::string& line) {
+    VideoProgressLine read;
+    const nlohmann::json progress = nlohmann::json::parse(line, nullptr, false);
+    if (progress.is_object()) {
+        read.done = count_of(progress, "frames_done");
+        read.total = count_of(progress, "frames");
+        if (read.done && read.total) {
+            // A video's frames are done only once it is in place: its progress is the frame.
+            const std::optional<int> frame = count_of(progress, "frame");
+            if (frame && *frame < std::numeric_limits<int>::max()) read.frame = *frame + 1;
+            return read;
+        }
+        read.done = read.total = std::nullopt;
+        const auto message = progress.find("message");
+        if (message != progress.end() && message->is_string()) {
+            // An error or warning line of --progress json: its message, as the page shows it.
+            read.message = shortened(printable(message->get<std::string>()), kLongestDetail);
+            const auto level = progress.find("level");
+            read.warning = level != progress.end() && *level == "warning";
+            return read;
+        }
+    }
+    read.message = shortened(printable(line), kLongestDetail);
+    return read;
+}
 
 VideoJobs::VideoJobs(std::vector<std::string> render_arguments) : render_arguments_(std::move(render_arguments)) {}
 
@@ -132,6 +175,22 @@ int VideoJobs::start(Place&& place, const std::string& scene_path, const std::st
     return job.id;
 }
 
+void VideoJobs::take_progress_line(const std::string& line, std::string& last_message) {
+    const VideoProgressLine read = read_video_progress_line(line);
+    if (read.done && read.total) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        jobs_.back().done = *read.done;
+        jobs_.back().total = *read.total;
+        if (read.frame) jobs_.back().frame = *read.frame;
+        return;
+    }
+    if (!read.message.empty()) last_message = read.message;
+    // The video reads the meshes and images again: a file changed since the viewer started may
+    // give a warning, which a finished job does not show. It goes to the viewer's terminal, where
+    // the scene's own warnings went, as a render prints it.
+    if (read.warning) std::cerr << ("clrender: warning: " + read.message + "\n") << std::flush;
+}
+
 // Reads the render's progress lines (--progress json) until it closes its standard error,
 // then reaps it.
 void VideoJobs::watch(int read_fd) {
@@ -142,28 +201,8 @@ void VideoJobs::watch(int read_fd) {
         if (got < 0 && errno == EINTR) continue;
         if (got <= 0) break;
         pending.append(buffer, static_cast<std::size_t>(got));
-        for (std::size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1)) {
-            const std::string line = pending.substr(0, end);
-            const nlohmann::json progress = nlohmann::json::parse(line, nullptr, false);
-            if (progress.is_object() && progress.contains("frames_done") && progress.contains("frames")) {
-                std::lock_guard<std::mutex> lock(mutex_);
-                jobs_.back().done = progress["frames_done"].get<int>();
-                jobs_.back().total = progress["frames"].get<int>();
-                // A video's frames are done only once it is in place: its progress is the frame.
-                if (progress.contains("frame") && progress["frame"].is_number_integer())
-                    jobs_.back().frame = progress["frame"].get<int>() + 1;
-            } else if (progress.is_object() && progress.contains("message") && progress["message"].is_string()) {
-                // An error or warning line of --progress json: its message, as the page shows it.
-                last_message = shortened(printable(progress["message"].get<std::string>()), kLongestDetail);
-                // The video reads the meshes and images again: a file changed since the viewer
-                // started may give a warning, which a finished job does not show. It goes to the
-                // viewer's terminal, where the scene's own warnings went, as a render prints it.
-                if (progress.contains("level") && progress["level"] == "warning")
-                    std::cerr << ("clrender: warning: " + last_message + "\n") << std::flush;
-            } else if (!line.empty()) {
-                last_message = shortened(printable(line), kLongestDetail);
-            }
-        }
+        for (std::size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1))
+            take_progress_line(pending.substr(0, end), last_message);
         if (pending.size() > 65536) pending.clear();  // no line is that long: drop garbage
     }
     ::close(read_fd);

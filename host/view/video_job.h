@@ -24,6 +24,20 @@ struct VideoJobState {
     std::string error;  // why it failed: the render's last message (of its --progress json line)
 };
 
+// What one line of a render's standard error (--progress json) says: a progress line's frame
+// counts, or any other line's message (an error or warning line's own, or the line itself).
+struct VideoProgressLine {
+    std::optional<int> done, total;  // a progress line's frames_done and frames
+    std::optional<int> frame;        // the frame it is on, from 1
+    std::string message;             // another line's text, printable and shortened; "" for none
+    bool warning = false;            // a warning line (its message goes to the viewer's terminal)
+};
+
+// Reads one line as above. A progress line whose counts are not whole numbers from 0 is read as
+// any other line: the watcher of a render, a thread of its own, has nowhere to throw to, and one
+// malformed line must not end the viewer. Throws nothing but std::bad_alloc.
+VideoProgressLine read_video_progress_line(const std::string& line);
+
 class VideoJobs {
 public:
     // `render_arguments` are passed to every render after the scene and the video (device,
@@ -70,6 +84,9 @@ public:
 
 private:
     void watch(int read_fd);
+    // Takes one line of the render's standard error into the job's state; `last_message` is
+    // the last message, the failed job's error.
+    void take_progress_line(const std::string& line, std::string& last_message);
 
     std::vector<std::string> render_arguments_;
     mutable std::mutex mutex_;
