@@ -43,6 +43,11 @@ void add_view_routes(httplib::Server& server, ViewSession& session);
 // address holds the token), no ranges, and the page's Content-Security-Policy.
 httplib::Headers view_answer_headers();
 
+// Answers 415, with a JSON error naming the header, a request whose body cpp-httplib would
+// decode or parse itself before any route sees it, and returns true; false for any other.
+// Called before the body is read (the pre-routing handler, and the Expect: 100-continue one).
+bool refused_body_format(const httplib::Request& request, httplib::Response& response);
+
 // The guard's facts of an httplib request.
 RequestFacts request_facts(const httplib::Request& request);
 

@@ -149,6 +149,8 @@ void serve_view(const ServerSettings& settings, const std::string& token, const 
     server.set_expect_100_continue_handler([&guard](const httplib::Request& request, httplib::Response& response) {
         if (guard.check(request_facts(request)) == RequestVerdict::Forbidden)
             response.status = 403;
+        else if (refused_body_format(request, response))
+            return response.status;  // 415, as the routes answer it, with its Connection: close
         else if (request.has_header("Transfer-Encoding") || !request.has_header("Content-Length"))
             response.status = 411;  // as the routes answer it (view_routes.cpp)
         else if (!declared_body_length(request))

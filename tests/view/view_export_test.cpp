@@ -8,14 +8,13 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <thread>
 #include <vector>
 
 #include "support/command.h"
+#include "support/process_memory.h"
 #include "support/process_table.h"
 #include "support/temp_folder.h"
 #include "view/viewer_process.h"
@@ -26,6 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using testing::read_bytes;
+using testing::rise_during;
 using testing::run_clrender;
 using testing::TempFolder;
 using testing::ViewerProcess;
@@ -208,36 +208,6 @@ TEST(ViewExport, ExportsOnceTheStartFolderIsGone) {
     const auto render = run_clrender("out/tour.json -q --frames 0 -o first.png", folder.path());
     EXPECT_EQ(render.exit_code, 0) << render.output;
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
-}
-
-// The resident memory of process `pid`, in MiB (0 once it is gone).
-long resident_mib(pid_t pid) {
-    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-    for (std::string line; std::getline(status, line);) {
-        if (line.rfind("VmRSS:", 0) != 0) continue;
-        std::istringstream fields(line.substr(6));
-        long kib = 0;
-        fields >> kib;
-        return kib / 1024;
-    }
-    return 0;
-}
-
-// How far above its resident memory before `work` process `pid` rose while `work` ran, in MiB.
-long rise_during(pid_t pid, const std::function<void()>& work) {
-    const long before = resident_mib(pid);
-    std::atomic<long> peak{before};
-    std::atomic<bool> done{false};
-    std::thread watcher([&] {
-        while (!done) {
-            peak = std::max(peak.load(), resident_mib(pid));
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-    });
-    work();
-    done = true;
-    watcher.join();
-    return peak - before;
 }
 
 // A scene of 100,000 spheres (a 7 MB file) as `name` in `folder`: one whose JSON is costly to hold.

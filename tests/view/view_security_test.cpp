@@ -19,6 +19,7 @@
 #include <tuple>
 #include <vector>
 
+#include "support/process_memory.h"
 #include "support/temp_folder.h"
 #include "view/viewer_process.h"
 
@@ -745,6 +746,101 @@ TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
     EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << answer.substr(0, 200);
     EXPECT_TRUE(fs::exists(folder_->file("expect_check.json")));
     fs::remove(folder_->file("expect_check.json"));
+}
+
+// `head` (a request's head, without its Content-Length and empty line) with `body`, sent on a
+// connection of its own; the answer, and whether the connection then closed.
+std::pair<std::string, bool> send_with_body(int port, const std::string& head, const std::string& body) {
+    const int socket = connect_to_viewer(port);
+    if (socket < 0) return {"", false};
+    const std::string request = head + "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
+    if (::send(socket, request.data(), request.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(request.size())) {
+        ::close(socket);
+        return {"", false};
+    }
+    const std::string answer = read_one_answer(socket, 10);
+    char more = 0;
+    const bool closed = ::recv(socket, &more, 1, 0) == 0;
+    ::close(socket);
+    return {answer, closed};
+}
+
+// A JSON array of `count` zeros, gzip-compressed: 2 bytes a zero, a thousandth of that sent.
+std::string gzipped_zeros(std::size_t count) {
+    std::string compressed;
+    httplib::detail::gzip_compressor gzip;
+    const auto keep = [&compressed](const char* data, std::size_t size) {
+        compressed.append(data, size);
+        return true;
+    };
+    const std::string start = "[", zeros(std::size_t(1) << 20, '0'), end = "0]";
+    std::string pairs;
+    for (char zero : zeros) pairs += std::string{zero, ','};
+    bool written = gzip.compress(start.data(), start.size(), false, keep);
+    for (std::size_t left = count - 1; left > 0 && written;) {
+        const std::size_t now = std::min(left, pairs.size() / 2);
+        written = gzip.compress(pairs.data(), now * 2, false, keep);
+        left -= now;
+    }
+    return written && gzip.compress(end.data(), end.size(), true, keep) ? compressed : "";
+}
+
+// cpp-httplib inflated a compressed body before the route read it, counting only the bytes
+// sent against the 2 MiB limit: 32 KB of gzip here is 32 MiB of JSON, an array of 16 million
+// numbers, which the export parsed (brotli: 234 bytes made 256 MiB). It is refused before any
+// of it is read, with 415 naming the header, and the viewer holds no more memory than before.
+TEST_F(ViewSecurity, ACompressedBodyIsRefusedBeforeItIsInflated) {
+    const std::string bomb = gzipped_zeros(std::size_t(16) << 20);
+    ASSERT_FALSE(bomb.empty());
+    ASSERT_LT(bomb.size(), 60u * 1024) << "a body the server drops whole while it closes";
+    const std::string head = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                             "\r\nOrigin: " + own_origin() + "\r\nContent-Type: application/json\r\n" +
+                             "Content-Encoding: gzip\r\n";
+    std::pair<std::string, bool> sent;
+    const long rise = testing::rise_during(viewer_->pid(), [&] { sent = send_with_body(viewer_->port(), head, bomb); });
+    const auto& [answer, closed] = sent;
+    EXPECT_EQ(answer.rfind("HTTP/1.1 415", 0), 0u) << answer.substr(0, 300);
+    EXPECT_NE(answer.find("\"parameter\":\"Content-Encoding\""), std::string::npos) << answer;
+    EXPECT_NE(answer.find("Content-Encoding 'gzip' is not accepted"), std::string::npos) << answer;
+    EXPECT_TRUE(closed);
+    EXPECT_LT(rise, 24) << "MiB: the body was inflated";
+    EXPECT_EQ(viewer_->client()->Get(viewer_->with_token("/scene.json").c_str())->status, 200);
+}
+
+// Every Content-Encoding (the page sends none; cpp-httplib would inflate gzip, deflate and
+// anything with "br" in it) and every body cpp-httplib parses itself (a form, which it refused
+// over 8 KiB with a bare 413; multipart, a bare 400) gets 415 naming the header, before the
+// body is read, and a client that asks before sending it (Expect: 100-continue) is not invited.
+TEST_F(ViewSecurity, EncodedAndFormBodiesGet415NamingTheHeader) {
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "plain_body"})";
+    const std::string start = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
+                              "\r\nOrigin: " + own_origin() + "\r\n";
+    std::vector<std::pair<std::string, std::string>> refused;  // headers, the header named
+    for (const char* encoding : {"gzip", "deflate", "br", "identity", "x-unknown", "GZIP"})
+        refused.push_back({"Content-Type: application/json\r\nContent-Encoding: " + std::string(encoding) + "\r\n",
+                           "Content-Encoding"});
+    for (const char* type : {"application/x-www-form-urlencoded", "multipart/form-data; boundary=x",
+                             "Multipart/Form-Data; boundary=x", "application/x-www-form-urlencoded;charset=UTF-8"})
+        refused.push_back({"Content-Type: " + std::string(type) + "\r\n", "Content-Type"});
+    refused.push_back({"Content-Type: application/json\r\nContent-Type: multipart/form-data; boundary=x\r\n",
+                       "Content-Type"});
+    refused.push_back({"Content-Type: application/json\r\ncontent-encoding: br\r\n", "Content-Encoding"});
+    const std::string long_form = std::string(15000, 'a');  // a valid form's size, over cpp-httplib's 8 KiB
+    for (const auto& [headers, named] : refused) {
+        for (const std::string& asking : {std::string(), std::string("Expect: 100-continue\r\n")}) {
+            const auto [answer, closed] =
+                send_with_body(viewer_->port(), start + headers + asking, asking.empty() ? long_form : "");
+            const std::string what = headers + asking;
+            EXPECT_EQ(answer.rfind("HTTP/1.1 415", 0), 0u) << what << answer.substr(0, 300);
+            EXPECT_NE(answer.find("\"parameter\":\"" + named + "\""), std::string::npos) << what << answer;
+            EXPECT_TRUE(closed) << what;
+        }
+    }
+    // A JSON body with no encoding is still read, whatever its type says (the page's own).
+    for (const char* type : {"application/json", "text/plain;charset=UTF-8"}) {
+        const auto [answer, closed] = send_with_body(viewer_->port(), start + "Content-Type: " + type + "\r\n", body);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 200", 0), 0u) << type << answer.substr(0, 300);
+    }
 }
 
 // A path the viewer answers, asked with another method: 405 and the methods it answers.
