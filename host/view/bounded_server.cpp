@@ -243,39 +243,79 @@ bool RequestStream::take(std::size_t count) {
     return body_bytes_ <= most_body_bytes_;
 }
 
-ssize_t RequestStream::refuse(const char* status_line) {
+ssize_t RequestStream::refuse(const char* status_line, const std::string& message) {
     limit_reached_ = true;
     if (!answering_) {
+        const std::string body = "{\"error\":\"" + message + "\"}";  // the messages below need no escaping
         const std::string answer = std::string(status_line) + "\r\n" + answer_headers_ +
-                                   "Connection: close\r\nContent-Type: text/plain\r\nContent-Length: 0\r\n\r\n";
+                                   "Connection: close\r\nContent-Type: application/json\r\nContent-Length: " +
+                                   std::to_string(body.size()) + "\r\n\r\n" + body;
         if (wait_for(socket_, POLLOUT, 1000) > 0) (void)::send(socket_, answer.data(), answer.size(), MSG_NOSIGNAL);
         answering_ = true;
     }
     return -1;
 }
 
+std::pair<RequestStream::Clock::time_point, RequestStream::Late> RequestStream::next_limit(
+    Clock::time_point waiting_since) const {
+    std::pair<Clock::time_point, Late> limit{request_deadline_, Late::Deadline};
+    if (waiting_since + read_timeout_ < limit.first) limit = {waiting_since + read_timeout_, Late::Stalled};
+    return limit;
+}
+
+std::string RequestStream::late_message(Late why) const {
+    const auto in_seconds = [](std::chrono::milliseconds time) {
+        const auto count = time.count();
+        return count % 1000 == 0 ? std::to_string(count / 1000) + " s" : std::to_string(count) + " ms";
+    };
+    switch (why) {
+        case Late::Deadline:
+            return "the request did not arrive whole within " + std::to_string(kRequestSeconds) +
+                   " s of its first byte";
+        case Late::Stalled:
+            return "the request stopped arriving: nothing came for " + in_seconds(read_timeout_);
+    }
+    return "the request did not arrive in time";
+}
+
+ssize_t RequestStream::fill_buffer() {
+    // However steadily a client trickles its bytes, its request ends at the deadline.
+    if (Clock::now() >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout", late_message(Late::Deadline));
+    const Clock::time_point waiting_since = Clock::now();
+    for (;;) {
+        const auto [limit, why] = next_limit(waiting_since);
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(limit - Clock::now()).count();
+        // In slices of 50 ms, as every wait of the stream (a stop ends it).
+        const int ready = wait_while_serving(POLLIN, static_cast<int>(std::clamp<decltype(left)>(left, 0, 50)));
+        if (ready < 0) return -1;
+        if (ready > 0) break;
+        if (left <= 0) return refuse("HTTP/1.1 408 Request Timeout", late_message(why));
+    }
+    ssize_t got;
+    do got = ::recv(socket_, buffer_, sizeof buffer_, 0);
+    while (got < 0 && errno == EINTR);
+    if (got <= 0) return got;
+    buffered_ = static_cast<std::size_t>(got);
+    buffer_at_ = 0;
+    return got;
+}
+
 ssize_t RequestStream::read(char* ptr, std::size_t size) {
     if (limit_reached_) return -1;
     if (buffer_at_ == buffered_) {
-        // However steadily a client trickles its bytes, its request ends at the deadline.
-        const auto now = Clock::now();
-        if (now >= request_deadline_) return refuse("HTTP/1.1 408 Request Timeout");
-        // A wait that the deadline cuts short and that ends with nothing is the deadline.
-        const bool deadline_first = request_deadline_ - now <= read_timeout_;
-        const int ready = wait_while_serving(POLLIN, wait_ms(read_timeout_, request_deadline_));
-        if (ready == 0 && deadline_first) return refuse("HTTP/1.1 408 Request Timeout");
-        if (ready <= 0) return -1;
-        ssize_t got;
-        do got = ::recv(socket_, buffer_, sizeof buffer_, 0);
-        while (got < 0 && errno == EINTR);
+        const ssize_t got = fill_buffer();
         if (got <= 0) return got;
-        buffered_ = static_cast<std::size_t>(got);
-        buffer_at_ = 0;
     }
     const std::size_t count = std::min(size, buffered_ - buffer_at_);
     const char* bytes = buffer_ + buffer_at_;
-    if (!take(count))
-        return refuse(head_parsed_ ? "HTTP/1.1 413 Payload Too Large" : "HTTP/1.1 431 Request Header Fields Too Large");
+    if (!take(count)) {
+        if (head_parsed_)
+            return refuse("HTTP/1.1 413 Payload Too Large",
+                          "request bodies may have at most " + std::to_string(most_body_bytes_) + " bytes");
+        return refuse("HTTP/1.1 431 Request Header Fields Too Large",
+                      "a request's head (its request line and headers) may have at most " +
+                          std::to_string(kMostHeadBytes) + " bytes");
+    }
     std::memcpy(ptr, bytes, count);
     buffer_at_ += count;
     return static_cast<ssize_t>(count);

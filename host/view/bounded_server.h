@@ -5,8 +5,9 @@
 // ever. BoundedServer reads every connection through a stream of its own (RequestStream) that
 //   - ends the head of a request (request line and headers, every byte until cpp-httplib has
 //     parsed them, whatever their lines end with) at kMostHeadBytes, answering 431;
-//   - ends a request that has not arrived whole within kRequestSeconds of its first byte,
-//     answering 408;
+//   - ends a request that has not arrived whole within kRequestSeconds of its first byte, or
+//     that stops arriving (no byte for the read timeout), answering 408 (cpp-httplib answered
+//     a stall with a bare 400);
 //   - ends an answer that the client has not taken within kAnswerSeconds;
 //   - closes the connection after an answer to a request whose body it did not read, since
 //     cpp-httplib would take that body for the next request;
@@ -30,6 +31,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace clr {
 
@@ -86,9 +88,18 @@ private:
     using Clock = std::chrono::steady_clock;
     // Milliseconds to wait for the socket: `timeout`, or less where `deadline` comes first.
     int wait_ms(std::chrono::milliseconds timeout, Clock::time_point deadline) const;
-    // Answers `status_line` with an empty body and fails: the connection closes, and nothing
-    // more is written to it (write() drops cpp-httplib's own answer to the failed read).
-    ssize_t refuse(const char* status_line);
+    // Answers `status_line` with {"error": message} and fails: the connection closes, and
+    // nothing more is written to it (write() drops cpp-httplib's own answer to the failed read).
+    ssize_t refuse(const char* status_line, const std::string& message);
+    // Waits for the request's next bytes and reads them into the buffer: their count, 0 at the
+    // client's end, -1 when the server stops or a limit ended the request (408).
+    ssize_t fill_buffer();
+    // Why a request is answered 408: its deadline passed, or no byte came for the read timeout.
+    enum class Late { Deadline, Stalled };
+    // The first limit that a request, whose next bytes are waited for since `waiting_since`,
+    // meets, and why it is one.
+    std::pair<Clock::time_point, Late> next_limit(Clock::time_point waiting_since) const;
+    std::string late_message(Late why) const;  // the 408's
     // Waits up to `ms` for `events` (POLLIN: bytes to read; POLLOUT: room to write), as
     // wait_for() answers, in slices of 50 ms: -1 once the server stops and the socket is not
     // ready at once. A request still arriving is then dropped, and an answer that the client

@@ -486,6 +486,8 @@ TEST_F(ViewSecurity, EndlessHeadersGet431) {
     const std::string answer = read_one_answer(socket, 5);
     ::close(socket);
     EXPECT_EQ(answer.rfind("HTTP/1.1 431", 0), 0u) << answer.substr(0, 200);
+    const std::string reason = "a request's head (its request line and headers) may have at most 65536 bytes";
+    EXPECT_NE(answer.find("{\"error\":\"" + reason + "\"}"), std::string::npos) << answer;
 }
 
 // A request that a limit ends gets the limit's answer and nothing after it: cpp-httplib, whose
@@ -662,6 +664,32 @@ TEST_F(ViewSecurity, ATrickledRequestEndsAtItsDeadline) {
     EXPECT_EQ(answer.rfind("HTTP/1.1 408", 0), 0u) << answer.substr(0, 200);
     EXPECT_GE(seconds, 9.5);
     EXPECT_LT(seconds, 30.0);
+}
+
+// A request that stops arriving for the 5 s read timeout, in its head or in its body, is
+// answered 408 with its reason, as one past its deadline is: cpp-httplib answered it with a
+// bare 400.
+TEST_F(ViewSecurity, AStalledRequestGets408WithItsReason) {
+    const std::vector<std::string> stalled = {
+        "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n",
+        "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() + "\r\nOrigin: " + own_origin() +
+            "\r\nContent-Type: application/json\r\nContent-Length: 100\r\n\r\n{\"keys\"",
+    };
+    std::vector<int> sockets;
+    for (const std::string& request : stalled) {
+        sockets.push_back(connect_to_viewer(viewer_->port()));
+        ASSERT_GE(sockets.back(), 0);
+        const ssize_t sent = ::send(sockets.back(), request.data(), request.size(), MSG_NOSIGNAL);
+        ASSERT_EQ(sent, static_cast<ssize_t>(request.size()));
+    }
+    for (std::size_t k = 0; k < sockets.size(); ++k) {
+        const std::string answer = read_one_answer(sockets[k], 30);
+        ::close(sockets[k]);
+        EXPECT_EQ(answer.rfind("HTTP/1.1 408", 0), 0u) << stalled[k] << "\n" << answer.substr(0, 300);
+        EXPECT_NE(answer.find("Content-Type: application/json"), std::string::npos) << answer;
+        EXPECT_NE(answer.find("{\"error\":\"the request stopped arriving: nothing came for 5 s\"}"), std::string::npos)
+            << answer;
+    }
 }
 
 // Connections that send nothing (no token needed) give their threads up while others wait:
