@@ -129,14 +129,21 @@ bool next_request_arrives(int socket, std::chrono::steady_clock::time_point idle
 // After a refusal the client may still be sending. Closing with its bytes unread makes the
 // system reset the connection, and a reset can destroy the answer before the client reads it.
 // So the server stops writing and drops what still comes for up to a second (64 KiB at most;
-// what a web server calls a lingering close), then closes.
-void linger_before_close(int socket) {
+// what a web server calls a lingering close), then closes; for kIdleWhileOthersWait only while
+// other connections wait for a thread: a client refused for trickling its head went on
+// trickling into the linger, a second of a thread for each of its connections.
+void linger_before_close(int socket, const std::atomic<std::size_t>& waiting) {
     ::shutdown(socket, SHUT_WR);
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    const auto start = std::chrono::steady_clock::now();
     char scratch[4096];
     for (std::size_t dropped = 0; dropped < 64 * 1024;) {
+        const auto give_up = start + (waiting > 0 ? kIdleWhileOthersWait : std::chrono::milliseconds(1000));
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
-        if (left.count() <= 0 || wait_for(socket, POLLIN, static_cast<int>(left.count())) <= 0) break;
+        const int slice = static_cast<int>(std::min<std::chrono::milliseconds::rep>(left.count(), 50));
+        if (left.count() <= 0) break;
+        const int ready = wait_for(socket, POLLIN, slice);
+        if (ready < 0) break;
+        if (ready == 0) continue;  // others may have started to wait meanwhile
         const ssize_t got = ::recv(socket, scratch, sizeof scratch, 0);
         if (got <= 0) break;
         dropped += static_cast<std::size_t>(got);
@@ -172,14 +179,16 @@ std::optional<std::size_t> declared_body_length(const httplib::Request& request)
 
 RequestStream::RequestStream(int socket, std::chrono::milliseconds read_timeout,
                              std::chrono::milliseconds write_timeout, std::size_t most_body_bytes,
-                             const std::atomic<socket_t>& serving, const std::string& answer_headers)
+                             const std::atomic<socket_t>& serving, const std::string& answer_headers,
+                             const std::atomic<std::size_t>& others_waiting)
     : socket_(socket),
       read_timeout_(read_timeout),
       write_timeout_(write_timeout),
       most_body_bytes_(most_body_bytes),
       serving_(serving),
-      answer_headers_(answer_headers) {
-    start_request();
+      answer_headers_(answer_headers),
+      others_waiting_(others_waiting) {
+    start_request(Clock::now());
 }
 
 int RequestStream::wait_while_serving(short events, int ms) const {
@@ -194,8 +203,9 @@ int RequestStream::wait_while_serving(short events, int ms) const {
     }
 }
 
-void RequestStream::start_request() {
+void RequestStream::start_request(Clock::time_point head_since) {
     request_deadline_ = Clock::now() + std::chrono::seconds(kRequestSeconds);
+    head_since_ = head_since;
     answering_ = false;
     answer_head_.clear();
     answer_head_done_ = answer_closes_ = false;
@@ -260,6 +270,9 @@ std::pair<RequestStream::Clock::time_point, RequestStream::Late> RequestStream::
     Clock::time_point waiting_since) const {
     std::pair<Clock::time_point, Late> limit{request_deadline_, Late::Deadline};
     if (waiting_since + read_timeout_ < limit.first) limit = {waiting_since + read_timeout_, Late::Stalled};
+    const Clock::time_point head_limit = head_since_ + kHeadWhileOthersWait;
+    if (!head_parsed_ && others_waiting_ > 0 && head_limit < limit.first)
+        limit = {head_limit, Late::HeadWhileOthersWait};
     return limit;
 }
 
@@ -274,6 +287,9 @@ std::string RequestStream::late_message(Late why) const {
                    " s of its first byte";
         case Late::Stalled:
             return "the request stopped arriving: nothing came for " + in_seconds(read_timeout_);
+        case Late::HeadWhileOthersWait:
+            return "the request's head did not arrive within " + in_seconds(kHeadWhileOthersWait) +
+                   ", while other clients waited";
     }
     return "the request did not arrive in time";
 }
@@ -285,7 +301,9 @@ ssize_t RequestStream::fill_buffer() {
     for (;;) {
         const auto [limit, why] = next_limit(waiting_since);
         const auto left = std::chrono::ceil<std::chrono::milliseconds>(limit - Clock::now()).count();
-        // In slices of 50 ms, as every wait of the stream (a stop ends it).
+        // In slices: other connections may start to wait meanwhile, which shortens the head's
+        // limit. A limit that has passed still takes the bytes that are there: a request whose
+        // head arrived whole while it waited for a thread is read.
         const int ready = wait_while_serving(POLLIN, static_cast<int>(std::clamp<decltype(left)>(left, 0, 50)));
         if (ready < 0) return -1;
         if (ready > 0) break;
@@ -472,7 +490,7 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
     ::setsockopt(socket, IPPROTO_TCP, TCP_NODELAY, &no_delay, sizeof no_delay);
     RequestStream stream(socket, milliseconds(read_timeout_sec_ * 1000 + read_timeout_usec_ / 1000),
                          milliseconds(write_timeout_sec_ * 1000 + write_timeout_usec_ / 1000), payload_max_length_,
-                         svr_sock_, answer_header_lines_);
+                         svr_sock_, answer_header_lines_, waiting_connections_);
     stream_of_this_thread = &stream;
     const auto parsed = [&stream](httplib::Request& request) {
         stream.head_parsed(declared_body_length(request));
@@ -482,19 +500,20 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
         request.ranges.clear();
     };
     bool served = false;
-    auto idle_since = accepted_for_this_thread.value_or(std::chrono::steady_clock::now());
+    const auto accepted = accepted_for_this_thread.value_or(std::chrono::steady_clock::now());
+    auto idle_since = accepted;
     for (std::size_t left = keep_alive_max_count_; left > 0; --left) {
         if (!stream.has_buffered_bytes() && !next_request_arrives(socket, idle_since, milliseconds(keep_alive_timeout_sec_ * 1000),
                                                                   svr_sock_, waiting_connections_))
             break;
-        stream.start_request();
+        stream.start_request(left == keep_alive_max_count_ ? accepted : std::chrono::steady_clock::now());
         bool connection_closed = false;
         served = process_request(stream, left == 1, connection_closed, parsed);
         if (!served || connection_closed || stream.limit_reached() || stream.answer_closes()) break;
         idle_since = std::chrono::steady_clock::now();
     }
     stream_of_this_thread = nullptr;
-    if (stream.limit_reached() || stream.answer_closes()) linger_before_close(socket);
+    if (stream.limit_reached() || stream.answer_closes()) linger_before_close(socket, waiting_connections_);
     ::shutdown(socket, SHUT_RDWR);
     ::close(socket);
     return served;

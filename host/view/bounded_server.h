@@ -8,6 +8,11 @@
 //   - ends a request that has not arrived whole within kRequestSeconds of its first byte, or
 //     that stops arriving (no byte for the read timeout), answering 408 (cpp-httplib answered
 //     a stall with a bare 400);
+//   - ends a request whose head has not arrived within kHeadWhileOthersWait (from the
+//     connection's acceptance, or from the request's first byte on a kept-alive connection)
+//     while other connections wait for a thread, answering 408: a client that trickles its
+//     head held a thread for the whole kRequestSeconds, and 64 of them kept every other
+//     client waiting 20 s;
 //   - ends an answer that the client has not taken within kAnswerSeconds;
 //   - closes the connection after an answer to a request whose body it did not read, since
 //     cpp-httplib would take that body for the next request;
@@ -41,8 +46,13 @@ constexpr std::size_t kMostHeadBytes = 64 * 1024;
 constexpr int kRequestSeconds = 10;
 // Longest an answer may take to leave, from its first byte.
 constexpr int kAnswerSeconds = 60;
-// Longest a connection keeps its thread without starting a request while others wait for one.
+// Longest a connection keeps its thread without starting a request while others wait for one,
+// and longest a refused one lingers before it closes (a second otherwise) while others wait.
 constexpr std::chrono::milliseconds kIdleWhileOthersWait{100};
+// Longest a request's head may take to arrive while other connections wait for a thread. A
+// client sends its head at once (the page's are a few hundred bytes); one that takes longer
+// is slow or trickling, and others are waiting.
+constexpr std::chrono::milliseconds kHeadWhileOthersWait{1000};
 
 // The length a request's body says it has: 0 without a Content-Length, nullopt where the
 // header is given twice or is not a plain number.
@@ -56,12 +66,16 @@ public:
     // request still arriving is dropped, and an answer still leaving given up, at once (within
     // 50 ms), not waited for.
     // `answer_headers` are header lines ("Name: value\r\n" each) that its own refusals carry
-    // (BoundedServer::set_answer_headers()).
+    // (BoundedServer::set_answer_headers()). `others_waiting` counts the connections waiting
+    // for a thread.
     RequestStream(int socket, std::chrono::milliseconds read_timeout, std::chrono::milliseconds write_timeout,
-                  std::size_t most_body_bytes, const std::atomic<socket_t>& serving, const std::string& answer_headers);
+                  std::size_t most_body_bytes, const std::atomic<socket_t>& serving, const std::string& answer_headers,
+                  const std::atomic<std::size_t>& others_waiting);
 
-    // The next request starts: its limits count from here.
-    void start_request();
+    // The next request starts: its limits count from here, but its head's from `head_since`
+    // (the connection's acceptance for its first request: the time it waited for a thread
+    // counts, as its bytes were arriving meanwhile).
+    void start_request(std::chrono::steady_clock::time_point head_since);
     // Whether a limit ended the request (the client got 431 or 408 and the connection closes).
     bool limit_reached() const { return limit_reached_; }
     // Whether bytes that arrived are not read yet (a next request sent with the last one).
@@ -94,8 +108,9 @@ private:
     // Waits for the request's next bytes and reads them into the buffer: their count, 0 at the
     // client's end, -1 when the server stops or a limit ended the request (408).
     ssize_t fill_buffer();
-    // Why a request is answered 408: its deadline passed, or no byte came for the read timeout.
-    enum class Late { Deadline, Stalled };
+    // Why a request is answered 408: its deadline passed, no byte came for the read timeout,
+    // or its head took kHeadWhileOthersWait while others waited.
+    enum class Late { Deadline, Stalled, HeadWhileOthersWait };
     // The first limit that a request, whose next bytes are waited for since `waiting_since`,
     // meets, and why it is one.
     std::pair<Clock::time_point, Late> next_limit(Clock::time_point waiting_since) const;
@@ -117,10 +132,12 @@ private:
     std::size_t most_body_bytes_;
     const std::atomic<socket_t>& serving_;
     const std::string& answer_headers_;
+    const std::atomic<std::size_t>& others_waiting_;
     char buffer_[4096];
     std::size_t buffered_ = 0, buffer_at_ = 0;
     // This request's progress.
     Clock::time_point request_deadline_, answer_deadline_;
+    Clock::time_point head_since_;
     bool answering_ = false;
     std::size_t head_bytes_ = 0, body_bytes_ = 0;
     bool head_parsed_ = false;
