@@ -1,5 +1,6 @@
 #include "view/view_parameters.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +9,7 @@
 #include "core/printable_text.h"
 #include "scene/limits.h"
 #include "scene/scene.h"
+#include "view/query_tokens.h"
 
 namespace clr {
 namespace {
@@ -58,7 +60,32 @@ std::optional<int> read_whole(const QueryParameters& query, const std::string& n
     return std::stoi(significant);
 }
 
+// "a, b and c".
+std::string listed(const std::vector<std::string>& names) {
+    std::string text;
+    for (std::size_t k = 0; k < names.size(); ++k)
+        text += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+    return text;
+}
+
 }  // namespace
+
+QueryParameters query_parameters(const std::string& target, const std::vector<std::string>& known) {
+    QueryParameters parameters;
+    for (const QueryPair& pair : query_pairs_as_sent(target)) {
+        if (pair.name == "token") continue;
+        const std::string name = printable(shortened(pair.name, 40));  // as a message shows it
+        if (std::find(known.begin(), known.end(), pair.name) == known.end())
+            throw ParameterError(name, "unknown parameter " + shown(pair.name) + "; this address reads " +
+                                           (known.empty() ? "only token" : listed(known) + " (and token)"));
+        if (pair.equals_in_value)
+            throw ParameterError(name, name + " has a '=' in its value as sent (" + shown(pair.value) +
+                                           "): a value is one, and a '=' in it is written %3D");
+        if (parameters.count(pair.name) > 0) throw ParameterError(name, name + " is given more than once");
+        parameters.emplace(pair.name, pair.value);
+    }
+    return parameters;
+}
 
 std::optional<double> parse_plain_number(const std::string& text) {
     static const std::regex plain(R"([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)");

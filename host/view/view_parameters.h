@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/vec3.h"
 
@@ -25,8 +26,15 @@ private:
     std::string parameter_;
 };
 
-// The query as cpp-httplib gives it: every name=value pair, decoded, names repeatable.
+// A query's name=value pairs, decoded (query_parameters() gives each name once).
 using QueryParameters = std::multimap<std::string, std::string>;
+
+// The parameters of the query of `target` (a request's target as sent, "/frame.png?eye=..."),
+// token= aside (the guard checks it): each named in `known`, given once, with no '=' in its
+// value as sent. Throws ParameterError naming the first that is not: cpp-httplib's own parse
+// (Request::params) ignored a name it did not know (a typo, sise=4x4, rendered the scene's
+// size), took a pair given twice alike as one, and kept what followed a value's last '='.
+QueryParameters query_parameters(const std::string& target, const std::vector<std::string>& known);
 
 struct ViewQuery {
     std::optional<Vec3> eye, lookat, up;
@@ -40,8 +48,8 @@ struct PixelQuery {
     int x = 0, y = 0;  // column and row from the top-left
 };
 
-// Reads the camera parameters; names it does not know (token, a cache-busting counter) are
-// left alone. Throws ParameterError naming the parameter.
+// Reads the camera parameters; names it does not know are left alone (query_parameters()
+// refuses them). Throws ParameterError naming the parameter.
 ViewQuery parse_view_query(const QueryParameters& query);
 
 // Reads x= and y= (both required, whole numbers from 0). Throws ParameterError.

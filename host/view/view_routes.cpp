@@ -110,6 +110,14 @@ std::string page_with_token(std::string page, const std::string& token) {
     return page;
 }
 
+// The query parameters each route takes, token= aside (/camera.json takes a frame's and reads
+// only frame=): any other is refused (query_parameters()).
+const std::vector<std::string> kNoParameters;
+const std::vector<std::string> kPageParameters = {"channel"};  // read by the page itself (viewer.js)
+const std::vector<std::string> kFrameParameters = {"eye", "lookat", "up", "fov", "size", "spp", "frame"};
+const std::vector<std::string> kExplainParameters = {"eye", "lookat", "up", "fov", "size", "spp", "frame", "x", "y"};
+const std::vector<std::string> kJobParameters = {"id"};
+
 // Routes are patterns: the name's dots must match only dots.
 std::string asset_pattern(const std::string& path) {
     std::string pattern = "/";
@@ -122,8 +130,12 @@ void add_assets(httplib::Server& server, const std::string& token) {
         const std::string path = asset.path;
         const std::string content = path == "index.html" ? page_with_token(std::string(asset.content()), token)
                                                          : std::string(asset.content());
-        const auto serve = [content, path](const Request&, Response& response) {
-            response.set_content(content, content_type_of(path));
+        const std::vector<std::string>& known = path == "index.html" ? kPageParameters : kNoParameters;
+        const auto serve = [content, path, &known](const Request& request, Response& response) {
+            answer(response, [&] {
+                (void)query_parameters(request.target, known);
+                response.set_content(content, content_type_of(path));
+            });
         };
         server.Get(asset_pattern(path), serve);
         if (path == "index.html") server.Get("/", serve);
@@ -153,8 +165,8 @@ std::function<bool()> abandonment_of(const Request& request) {
     };
 }
 
-ViewCamera camera_of(const ViewSession& session, const Request& request) {
-    const ViewQuery query = parse_view_query(request.params);
+ViewCamera camera_of(const ViewSession& session, const QueryParameters& parameters) {
+    const ViewQuery query = parse_view_query(parameters);
     const ViewCamera view = resolve_view_camera(session.scene, query);
     check_render_cost(session.scene, view, query);
     return view;
@@ -186,7 +198,7 @@ void send_held(Response& response, std::shared_ptr<const std::vector<std::uint8_
 void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.png", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            const ViewCamera view = camera_of(session, request);
+            const ViewCamera view = camera_of(session, query_parameters(request.target, kFrameParameters));
             std::shared_ptr<const void> hold = hold_for_frame(session, view);
             Image frame = session.renderer.render(view, abandonment_of(request));
             auto png = std::make_shared<const std::vector<std::uint8_t>>(png_bytes(frame));
@@ -197,7 +209,7 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     // The live channel: raw RGBA rows, top row first, no encoding on either side.
     server.Get("/frame\\.rgba", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            const ViewCamera view = camera_of(session, request);
+            const ViewCamera view = camera_of(session, query_parameters(request.target, kFrameParameters));
             std::shared_ptr<const void> hold = hold_for_frame(session, view);
             Image frame = session.renderer.render(view, abandonment_of(request));
             response.set_header("X-Width", std::to_string(frame.width));
@@ -208,8 +220,9 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
     });
     server.Get("/explain", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            const ViewCamera view = camera_of(session, request);
-            const PixelQuery pixel = parse_pixel_query(request.params);
+            const QueryParameters parameters = query_parameters(request.target, kExplainParameters);
+            const ViewCamera view = camera_of(session, parameters);
+            const PixelQuery pixel = parse_pixel_query(parameters);
             if (pixel.x >= view.width)
                 throw ParameterError("x", "x " + std::to_string(pixel.x) + " is outside the " + std::to_string(view.width) +
                                               "-pixel-wide frame (0 to " + std::to_string(view.width - 1) + ")");
@@ -220,20 +233,24 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
                                  "text/plain; charset=utf-8");
         });
     });
-    server.Get("/scene\\.json", [&session](const Request&, Response& response) {
-        // Sent from the text made at start, in pieces: made for each request, 8 at once of a
-        // path of a million keys took the viewer to 14 GB.
-        const std::shared_ptr<const std::string> summary = session.scene_summary;
-        response.set_content_provider(summary->size(), "application/json",
-                                      [summary](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-                                          return sink.write(summary->data() + offset, length);
-                                      });
+    server.Get("/scene\\.json", [&session](const Request& request, Response& response) {
+        answer(response, [&] {
+            (void)query_parameters(request.target, kNoParameters);
+            // Sent from the text made at start, in pieces: made for each request, 8 at once of a
+            // path of a million keys took the viewer to 14 GB.
+            const std::shared_ptr<const std::string> summary = session.scene_summary;
+            response.set_content_provider(summary->size(), "application/json",
+                                          [summary](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                              return sink.write(summary->data() + offset, length);
+                                          });
+        });
     });
     server.Get("/camera\\.json", [&session](const Request& request, Response& response) {
         answer(response, [&] {
-            // Only frame= counts, and only it is read: the answer is the frame's own camera,
-            // checked as /frame.png's; the page's other parameters (eye=, size=) are not its.
-            const auto [first, last] = request.params.equal_range("frame");
+            // Only frame= is read: the answer is the frame's own camera, checked as /frame.png's.
+            // The frame's other parameters (eye=, size=: a frame's query) are taken and not read.
+            const QueryParameters parameters = query_parameters(request.target, kFrameParameters);
+            const auto [first, last] = parameters.equal_range("frame");
             ViewQuery frame_only;
             frame_only.frame = parse_view_query(QueryParameters(first, last)).frame;
             const ViewCamera view = resolve_view_camera(session.scene, frame_only);
@@ -245,6 +262,7 @@ void add_frame_routes(httplib::Server& server, ViewSession& session) {
 void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/export", [&session](const Request& request, Response& response) {
         answer(response, [&] {
+            (void)query_parameters(request.target, kNoParameters);
             ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
             // Names are for the reader: escaped as clrender's messages escape them (shown_name).
             // The text is moved, not copied, into the answer: it may be as large as the scene.
@@ -254,6 +272,7 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {
         answer(response, [&] {
+            (void)query_parameters(request.target, kNoParameters);
             const CameraKeysRequest keys = parse_camera_keys(request.body);
             // A video moves from key to key: one key is a still, whose render would fail after
             // its scene was written. Refused before anything is written.
@@ -280,12 +299,13 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
         answer(response, [&] {
             // A job's number as /render-video gave it: 1.5 or 1e0 names no job.
             static const std::regex whole(R"([1-9][0-9]{0,8})");
-            const auto id_text = request.params.find("id");
-            if (id_text != request.params.end() && !std::regex_match(id_text->second, whole))
+            const QueryParameters parameters = query_parameters(request.target, kJobParameters);
+            const auto id_text = parameters.find("id");
+            if (id_text != parameters.end() && !std::regex_match(id_text->second, whole))
                 throw ParameterError("id", "id must be a job number as /render-video answered it (1, 2, ...)");
             // Without an id, the session's last job: a page loaded again while a video renders
             // (whose own number it has lost) follows it.
-            const std::optional<VideoJobState> job = id_text == request.params.end()
+            const std::optional<VideoJobState> job = id_text == parameters.end()
                                                          ? session.videos.latest()
                                                          : session.videos.state(std::stoi(id_text->second));
             if (!job) {

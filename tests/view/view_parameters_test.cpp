@@ -126,6 +126,38 @@ TEST(ViewParameters, ARepeatedParameterIsRefused) {
     EXPECT_THROW(parse_view_query({{"eye", "0,0,1"}, {"eye", "0,0,2"}}), ParameterError);
 }
 
+// The parameter that query_parameters() refuses in `target`, or "" when it takes the query.
+std::string refused_in_query(const std::string& target, const std::vector<std::string>& known) {
+    try {
+        (void)query_parameters(target, known);
+        return "";
+    } catch (const ParameterError& error) {
+        return error.parameter();
+    }
+}
+
+// The query is read as sent: cpp-httplib's parse merged a pair given twice alike, kept what
+// followed a value's last '=', decoded %uXXXX, and a route never heard of a name it ignored.
+TEST(ViewParameters, AQueryIsReadAsSent) {
+    const std::vector<std::string> frame = {"eye", "size", "spp"};
+    EXPECT_EQ(refused_in_query("/f?spp=4&spp=4", frame), "spp");
+    EXPECT_EQ(refused_in_query("/f?spp=4&sp%70=4", frame), "spp") << "a name however encoded";
+    EXPECT_EQ(refused_in_query("/f?eye=9,9,9=0,1,2", frame), "eye");
+    EXPECT_EQ(refused_in_query("/f?size=2x2=3", frame), "size");
+    EXPECT_EQ(refused_in_query("/f?sise=4x4", frame), "sise");
+    EXPECT_THROW(query_parameters("/f?=4", frame), ParameterError) << "a value without a name";
+    EXPECT_EQ(refused_in_query("/f?x", {}), "x");
+    EXPECT_EQ(refused_in_query("/f?token=T&token=T&spp=1", frame), "") << "the guard's to refuse";
+
+    const QueryParameters read =
+        query_parameters("/f?eye=0%2C1.5%2C14&&size=%u0034x4&token=T&spp=1+2&", {"eye", "size", "spp"});
+    EXPECT_EQ(read, (QueryParameters{{"eye", "0,1.5,14"}, {"size", "%u0034x4"}, {"spp", "1 2"}}));
+    EXPECT_EQ(query_parameters("/f?eye=%3D%zz%4", {"eye"}), (QueryParameters{{"eye", "=%zz%4"}}));
+    EXPECT_EQ(query_parameters("/f?eye", {"eye"}), (QueryParameters{{"eye", ""}}));
+    EXPECT_TRUE(query_parameters("/f", {}).empty());
+    EXPECT_TRUE(query_parameters("/f?", {}).empty());
+}
+
 TEST(ViewParameters, PixelNeedsBothCoordinates) {
     EXPECT_EQ(parse_pixel_query({{"x", "3"}, {"y", "7"}}).y, 7);
     EXPECT_THROW(parse_pixel_query({{"x", "3"}}), ParameterError);

@@ -613,6 +613,61 @@ TEST_F(ViewSecurity, OnlyOneWholeTokenOpens) {
     EXPECT_EQ(client->Get(("/scene.json?token=" + token).c_str())->status, 200);
 }
 
+// A query is read as sent, route by route: a parameter the route does not read (a typo, which
+// rendered the scene's size), one given twice even alike, or a value with a '=' in it (whose
+// last part was taken) is 400 naming it; %uXXXX is not decoded. Every query the page sends
+// (URLSearchParams writes ',' as %2C) is still served.
+TEST_F(ViewSecurity, AQueryIsReadAsSentEachParameterOnceAndKnown) {
+    auto client = viewer_->client();
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"/frame.png?sise=4x4&sp=9999", "sise"},
+        {"/frame.rgba?spp=4&spp=4", "spp"},
+        {"/frame.png?eye=0,1.5,14&eye=0,1.5,14", "eye"},
+        {"/frame.png?eye=garbage=0,1.5,14", "eye"},
+        {"/frame.png?eye=9,9,9=0,1.5,14", "eye"},
+        {"/frame.png?size=2x2=3", "size"},
+        {"/frame.png?fov=%u0034%u0035", "fov"},
+        {"/explain?x=1&y=1&x=1", "x"},
+        {"/explain?x=1&y=1&z=1", "z"},
+        {"/camera.json?frame=1&frame=1", "frame"},
+        {"/camera.json?frame=1&sise=4x4", "sise"},
+        {"/job?id=1&id=2", "id"},
+        {"/job?id=1=2", "id"},
+        {"/job?job=1", "job"},
+        {"/scene.json?frame=1", "frame"},
+        {"/?chanel=png", "chanel"},
+        {"/?channel=png&channel=rgba", "channel"},
+        {"/viewer.js?v=2", "v"},
+    };
+    for (const auto& [target, parameter] : refused) {
+        const httplib::Result result = client->Get(viewer_->with_token(target).c_str());
+        ASSERT_TRUE(result) << target;
+        EXPECT_EQ(result->status, 400) << target << ": " << result->body;
+        EXPECT_NE(result->body.find("\"parameter\":\"" + parameter + "\""), std::string::npos)
+            << target << ": " << result->body;
+    }
+    const httplib::Headers origin = {{"Origin", own_origin()}};
+    const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "query_check"})";
+    const httplib::Result post =
+        client->Post(viewer_->with_token("/export?name=other").c_str(), origin, body, "application/json");
+    ASSERT_TRUE(post);
+    EXPECT_EQ(post->status, 400) << post->body;
+    EXPECT_NE(post->body.find("\"parameter\":\"name\""), std::string::npos) << post->body;
+    EXPECT_FALSE(fs::exists(folder_->file("query_check.json")));
+
+    const std::string still = "up=0%2C1%2C0&fov=45&size=8x8&spp=1";  // as the page writes it
+    const std::vector<std::string> served = {
+        "/?channel=png", "/index.html?channel=rgba", "/viewer.js", "/scene.json",
+        "/frame.png?eye=0%2C1.5%2C14&lookat=0%2C1%2C0&" + still, "/frame.rgba?frame=0&" + still,
+        "/explain?x=0&y=0&" + still, "/camera.json?frame=0", "/camera.json?frame=0&eye=nan",
+        "/frame.png?fov=4%35&size=8x8&&spp=1&"};
+    for (const std::string& target : served) {
+        const httplib::Result result = client->Get(viewer_->with_token(target).c_str());
+        ASSERT_TRUE(result) << target;
+        EXPECT_EQ(result->status, 200) << target << ": " << result->body;
+    }
+}
+
 // A client that half-closes after its request (as `nc -N` does) looks gone to the server, which
 // cannot tell its FIN from a close: a frame of one band is answered all the same, since nobody
 // looks before its first band ends, and a small explanation is answered as that frame is.
