@@ -238,8 +238,14 @@ bool is_obj_statement(std::string_view keyword) {
     return false;
 }
 
-// The statement of a line: the text before a '#', which starts a comment ("f 1 2 3 # tri").
-std::string_view statement_of(std::string_view line) { return line.substr(0, line.find('#')); }
+// The statement of a line: the text before a '#' that starts a word ("f 1 2 3 # tri"), which
+// starts a comment. A '#' inside a word is part of it: old MSVC runtimes write infinity and NaN
+// as "1.#INF" and "-1.#IND", which cut at the '#' were read as 1 and -1 and drawn so.
+std::string_view statement_of(std::string_view line) {
+    for (std::size_t at = line.find('#'); at != std::string_view::npos; at = line.find('#', at + 1))
+        if (at == 0 || is_blank(line[at - 1])) return line.substr(0, at);
+    return line;
+}
 
 // Statements of numbers only, whose trailing comment tinyobjloader would read as one more
 // corner (a zero index, refused) or number: it gets them without the comment. Names (`usemtl`,

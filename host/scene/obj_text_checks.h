@@ -56,8 +56,9 @@ struct ObjTextProblem {
     std::string detail;
 };
 
-// Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#', which starts a comment;
-// numbers and indices may carry a '+' sign): coordinates are finite numbers within
+// Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#' at the start of a word,
+// which starts a comment: one inside a word, "1.#INF", is part of the number; numbers and
+// indices may carry a '+' sign): coordinates are finite numbers within
 // clrender's coordinate range, of at most 64 characters and a decimal exponent of at most 300
 // in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has from three to
 // kMaxFaceCorners corners, each naming a position (and optionally a texture coordinate and a

@@ -137,8 +137,8 @@ TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
     TempFolder folder;
     folder.write("m.mtl", "newmtl red\nKd +1 0 +0.25 # red\n");
     const ObjMesh mesh = read_obj(folder.write(
-        "mesh.obj", "mtllib m.mtl\nv +1 0 0 # first\nv 0 +2.5 0\nv 0 0 +1e+1\nv 1 1 1#tight\n"
-                    "vn 0 0 +1 # up\nvt 0.5 +0.5 # uv\nusemtl red\nf 1//1 2//1 3//1 # tri\nf +1 +2 +4#tight\n"));
+        "mesh.obj", "mtllib m.mtl\nv +1 0 0 # first\nv 0 +2.5 0\nv 0 0 +1e+1\nv 1 1 1\t#tab\n"
+                    "vn 0 0 +1 # up\nvt 0.5 +0.5 # uv\nusemtl red\nf 1//1 2//1 3//1 # tri\nf +1 +2 +4 #\n"));
     ASSERT_EQ(mesh.positions.size(), 4u);
     EXPECT_EQ(mesh.positions[0], (Vec3{1, 0, 0}));
     EXPECT_EQ(mesh.positions[1], (Vec3{0, 2.5, 0}));
@@ -156,6 +156,38 @@ TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
     EXPECT_EQ(error_for("v + 0 0\n"), "line 1: 'v': '+' is not a finite number");
     EXPECT_EQ(error_for(kSquare + "f 1 2 +-3\n"), "line 5: corner 3: '+-3' is not a position index");
     EXPECT_EQ(error_for(kSquare + "f 1 2 +9\n"), "line 5: corner 3: position index 9 is out of range: the file has 4");
+}
+
+// A '#' starts a comment only at the start of a word: old MSVC runtimes write infinity and NaN
+// as "1.#INF", "-1.#IND00" and "1.#QNAN", which cut at the '#' were read as 1 and -1 and drawn
+// so, without a word. Such a number, and any word with a '#' inside, is refused at its line.
+TEST(ObjReader, AHashInsideAWordIsPartOfIt) {
+    EXPECT_EQ(error_for("v -1 -1 0\nv 1 -1 0\nv 1 1 1.#INF\nf 1 2 3\n"),
+              "line 3: 'v': '1.#INF' is not a finite number");
+    EXPECT_EQ(error_for("v 1 1 -1.#IND00\n"), "line 1: 'v': '-1.#IND00' is not a finite number");
+    EXPECT_EQ(error_for("v 1 1 1#junk\n"), "line 1: 'v': '1#junk' is not a finite number");
+    EXPECT_EQ(error_for("v 0 0 0 1.#QNAN0\n"), "line 1: 'v': '1.#QNAN0' is not a finite number");  // a weight
+    EXPECT_EQ(error_for("v 0 0 0\nvn 0 0 -1.#QNAN\n"), "line 2: 'vn': '-1.#QNAN' is not a finite number");
+    // Cut at the first '#', this line had one number ("needs 3 numbers, the line has 1").
+    EXPECT_EQ(error_for("v 0 0 0\nvn -1.#IND -1.#IND -1.#IND\n"), "line 2: 'vn': '-1.#IND' is not a finite number");
+    EXPECT_EQ(error_for("vt 0.5 1.#INF\n"), "line 1: 'vt': '1.#INF' is not a finite number");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 3#tri\n"), "line 5: corner 3: '3#tri' is not a position index");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 4//1#n\n"), "line 5: corner 3: '1#n' is not a normal index");
+    EXPECT_EQ(error_for("v#1 0 0 0\n"), "");  // no statement: an unknown word, which a warning names
+    const auto mtl_error = [](const std::string& colour) {
+        TempFolder folder;
+        folder.write("m.mtl", "newmtl blue\n" + colour + "\n");
+        try {
+            read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"));
+        } catch (const ObjError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(mtl_error("Kd 0 0 1.#INF00"), "line 1: mtllib m.mtl: line 2: 'Kd': '1.#INF00' is not a finite number");
+    EXPECT_EQ(mtl_error("Kd 0.2 0.3 -1.#IND00"),
+              "line 1: mtllib m.mtl: line 2: 'Kd': '-1.#IND00' is not a finite number");
+    EXPECT_EQ(mtl_error("Kd 0 0 1 # blue"), "");
 }
 
 TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
