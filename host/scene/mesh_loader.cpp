@@ -339,21 +339,13 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const std::vector<s
     scene.meshes.push_back(std::move(mesh));
 }
 
-// The model a mesh's file gives, by what its read depends on: the OBJ's identity (device and
-// inode) and that of the folder its relative `mtllib` names start from, each as the name
-// reaches it. "m.obj", "d/../m.obj" and a link beside m.obj name one model, read once (each
-// spelling read it again: 20 of a 100 MB OBJ took 20 reads); a link from another folder reads
-// its .mtl files from there, so it is another model. A name stat() cannot follow keeps its own
-// key, and its read says why.
-using ModelKey = std::tuple<dev_t, ino_t, dev_t, ino_t, std::string>;
+// The model a mesh's file gives, by what its read depends on (file_in_folder_key): "m.obj",
+// "d/../m.obj" and a link beside m.obj name one model, read once (each spelling read it again:
+// 20 of a 100 MB OBJ took 20 reads); a link from another folder reads its .mtl files from
+// there, so it is another model.
+using ModelKey = FileInFolderKey;
 
-ModelKey model_key(const std::string& path) {
-    struct stat file {}, folder {};
-    const std::string parent = fs::path(path).parent_path().string();
-    if (::stat(path.c_str(), &file) != 0 || ::stat(parent.empty() ? "." : parent.c_str(), &folder) != 0)
-        return {0, 0, 0, 0, path};
-    return {file.st_dev, file.st_ino, folder.st_dev, folder.st_ino, ""};
-}
+ModelKey model_key(const std::string& path) { return file_in_folder_key(path); }
 
 }  // namespace
 
