@@ -398,15 +398,17 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     // models are): 500 OBJ files naming one library of 10,000 materials list its textures once.
     std::set<ModelKey> textures_listed;
     std::set<std::string> texture_paths;
-    const auto list_textures = [&](const std::vector<std::string>& material_files) {
-        // An OBJ that fails may name any number of .mtl files (all of them inputs): the textures
-        // of as many as an OBJ may read, no more, so that a broken file costs no more reads
-        // than a good one.
+    // Returns why the textures could not all be listed ("" when they are): the run may not go
+    // on with a model's files that it could not keep safe from its outputs.
+    const auto list_textures = [&](const std::vector<std::string>& material_files) -> std::string {
+        // The textures of as many .mtl files as an OBJ may read, no more, so that a broken file
+        // costs no more reads than a good one; past them the list is not complete.
         std::size_t files_read = 0;
         for (const std::string& material : material_files) {
-            if (files_read == kMaxMtlFiles) break;
             if (!textures_listed.insert(model_key(material)).second) continue;
-            ++files_read;
+            if (files_read++ == kMaxMtlFiles)
+                return "its .mtl files, told apart with their folders, number more than " +
+                       std::to_string(kMaxMtlFiles);
             const fs::path folder = fs::path(material).parent_path();
             // Held here: the library may keep no other reference (a file it could not read),
             // and a loop over a member of the returned temporary read it after it was freed.
@@ -415,7 +417,14 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
                 std::string texture = path_in_folder(folder, name);  // "./wood.png" is "wood.png"
                 if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
             }
+            if (read->texture_files_cut)
+                return "its .mtl '" + printable(material) + "' names textures past its first " +
+                       std::to_string(kMaxObjMaterials) + " materials";
         }
+        return "";
+    };
+    const auto unsafe = [](const std::string& why) {
+        return why + ", more than a run keeps as inputs that no output may replace";
     };
     // A file that cannot be read, for its later placements (a placeholder each, with
     // --placeholders): 40 placements of a broken 50 MB OBJ read it 40 times.
@@ -456,15 +465,20 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             if (used_again) failed.emplace(key, error);
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
+            // A cube stands in only for a model whose every .mtl and texture the run keeps as
+            // inputs: the list of 1,024 names left a later .mtl out, which an output replaced.
+            std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
+            if (!list) {
+                list = std::make_shared<const std::vector<std::string>>(error.material_files);
+                std::string unlisted = error.material_files_incomplete;
+                if (unlisted.empty()) unlisted = list_textures(*list);
+                if (!unlisted.empty())
+                    each.filename.fail(problem + "; no placeholder can stand in for it: " + unsafe(unlisted));
+            }
             each.filename.warn(problem + "; rendering a placeholder cube instead");
             read = Model{placeholder_cube(), {}};
             model = &read;
             mesh.placeholder = true;
-            std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
-            if (!list) {
-                list = std::make_shared<const std::vector<std::string>>(error.material_files);
-                list_textures(*list);
-            }
             mesh.material_paths = list;
             // A placement the cube cannot take must still say why there is a cube at all.
             what = "the placeholder cube for " + what + " (" + problem + ")";
@@ -478,7 +492,8 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
             if (!list) {
                 list = std::make_shared<const std::vector<std::string>>(model->mesh.material_files);
-                list_textures(*list);
+                if (const std::string unlisted = list_textures(*list); !unlisted.empty())
+                    each.filename.fail(what + ": " + unsafe(unlisted));
             }
             mesh.material_paths = list;
         }

@@ -24,7 +24,7 @@ MtlFileRead read_mtl_file(const std::string& path) {
     file.digest = sha256(text.data(), text.size());
     // Whatever is wrong with it: with --placeholders the run goes on with a cube in the model's
     // place, and an output must not replace the textures of the model it stands in for.
-    file.texture_files = mtl_texture_files(text);
+    file.texture_files = mtl_texture_files(text, &file.texture_files_cut);
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) {
         file.problem = encoding;
         return file;

@@ -57,6 +57,9 @@ struct MtlFileRead {
     // mtl_texture_files of the whole text, for any file read (also one whose materials cannot be
     // used): the files it names as textures, as written (relative to its folder, or absolute).
     std::vector<std::string> texture_files;
+    // Whether a texture statement of a material past kMaxObjMaterials is left out of
+    // `texture_files`: the list is not every texture of the file.
+    bool texture_files_cut = false;
     MtlMiscasedStatement miscased;                      // first_miscased_statement of the whole text
 };
 

@@ -527,7 +527,7 @@ MtlMaterials read_mtl_materials(const std::string& used, std::string& problem) {
     return read;
 }
 
-std::vector<std::string> mtl_texture_files(std::string_view text) {
+std::vector<std::string> mtl_texture_files(std::string_view text, bool* cut) {
     // Each statement LoadMtl reads a texture from, and the texture of the material it sets
     // (`map_bump`, `map_Bump` and `bump` set one, `map_disp`, `map_Disp` and `disp` another).
     static constexpr std::pair<std::string_view, int> kTextures[] = {
@@ -539,12 +539,15 @@ std::vector<std::string> mtl_texture_files(std::string_view text) {
     std::uint64_t material = 0;
     for_each_keyword(text, [&](std::uint64_t, std::string_view keyword, std::string_view line) {
         if (keyword == "newmtl") ++material;
-        // A file of more materials than an OBJ may have is refused; the textures of its first
-        // ones are still listed, and the list stays bounded (at most 13 names a material).
-        if (material > kMaxObjMaterials) return;
         const auto texture = std::find_if(std::begin(kTextures), std::end(kTextures),
                                           [&](const auto& statement) { return statement.first == keyword; });
         if (texture == std::end(kTextures)) return;
+        // A file of more materials than an OBJ may have is refused; the textures of its first
+        // ones are still listed, and the list stays bounded (at most 13 names a material).
+        if (material > kMaxObjMaterials) {
+            if (cut) *cut = true;
+            return;
+        }
         // The rest of the line, without the trailing blanks LoadMtl trims, read up to a NUL.
         std::string rest(line.substr(line.find(keyword) + keyword.size()));
         while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.pop_back();
@@ -595,13 +598,34 @@ void check_parse_memory(std::uint64_t text_bytes, const ObjTextCounts& counts, s
     }
 }
 
-// The path of every .mtl file the OBJ `text` names, each name once, whichever line the OBJ fails
-// at: they are the model's files, which no output may replace.
-std::vector<std::string> named_material_files(const std::string& text, const std::filesystem::path& folder) {
-    std::vector<std::string> paths;
-    for (const ObjLibraryName& library : material_library_names(text, kMaxMtlFiles))
-        paths.push_back(material_file_path(folder, library.name));
-    return paths;
+// Every .mtl file the OBJ `text` names, whichever line it fails at: they are the model's files,
+// which no output may replace. Each file once however many names reach it (its key, as the
+// output check compares files), in the order of first mention; `error` gets them, or why they
+// could not all be listed: more than kMaxMtlFiles files, or names past kMaxMtlNameBytes (a list
+// cut there left a later file unprotected, which an output then replaced).
+void list_named_material_files(const std::string& text, const std::filesystem::path& folder, ObjError& error) {
+    std::unordered_set<std::string> names;
+    std::uint64_t name_bytes = 0;
+    std::set<FileInFolderKey> files;
+    for_each_library_name(text, [&](std::uint64_t line, std::string name) {
+        if (names.count(name) > 0) return true;
+        name_bytes += name.size() + 64;  // with the set's node
+        if (name_bytes > kMaxMtlNameBytes) {
+            error.material_files_incomplete = "its mtllib names up to line " + std::to_string(line) +
+                                              " take more than " + std::to_string(kMaxMtlNameBytes >> 20) + " MiB";
+            return false;
+        }
+        std::string path = material_file_path(folder, name);
+        names.insert(std::move(name));
+        if (!files.insert(file_in_folder_key(path)).second) return true;
+        if (files.size() > kMaxMtlFiles) {
+            error.material_files_incomplete = "it names more than " + std::to_string(kMaxMtlFiles) +
+                                              " .mtl files (line " + std::to_string(line) + ")";
+            return false;
+        }
+        error.material_files.push_back(std::move(path));
+        return true;
+    });
 }
 
 }  // namespace
@@ -615,7 +639,8 @@ ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_
         MaterialFiles material_files(folder, library ? *library : own_library);
         return parse_checked(text, counts, material_files);
     } catch (ObjError& failure) {
-        failure.material_files = named_material_files(text, folder);
+        failure.material_files.clear();
+        list_named_material_files(text, folder, failure);
         throw;
     }
 }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -309,12 +308,13 @@ std::string obj_statements_used(std::string_view text) {
 
 namespace {
 
-// The names of an `mtllib` statement, as tinyobjloader cuts them: the text after "mtllib" and
-// one blank, cut at spaces, a backslash keeping the next character; empty names dropped.
-void add_library_names(std::string_view line, std::vector<std::string>& names,
-                       std::size_t most = std::numeric_limits<std::size_t>::max()) {
+// Calls `visit(name)` for each name of `mtllib` statement `line`, as tinyobjloader cuts them: the
+// text after "mtllib" and one blank, cut at spaces, a backslash keeping the next character;
+// empty names dropped. Stops when `visit` returns false, and then returns false.
+template <typename Visit>
+bool visit_library_names(std::string_view line, Visit&& visit) {
     const std::size_t at = line.find("mtllib") + 6;
-    if (at >= line.size()) return;  // "mtllib" alone
+    if (at >= line.size()) return true;  // "mtllib" alone
     std::string name;
     bool escaped = false;
     for (const char c : line.substr(at + 1)) {
@@ -323,15 +323,14 @@ void add_library_names(std::string_view line, std::vector<std::string>& names,
             continue;
         }
         if (!escaped && c == ' ') {
-            if (!name.empty()) names.push_back(name);
-            if (names.size() >= most) return;
+            if (!name.empty() && !visit(std::move(name))) return false;
             name.clear();
             continue;
         }
         escaped = false;
         name += c;
     }
-    if (!name.empty()) names.push_back(name);
+    return name.empty() || visit(std::move(name));
 }
 
 // The material name of a `usemtl` statement, as tinyobjloader reads it: its first word.
@@ -355,15 +354,13 @@ std::string whole_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
-// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet, of
-// its first `most` names.
+// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet.
 void add_new_library_names(std::string_view line, std::uint64_t number, std::unordered_set<std::string>& seen,
-                           std::vector<ObjLibraryName>& libraries,
-                           std::size_t most = std::numeric_limits<std::size_t>::max()) {
-    std::vector<std::string> names;
-    add_library_names(line, names, most);
-    for (std::string& name : names)
+                           std::vector<ObjLibraryName>& libraries) {
+    visit_library_names(line, [&](std::string name) {
         if (seen.insert(name).second) libraries.push_back({std::move(name), number});
+        return true;
+    });
 }
 
 }  // namespace
@@ -393,16 +390,11 @@ ObjMaterialStatements material_statements(std::string_view text) {
     return found;
 }
 
-std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most) {
-    std::vector<ObjLibraryName> found;
-    std::unordered_set<std::string> seen;
+void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit) {
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
-        // Of a line naming millions (a text that failed its checks has had no memory estimate), no more than needed.
-        if (keyword_of(line) == "mtllib") add_new_library_names(line, number, seen, found, most);
-        return found.size() < most;
+        if (keyword_of(line) != "mtllib") return true;
+        return visit_library_names(line, [&](std::string name) { return visit(number, std::move(name)); });
     });
-    if (found.size() > most) found.resize(most);
-    return found;
 }
 
 std::string mtl_statements_used(std::string_view text) {

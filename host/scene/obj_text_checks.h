@@ -133,9 +133,9 @@ struct ObjMaterialStatements {
 };
 ObjMaterialStatements material_statements(std::string_view text);
 
-// The `libraries` of material_statements alone, the first `most` of them, for a text that fails
-// its checks: the .mtl files it names stay inputs of the run however far it was read. A broken
-// file naming millions holds no more of them than a reader would read (kMaxMtlFiles).
-std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most);
+// Calls `visit(line_number, name)` for each name of each `mtllib` statement of `text`, as
+// material_statements cuts them, repeated ones included, one at a time: a text that fails its
+// checks has had no memory estimate, and may name millions. Stops when `visit` returns false.
+void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit);
 
 }  // namespace clr
