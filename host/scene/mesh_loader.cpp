@@ -400,7 +400,8 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     std::set<std::string> texture_paths;
     // Returns why the textures could not all be listed ("" when they are): the run may not go
     // on with a model's files that it could not keep safe from its outputs.
-    const auto list_textures = [&](const std::vector<std::string>& material_files) -> std::string {
+    const auto list_textures = [&](const std::vector<std::string>& material_files,
+                                   const Node& filename) -> std::string {
         // The textures of as many .mtl files as an OBJ may read, no more, so that a broken file
         // costs no more reads than a good one; past them the list is not complete.
         std::size_t files_read = 0;
@@ -412,7 +413,12 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             const fs::path folder = fs::path(material).parent_path();
             // Held here: the library may keep no other reference (a file it could not read),
             // and a loop over a member of the returned temporary read it after it was freed.
-            const auto read = materials.read(material);
+            std::shared_ptr<const MtlFileRead> read;
+            try {
+                read = materials.read(material);
+            } catch (const MeshMemoryError& error) {
+                fail_out_of_memory(filename, error.what());
+            }
             for (const std::string& name : read->texture_files) {
                 std::string texture = path_in_folder(folder, name);  // "./wood.png" is "wood.png"
                 if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
@@ -471,7 +477,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             if (!list) {
                 list = std::make_shared<const std::vector<std::string>>(error.material_files);
                 std::string unlisted = error.material_files_incomplete;
-                if (unlisted.empty()) unlisted = list_textures(*list);
+                if (unlisted.empty()) unlisted = list_textures(*list, each.filename);
                 if (!unlisted.empty())
                     each.filename.fail(problem + "; no placeholder can stand in for it: " + unsafe(unlisted));
             }
@@ -492,7 +498,7 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
             if (!list) {
                 list = std::make_shared<const std::vector<std::string>>(model->mesh.material_files);
-                if (const std::string unlisted = list_textures(*list); !unlisted.empty())
+                if (const std::string unlisted = list_textures(*list, each.filename); !unlisted.empty())
                     each.filename.fail(what + ": " + unsafe(unlisted));
             }
             mesh.material_paths = list;

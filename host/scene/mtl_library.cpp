@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/obj_reader.h"
 #include "scene/obj_text_checks.h"
@@ -50,17 +51,28 @@ std::uint64_t bytes_held(const MtlFileRead& file) {
     return bytes;
 }
 
+// `bytes` in whole MiB, rounded up, for messages.
+std::string mib_text(std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+
 }  // namespace
 
 std::shared_ptr<const MtlFileRead> MtlLibrary::read(const std::string& path) {
     struct stat info {};
-    if (::stat(path.c_str(), &info) != 0)
+    if (::stat(path.c_str(), &info) != 0) {
+        ++files_parsed_;
         return std::make_shared<const MtlFileRead>(read_mtl_file(path));  // its read names why
+    }
     const std::pair<dev_t, ino_t> identity{info.st_dev, info.st_ino};
     if (const auto known = kept_.find(identity); known != kept_.end()) return known->second;
+    ++files_parsed_;
     auto file = std::make_shared<const MtlFileRead>(read_mtl_file(path));
     const std::uint64_t bytes = bytes_held(*file);
-    if (kept_bytes_ + bytes > kMostKeptBytes) return file;
+    if (kept_bytes_ + bytes > most_held_bytes_) {
+        throw MeshMemoryError("the .mtl '" + printable(path) + "' takes about " + mib_text(bytes) +
+                              " to hold once read (its material names and texture statements), which brings the "
+                              ".mtl files the scene holds past the " + mib_text(most_held_bytes_) +
+                              " they may take (docs/robustness.md, Memory)");
+    }
     kept_bytes_ += bytes;
     kept_.emplace(identity, file);
     return file;

@@ -303,6 +303,50 @@ TEST(ObjReader, ObjFilesSharingALibraryCombineItsFilesInTheirOwnOrder) {
     }
 }
 
+// A .mtl is read and parsed once for all the OBJ files of a scene, however large its parsed
+// form: one of 10,000 long material names, each with a texture (about 67 MiB held), was past the
+// 64 MiB the library kept, and each OBJ naming it read and parsed it again (30 small OBJ files
+// took 11 s, 1,000 would take minutes). Counted in parses, not seconds.
+TEST(ObjReader, ALargeLibraryIsParsedOnceForAllTheObjFilesNamingIt) {
+    TempFolder folder;
+    const std::string long_name(1640, 'q');
+    std::string text;
+    for (int m = 0; m < 10000; ++m) text += "newmtl m" + std::to_string(100000 + m) + long_name + "\nmap_Kd t\n";
+    ASSERT_LE(text.size(), kMaxMtlFileBytes);
+    folder.write("large.mtl", text);
+    MtlLibrary library;
+    for (int i = 0; i < 3; ++i) {
+        const std::string obj =
+            folder.write("part" + std::to_string(i) + ".obj", "mtllib large.mtl\n" + kSquare + "f 1 2 3\n");
+        EXPECT_EQ(parse_obj(testing::read_bytes(obj), obj, UINT64_MAX, &library).faces, 1u);
+    }
+    EXPECT_EQ(library.files_parsed(), 1u);
+}
+
+// What the library keeps is bounded: a .mtl that would take the files it holds past its bound
+// is refused as out of memory, naming the file (exit 6 at the mesh's filename), and the files
+// kept stay kept.
+TEST(ObjReader, LibrariesPastTheirBoundEndTheRunNamingTheFile) {
+    TempFolder folder;
+    const std::string small = folder.write("small.mtl", "newmtl red\nKd 1 0 0\n");
+    std::string text;
+    for (int m = 0; m < 5000; ++m) text += "newmtl a_material_with_a_rather_long_name_" + std::to_string(m) + "\n";
+    const std::string large = folder.write("large.mtl", text);
+    MtlLibrary library(std::uint64_t(1) << 20);
+    library.read(small);
+    try {
+        library.read(large);
+        ADD_FAILURE() << "read past the bound";
+    } catch (const MeshMemoryError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "the .mtl '" + large + "' takes about 2 MiB to hold once read (its material names and texture "
+                  "statements), which brings the .mtl files the scene holds past the 1 MiB they may take "
+                  "(docs/robustness.md, Memory)");
+    }
+    library.read(small);
+    EXPECT_EQ(library.files_parsed(), 2u);
+}
+
 // A usemtl that names no material is a warning with its line (tinyobjloader's own says
 // neither file nor line), counting the others; a name it finds is none.
 TEST(ObjReader, AMaterialThatNoMtlDefinesIsAWarning) {
