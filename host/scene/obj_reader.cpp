@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string_view>
 #include <unordered_set>
+#include <utility>
 
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
@@ -236,19 +237,43 @@ Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The text checks keep tinyobjloader's arithmetic finite; this keeps a number it still reads
-// differently from reaching the scene as NaN or a coordinate beyond the range.
-void check_values_read(const ObjMesh& mesh) {
+// The line (from 1) of statement `keyword` number `index` (from 0) of `text`, and its words as
+// a message quotes them.
+std::pair<std::uint64_t, std::string> nth_statement(const std::string& text, std::string_view keyword,
+                                                    std::size_t index) {
+    std::pair<std::uint64_t, std::string> found{0, ""};
+    std::size_t seen = 0;
+    for_each_statement(text, keyword, [&](std::uint64_t line, std::string_view statement) {
+        if (seen++ != index) return;
+        const std::size_t start = statement.find_first_not_of(" \t");
+        found = {line, printable(shortened(std::string(statement.substr(start)), 120))};
+    });
+    return found;
+}
+
+// The text checks read each number as correctly rounded and keep tinyobjloader's arithmetic
+// finite, but the library rounds numbers of many digits its own way: "9.99...929928e14", within
+// the position range, comes out as 1000000000000000.4, and a normal of 1.7976931348623157e308
+// written with 48 digits as infinity. This keeps such a value from reaching the scene as NaN or
+// a coordinate beyond the range, refused at the line of `text` that gives it.
+void check_values_read(const ObjMesh& mesh, const std::string& text) {
+    const std::string reader = "tinyobjloader, which builds the mesh, ";
+    const std::string advice = "; write its numbers with fewer digits";
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const Vec3& p = mesh.positions[i];
-        if (!finite(p) || std::fabs(p.x) > kMaxCoordinate || std::fabs(p.y) > kMaxCoordinate ||
-            std::fabs(p.z) > kMaxCoordinate) {
-            throw ObjError("tinyobjloader read position " + std::to_string(i + 1) + " as " + number_text(p.x) + " " +
-                           number_text(p.y) + " " + number_text(p.z) + ": " + position_range_text());
-        }
+        if (finite(p) && std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+            std::fabs(p.z) <= kMaxCoordinate)
+            continue;
+        const auto [line, statement] = nth_statement(text, "v", i);
+        throw ObjError("line " + std::to_string(line) + ": '" + statement + "': " + reader + "reads it as " +
+                       number_text(p.x) + " " + number_text(p.y) + " " + number_text(p.z) +
+                       " (it rounds long numbers its own way): " + position_range_text() + advice);
     }
     for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
-        if (!finite(mesh.normals[i])) throw ObjError("tinyobjloader read normal " + std::to_string(i + 1) + " as not finite");
+        if (finite(mesh.normals[i])) continue;
+        const auto [line, statement] = nth_statement(text, "vn", i);
+        throw ObjError("line " + std::to_string(line) + ": '" + statement + "': " + reader +
+                       "reads it as not finite (its arithmetic overflows near the largest number)" + advice);
     }
     if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
 }
@@ -473,7 +498,7 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
     mesh.diffuse = material_files.diffuse_of(statements.first_face_material);
-    check_values_read(mesh);
+    check_values_read(mesh, text);
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);
     warn_about_undefined_materials(statements, material_files, mesh);

@@ -598,6 +598,24 @@ TEST(ObjReader, NumbersTheLibraryCannotReadAreRefused) {
     EXPECT_NEAR(mesh.positions[0].z, 1.0, 1e-12);
 }
 
+// The checks read numbers correctly rounded; tinyobjloader, which builds the mesh, rounds long
+// ones its own way. Where it reads a number the checks passed as out of range or not finite,
+// the file is refused at that line (the message named a position's number, not its line).
+TEST(ObjReader, ANumberTheLibraryRoundsOutOfRangeIsRefusedAtItsLine) {
+    EXPECT_EQ(error_for("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 9.99999999999999999999929928e14 0 0\nf 1 2 3\n"),
+              "line 4: 'v 9.99999999999999999999929928e14 0 0': tinyobjloader, which builds the mesh, reads it as "
+              "1000000000000000.4 0 0 (it rounds long numbers its own way): every coordinate must be from -1e15 to "
+              "1e15; write its numbers with fewer digits");
+    EXPECT_EQ(error_for(kSquare + "# a normal no face uses\nvn 0 0 1\n"
+                                  "vn 1797693134862315719757487.019526420276742048e284 0 1\nf 1 2 3\n"),
+              "line 7: 'vn 1797693134862315719757487.019526420276742048e284 0 1': tinyobjloader, which builds the "
+              "mesh, reads it as not finite (its arithmetic overflows near the largest number); write its numbers "
+              "with fewer digits");
+    // Written short, the same number is read.
+    TempFolder folder;
+    EXPECT_EQ(read_obj(folder.write("mesh.obj", "v 1e15 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).positions[0].x, 1e15);
+}
+
 // The material's Kd is the mesh colour: three numbers, finite and within the colour range.
 TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
     const auto error_with = [](const std::string& material) {
