@@ -36,6 +36,7 @@ MtlFileRead read_mtl_file(const std::string& path) {
     }
     file.texture_maps = diffuse_texture_maps(text);
     file.miscased = first_miscased_statement(text);
+    file.colour_without_material = first_colour_without_material(text);
     file.materials = read_mtl_materials(mtl_statements_used(text), file.problem);
     return file;
 }

@@ -61,6 +61,7 @@ struct MtlFileRead {
     // `texture_files`: the list is not every texture of the file.
     bool texture_files_cut = false;
     MtlMiscasedStatement miscased;                      // first_miscased_statement of the whole text
+    std::uint64_t colour_without_material = 0;          // first_colour_without_material of the text
 };
 
 class MtlLibrary {

@@ -153,6 +153,16 @@ public:
         }
         return warnings;
     }
+    // A warning for each .mtl file with a `Kd` before its first `newmtl`, which colours nothing.
+    std::vector<std::string> colour_without_material_warnings() const {
+        std::vector<std::string> warnings;
+        for (const Library& library : libraries_) {
+            if (const std::uint64_t line = library.file->colour_without_material; line != 0)
+                warnings.push_back(library.shown + "line " + std::to_string(line) +
+                                   ": a Kd before the first newmtl is the colour of no material: the line is ignored");
+        }
+        return warnings;
+    }
     // A warning for the first material defined again (tinyobjloader keeps the first
     // definition, so the later one's colour is silently unused), or "".
     std::string redefinition_warning() const {
@@ -505,6 +515,8 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
     warn_about_unused_materials(statements, material_files, mesh);
     warn_about_texture_maps(statements, material_files, mesh);
     for (std::string& warning : material_files.miscased_statement_warnings()) mesh.warnings.push_back(std::move(warning));
+    for (std::string& warning : material_files.colour_without_material_warnings())
+        mesh.warnings.push_back(std::move(warning));
     warn_about_unknown_statements(counts, mesh);
     warn_about_vertex_colours(counts, mesh);
     warn_about_polygons_outside_their_outline(text, outside_outline, first_outside, first_outside_corners, mesh);
@@ -535,15 +547,16 @@ MtlMaterials read_mtl_materials(const std::string& used, std::string& problem) {
         const auto& kd = materials[i].diffuse;
         read.list.push_back({Vec3{kd[0], kd[1], kd[2]}, gives_diffuse[i]});
     }
+    // Each name as clrender reads it (mtl_material_name: " red" of "newmtl  red" is "red"), its
+    // first definition where two of the library's names are one so.
     read.first.reserve(names.size());
-    for (const auto& [name, index] : names)
-        if (index >= 0 && static_cast<std::size_t>(index) < materials.size()) read.first.emplace(name, index);
-    // The names as the warning about a material defined again reads them: the rest of the
-    // `newmtl` line without trailing blanks, up to a NUL (the library reads it as a C string).
+    for (const auto& [name, index] : names) {
+        if (index < 0 || static_cast<std::size_t>(index) >= materials.size()) continue;
+        const auto [entry, added] = read.first.emplace(trimmed_material_name(name), index);
+        if (!added) entry->second = std::min<std::size_t>(entry->second, index);
+    }
     for_each_statement(used, "newmtl", [&](std::uint64_t line, std::string_view statement) {
-        std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
-        material = material.substr(0, material.find('\0'));
-        while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
+        std::string material = mtl_material_name(statement);
         if (material.empty()) return;
         const bool again = !read.defined.insert(material).second;
         if (again && read.defined_again++ == 0) read.first_again = read.definitions.size();

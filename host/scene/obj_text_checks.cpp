@@ -401,6 +401,18 @@ std::string mtl_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) { return keyword == "newmtl" || keyword == "Kd"; });
 }
 
+std::uint64_t first_colour_without_material(std::string_view text) {
+    std::uint64_t found = 0;
+    bool named = false;
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        const std::string_view keyword = keyword_of(line);
+        if (keyword == "Kd" && found == 0) found = number;
+        named = keyword == "newmtl";
+        return !named;
+    });
+    return named ? found : 0;
+}
+
 ObjTextProblem check_mtl_text(std::string_view text) {
     ObjTextProblem problem;
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {

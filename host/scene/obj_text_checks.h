@@ -80,6 +80,12 @@ constexpr double kMaxMaterialColor = 1e6;
 // kMaxMaterialColor. Returns the first problem (line 0: none).
 ObjTextProblem check_mtl_text(std::string_view text);
 
+// The line (from 1; 0 for none) of the first `Kd` statement of the .mtl `text` before its first
+// `newmtl`: a colour of no material, which tinyobjloader drops in silence (the mesh came out
+// grey where its author had meant that colour). A file without a `newmtl` has none: tinyobjloader
+// keeps its colour as a nameless material's, which faces without a `usemtl` take.
+std::uint64_t first_colour_without_material(std::string_view text);
+
 // Calls `visit(line_number, keyword, line)` for each line of `text` that has a first word.
 void for_each_keyword(std::string_view text,
                       const std::function<void(std::uint64_t, std::string_view, std::string_view)>& visit);

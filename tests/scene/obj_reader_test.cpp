@@ -271,8 +271,46 @@ TEST(ObjReader, AMaterialDefinedAgainIsAWarning) {
     EXPECT_EQ(two.warnings, (std::vector<std::string>{
                                 "mtllib a.mtl: line 5: newmtl red: the material is defined again; the first definition is "
                                 "used (and 1 more materials defined again)"}));
-    folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // " red" is another name
-    EXPECT_TRUE(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
+    folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // "red" again (mtl_material_name)
+    EXPECT_EQ(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings,
+              (std::vector<std::string>{
+                  "mtllib c.mtl: line 3: newmtl red: the material is defined again; the first definition is used"}));
+}
+
+// `newmtl  red` (two blanks) defines "red", which `usemtl red` names: tinyobjloader keeps the
+// blank (" red"), and the mesh was drawn grey with a warning that no .mtl defined "red".
+TEST(ObjReader, AMaterialNameIsReadWithoutTheBlanksBeforeIt) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl  red\nKd 1 0 0\nmap_Kd red.png\nnewmtl \t blue \nKd 0 0 1\n");
+    const auto read = [&](const std::string& material) {
+        return read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl " + material + "\nf 1 2 3\n"));
+    };
+    const ObjMesh red = read("red");
+    EXPECT_EQ(red.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_EQ(red.warnings, (std::vector<std::string>{
+                                "mtllib m.mtl: line 3: map_Kd red.png: a mesh takes one colour, the scene's ambient or "
+                                "else its first face's material's Kd; this texture is not drawn"}));
+    const ObjMesh blue = read("blue");
+    EXPECT_EQ(blue.diffuse, (std::optional<Vec3>{Vec3{0, 0, 1}}));
+    EXPECT_TRUE(blue.warnings.empty()) << blue.warnings[0];
+}
+
+// A Kd before the first newmtl is the colour of no material, which tinyobjloader drops: the mesh
+// came out grey with nothing said. A warning names its .mtl line.
+TEST(ObjReader, AColourBeforeTheFirstMaterialIsAWarning) {
+    TempFolder folder;
+    const std::string warning = ": a Kd before the first newmtl is the colour of no material: the line is ignored";
+    folder.write("early.mtl", "# colours\nKd 1 0 0\nnewmtl red\nKd 0 1 0\nKd 0 0 1\n");
+    const ObjMesh early = read_obj(folder.write("early.obj", "mtllib early.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(early.warnings, (std::vector<std::string>{"mtllib early.mtl: line 2" + warning}));
+    // A file without a newmtl: tinyobjloader keeps the colour as a nameless material's, which
+    // faces without a usemtl take.
+    folder.write("none.mtl", "Kd 1 0 0\n");
+    const ObjMesh none = read_obj(folder.write("none.obj", "mtllib none.mtl\n" + kSquare + "f 1 2 3\n"));
+    EXPECT_EQ(none.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_TRUE(none.warnings.empty()) << none.warnings[0];
+    folder.write("late.mtl", "newmtl red\nKd 0 1 0\n");
+    EXPECT_TRUE(read_obj(folder.write("late.obj", "mtllib late.mtl\n" + kSquare + "f 1 2 3\n")).warnings.empty());
 }
 
 // A scene's OBJ files share one MtlLibrary, which lists each .mtl's materials once: each OBJ
@@ -838,6 +876,12 @@ TEST(ObjReader, AMtlStatementWrittenInAnotherCaseIsAWarning) {
     ASSERT_EQ(undefined.warnings.size(), 2u) << "after the warning that no .mtl defines 'blue'";
     EXPECT_EQ(undefined.warnings[1], "mtllib n.mtl: line 1: 'Newmtl' is not a .mtl statement (statements are "
                                      "case-sensitive: 'newmtl'): the line is ignored");
+    folder.write("n2.mtl", "Newmtl blue\nKd 0 0 1\nnewmtl red\n");  // the Kd belongs to no material
+    const std::vector<std::string> two =
+        read_obj(folder.write("n2.obj", "mtllib n2.mtl\n" + kSquare + "f 1 2 3\n")).warnings;
+    ASSERT_EQ(two.size(), 2u);
+    EXPECT_EQ(two[0].rfind("mtllib n2.mtl: line 1: 'Newmtl' is not a .mtl statement", 0), 0u) << two[0];
+    EXPECT_EQ(two[1].rfind("mtllib n2.mtl: line 2: a Kd before the first newmtl", 0), 0u) << two[1];
     folder.write("ok.mtl", "newmtl red\nKa 1 1 1\nillum 2\nKd 1 0 0\n");
     EXPECT_TRUE(read_obj(folder.write("ok.obj", "mtllib ok.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
 }
