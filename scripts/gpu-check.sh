@@ -3,7 +3,7 @@
 # one (NVIDIA's OpenCL platform, PoCL's CUDA driver, ...). Builds nothing: run it beside a
 # build of clrender, clrender_tests and clrender_bench. The CPU stays the default device and the
 # test suite passes without a GPU; this is the check for a machine that has one.
-#   1. The kernel stage and whole-frame tests of scripts/second-opencl.sh with the GPU selected
+#   1. The kernel stage and whole-frame tests (second-opencl.sh's longer list) with the GPU selected
 #      (CLRENDER_DEVICE=gpu), still against the double-precision host reference.
 #   2. The feature scenes of scripts/oclgrind-scenes.sh and the demo scenes, rendered on the GPU
 #      and compared with the host reference (clrender compare, 2/255); with a folder of PNGs

@@ -131,11 +131,20 @@ DeviceEntry select_device(const std::vector<DeviceEntry>& devices, const std::st
             if (platform && device && entry.platform_index == *platform && entry.device_index == *device) return entry;
     }
     if (!parse_index(selector)) {
-        std::string wanted = lower(selector);
+        // A name on two platforms is refused: PoCL names its CPU device after the processor
+        // ("pthread-...-Intel(R) Xeon(R) Processor"), so "Intel" chose PoCL where Intel's runtime
+        // was meant. On one platform the first device wins ("nvidia" of several GPUs).
+        const std::string wanted = lower(selector);
+        std::vector<DeviceEntry> named;
         for (const DeviceEntry& entry : devices)
             if (lower(entry.device_name).find(wanted) != std::string::npos ||
                 lower(entry.platform_name).find(wanted) != std::string::npos)
-                return entry;
+                named.push_back(entry);
+        const auto elsewhere = [&](const DeviceEntry& e) { return e.platform_index != named.front().platform_index; };
+        if (std::any_of(named.begin(), named.end(), elsewhere))
+            throw DeviceError("OpenCL device '" + selector + "' names devices of more than one platform; choose one " +
+                              "by its index, platform:device or a longer name:", device_list_lines(devices));
+        if (!named.empty()) return named.front();
     }
     throw DeviceError("unknown OpenCL device '" + selector + "'; available devices:", device_list_lines(devices));
 }

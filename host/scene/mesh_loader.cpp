@@ -339,21 +339,13 @@ void add_mesh(Scene& scene, Mesh mesh, const ObjMesh& model, const std::vector<s
     scene.meshes.push_back(std::move(mesh));
 }
 
-// The model a mesh's file gives, by what its read depends on: the OBJ's identity (device and
-// inode) and that of the folder its relative `mtllib` names start from, each as the name
-// reaches it. "m.obj", "d/../m.obj" and a link beside m.obj name one model, read once (each
-// spelling read it again: 20 of a 100 MB OBJ took 20 reads); a link from another folder reads
-// its .mtl files from there, so it is another model. A name stat() cannot follow keeps its own
-// key, and its read says why.
-using ModelKey = std::tuple<dev_t, ino_t, dev_t, ino_t, std::string>;
+// The model a mesh's file gives, by what its read depends on (file_in_folder_key): "m.obj",
+// "d/../m.obj" and a link beside m.obj name one model, read once (each spelling read it again:
+// 20 of a 100 MB OBJ took 20 reads); a link from another folder reads its .mtl files from
+// there, so it is another model.
+using ModelKey = FileInFolderKey;
 
-ModelKey model_key(const std::string& path) {
-    struct stat file {}, folder {};
-    const std::string parent = fs::path(path).parent_path().string();
-    if (::stat(path.c_str(), &file) != 0 || ::stat(parent.empty() ? "." : parent.c_str(), &folder) != 0)
-        return {0, 0, 0, 0, path};
-    return {file.st_dev, file.st_ino, folder.st_dev, folder.st_ino, ""};
-}
+ModelKey model_key(const std::string& path) { return file_in_folder_key(path); }
 
 }  // namespace
 
@@ -406,24 +398,39 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
     // models are): 500 OBJ files naming one library of 10,000 materials list its textures once.
     std::set<ModelKey> textures_listed;
     std::set<std::string> texture_paths;
-    const auto list_textures = [&](const std::vector<std::string>& material_files) {
-        // An OBJ that fails may name any number of .mtl files (all of them inputs): the textures
-        // of as many as an OBJ may read, no more, so that a broken file costs no more reads
-        // than a good one.
+    // Returns why the textures could not all be listed ("" when they are): the run may not go
+    // on with a model's files that it could not keep safe from its outputs.
+    const auto list_textures = [&](const std::vector<std::string>& material_files,
+                                   const Node& filename) -> std::string {
+        // The textures of as many .mtl files as an OBJ may read, no more, so that a broken file
+        // costs no more reads than a good one; past them the list is not complete.
         std::size_t files_read = 0;
         for (const std::string& material : material_files) {
-            if (files_read == kMaxMtlFiles) break;
             if (!textures_listed.insert(model_key(material)).second) continue;
-            ++files_read;
+            if (files_read++ == kMaxMtlFiles)
+                return "its .mtl files, told apart with their folders, number more than " +
+                       std::to_string(kMaxMtlFiles);
             const fs::path folder = fs::path(material).parent_path();
             // Held here: the library may keep no other reference (a file it could not read),
             // and a loop over a member of the returned temporary read it after it was freed.
-            const auto read = materials.read(material);
+            std::shared_ptr<const MtlFileRead> read;
+            try {
+                read = materials.read(material);
+            } catch (const MeshMemoryError& error) {
+                fail_out_of_memory(filename, error.what());
+            }
             for (const std::string& name : read->texture_files) {
                 std::string texture = path_in_folder(folder, name);  // "./wood.png" is "wood.png"
                 if (texture_paths.insert(texture).second) scene.mesh_texture_paths.push_back(std::move(texture));
             }
+            if (read->texture_files_cut)
+                return "its .mtl '" + printable(material) + "' names textures past its first " +
+                       std::to_string(kMaxObjMaterials) + " materials";
         }
+        return "";
+    };
+    const auto unsafe = [](const std::string& why) {
+        return why + ", more than a run keeps as inputs that no output may replace";
     };
     // A file that cannot be read, for its later placements (a placeholder each, with
     // --placeholders): 40 placements of a broken 50 MB OBJ read it 40 times.
@@ -464,15 +471,20 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             if (used_again) failed.emplace(key, error);
             const std::string problem = "cannot read OBJ '" + printable(path) + "': " + error.what();
             if (!placeholders) each.filename.fail(problem);
+            // A cube stands in only for a model whose every .mtl and texture the run keeps as
+            // inputs: the list of 1,024 names left a later .mtl out, which an output replaced.
+            std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
+            if (!list) {
+                list = std::make_shared<const std::vector<std::string>>(error.material_files);
+                std::string unlisted = error.material_files_incomplete;
+                if (unlisted.empty()) unlisted = list_textures(*list, each.filename);
+                if (!unlisted.empty())
+                    each.filename.fail(problem + "; no placeholder can stand in for it: " + unsafe(unlisted));
+            }
             each.filename.warn(problem + "; rendering a placeholder cube instead");
             read = Model{placeholder_cube(), {}};
             model = &read;
             mesh.placeholder = true;
-            std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
-            if (!list) {
-                list = std::make_shared<const std::vector<std::string>>(error.material_files);
-                list_textures(*list);
-            }
             mesh.material_paths = list;
             // A placement the cube cannot take must still say why there is a cube at all.
             what = "the placeholder cube for " + what + " (" + problem + ")";
@@ -486,7 +498,8 @@ void load_meshes(Scene& scene, const std::vector<PendingMesh>& pending, bool pla
             std::shared_ptr<const std::vector<std::string>>& list = material_lists[key];
             if (!list) {
                 list = std::make_shared<const std::vector<std::string>>(model->mesh.material_files);
-                list_textures(*list);
+                if (const std::string unlisted = list_textures(*list, each.filename); !unlisted.empty())
+                    each.filename.fail(what + ": " + unsafe(unlisted));
             }
             mesh.material_paths = list;
         }

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include "core/printable_text.h"
 #include "scene/bounded_file.h"
 #include "scene/obj_reader.h"
 #include "scene/obj_text_checks.h"
@@ -24,7 +25,7 @@ MtlFileRead read_mtl_file(const std::string& path) {
     file.digest = sha256(text.data(), text.size());
     // Whatever is wrong with it: with --placeholders the run goes on with a cube in the model's
     // place, and an output must not replace the textures of the model it stands in for.
-    file.texture_files = mtl_texture_files(text);
+    file.texture_files = mtl_texture_files(text, &file.texture_files_cut);
     if (const std::string encoding = saved_text_problem(text); !encoding.empty()) {
         file.problem = encoding;
         return file;
@@ -35,6 +36,7 @@ MtlFileRead read_mtl_file(const std::string& path) {
     }
     file.texture_maps = diffuse_texture_maps(text);
     file.miscased = first_miscased_statement(text);
+    file.colour_without_material = first_colour_without_material(text);
     file.materials = read_mtl_materials(mtl_statements_used(text), file.problem);
     return file;
 }
@@ -50,17 +52,28 @@ std::uint64_t bytes_held(const MtlFileRead& file) {
     return bytes;
 }
 
+// `bytes` in whole MiB, rounded up, for messages.
+std::string mib_text(std::uint64_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+
 }  // namespace
 
 std::shared_ptr<const MtlFileRead> MtlLibrary::read(const std::string& path) {
     struct stat info {};
-    if (::stat(path.c_str(), &info) != 0)
+    if (::stat(path.c_str(), &info) != 0) {
+        ++files_parsed_;
         return std::make_shared<const MtlFileRead>(read_mtl_file(path));  // its read names why
+    }
     const std::pair<dev_t, ino_t> identity{info.st_dev, info.st_ino};
     if (const auto known = kept_.find(identity); known != kept_.end()) return known->second;
+    ++files_parsed_;
     auto file = std::make_shared<const MtlFileRead>(read_mtl_file(path));
     const std::uint64_t bytes = bytes_held(*file);
-    if (kept_bytes_ + bytes > kMostKeptBytes) return file;
+    if (kept_bytes_ + bytes > most_held_bytes_) {
+        throw MeshMemoryError("the .mtl '" + printable(path) + "' takes about " + mib_text(bytes) +
+                              " to hold once read (its material names and texture statements), which brings the "
+                              ".mtl files the scene holds past the " + mib_text(most_held_bytes_) +
+                              " they may take (docs/robustness.md, Memory)");
+    }
     kept_bytes_ += bytes;
     kept_.emplace(identity, file);
     return file;

@@ -57,23 +57,38 @@ struct MtlFileRead {
     // mtl_texture_files of the whole text, for any file read (also one whose materials cannot be
     // used): the files it names as textures, as written (relative to its folder, or absolute).
     std::vector<std::string> texture_files;
+    // Whether a texture statement of a material past kMaxObjMaterials is left out of
+    // `texture_files`: the list is not every texture of the file.
+    bool texture_files_cut = false;
     MtlMiscasedStatement miscased;                      // first_miscased_statement of the whole text
+    std::uint64_t colour_without_material = 0;          // first_colour_without_material of the text
 };
 
 class MtlLibrary {
 public:
-    // Files whose materials together take more than this are read again by each OBJ that names
-    // them rather than kept: what the library keeps stays a fraction of a scene's meshes.
-    static constexpr std::uint64_t kMostKeptBytes = std::uint64_t(64) << 20;
+    // Most bytes the files a library reads may take together (bytes_held in mtl_library.cpp):
+    // every file is kept once read, for the whole scene. A file not kept was read and parsed
+    // again by each OBJ naming it: 30 small OBJ files naming a 16 MiB .mtl of 10,000 long
+    // material names (70 MB held, past a 64 MiB bound) took 11 s, 1,000 would take minutes.
+    static constexpr std::uint64_t kMostHeldBytes = std::uint64_t(1) << 30;
+
+    explicit MtlLibrary(std::uint64_t most_held_bytes = kMostHeldBytes) : most_held_bytes_(most_held_bytes) {}
 
     // The .mtl at `path` as read, by its identity (device and inode) where `stat` gives one:
-    // read and checked at the first call for a file, kept for the later ones. Shared: an OBJ
-    // holds each of its files' reads while it is read, also one that is not kept.
+    // read and checked at the first call for a file, kept for the later ones. Throws
+    // MeshMemoryError (obj_reader.h), naming the file, where keeping it would take the files
+    // kept past the library's bound.
     std::shared_ptr<const MtlFileRead> read(const std::string& path);
+
+    // How many times a file was read and parsed: once per file a scene names, however many OBJ
+    // files name it (a name stat() cannot follow, which names no file, is tried each time).
+    std::uint64_t files_parsed() const { return files_parsed_; }
 
 private:
     std::map<std::pair<dev_t, ino_t>, std::shared_ptr<const MtlFileRead>> kept_;
     std::uint64_t kept_bytes_ = 0;
+    std::uint64_t most_held_bytes_;
+    std::uint64_t files_parsed_ = 0;
 };
 
 }  // namespace clr

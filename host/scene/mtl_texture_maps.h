@@ -10,6 +10,16 @@
 
 namespace clr {
 
+// A material's name from its `newmtl` statement: the rest of the line after "newmtl" and a
+// blank, up to a NUL (tinyobjloader reads it as a C string), without the blanks around it.
+// tinyobjloader keeps the blanks before it ("newmtl  red" defines " red"), but a `usemtl` is
+// matched without them, so clrender names the material "red", as the one who wrote it meant.
+std::string mtl_material_name(std::string_view statement);
+
+// A name tinyobjloader's LoadMtl keys a material by, as mtl_material_name reads it: without the
+// blanks around it.
+std::string trimmed_material_name(std::string_view name);
+
 // A material's first `map_Kd` statement: its line (from 1) and its text (the line as written).
 struct MtlTextureMap {
     std::uint64_t line = 0;
@@ -17,8 +27,7 @@ struct MtlTextureMap {
 };
 
 // Each material of the .mtl `text` that has a `map_Kd` statement, by its name as `newmtl`
-// gives it (the rest of the line without trailing blanks, up to a NUL, as tinyobjloader reads
-// it): the first such statement. A `map_Kd` before any `newmtl` belongs to no material.
+// gives it (mtl_material_name): the first such statement. A `map_Kd` before any `newmtl` belongs to no material.
 std::map<std::string, MtlTextureMap> diffuse_texture_maps(std::string_view text);
 
 }  // namespace clr

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string_view>
 #include <unordered_set>
+#include <utility>
 
 #include "core/memory_budget.h"
 #include "core/printable_text.h"
@@ -152,6 +153,16 @@ public:
         }
         return warnings;
     }
+    // A warning for each .mtl file with a `Kd` before its first `newmtl`, which colours nothing.
+    std::vector<std::string> colour_without_material_warnings() const {
+        std::vector<std::string> warnings;
+        for (const Library& library : libraries_) {
+            if (const std::uint64_t line = library.file->colour_without_material; line != 0)
+                warnings.push_back(library.shown + "line " + std::to_string(line) +
+                                   ": a Kd before the first newmtl is the colour of no material: the line is ignored");
+        }
+        return warnings;
+    }
     // A warning for the first material defined again (tinyobjloader keeps the first
     // definition, so the later one's colour is silently unused), or "".
     std::string redefinition_warning() const {
@@ -236,19 +247,43 @@ Vec3 triple(const std::vector<tinyobj::real_t>& values, std::size_t index) {
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The text checks keep tinyobjloader's arithmetic finite; this keeps a number it still reads
-// differently from reaching the scene as NaN or a coordinate beyond the range.
-void check_values_read(const ObjMesh& mesh) {
+// The line (from 1) of statement `keyword` number `index` (from 0) of `text`, and its words as
+// a message quotes them.
+std::pair<std::uint64_t, std::string> nth_statement(const std::string& text, std::string_view keyword,
+                                                    std::size_t index) {
+    std::pair<std::uint64_t, std::string> found{0, ""};
+    std::size_t seen = 0;
+    for_each_statement(text, keyword, [&](std::uint64_t line, std::string_view statement) {
+        if (seen++ != index) return;
+        const std::size_t start = statement.find_first_not_of(" \t");
+        found = {line, printable(shortened(std::string(statement.substr(start)), 120))};
+    });
+    return found;
+}
+
+// The text checks read each number as correctly rounded and keep tinyobjloader's arithmetic
+// finite, but the library rounds numbers of many digits its own way: "9.99...929928e14", within
+// the position range, comes out as 1000000000000000.4, and a normal of 1.7976931348623157e308
+// written with 48 digits as infinity. This keeps such a value from reaching the scene as NaN or
+// a coordinate beyond the range, refused at the line of `text` that gives it.
+void check_values_read(const ObjMesh& mesh, const std::string& text) {
+    const std::string reader = "tinyobjloader, which builds the mesh, ";
+    const std::string advice = "; write its numbers with fewer digits";
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const Vec3& p = mesh.positions[i];
-        if (!finite(p) || std::fabs(p.x) > kMaxCoordinate || std::fabs(p.y) > kMaxCoordinate ||
-            std::fabs(p.z) > kMaxCoordinate) {
-            throw ObjError("tinyobjloader read position " + std::to_string(i + 1) + " as " + number_text(p.x) + " " +
-                           number_text(p.y) + " " + number_text(p.z) + ": " + position_range_text());
-        }
+        if (finite(p) && std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+            std::fabs(p.z) <= kMaxCoordinate)
+            continue;
+        const auto [line, statement] = nth_statement(text, "v", i);
+        throw ObjError("line " + std::to_string(line) + ": '" + statement + "': " + reader + "reads it as " +
+                       number_text(p.x) + " " + number_text(p.y) + " " + number_text(p.z) +
+                       " (it rounds long numbers its own way): " + position_range_text() + advice);
     }
     for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
-        if (!finite(mesh.normals[i])) throw ObjError("tinyobjloader read normal " + std::to_string(i + 1) + " as not finite");
+        if (finite(mesh.normals[i])) continue;
+        const auto [line, statement] = nth_statement(text, "vn", i);
+        throw ObjError("line " + std::to_string(line) + ": '" + statement + "': " + reader +
+                       "reads it as not finite (its arithmetic overflows near the largest number)" + advice);
     }
     if (mesh.diffuse && !finite(*mesh.diffuse)) throw ObjError("tinyobjloader read the material's Kd as not finite");
 }
@@ -473,13 +508,15 @@ ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, Mate
                        std::to_string(counts.faces) + " of " + std::to_string(counts.triangles));
     }
     mesh.diffuse = material_files.diffuse_of(statements.first_face_material);
-    check_values_read(mesh);
+    check_values_read(mesh, text);
     if (const std::string redefined = material_files.redefinition_warning(); !redefined.empty())
         mesh.warnings.push_back(redefined);
     warn_about_undefined_materials(statements, material_files, mesh);
     warn_about_unused_materials(statements, material_files, mesh);
     warn_about_texture_maps(statements, material_files, mesh);
     for (std::string& warning : material_files.miscased_statement_warnings()) mesh.warnings.push_back(std::move(warning));
+    for (std::string& warning : material_files.colour_without_material_warnings())
+        mesh.warnings.push_back(std::move(warning));
     warn_about_unknown_statements(counts, mesh);
     warn_about_vertex_colours(counts, mesh);
     warn_about_polygons_outside_their_outline(text, outside_outline, first_outside, first_outside_corners, mesh);
@@ -510,15 +547,16 @@ MtlMaterials read_mtl_materials(const std::string& used, std::string& problem) {
         const auto& kd = materials[i].diffuse;
         read.list.push_back({Vec3{kd[0], kd[1], kd[2]}, gives_diffuse[i]});
     }
+    // Each name as clrender reads it (mtl_material_name: " red" of "newmtl  red" is "red"), its
+    // first definition where two of the library's names are one so.
     read.first.reserve(names.size());
-    for (const auto& [name, index] : names)
-        if (index >= 0 && static_cast<std::size_t>(index) < materials.size()) read.first.emplace(name, index);
-    // The names as the warning about a material defined again reads them: the rest of the
-    // `newmtl` line without trailing blanks, up to a NUL (the library reads it as a C string).
+    for (const auto& [name, index] : names) {
+        if (index < 0 || static_cast<std::size_t>(index) >= materials.size()) continue;
+        const auto [entry, added] = read.first.emplace(trimmed_material_name(name), index);
+        if (!added) entry->second = std::min<std::size_t>(entry->second, index);
+    }
     for_each_statement(used, "newmtl", [&](std::uint64_t line, std::string_view statement) {
-        std::string material(statement.substr(std::min(statement.find("newmtl") + 7, statement.size())));
-        material = material.substr(0, material.find('\0'));
-        while (!material.empty() && (material.back() == ' ' || material.back() == '\t')) material.pop_back();
+        std::string material = mtl_material_name(statement);
         if (material.empty()) return;
         const bool again = !read.defined.insert(material).second;
         if (again && read.defined_again++ == 0) read.first_again = read.definitions.size();
@@ -527,7 +565,7 @@ MtlMaterials read_mtl_materials(const std::string& used, std::string& problem) {
     return read;
 }
 
-std::vector<std::string> mtl_texture_files(std::string_view text) {
+std::vector<std::string> mtl_texture_files(std::string_view text, bool* cut) {
     // Each statement LoadMtl reads a texture from, and the texture of the material it sets
     // (`map_bump`, `map_Bump` and `bump` set one, `map_disp`, `map_Disp` and `disp` another).
     static constexpr std::pair<std::string_view, int> kTextures[] = {
@@ -539,12 +577,15 @@ std::vector<std::string> mtl_texture_files(std::string_view text) {
     std::uint64_t material = 0;
     for_each_keyword(text, [&](std::uint64_t, std::string_view keyword, std::string_view line) {
         if (keyword == "newmtl") ++material;
-        // A file of more materials than an OBJ may have is refused; the textures of its first
-        // ones are still listed, and the list stays bounded (at most 13 names a material).
-        if (material > kMaxObjMaterials) return;
         const auto texture = std::find_if(std::begin(kTextures), std::end(kTextures),
                                           [&](const auto& statement) { return statement.first == keyword; });
         if (texture == std::end(kTextures)) return;
+        // A file of more materials than an OBJ may have is refused; the textures of its first
+        // ones are still listed, and the list stays bounded (at most 13 names a material).
+        if (material > kMaxObjMaterials) {
+            if (cut) *cut = true;
+            return;
+        }
         // The rest of the line, without the trailing blanks LoadMtl trims, read up to a NUL.
         std::string rest(line.substr(line.find(keyword) + keyword.size()));
         while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.pop_back();
@@ -595,13 +636,34 @@ void check_parse_memory(std::uint64_t text_bytes, const ObjTextCounts& counts, s
     }
 }
 
-// The path of every .mtl file the OBJ `text` names, each name once, whichever line the OBJ fails
-// at: they are the model's files, which no output may replace.
-std::vector<std::string> named_material_files(const std::string& text, const std::filesystem::path& folder) {
-    std::vector<std::string> paths;
-    for (const ObjLibraryName& library : material_library_names(text, kMaxMtlFiles))
-        paths.push_back(material_file_path(folder, library.name));
-    return paths;
+// Every .mtl file the OBJ `text` names, whichever line it fails at: they are the model's files,
+// which no output may replace. Each file once however many names reach it (its key, as the
+// output check compares files), in the order of first mention; `error` gets them, or why they
+// could not all be listed: more than kMaxMtlFiles files, or names past kMaxMtlNameBytes (a list
+// cut there left a later file unprotected, which an output then replaced).
+void list_named_material_files(const std::string& text, const std::filesystem::path& folder, ObjError& error) {
+    std::unordered_set<std::string> names;
+    std::uint64_t name_bytes = 0;
+    std::set<FileInFolderKey> files;
+    for_each_library_name(text, [&](std::uint64_t line, std::string name) {
+        if (names.count(name) > 0) return true;
+        name_bytes += name.size() + 64;  // with the set's node
+        if (name_bytes > kMaxMtlNameBytes) {
+            error.material_files_incomplete = "its mtllib names up to line " + std::to_string(line) +
+                                              " take more than " + std::to_string(kMaxMtlNameBytes >> 20) + " MiB";
+            return false;
+        }
+        std::string path = material_file_path(folder, name);
+        names.insert(std::move(name));
+        if (!files.insert(file_in_folder_key(path)).second) return true;
+        if (files.size() > kMaxMtlFiles) {
+            error.material_files_incomplete = "it names more than " + std::to_string(kMaxMtlFiles) +
+                                              " .mtl files (line " + std::to_string(line) + ")";
+            return false;
+        }
+        error.material_files.push_back(std::move(path));
+        return true;
+    });
 }
 
 }  // namespace
@@ -615,7 +677,8 @@ ObjMesh parse_obj(const std::string& text, const std::string& path, std::uint64_
         MaterialFiles material_files(folder, library ? *library : own_library);
         return parse_checked(text, counts, material_files);
     } catch (ObjError& failure) {
-        failure.material_files = named_material_files(text, folder);
+        failure.material_files.clear();
+        list_named_material_files(text, folder, failure);
         throw;
     }
 }

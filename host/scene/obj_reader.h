@@ -24,9 +24,13 @@ namespace clr {
 class ObjError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
-    // Every .mtl file the OBJ names, as paths, whichever line it failed at: they stay inputs of
-    // the run (never replaced by an output) even when a placeholder stands in for the mesh.
+    // Every .mtl file the OBJ names, as paths, each file once, whichever line it failed at: they
+    // stay inputs of the run (never replaced by an output) even when a placeholder stands in for
+    // the mesh.
     std::vector<std::string> material_files;
+    // Why `material_files` could not hold every file the OBJ names ("" when it does): a
+    // placeholder cannot stand in for such a model, whose files the run could not all keep safe.
+    std::string material_files_incomplete;
 };
 
 // Thrown where reading a mesh would take more memory than it may (parse_obj's budget): an
@@ -69,6 +73,10 @@ constexpr std::uint64_t kMaxObjTriangles = std::uint64_t(1) << 24;
 // read: tinyobjloader keeps about 3 KB a material, so 16 MiB of `newmtl a` lines took 5.6 GB.
 constexpr std::uint64_t kMaxObjMaterials = 10000;
 constexpr std::uint64_t kMaxMtlFiles = 1024;
+// Most bytes of distinct `mtllib` names that the list of a failed OBJ's .mtl files looks at
+// (ObjError::material_files): each name is one stat() of its file, and a file that fails its
+// checks has had no memory estimate. 131,072 spellings of one .mtl take 8.5 MB.
+constexpr std::uint64_t kMaxMtlNameBytes = std::uint64_t(64) << 20;
 
 struct ObjMesh {
     std::vector<Vec3> positions;  // as the file gives them, in its order
@@ -106,8 +114,8 @@ struct MtlMaterials;
 // first statement: the name LoadMtl keeps for each kind of texture of each material (its last
 // such statement; "map_Kd -s 1 1 1 wood.png" names "wood.png"). clrender draws none of them, but
 // they are the model's files, which no output may replace. Materials past kMaxObjMaterials
-// (a file that is refused) add none.
-std::vector<std::string> mtl_texture_files(std::string_view text);
+// (a file that is refused) add none: `cut`, when given, says whether any of them names one.
+std::vector<std::string> mtl_texture_files(std::string_view text, bool* cut = nullptr);
 
 // The materials of a .mtl's used statements (mtl_statements_used) as tinyobjloader's LoadMtl
 // reads them, with the `newmtl` statements that define a name again; `problem` says where the

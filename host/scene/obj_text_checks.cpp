@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -238,8 +237,14 @@ bool is_obj_statement(std::string_view keyword) {
     return false;
 }
 
-// The statement of a line: the text before a '#', which starts a comment ("f 1 2 3 # tri").
-std::string_view statement_of(std::string_view line) { return line.substr(0, line.find('#')); }
+// The statement of a line: the text before a '#' that starts a word ("f 1 2 3 # tri"), which
+// starts a comment. A '#' inside a word is part of it: old MSVC runtimes write infinity and NaN
+// as "1.#INF" and "-1.#IND", which cut at the '#' were read as 1 and -1 and drawn so.
+std::string_view statement_of(std::string_view line) {
+    for (std::size_t at = line.find('#'); at != std::string_view::npos; at = line.find('#', at + 1))
+        if (at == 0 || is_blank(line[at - 1])) return line.substr(0, at);
+    return line;
+}
 
 // Statements of numbers only, whose trailing comment tinyobjloader would read as one more
 // corner (a zero index, refused) or number: it gets them without the comment. Names (`usemtl`,
@@ -303,12 +308,13 @@ std::string obj_statements_used(std::string_view text) {
 
 namespace {
 
-// The names of an `mtllib` statement, as tinyobjloader cuts them: the text after "mtllib" and
-// one blank, cut at spaces, a backslash keeping the next character; empty names dropped.
-void add_library_names(std::string_view line, std::vector<std::string>& names,
-                       std::size_t most = std::numeric_limits<std::size_t>::max()) {
+// Calls `visit(name)` for each name of `mtllib` statement `line`, as tinyobjloader cuts them: the
+// text after "mtllib" and one blank, cut at spaces, a backslash keeping the next character;
+// empty names dropped. Stops when `visit` returns false, and then returns false.
+template <typename Visit>
+bool visit_library_names(std::string_view line, Visit&& visit) {
     const std::size_t at = line.find("mtllib") + 6;
-    if (at >= line.size()) return;  // "mtllib" alone
+    if (at >= line.size()) return true;  // "mtllib" alone
     std::string name;
     bool escaped = false;
     for (const char c : line.substr(at + 1)) {
@@ -317,15 +323,14 @@ void add_library_names(std::string_view line, std::vector<std::string>& names,
             continue;
         }
         if (!escaped && c == ' ') {
-            if (!name.empty()) names.push_back(name);
-            if (names.size() >= most) return;
+            if (!name.empty() && !visit(std::move(name))) return false;
             name.clear();
             continue;
         }
         escaped = false;
         name += c;
     }
-    if (!name.empty()) names.push_back(name);
+    return name.empty() || visit(std::move(name));
 }
 
 // The material name of a `usemtl` statement, as tinyobjloader reads it: its first word.
@@ -349,15 +354,13 @@ std::string whole_material_name(std::string_view statement) {
     return std::string(statement.substr(at, end - at));
 }
 
-// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet, of
-// its first `most` names.
+// Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet.
 void add_new_library_names(std::string_view line, std::uint64_t number, std::unordered_set<std::string>& seen,
-                           std::vector<ObjLibraryName>& libraries,
-                           std::size_t most = std::numeric_limits<std::size_t>::max()) {
-    std::vector<std::string> names;
-    add_library_names(line, names, most);
-    for (std::string& name : names)
+                           std::vector<ObjLibraryName>& libraries) {
+    visit_library_names(line, [&](std::string name) {
         if (seen.insert(name).second) libraries.push_back({std::move(name), number});
+        return true;
+    });
 }
 
 }  // namespace
@@ -387,20 +390,27 @@ ObjMaterialStatements material_statements(std::string_view text) {
     return found;
 }
 
-std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most) {
-    std::vector<ObjLibraryName> found;
-    std::unordered_set<std::string> seen;
+void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit) {
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
-        // Of a line naming millions (a text that failed its checks has had no memory estimate), no more than needed.
-        if (keyword_of(line) == "mtllib") add_new_library_names(line, number, seen, found, most);
-        return found.size() < most;
+        if (keyword_of(line) != "mtllib") return true;
+        return visit_library_names(line, [&](std::string name) { return visit(number, std::move(name)); });
     });
-    if (found.size() > most) found.resize(most);
-    return found;
 }
 
 std::string mtl_statements_used(std::string_view text) {
     return statements_kept(text, [](std::string_view keyword) { return keyword == "newmtl" || keyword == "Kd"; });
+}
+
+std::uint64_t first_colour_without_material(std::string_view text) {
+    std::uint64_t found = 0;
+    bool named = false;
+    for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
+        const std::string_view keyword = keyword_of(line);
+        if (keyword == "Kd" && found == 0) found = number;
+        named = keyword == "newmtl";
+        return !named;
+    });
+    return named ? found : 0;
 }
 
 ObjTextProblem check_mtl_text(std::string_view text) {

@@ -56,8 +56,9 @@ struct ObjTextProblem {
     std::string detail;
 };
 
-// Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#', which starts a comment;
-// numbers and indices may carry a '+' sign): coordinates are finite numbers within
+// Checks every `v`, `vn`, `vt` and `f` line of `text` (up to a '#' at the start of a word,
+// which starts a comment: one inside a word, "1.#INF", is part of the number; numbers and
+// indices may carry a '+' sign): coordinates are finite numbers within
 // clrender's coordinate range, of at most 64 characters and a decimal exponent of at most 300
 // in magnitude (beyond which tinyobjloader's arithmetic overflows); a face has from three to
 // kMaxFaceCorners corners, each naming a position (and optionally a texture coordinate and a
@@ -78,6 +79,12 @@ constexpr double kMaxMaterialColor = 1e6;
 // tinyobjloader reads them), finite, within the limits of check_obj_text's numbers and within
 // kMaxMaterialColor. Returns the first problem (line 0: none).
 ObjTextProblem check_mtl_text(std::string_view text);
+
+// The line (from 1; 0 for none) of the first `Kd` statement of the .mtl `text` before its first
+// `newmtl`: a colour of no material, which tinyobjloader drops in silence (the mesh came out
+// grey where its author had meant that colour). A file without a `newmtl` has none: tinyobjloader
+// keeps its colour as a nameless material's, which faces without a `usemtl` take.
+std::uint64_t first_colour_without_material(std::string_view text);
 
 // Calls `visit(line_number, keyword, line)` for each line of `text` that has a first word.
 void for_each_keyword(std::string_view text,
@@ -132,9 +139,9 @@ struct ObjMaterialStatements {
 };
 ObjMaterialStatements material_statements(std::string_view text);
 
-// The `libraries` of material_statements alone, the first `most` of them, for a text that fails
-// its checks: the .mtl files it names stay inputs of the run however far it was read. A broken
-// file naming millions holds no more of them than a reader would read (kMaxMtlFiles).
-std::vector<ObjLibraryName> material_library_names(std::string_view text, std::size_t most);
+// Calls `visit(line_number, name)` for each name of each `mtllib` statement of `text`, as
+// material_statements cuts them, repeated ones included, one at a time: a text that fails its
+// checks has had no memory estimate, and may name millions. Stops when `visit` returns false.
+void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit);
 
 }  // namespace clr

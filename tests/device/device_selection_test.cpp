@@ -51,6 +51,25 @@ TEST(DeviceSelection, ByCaseInsensitiveNameOrPlatformSubstring) {
     EXPECT_EQ(select_device(fake_devices(), "portable").index, 1) << "the first match wins";
 }
 
+// PoCL names its CPU device after the processor: "Intel" names PoCL's device and Intel's
+// platform, and chose PoCL's where Intel's runtime was meant.
+TEST(DeviceSelection, ANameOfDevicesOnTwoPlatformsIsRefusedListingThem) {
+    const std::vector<DeviceEntry> both = {
+        entry(0, 0, 0, "Portable Computing Language", "pthread-skylake-avx512-Intel(R) Xeon(R) Processor", "CPU"),
+        entry(1, 1, 0, "Intel(R) OpenCL", "Intel(R) Xeon(R) Processor", "CPU")};
+    try {
+        select_device(both, "intel");
+        ADD_FAILURE() << "'intel' chose one of two platforms' devices";
+    } catch (const DeviceError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("more than one platform"), std::string::npos) << message;
+        EXPECT_NE(message.find("Intel(R) OpenCL"), std::string::npos) << message;
+        EXPECT_EQ(error.code(), kExitDevice);
+    }
+    EXPECT_EQ(select_device(both, "Intel(R) OpenCL").index, 1);
+    EXPECT_EQ(select_device(both, "pthread").index, 0);
+}
+
 TEST(DeviceSelection, CpuAndGpuSelectTheFirstDeviceOfThatType) {
     EXPECT_EQ(select_device(fake_devices(), "cpu").index, 1);
     EXPECT_EQ(select_device(fake_devices(), "GPU").index, 0);

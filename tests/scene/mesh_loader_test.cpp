@@ -497,6 +497,69 @@ TEST(MeshLoader, PlaceholdersKeepTheMtlFilesAndTexturesOfAModelThatFailsAnyCheck
     }
 }
 
+// The .mtl files of a model that fails are listed each file once, however many names reach it:
+// the list held the first 1,024 names, so an OBJ naming one .mtl 1,024 ways before victim.mtl
+// left victim.mtl out, and `-o victim.mtl` with --placeholders replaced it.
+TEST(MeshLoader, PlaceholdersKeepEveryMtlFileHoweverManyNamesComeBefore) {
+    TempFolder folder;
+    folder.write("a.mtl", "newmtl red\nKd 1 0 0\n");
+    folder.write("victim.mtl", "newmtl blue\nKd 0 0 1\nmap_Kd victim.png\n");
+    std::string names;
+    for (int i = 0; i < 1024; ++i) names += " ." + std::string(i + 1, '/') + "a.mtl";
+    folder.write("bad.obj", "mtllib" + names + " victim.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+    LoadOptions options;
+    options.placeholder_images = true;
+    const Scene scene = load_in(folder, with_obj({{"filename", "bad.obj"}}), options);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_TRUE(scene.meshes[0].placeholder);
+    ASSERT_TRUE(scene.meshes[0].material_paths);
+    EXPECT_EQ(*scene.meshes[0].material_paths,
+              (std::vector<std::string>{folder.file("a.mtl"), folder.file("victim.mtl")}));
+    for (const char* input : {"a.mtl", "victim.mtl", "victim.png"}) {
+        OutputRoles roles;
+        add_scene_inputs(scene, roles);
+        EXPECT_THROW(roles.add_output("image", folder.file(input)), OutputError) << input;
+    }
+}
+
+// Where the files a failing model names cannot all be kept as inputs (more .mtl files than an OBJ
+// may read, textures of materials past an OBJ's limit), no placeholder stands in for it: the run
+// stops rather than go on with a file of the model that an output may replace.
+TEST(MeshLoader, NoPlaceholderStandsInForAModelWhoseFilesCannotAllBeKept) {
+    LoadOptions options;
+    options.placeholder_images = true;
+    const std::string bad_face = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n";
+    {
+        TempFolder folder;
+        std::string names;
+        for (std::uint64_t i = 0; i <= kMaxMtlFiles; ++i) names += " m" + std::to_string(i) + ".mtl";
+        folder.write("many.obj", bad_face + "mtllib" + names + "\n");
+        EXPECT_EQ(error_of(folder, with_obj({{"filename", "many.obj"}}), options),
+                  "/obj/filename: cannot read OBJ '" + folder.file("many.obj") +
+                      "': line 4: corner 3: position index 4 is out of range: the file has 3; no placeholder can "
+                      "stand in for it: it names more than 1024 .mtl files (line 5), more than a run keeps as inputs "
+                      "that no output may replace");
+        // 1,024 files are all kept, and the cube stands in.
+        folder.write("most.obj", bad_face + "mtllib" + names.substr(0, names.rfind(' ')) + "\n");
+        const Scene scene = load_in(folder, with_obj({{"filename", "most.obj"}}), options);
+        ASSERT_TRUE(scene.meshes.at(0).material_paths);
+        EXPECT_EQ(scene.meshes[0].material_paths->size(), kMaxMtlFiles);
+        EXPECT_EQ(scene.meshes[0].material_paths->back(), folder.file("m1023.mtl"));
+    }
+    {
+        TempFolder folder;
+        std::string library;
+        for (std::uint64_t m = 0; m <= kMaxObjMaterials; ++m) library += "newmtl m" + std::to_string(m) + "\n";
+        folder.write("lib.mtl", library + "map_Kd late.png\n");
+        folder.write("model.obj", "mtllib lib.mtl\n" + bad_face);
+        const std::string error = error_of(folder, with_obj({{"filename", "model.obj"}}), options);
+        EXPECT_NE(error.find("; no placeholder can stand in for it: its .mtl '" + folder.file("lib.mtl") +
+                             "' names textures past its first 10000 materials, more than a run keeps"),
+                  std::string::npos)
+            << error;
+    }
+}
+
 // The image files a model's .mtl names as textures are never read, but they are the model's:
 // exported as table.obj, table.mtl and table.png beside a scene table.json, the default output
 // table.png replaced the texture. Each file a material keeps (the last statement of each kind,
@@ -565,9 +628,14 @@ TEST(MeshLoader, TheTexturesOfMaterialsPastTheLimitAreNotListed) {
     std::string text;
     for (std::uint64_t m = 0; m <= kMaxObjMaterials; ++m)
         text += "newmtl m" + std::to_string(m) + "\nmap_Kd t" + std::to_string(m) + ".png\n";
-    const std::vector<std::string> files = mtl_texture_files(text);
+    bool cut = false;
+    const std::vector<std::string> files = mtl_texture_files(text, &cut);
     ASSERT_EQ(files.size(), kMaxObjMaterials);
     EXPECT_EQ(files.back(), "t" + std::to_string(kMaxObjMaterials - 1) + ".png");
+    EXPECT_TRUE(cut);
+    cut = false;
+    mtl_texture_files("newmtl a\nmap_Kd a.png\n", &cut);
+    EXPECT_FALSE(cut);
 }
 
 // A placement that even the cube cannot take says why the cube is there: the file's problem.

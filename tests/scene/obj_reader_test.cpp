@@ -137,8 +137,8 @@ TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
     TempFolder folder;
     folder.write("m.mtl", "newmtl red\nKd +1 0 +0.25 # red\n");
     const ObjMesh mesh = read_obj(folder.write(
-        "mesh.obj", "mtllib m.mtl\nv +1 0 0 # first\nv 0 +2.5 0\nv 0 0 +1e+1\nv 1 1 1#tight\n"
-                    "vn 0 0 +1 # up\nvt 0.5 +0.5 # uv\nusemtl red\nf 1//1 2//1 3//1 # tri\nf +1 +2 +4#tight\n"));
+        "mesh.obj", "mtllib m.mtl\nv +1 0 0 # first\nv 0 +2.5 0\nv 0 0 +1e+1\nv 1 1 1\t#tab\n"
+                    "vn 0 0 +1 # up\nvt 0.5 +0.5 # uv\nusemtl red\nf 1//1 2//1 3//1 # tri\nf +1 +2 +4 #\n"));
     ASSERT_EQ(mesh.positions.size(), 4u);
     EXPECT_EQ(mesh.positions[0], (Vec3{1, 0, 0}));
     EXPECT_EQ(mesh.positions[1], (Vec3{0, 2.5, 0}));
@@ -156,6 +156,38 @@ TEST(ObjReader, PlusSignsAndTrailingCommentsAreRead) {
     EXPECT_EQ(error_for("v + 0 0\n"), "line 1: 'v': '+' is not a finite number");
     EXPECT_EQ(error_for(kSquare + "f 1 2 +-3\n"), "line 5: corner 3: '+-3' is not a position index");
     EXPECT_EQ(error_for(kSquare + "f 1 2 +9\n"), "line 5: corner 3: position index 9 is out of range: the file has 4");
+}
+
+// A '#' starts a comment only at the start of a word: old MSVC runtimes write infinity and NaN
+// as "1.#INF", "-1.#IND00" and "1.#QNAN", which cut at the '#' were read as 1 and -1 and drawn
+// so, without a word. Such a number, and any word with a '#' inside, is refused at its line.
+TEST(ObjReader, AHashInsideAWordIsPartOfIt) {
+    EXPECT_EQ(error_for("v -1 -1 0\nv 1 -1 0\nv 1 1 1.#INF\nf 1 2 3\n"),
+              "line 3: 'v': '1.#INF' is not a finite number");
+    EXPECT_EQ(error_for("v 1 1 -1.#IND00\n"), "line 1: 'v': '-1.#IND00' is not a finite number");
+    EXPECT_EQ(error_for("v 1 1 1#junk\n"), "line 1: 'v': '1#junk' is not a finite number");
+    EXPECT_EQ(error_for("v 0 0 0 1.#QNAN0\n"), "line 1: 'v': '1.#QNAN0' is not a finite number");  // a weight
+    EXPECT_EQ(error_for("v 0 0 0\nvn 0 0 -1.#QNAN\n"), "line 2: 'vn': '-1.#QNAN' is not a finite number");
+    // Cut at the first '#', this line had one number ("needs 3 numbers, the line has 1").
+    EXPECT_EQ(error_for("v 0 0 0\nvn -1.#IND -1.#IND -1.#IND\n"), "line 2: 'vn': '-1.#IND' is not a finite number");
+    EXPECT_EQ(error_for("vt 0.5 1.#INF\n"), "line 1: 'vt': '1.#INF' is not a finite number");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 3#tri\n"), "line 5: corner 3: '3#tri' is not a position index");
+    EXPECT_EQ(error_for(kSquare + "f 1 2 4//1#n\n"), "line 5: corner 3: '1#n' is not a normal index");
+    EXPECT_EQ(error_for("v#1 0 0 0\n"), "");  // no statement: an unknown word, which a warning names
+    const auto mtl_error = [](const std::string& colour) {
+        TempFolder folder;
+        folder.write("m.mtl", "newmtl blue\n" + colour + "\n");
+        try {
+            read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"));
+        } catch (const ObjError& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(mtl_error("Kd 0 0 1.#INF00"), "line 1: mtllib m.mtl: line 2: 'Kd': '1.#INF00' is not a finite number");
+    EXPECT_EQ(mtl_error("Kd 0.2 0.3 -1.#IND00"),
+              "line 1: mtllib m.mtl: line 2: 'Kd': '-1.#IND00' is not a finite number");
+    EXPECT_EQ(mtl_error("Kd 0 0 1 # blue"), "");
 }
 
 TEST(ObjReader, TheMaterialsDiffuseColourIsTheMeshColour) {
@@ -239,8 +271,46 @@ TEST(ObjReader, AMaterialDefinedAgainIsAWarning) {
     EXPECT_EQ(two.warnings, (std::vector<std::string>{
                                 "mtllib a.mtl: line 5: newmtl red: the material is defined again; the first definition is "
                                 "used (and 1 more materials defined again)"}));
-    folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // " red" is another name
-    EXPECT_TRUE(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
+    folder.write("c.mtl", "newmtl red\nnewmtl reds\nnewmtl  red\n");  // "red" again (mtl_material_name)
+    EXPECT_EQ(read_obj(folder.write("c.obj", "mtllib c.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings,
+              (std::vector<std::string>{
+                  "mtllib c.mtl: line 3: newmtl red: the material is defined again; the first definition is used"}));
+}
+
+// `newmtl  red` (two blanks) defines "red", which `usemtl red` names: tinyobjloader keeps the
+// blank (" red"), and the mesh was drawn grey with a warning that no .mtl defined "red".
+TEST(ObjReader, AMaterialNameIsReadWithoutTheBlanksBeforeIt) {
+    TempFolder folder;
+    folder.write("m.mtl", "newmtl  red\nKd 1 0 0\nmap_Kd red.png\nnewmtl \t blue \nKd 0 0 1\n");
+    const auto read = [&](const std::string& material) {
+        return read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl " + material + "\nf 1 2 3\n"));
+    };
+    const ObjMesh red = read("red");
+    EXPECT_EQ(red.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_EQ(red.warnings, (std::vector<std::string>{
+                                "mtllib m.mtl: line 3: map_Kd red.png: a mesh takes one colour, the scene's ambient or "
+                                "else its first face's material's Kd; this texture is not drawn"}));
+    const ObjMesh blue = read("blue");
+    EXPECT_EQ(blue.diffuse, (std::optional<Vec3>{Vec3{0, 0, 1}}));
+    EXPECT_TRUE(blue.warnings.empty()) << blue.warnings[0];
+}
+
+// A Kd before the first newmtl is the colour of no material, which tinyobjloader drops: the mesh
+// came out grey with nothing said. A warning names its .mtl line.
+TEST(ObjReader, AColourBeforeTheFirstMaterialIsAWarning) {
+    TempFolder folder;
+    const std::string warning = ": a Kd before the first newmtl is the colour of no material: the line is ignored";
+    folder.write("early.mtl", "# colours\nKd 1 0 0\nnewmtl red\nKd 0 1 0\nKd 0 0 1\n");
+    const ObjMesh early = read_obj(folder.write("early.obj", "mtllib early.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
+    EXPECT_EQ(early.warnings, (std::vector<std::string>{"mtllib early.mtl: line 2" + warning}));
+    // A file without a newmtl: tinyobjloader keeps the colour as a nameless material's, which
+    // faces without a usemtl take.
+    folder.write("none.mtl", "Kd 1 0 0\n");
+    const ObjMesh none = read_obj(folder.write("none.obj", "mtllib none.mtl\n" + kSquare + "f 1 2 3\n"));
+    EXPECT_EQ(none.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}}));
+    EXPECT_TRUE(none.warnings.empty()) << none.warnings[0];
+    folder.write("late.mtl", "newmtl red\nKd 0 1 0\n");
+    EXPECT_TRUE(read_obj(folder.write("late.obj", "mtllib late.mtl\n" + kSquare + "f 1 2 3\n")).warnings.empty());
 }
 
 // A scene's OBJ files share one MtlLibrary, which lists each .mtl's materials once: each OBJ
@@ -269,6 +339,50 @@ TEST(ObjReader, ObjFilesSharingALibraryCombineItsFilesInTheirOwnOrder) {
         EXPECT_NE(b.warnings[0].find("usemtl only_a: no .mtl file of the OBJ defines this material"), std::string::npos)
             << b.warnings[0];
     }
+}
+
+// A .mtl is read and parsed once for all the OBJ files of a scene, however large its parsed
+// form: one of 10,000 long material names, each with a texture (about 67 MiB held), was past the
+// 64 MiB the library kept, and each OBJ naming it read and parsed it again (30 small OBJ files
+// took 11 s, 1,000 would take minutes). Counted in parses, not seconds.
+TEST(ObjReader, ALargeLibraryIsParsedOnceForAllTheObjFilesNamingIt) {
+    TempFolder folder;
+    const std::string long_name(1640, 'q');
+    std::string text;
+    for (int m = 0; m < 10000; ++m) text += "newmtl m" + std::to_string(100000 + m) + long_name + "\nmap_Kd t\n";
+    ASSERT_LE(text.size(), kMaxMtlFileBytes);
+    folder.write("large.mtl", text);
+    MtlLibrary library;
+    for (int i = 0; i < 3; ++i) {
+        const std::string obj =
+            folder.write("part" + std::to_string(i) + ".obj", "mtllib large.mtl\n" + kSquare + "f 1 2 3\n");
+        EXPECT_EQ(parse_obj(testing::read_bytes(obj), obj, UINT64_MAX, &library).faces, 1u);
+    }
+    EXPECT_EQ(library.files_parsed(), 1u);
+}
+
+// What the library keeps is bounded: a .mtl that would take the files it holds past its bound
+// is refused as out of memory, naming the file (exit 6 at the mesh's filename), and the files
+// kept stay kept.
+TEST(ObjReader, LibrariesPastTheirBoundEndTheRunNamingTheFile) {
+    TempFolder folder;
+    const std::string small = folder.write("small.mtl", "newmtl red\nKd 1 0 0\n");
+    std::string text;
+    for (int m = 0; m < 5000; ++m) text += "newmtl a_material_with_a_rather_long_name_" + std::to_string(m) + "\n";
+    const std::string large = folder.write("large.mtl", text);
+    MtlLibrary library(std::uint64_t(1) << 20);
+    library.read(small);
+    try {
+        library.read(large);
+        ADD_FAILURE() << "read past the bound";
+    } catch (const MeshMemoryError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "the .mtl '" + large + "' takes about 2 MiB to hold once read (its material names and texture "
+                  "statements), which brings the .mtl files the scene holds past the 1 MiB they may take "
+                  "(docs/robustness.md, Memory)");
+    }
+    library.read(small);
+    EXPECT_EQ(library.files_parsed(), 2u);
 }
 
 // A usemtl that names no material is a warning with its line (tinyobjloader's own says
@@ -522,6 +636,24 @@ TEST(ObjReader, NumbersTheLibraryCannotReadAreRefused) {
     EXPECT_NEAR(mesh.positions[0].z, 1.0, 1e-12);
 }
 
+// The checks read numbers correctly rounded; tinyobjloader, which builds the mesh, rounds long
+// ones its own way. Where it reads a number the checks passed as out of range or not finite,
+// the file is refused at that line (the message named a position's number, not its line).
+TEST(ObjReader, ANumberTheLibraryRoundsOutOfRangeIsRefusedAtItsLine) {
+    EXPECT_EQ(error_for("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 9.99999999999999999999929928e14 0 0\nf 1 2 3\n"),
+              "line 4: 'v 9.99999999999999999999929928e14 0 0': tinyobjloader, which builds the mesh, reads it as "
+              "1000000000000000.4 0 0 (it rounds long numbers its own way): every coordinate must be from -1e15 to "
+              "1e15; write its numbers with fewer digits");
+    EXPECT_EQ(error_for(kSquare + "# a normal no face uses\nvn 0 0 1\n"
+                                  "vn 1797693134862315719757487.019526420276742048e284 0 1\nf 1 2 3\n"),
+              "line 7: 'vn 1797693134862315719757487.019526420276742048e284 0 1': tinyobjloader, which builds the "
+              "mesh, reads it as not finite (its arithmetic overflows near the largest number); write its numbers "
+              "with fewer digits");
+    // Written short, the same number is read.
+    TempFolder folder;
+    EXPECT_EQ(read_obj(folder.write("mesh.obj", "v 1e15 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).positions[0].x, 1e15);
+}
+
 // The material's Kd is the mesh colour: three numbers, finite and within the colour range.
 TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
     const auto error_with = [](const std::string& material) {
@@ -744,6 +876,12 @@ TEST(ObjReader, AMtlStatementWrittenInAnotherCaseIsAWarning) {
     ASSERT_EQ(undefined.warnings.size(), 2u) << "after the warning that no .mtl defines 'blue'";
     EXPECT_EQ(undefined.warnings[1], "mtllib n.mtl: line 1: 'Newmtl' is not a .mtl statement (statements are "
                                      "case-sensitive: 'newmtl'): the line is ignored");
+    folder.write("n2.mtl", "Newmtl blue\nKd 0 0 1\nnewmtl red\n");  // the Kd belongs to no material
+    const std::vector<std::string> two =
+        read_obj(folder.write("n2.obj", "mtllib n2.mtl\n" + kSquare + "f 1 2 3\n")).warnings;
+    ASSERT_EQ(two.size(), 2u);
+    EXPECT_EQ(two[0].rfind("mtllib n2.mtl: line 1: 'Newmtl' is not a .mtl statement", 0), 0u) << two[0];
+    EXPECT_EQ(two[1].rfind("mtllib n2.mtl: line 2: a Kd before the first newmtl", 0), 0u) << two[1];
     folder.write("ok.mtl", "newmtl red\nKa 1 1 1\nillum 2\nKd 1 0 0\n");
     EXPECT_TRUE(read_obj(folder.write("ok.obj", "mtllib ok.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n")).warnings.empty());
 }
