@@ -42,6 +42,19 @@ std::string error_for(const std::string& text) {
 
 const std::string kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 
+// The error of reading a square whose face uses material `name` of m.mtl, written as `mtl`
+// ("" when it reads).
+std::string material_error(const std::string& mtl, const std::string& name) {
+    TempFolder folder;
+    folder.write("m.mtl", mtl);
+    try {
+        read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl " + name + "\nf 1 2 3\n"));
+    } catch (const ObjError& error) {
+        return error.what();
+    }
+    return "";
+}
+
 TEST(ObjReader, AQuadAndAPentagonFanFromTheirFirstCorner) {
     TempFolder folder;
     const ObjMesh mesh = read_obj(folder.write("mesh.obj", kSquare + "v 0.5 2 0\nf 1 2 3 4\nf 1 2 3 5 4\n"));
@@ -175,14 +188,7 @@ TEST(ObjReader, AHashInsideAWordIsPartOfIt) {
     EXPECT_EQ(error_for(kSquare + "f 1 2 4//1#n\n"), "line 5: corner 3: '1#n' is not a normal index");
     EXPECT_EQ(error_for("v#1 0 0 0\n"), "");  // no statement: an unknown word, which a warning names
     const auto mtl_error = [](const std::string& colour) {
-        TempFolder folder;
-        folder.write("m.mtl", "newmtl blue\n" + colour + "\n");
-        try {
-            read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl blue\nf 1 2 3\n"));
-        } catch (const ObjError& error) {
-            return std::string(error.what());
-        }
-        return std::string();
+        return material_error("newmtl blue\n" + colour + "\n", "blue");
     };
     EXPECT_EQ(mtl_error("Kd 0 0 1.#INF00"), "line 1: mtllib m.mtl: line 2: 'Kd': '1.#INF00' is not a finite number");
     EXPECT_EQ(mtl_error("Kd 0.2 0.3 -1.#IND00"),
@@ -657,14 +663,7 @@ TEST(ObjReader, ANumberTheLibraryRoundsOutOfRangeIsRefusedAtItsLine) {
 // The material's Kd is the mesh colour: three numbers, finite and within the colour range.
 TEST(ObjReader, MaterialColoursAreCheckedAtTheirLine) {
     const auto error_with = [](const std::string& material) {
-        TempFolder folder;
-        folder.write("m.mtl", "# colours\nnewmtl red\n" + material + "\n");
-        try {
-            read_obj(folder.write("mesh.obj", "mtllib m.mtl\n" + kSquare + "usemtl red\nf 1 2 3\n"));
-        } catch (const ObjError& error) {
-            return std::string(error.what());
-        }
-        return std::string();
+        return material_error("# colours\nnewmtl red\n" + material + "\n", "red");
     };
     EXPECT_EQ(error_with("Kd 0e500 0 0"), "line 1: mtllib m.mtl: line 3: 'Kd': '0e500' is too long or its exponent too "
                                           "large (clrender reads numbers of at most 64 characters with an exponent "
