@@ -20,6 +20,7 @@
 #include "scene/limits.h"
 #include "scene/scene_loader.h"
 #include "view/camera_keys.h"
+#include "view/query_tokens.h"
 #include "view/request_guard.h"
 #include "view/view_camera.h"
 #include "view/view_parameters.h"
@@ -70,6 +71,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         lines.push_back(input.substr(start, end - start));
     lines.push_back(input.substr(start));
     while (lines.size() < 5) lines.emplace_back();
+
+    // The PATH line is also read as a raw target, as every route reads its query
+    // (view/query_tokens.h): any bytes must split without a crash, and a pair read from it
+    // never holds the '&' that separates pairs unless it was sent as %26.
+    for (const clr::QueryPair& pair : clr::query_pairs_as_sent(lines[1]))
+        if (lines[1].find("%26") == std::string::npos && (pair.name.find('&') != std::string::npos || pair.value.find('&') != std::string::npos))
+            report_bug("read a pair across an '&'", lines[1]);
+    clr::query_tokens_as_sent(lines[1]);
 
     clr::RequestFacts facts;
     facts.method = lines[0];
