@@ -126,30 +126,6 @@ bool next_request_arrives(int socket, std::chrono::steady_clock::time_point idle
     return false;
 }
 
-// After a refusal the client may still be sending. Closing with its bytes unread makes the
-// system reset the connection, and a reset can destroy the answer before the client reads it.
-// So the server stops writing and drops what still comes for up to a second (64 KiB at most;
-// what a web server calls a lingering close), then closes; for kIdleWhileOthersWait only while
-// other connections wait for a thread: a client refused for trickling its head went on
-// trickling into the linger, a second of a thread for each of its connections.
-void linger_before_close(int socket, const std::atomic<std::size_t>& waiting) {
-    ::shutdown(socket, SHUT_WR);
-    const auto start = std::chrono::steady_clock::now();
-    char scratch[4096];
-    for (std::size_t dropped = 0; dropped < 64 * 1024;) {
-        const auto give_up = start + (waiting > 0 ? kIdleWhileOthersWait : std::chrono::milliseconds(1000));
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - std::chrono::steady_clock::now());
-        const int slice = static_cast<int>(std::min<std::chrono::milliseconds::rep>(left.count(), 50));
-        if (left.count() <= 0) break;
-        const int ready = wait_for(socket, POLLIN, slice);
-        if (ready < 0) break;
-        if (ready == 0) continue;  // others may have started to wait meanwhile
-        const ssize_t got = ::recv(socket, scratch, sizeof scratch, 0);
-        if (got <= 0) break;
-        dropped += static_cast<std::size_t>(got);
-    }
-}
-
 // Whether a Connection header of `answer` says close: a route's refusal sets one, and
 // cpp-httplib adds its own where the request asked to close.
 bool says_close(const httplib::Response& answer) {
@@ -165,6 +141,125 @@ void say_connection_closes(httplib::Response& answer) {
 }
 
 }  // namespace
+
+// After a refusal the client may still be sending. Closing with its bytes unread makes the
+// system reset the connection, and a reset can destroy the answer before the client reads it.
+// So the server stops writing and drops what still comes for up to kLingerTime (64 KiB at most;
+// what a web server calls a lingering close), then closes. One thread does that for every such
+// connection at once: done by the thread that had served the connection, each refused request
+// of a client that neither reads nor closes held a thread for the linger (0.1 s while others
+// waited), and a local client without the token that sent 3200 of them at once kept every other
+// client waiting 10 s, for as long as it went on sending.
+class LingeringCloses {
+public:
+    LingeringCloses() : thread_([this] { run(); }) {}
+    ~LingeringCloses() { stop(); }
+    LingeringCloses(const LingeringCloses&) = delete;
+    LingeringCloses& operator=(const LingeringCloses&) = delete;
+
+    // Takes `socket` over: it is shut for writing now and closed after its linger.
+    void add(int socket) {
+        ::shutdown(socket, SHUT_WR);
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (!stopping_) {
+                added_.push_back({socket, std::chrono::steady_clock::now() + kLingerTime, 0});
+                changed_.notify_one();
+                return;
+            }
+        }
+        close_now(socket);  // the server has stopped: nothing is waited for any more
+    }
+
+    // Closes every connection at once and ends the thread.
+    void stop() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stopping_ = true;
+        }
+        changed_.notify_one();
+        if (thread_.joinable()) thread_.join();
+    }
+
+private:
+    struct Lingering {
+        int socket;
+        std::chrono::steady_clock::time_point until;
+        std::size_t dropped;
+    };
+
+    static void close_now(int socket) {
+        ::shutdown(socket, SHUT_RDWR);
+        ::close(socket);
+    }
+
+    // Reads and drops what `entry`'s client sent; false when the connection is done with (the
+    // client's end, an error, or more than it may send).
+    static bool drain(Lingering& entry) {
+        char scratch[4096];
+        while (entry.dropped < 64 * 1024) {
+            const ssize_t got = ::recv(entry.socket, scratch, sizeof scratch, MSG_DONTWAIT);
+            if (got < 0 && errno == EINTR) continue;
+            if (got < 0) return errno == EAGAIN || errno == EWOULDBLOCK;
+            if (got == 0) return false;
+            entry.dropped += static_cast<std::size_t>(got);
+        }
+        return false;
+    }
+
+    // Only this thread closes the sockets it watches (add() only hands them over), so that no
+    // descriptor is closed, and its number taken by a new connection, while poll() watches it.
+    void run() {
+        std::vector<Lingering> watched;
+        for (;;) {
+            {
+                std::unique_lock<std::mutex> lock(mutex_);
+                changed_.wait(lock, [&] { return stopping_ || !added_.empty() || !watched.empty(); });
+                watched.insert(watched.end(), added_.begin(), added_.end());
+                added_.clear();
+                if (stopping_) break;
+            }
+            close_beyond_the_most(watched);
+            watch_a_slice(watched);
+        }
+        for (const Lingering& entry : watched) close_now(entry.socket);
+    }
+
+    // A flood of refused connections: the ones that have lingered longest go first.
+    static void close_beyond_the_most(std::vector<Lingering>& watched) {
+        if (watched.size() <= kMostLingering) return;
+        const auto over = static_cast<std::ptrdiff_t>(watched.size() - kMostLingering);
+        for (auto entry = watched.begin(); entry != watched.begin() + over; ++entry) close_now(entry->socket);
+        watched.erase(watched.begin(), watched.begin() + over);
+    }
+
+    // Drops what came for up to 20 ms (connections handed over meanwhile are watched from the
+    // next slice), and closes the connections that are done with or whose linger is over.
+    static void watch_a_slice(std::vector<Lingering>& watched) {
+        std::vector<pollfd> ready;
+        for (const Lingering& entry : watched) ready.push_back({entry.socket, POLLIN, 0});
+        if (::poll(ready.data(), ready.size(), 20) < 0 && errno != EINTR)
+            for (pollfd& each : ready) each.revents = POLLERR;  // no poll (no memory): closed at once
+        const auto now = std::chrono::steady_clock::now();
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < watched.size(); ++k) {
+            const short events = ready[k].revents;
+            const bool done = now >= watched[k].until || (events & (POLLERR | POLLNVAL)) != 0 ||
+                              ((events & (POLLIN | POLLHUP)) != 0 && !drain(watched[k]));
+            if (done)
+                close_now(watched[k].socket);
+            else
+                watched[kept++] = watched[k];
+        }
+        watched.resize(kept);
+    }
+
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::vector<Lingering> added_;  // handed over, not watched yet
+    bool stopping_ = false;
+    std::thread thread_;  // last: it starts once the members above are made
+};
 
 std::optional<std::size_t> declared_body_length(const httplib::Request& request) {
     const std::size_t given = request.get_header_value_count("Content-Length");
@@ -419,7 +514,7 @@ void RequestStream::get_local_ip_and_port(std::string& ip, int& port) const {
 // request with the Host and Origin the refusal was about. Any answer that closes says so once
 // and offers no keep-alive: a route's Connection: close and cpp-httplib's stood side by side,
 // or beside cpp-httplib's Keep-Alive.
-BoundedServer::BoundedServer(std::size_t threads) {
+BoundedServer::BoundedServer(std::size_t threads) : lingering_(std::make_unique<LingeringCloses>()) {
     new_task_queue = [this, threads] { return new ConnectionQueue(threads, waiting_connections_); };
     httplib::Server::set_post_routing_handler([](const httplib::Request&, httplib::Response& answer) {
         const bool body_unread = stream_of_this_thread != nullptr && stream_of_this_thread->body_left_unread();
@@ -474,6 +569,7 @@ void BoundedServer::stop() {
     // A round about to start (not running yet, so Server::stop() did nothing) finds the socket
     // shut down: its accept() fails at once and the round ends.
     if (kept_listening_ >= 0) ::shutdown(kept_listening_, SHUT_RDWR);
+    lingering_->stop();  // a connection lingering after a refusal is closed at once
 }
 
 // cpp-httplib's own loop over a connection's requests (process_server_socket in 0.11.4), with
@@ -513,7 +609,10 @@ bool BoundedServer::process_and_close_socket(socket_t socket) {
         idle_since = std::chrono::steady_clock::now();
     }
     stream_of_this_thread = nullptr;
-    if (stream.limit_reached() || stream.answer_closes()) linger_before_close(socket, waiting_connections_);
+    if (stream.limit_reached() || stream.answer_closes()) {
+        lingering_->add(socket);  // closed by LingeringCloses; this thread serves the next connection
+        return served;
+    }
     ::shutdown(socket, SHUT_RDWR);
     ::close(socket);
     return served;

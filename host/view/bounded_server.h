@@ -16,6 +16,11 @@
 //   - ends an answer that the client has not taken within kAnswerSeconds;
 //   - closes the connection after an answer to a request whose body it did not read, since
 //     cpp-httplib would take that body for the next request;
+//   - lets a connection it closes after a refusal linger (what the client still sends is read
+//     and dropped, so that the answer is not lost to a reset) in one thread that watches all
+//     such connections at once (LingeringCloses), not in the thread that served it: each
+//     refused connection of a client that neither reads nor closes held its thread for the
+//     linger, and 3200 requests without the token kept every other client waiting 10 s;
 //   - sends every answer whole, ignoring a Range header (cpp-httplib would build a part for
 //     each range in memory);
 //   - sends each piece of an answer at once (TCP_NODELAY): the head and the body are written
@@ -33,6 +38,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -46,9 +52,13 @@ constexpr std::size_t kMostHeadBytes = 64 * 1024;
 constexpr int kRequestSeconds = 10;
 // Longest an answer may take to leave, from its first byte.
 constexpr int kAnswerSeconds = 60;
-// Longest a connection keeps its thread without starting a request while others wait for one,
-// and longest a refused one lingers before it closes (a second otherwise) while others wait.
+// Longest a connection keeps its thread without starting a request while others wait for one.
 constexpr std::chrono::milliseconds kIdleWhileOthersWait{100};
+// Longest a connection closed after a refusal lingers (LingeringCloses), and most connections
+// that linger at once: beyond that the one that has lingered longest is closed, so that a flood
+// of refused requests holds a bounded number of descriptors.
+constexpr std::chrono::milliseconds kLingerTime{1000};
+constexpr std::size_t kMostLingering = 256;
 // Longest a request's head may take to arrive while other connections wait for a thread. A
 // client sends its head at once (the page's are a few hundred bytes); one that takes longer
 // is slow or trickling, and others are waiting.
@@ -147,6 +157,8 @@ private:
     bool answer_head_done_ = false, answer_closes_ = false;
 };
 
+class LingeringCloses;
+
 // httplib::Server whose connections are read through RequestStream.
 class BoundedServer : public httplib::Server {
 public:
@@ -179,6 +191,7 @@ private:
     bool stopping_ = false;
     int kept_listening_ = -1;  // the duplicate of the listening socket (listen_until_stopped)
     std::string answer_header_lines_;  // set_answer_headers(), as lines of an answer's head
+    std::unique_ptr<LingeringCloses> lingering_;  // closes refused connections after their linger
 };
 
 }  // namespace clr

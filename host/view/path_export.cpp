@@ -139,9 +139,21 @@ ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const 
         throw ParameterError("keys", error.location().empty() ? error.detail() : error.location() + ": " + error.detail());
     }
     throw_if_interrupted();  // the check takes seconds on a large scene: a stop meanwhile writes nothing
-    const UnusedNameFile written = write_under_unused_name(
-        output_dir_, base, ".json", also_unused, exported.text,
-        [this](const std::string& path) { check_output("exported scene", path); });
+    // A name that an input of the scene holds though no file is there (a texture that a .mtl
+    // names, which clrender never reads) is passed over, for the scene and for the outputs that
+    // follow under its name: the export was refused (409, "choose another output name", which
+    // the page cannot), and a video's scene was written before its MP4's name was refused.
+    const auto usable = [this, &also_unused](const std::string& path) {
+        const std::string stem = path.substr(0, path.size() - std::string(".json").size());
+        try {
+            check_output("exported scene", path);
+            for (const std::string& suffix : also_unused) check_output("output", stem + suffix);
+        } catch (const OutputError& clash) {
+            throw UnusableName(clash.what());
+        }
+    };
+    const UnusedNameFile written =
+        write_under_unused_name(output_dir_, base, ".json", also_unused, exported.text, usable);
     exported.name = written.name;
     exported.path = written.path;
     return exported;

@@ -32,9 +32,9 @@ public:
 
     // Makes, checks and writes the exported scene (one export at a time), under the first name
     // of the request's name's series (view/unused_name_file.h) whose NAME.json, and NAME + each
-    // of `also_unused` (".mp4" for a video), do not exist. Throws ParameterError (the keys make
-    // no valid scene: "keys", naming the problem as the loader does) and OutputError (the file
-    // cannot be written).
+    // of `also_unused` (".mp4" for a video), do not exist and are no input of the scene.
+    // Throws ParameterError (the keys make no valid scene: "keys", naming the problem as the
+    // loader does) and OutputError (the file cannot be written).
     ExportedScene export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused = {}) const;
 
     // The exported scene's text without writing it (for the checks and tests).

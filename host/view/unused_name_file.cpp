@@ -64,7 +64,11 @@ UnusedNameFile write_under_unused_name(const std::string& folder, const std::str
         bool taken = entry_exists(path);
         for (const std::string& suffix : also_unused) taken = taken || entry_exists(path_of(name, suffix));
         if (taken) continue;
-        check(path);
+        try {
+            check(path);
+        } catch (const UnusableName&) {
+            continue;  // as if taken: the page, which names no file, gets the next name
+        }
         if (!temp) {
             // Mode 0666 (less the umask): the permissions any newly written file gets.
             const std::string temp_path = create_under_temp_name(path, [&temp](const std::string& try_path) {

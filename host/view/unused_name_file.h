@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace clr {
 
 // How many names of a series are tried before the write is refused.
@@ -22,11 +24,19 @@ struct UnusedNameFile {
     std::string path;  // FOLDER/NAME + extension
 };
 
+// What `check` throws for a name that no file holds but that may not be written all the same
+// (an input of the run that need not exist, such as a texture a .mtl names): the series passes
+// over it as over a taken one.
+class UnusableName : public OutputError {
+public:
+    using OutputError::OutputError;
+};
+
 // Writes `text` to FOLDER/NAME + `extension` for the first NAME of `base`'s series whose file
 // does not exist and for which no FOLDER/NAME + e exists for any e of `also_unused` (the
-// outputs that will follow under the same name). `check(path)` may refuse a name by
-// throwing. Throws OutputError when the file cannot be written, the folder cannot be looked
-// in, or every name is taken.
+// outputs that will follow under the same name). `check(path)` may pass over a name by
+// throwing UnusableName, or refuse the write by throwing anything else. Throws OutputError
+// when the file cannot be written, the folder cannot be looked in, or every name is taken.
 UnusedNameFile write_under_unused_name(const std::string& folder, const std::string& base, const std::string& extension,
                                        const std::vector<std::string>& also_unused, const std::string& text,
                                        const std::function<void(const std::string& path)>& check);

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "view/bounded_server.h"
 
@@ -182,6 +183,121 @@ TEST(BoundedServer, SmallAnswersOnAKeptAliveConnectionAreNotHeldBack) {
     ASSERT_TRUE(answered);
     // 40 ms each before; a few milliseconds for all of them now (0.4 s leaves room for a busy machine).
     EXPECT_LT(took.count(), 400) << kAnswers << " answers took " << took.count() << " ms";
+}
+
+
+// A connection to `port` on loopback; -1 when it cannot connect.
+int connect_to(int port) {
+    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        ::close(socket);
+        return -1;
+    }
+    return socket;
+}
+
+// Clients that send a request the server refuses (one it answers and closes, as the viewer's 403
+// without the token; one whose head never ends, 408) and then neither read nor close: each
+// refused connection lingered a tenth of a second in the thread that served it while others
+// waited, so that 3200 requests without the token kept every other client waiting 10 s (and a
+// client that went on sending them, for good). The linger is one thread's for all of them: a
+// request that arrives whole behind 300 of them is answered at once.
+TEST(BoundedServer, RefusedConnectionsThatLingerDoNotHoldTheThreads) {
+    BoundedServer server(2);
+    server.Get("/refused", [](const httplib::Request&, httplib::Response& response) {
+        response.status = 403;
+        response.set_header("Connection", "close");
+    });
+    server.Get("/hi", [](const httplib::Request&, httplib::Response& response) {
+        response.set_content("hi", "text/plain");
+    });
+    const int port = server.bind_to_any_port("127.0.0.1");
+    ASSERT_GT(port, 0);
+    std::thread listener([&] { server.listen_after_bind(); });
+    while (!server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+
+    constexpr int kRefused = 300;  // at 0.1 s of one of 2 threads each: 15 s
+    std::vector<int> refused;
+    for (int k = 0; k < kRefused; ++k) {
+        const int socket = connect_to(port);
+        if (socket < 0) break;
+        const std::string request = k % 2 == 0 ? "GET /refused HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"
+                                               : "GET /hi HTTP/1.1\r\nHost: 127.0.0.1\r\n";  // no end
+        (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
+        refused.push_back(socket);
+    }
+    const auto started = std::chrono::steady_clock::now();
+    httplib::Client client("127.0.0.1", port);
+    client.set_connection_timeout(60);
+    client.set_read_timeout(60);
+    const httplib::Result answer = client.Get("/hi");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    for (const int socket : refused) ::close(socket);
+    server.stop();
+    listener.join();
+    EXPECT_EQ(refused.size(), std::size_t(kRefused));
+    ASSERT_TRUE(answer);
+    EXPECT_EQ(answer->status, 200);
+    // The heads that never end take the two threads for their 1 s (kHeadWhileOthersWait); the
+    // rest is the refusals' own work.
+    EXPECT_LT(seconds, 6.0) << "s for a request behind " << kRefused << " refused connections";
+}
+
+// A refused connection still lingers: the server has shut its side (the client reads the answer
+// to its end) but goes on reading and dropping what the client sends for up to kLingerTime, so
+// that the client's late bytes do not make the system reset the connection, which can destroy
+// the answer before the client reads it; after the linger the connection is closed, and bytes
+// sent then are answered with a reset.
+TEST(BoundedServer, ARefusedConnectionLingersThenCloses) {
+    BoundedServer server(2);
+    server.Get("/refused", [](const httplib::Request&, httplib::Response& response) {
+        response.status = 403;
+        response.set_header("Connection", "close");
+    });
+    const int port = server.bind_to_any_port("127.0.0.1");
+    ASSERT_GT(port, 0);
+    std::thread listener([&] { server.listen_after_bind(); });
+    while (!server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+
+    const int socket = connect_to(port);
+    ASSERT_GE(socket, 0);
+    const std::string request = "GET /refused HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
+    ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
+    std::string answer;
+    char chunk[4096];
+    for (;;) {
+        pollfd ready{socket, POLLIN, 0};
+        if (::poll(&ready, 1, 10000) <= 0) break;
+        const ssize_t got = ::recv(socket, chunk, sizeof chunk, 0);
+        if (got <= 0) break;  // the server's side shut after the answer
+        answer.append(chunk, static_cast<std::size_t>(got));
+    }
+    const auto answered = std::chrono::steady_clock::now();
+    EXPECT_EQ(answer.rfind("HTTP/1.1 403", 0), 0u) << answer;
+    // Whether bytes sent now are taken: a reset from a closed connection fails the second send.
+    const auto taken = [socket] {
+        const std::string late(1024, 'x');
+        bool sent = true;
+        for (int k = 0; k < 2 && sent; ++k) {
+            sent = ::send(socket, late.data(), late.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(late.size());
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        int error = 0;
+        socklen_t length = sizeof error;
+        ::getsockopt(socket, SOL_SOCKET, SO_ERROR, &error, &length);
+        return sent && error == 0;
+    };
+    EXPECT_TRUE(taken()) << "bytes sent at once after the answer were met with a reset";
+    EXPECT_LT(std::chrono::steady_clock::now() - answered, kLingerTime / 2) << "too slow to tell";
+    std::this_thread::sleep_until(answered + 2 * kLingerTime + std::chrono::milliseconds(500));
+    EXPECT_FALSE(taken()) << "the connection still open long after its linger";
+    ::close(socket);
+    server.stop();
+    listener.join();
 }
 
 }  // namespace

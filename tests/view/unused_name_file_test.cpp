@@ -59,6 +59,22 @@ TEST(UnusedNameFile, ANameTakenBeforeTheRenameIsNotReplaced) {
     EXPECT_EQ(folder.entry_count(), 2) << "no temporary file is left";
 }
 
+// A name that no file holds but that the check passes over (an input of the run that need not
+// exist: a texture a .mtl names) is skipped as a taken one; any other refusal ends the write.
+TEST(UnusedNameFile, ANameTheCheckPassesOverIsSkipped) {
+    TempFolder folder;
+    const auto an_input = [&folder](const std::string& path) {
+        if (path == folder.file("tour.json")) throw UnusableName("tour.json: a texture of the model");
+    };
+    const UnusedNameFile written = write_under_unused_name(folder.path(), "tour", ".json", {}, "new", an_input);
+    EXPECT_EQ(written.name, "tour-2");
+    EXPECT_FALSE(fs::exists(folder.file("tour.json")));
+    EXPECT_EQ(read_bytes(folder.file("tour-2.json")), "new");
+    const auto refused = [](const std::string&) { throw OutputError("no"); };
+    EXPECT_THROW(write_under_unused_name(folder.path(), "clip", ".json", {}, "new", refused), OutputError);
+    EXPECT_EQ(folder.entry_count(), 1) << "no temporary file is left";
+}
+
 TEST(UnusedNameFile, RefusesWhenEveryNameIsTakenOrTheFolderIsMissing) {
     TempFolder folder;
     for (int n = 1; n <= kMostNameTries; ++n) folder.write(series_name("full", n) + ".json", "");

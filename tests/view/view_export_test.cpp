@@ -170,6 +170,37 @@ TEST(ViewExport, NeverReplacesAMeshAndNamesItAbsolutely) {
     EXPECT_EQ(viewer.stop(SIGTERM), 143);
 }
 
+// A texture that a .mtl names is an input no output may replace, though clrender never reads it
+// and it need not exist: a name that one holds is passed over as a taken one. The export was
+// refused (409, "choose another output name", which the page cannot), and a video's scene was
+// written before the name of its MP4 was refused.
+TEST(ViewExport, ANameThatAMissingTextureHoldsIsPassedOver) {
+    TempFolder folder;
+    folder.write("model.obj", "mtllib model.mtl\nusemtl red\nv -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    folder.write("model.mtl", "newmtl red\nKd 1 0 0\nmap_Ks tour.json\nbump clip.mp4\n");  // neither file exists
+    folder.write("scene.json", R"({"eye": [0, 0, 5], "lookat": [0, 0, 0], "up": [0, 1, 0], "fov_angle": 60,
+        "width": 16, "height": 12, "obj": {"filename": "model.obj"}})");
+    ViewerProcess viewer("scene.json", folder.path());
+    ASSERT_TRUE(viewer.started()) << viewer.output();
+    const httplib::Result exported =
+        post(viewer, "/export", R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 0, 0]}], "name": "tour"})");
+    ASSERT_TRUE(exported);
+    ASSERT_EQ(exported->status, 200) << exported->body;
+    EXPECT_EQ(json::parse(exported->body)["name"], "tour-2");
+    const httplib::Result video = post(viewer, "/render-video",
+                                       R"({"keys": [{"eye": [0, 1, 5], "lookat": [0, 0, 0]}, {"eye": [1, 1, 5], "lookat": [0, 0, 0]}],
+                                           "name": "clip"})");
+    ASSERT_TRUE(video);
+    ASSERT_EQ(video->status, 200) << video->body;
+    EXPECT_EQ(json::parse(video->body)["name"], "clip-2");
+    EXPECT_EQ(finished_job(viewer, json::parse(video->body)["job"].get<int>())["state"], "done");
+    EXPECT_EQ(viewer.stop(SIGTERM), 143);
+    EXPECT_FALSE(fs::exists(folder.file("tour.json")));
+    EXPECT_FALSE(fs::exists(folder.file("clip.json")));
+    EXPECT_FALSE(fs::exists(folder.file("clip.mp4")));
+    EXPECT_TRUE(fs::exists(folder.file("clip-2.mp4")));
+}
+
 // The meshes were read when the viewer started, and keys do not change them: an export's check
 // does not read the OBJ files again (exports sent at once held a copy of every mesh each, many
 // times the memory of the scene). An OBJ broken since the start does not stop the export.

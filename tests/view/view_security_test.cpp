@@ -753,8 +753,8 @@ TEST_F(ViewSecurity, AStalledRequestGets408WithItsReason) {
 // each of the 32 threads until its request's 10 s deadline, and every other client waited
 // behind them (20 s for a request that arrived whole); a refused one went on holding its
 // thread for the second of the close's linger. While others wait, a head has 1 s to arrive and
-// a refused connection lingers 0.1 s (view/bounded_server.h), so that a request that arrives
-// whole beside 256 of them is answered well before the first trickler's deadline.
+// a refused connection lingers in a thread of its own (view/bounded_server.h), so that a request
+// that arrives whole beside 256 of them is answered well before the first trickler's deadline.
 TEST_F(ViewSecurity, TricklingHeadsDoNotStallARequestThatArrivesWhole) {
     constexpr int kTricklers = 256;
     std::atomic<bool> stop{false};
