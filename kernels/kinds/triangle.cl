@@ -296,9 +296,11 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
 /* triangle_distance() for 16 rays from 16 origins (t_max = infinity), the shadow rays of a
  * packet's hit points (packet/shadows16.cl): lane by lane the same operations in the same
  * order, so each lane's t is the one triangle_distance() gives its ray, to the last bit.
- * `slack` is triangle_plane_slack() of each lane's origin. */
+ * `slack` is triangle_plane_slack() of each lane's origin. Only the lanes in `tested` are
+ * answered (the others get infinity): a lane whose ray leaves this very triangle passes its
+ * edge tests, and would otherwise take every packet through the whole test. */
 CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* triangle, Points16 o, real16 slack,
-                                                  Directions16 d)
+                                                  Directions16 d, mask16 tested)
 {
     real3 c0 = convert_real3(triangle->corner0.xyz);
     real3 c1 = convert_real3(triangle->corner1.xyz);
@@ -313,7 +315,7 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     real longest = (real)triangle->longest_edge;
     real16 reach = (fabs(ax) + fabs(ay) + fabs(az)) + longest;
     real16 det = u + v + w;
-    mask16 hit = banded_inside16(u, v, w, det, edge_band16(reach, longest));
+    mask16 hit = tested && banded_inside16(u, v, w, det, edge_band16(reach, longest));
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
