@@ -43,6 +43,7 @@ struct Options {
     std::string images_dir;
     std::optional<bool> per_pixel;  // --per-pixel, --screen-tiles; unset: as the device prefers
     std::optional<bool> packets_walk_bvh;  // --bvh-packets, --tile-lists; unset: as the scene prefers
+    std::string kernel_dir;                // --kernel-dir; empty: the embedded kernels
 };
 
 void parse_size(const std::string& text, RunSettings& settings) {
@@ -80,6 +81,8 @@ std::optional<Options> parse_options(int argc, char** argv, int& exit_code) {
         ->excludes(bvh_packets);
     app.add_option("--json", options.json_path, "also write the results as JSON to this file");
     app.add_option("--images", options.images_dir, "write clrender's image of each scene as PNG into this folder");
+    app.add_option("--kernel-dir", options.kernel_dir,
+                   "read clrender's OpenCL sources from this folder (kernel development: one binary, two kernels)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -195,7 +198,7 @@ SceneRow run_scene(DeviceContext& device, const BenchSceneSpec& spec, const Opti
     }
 
     std::cerr << "bench: " << spec.name << ": setting up" << std::endl;
-    ClrenderSide clr(device, scene, options.per_pixel, options.packets_walk_bvh);
+    ClrenderSide clr(device, scene, options.per_pixel, options.packets_walk_bvh, options.kernel_dir);
     row.clr_setup_ms = clr.setup_ms();
     ClrenderFrame warmup = clr.render_frame();
     bool clr_done = keep_if_slow(warmup.wall_ms, row.clr_wall_ms);

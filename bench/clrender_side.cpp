@@ -6,11 +6,12 @@
 namespace clr::bench {
 
 ClrenderSide::ClrenderSide(DeviceContext& device, const Scene& scene, std::optional<bool> per_pixel,
-                           std::optional<bool> packets_walk_bvh)
+                           std::optional<bool> packets_walk_bvh, const std::string& kernel_dir)
     : key_(scene.camera_path.front()) {
     RendererOptions options;
     options.per_pixel = per_pixel;
     options.packets_walk_bvh = packets_walk_bvh;
+    options.kernel_dir = kernel_dir;
     const Stopwatch stopwatch;
     renderer_.emplace(device, scene, options);
     setup_ms_ = stopwatch.elapsed_ms();

@@ -24,8 +24,10 @@ public:
     // 16-ray packets; unset, as the device prefers (RendererOptions::per_pixel).
     // `packets_walk_bvh`: packets through the BVH, or through screen-tile lists; unset, as
     // the scene prefers (RendererOptions::packets_walk_bvh).
+    // `kernel_dir`: read the kernels from this folder instead of the embedded copies (empty:
+    // embedded), so that two versions of a kernel can be timed by one binary.
     ClrenderSide(DeviceContext& device, const Scene& scene, std::optional<bool> per_pixel = std::nullopt,
-                 std::optional<bool> packets_walk_bvh = std::nullopt);
+                 std::optional<bool> packets_walk_bvh = std::nullopt, const std::string& kernel_dir = "");
 
     double setup_ms() const { return setup_ms_; }
     ClrenderFrame render_frame();

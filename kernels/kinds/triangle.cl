@@ -296,9 +296,11 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
 /* triangle_distance() for 16 rays from 16 origins (t_max = infinity), the shadow rays of a
  * packet's hit points (packet/shadows16.cl): lane by lane the same operations in the same
  * order, so each lane's t is the one triangle_distance() gives its ray, to the last bit.
- * `slack` is triangle_plane_slack() of each lane's origin. */
+ * `slack` is triangle_plane_slack() of each lane's origin. Only the lanes in `tested` are
+ * answered (the others get infinity): a lane whose ray leaves this very triangle passes its
+ * edge tests, and would otherwise take every packet through the whole test. */
 CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* triangle, Points16 o, real16 slack,
-                                                  Directions16 d)
+                                                  Directions16 d, mask16 tested)
 {
     real3 c0 = convert_real3(triangle->corner0.xyz);
     real3 c1 = convert_real3(triangle->corner1.xyz);
@@ -313,7 +315,7 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     real longest = (real)triangle->longest_edge;
     real16 reach = (fabs(ax) + fabs(ay) + fabs(az)) + longest;
     real16 det = u + v + w;
-    mask16 hit = banded_inside16(u, v, w, det, edge_band16(reach, longest));
+    mask16 hit = tested && banded_inside16(u, v, w, det, edge_band16(reach, longest));
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
@@ -428,13 +430,12 @@ real3 triangle_normal(int index, real3 point, real3 direction, CLR_SCENE_PARAMS)
     return dot3(normal, direction) > 0.0f ? -normal : normal;
 }
 
-/* Corners, edges and corner normals of the triangles of 16 lanes, lane by lane in private
- * arrays: what triangle_normals16() gathers before computing in vectors. */
+/* Corners and corner normals of the triangles of 16 lanes, each lane's as the float4s they are
+ * stored as, in private arrays: what triangle_normals16() gathers before computing in vectors
+ * (columns16()). A lane's six float4s are six loads and six stores; stored as 19 floats (x, y
+ * and z apart) they were 19 stores a lane (docs/benchmarks.md, Shadow packets' own triangles). */
 typedef struct {
-    real c0x[16], c0y[16], c0z[16];
-    real e1x[16], e1y[16], e1z[16];
-    real e2x[16], e2y[16], e2z[16];
-    real n0x[16], n0y[16], n0z[16], n1x[16], n1y[16], n1z[16], n2x[16], n2y[16], n2z[16];
+    float4 c0[16], c1[16], c2[16], n0[16], n1[16], n2[16];
     int weighted[16];
 } TriangleLanes16;
 
@@ -443,29 +444,46 @@ typedef struct {
  * normals, whose values are finite and ignored. */
 CLR_PACKET_INLINE void gather_triangle16(TriangleLanes16* lanes, int lane, int index, CLR_SCENE_PARAMS)
 {
-    real3 c0 = (real3)(0.0f), e1 = (real3)(1.0f, 0.0f, 0.0f), e2 = (real3)(0.0f, 1.0f, 0.0f);
-    real3 n0 = (real3)(0.0f), n1 = (real3)(0.0f), n2 = (real3)(0.0f);
+    float4 c0 = (float4)(0.0f), c1 = (float4)(1.0f, 0.0f, 0.0f, 0.0f), c2 = (float4)(0.0f, 1.0f, 0.0f, 0.0f);
+    float4 n0 = (float4)(0.0f), n1 = (float4)(0.0f), n2 = (float4)(0.0f);
     int weighted = 0;
     if (index >= 0) {
         __global const ClrTriangle* triangle = &triangles[index];
-        c0 = convert_real3(triangle->corner0.xyz);
-        e1 = convert_real3(triangle->corner1.xyz) - c0;
-        e2 = convert_real3(triangle->corner2.xyz) - c0;
+        c0 = triangle->corner0;
+        c1 = triangle->corner1;
+        c2 = triangle->corner2;
         weighted = triangle->normals >= 0;
         if (weighted) {
             __global const float4* n = &triangle_normals[triangle->normals];
-            n0 = convert_real3(n[0].xyz);
-            n1 = convert_real3(n[1].xyz);
-            n2 = convert_real3(n[2].xyz);
+            n0 = n[0];
+            n1 = n[1];
+            n2 = n[2];
         }
     }
-    lanes->c0x[lane] = c0.x, lanes->c0y[lane] = c0.y, lanes->c0z[lane] = c0.z;
-    lanes->e1x[lane] = e1.x, lanes->e1y[lane] = e1.y, lanes->e1z[lane] = e1.z;
-    lanes->e2x[lane] = e2.x, lanes->e2y[lane] = e2.y, lanes->e2z[lane] = e2.z;
-    lanes->n0x[lane] = n0.x, lanes->n0y[lane] = n0.y, lanes->n0z[lane] = n0.z;
-    lanes->n1x[lane] = n1.x, lanes->n1y[lane] = n1.y, lanes->n1z[lane] = n1.z;
-    lanes->n2x[lane] = n2.x, lanes->n2y[lane] = n2.y, lanes->n2z[lane] = n2.z;
+    lanes->c0[lane] = c0, lanes->c1[lane] = c1, lanes->c2[lane] = c2;
+    lanes->n0[lane] = n0, lanes->n1[lane] = n1, lanes->n2[lane] = n2;
     lanes->weighted[lane] = weighted;
+}
+
+/* The x, y and z of 16 lanes' float4s (lane l's at rows[l]), as vectors: four vector loads
+ * and permutes. */
+CLR_PACKET_INLINE void float_columns16(const float4* rows, float16* x, float16* y, float16* z)
+{
+    const float* f = (const float*)rows;
+    float16 q0 = vload16(0, f), q1 = vload16(1, f), q2 = vload16(2, f), q3 = vload16(3, f);
+    *x = (float16)(q0.s048c, q1.s048c, q2.s048c, q3.s048c);
+    *y = (float16)(q0.s159d, q1.s159d, q2.s159d, q3.s159d);
+    *z = (float16)(q0.s26ae, q1.s26ae, q2.s26ae, q3.s26ae);
+}
+
+/* float_columns16() in `real`. */
+CLR_PACKET_INLINE void columns16(const float4* rows, real16* x, real16* y, real16* z)
+{
+    float16 fx, fy, fz;
+    float_columns16(rows, &fx, &fy, &fz);
+    *x = convert_real16(fx);
+    *y = convert_real16(fy);
+    *z = convert_real16(fz);
 }
 
 /* triangle_normal() of 16 lanes, lane l on triangle indices[l] (or none, where negative) at
@@ -478,9 +496,13 @@ CLR_PACKET_INLINE Directions16 triangle_normals16(const int* indices, Points16 p
     TriangleLanes16 t;
     for (int lane = 0; lane < 16; ++lane)
         gather_triangle16(&t, lane, indices[lane], CLR_SCENE_ARGS);
-    real16 e1x = vload16(0, t.e1x), e1y = vload16(0, t.e1y), e1z = vload16(0, t.e1z);
-    real16 e2x = vload16(0, t.e2x), e2y = vload16(0, t.e2y), e2z = vload16(0, t.e2z);
-    real16 px = p.x - vload16(0, t.c0x), py = p.y - vload16(0, t.c0y), pz = p.z - vload16(0, t.c0z);
+    real16 c0x, c0y, c0z, c1x, c1y, c1z, c2x, c2y, c2z;
+    columns16(t.c0, &c0x, &c0y, &c0z);
+    columns16(t.c1, &c1x, &c1y, &c1z);
+    columns16(t.c2, &c2x, &c2y, &c2z);
+    real16 e1x = c1x - c0x, e1y = c1y - c0y, e1z = c1z - c0z; /* the edges as triangle_normal() makes them */
+    real16 e2x = c2x - c0x, e2y = c2y - c0y, e2z = c2z - c0z;
+    real16 px = p.x - c0x, py = p.y - c0y, pz = p.z - c0z;
     /* triangle_frame(): geometric = edge_cross(e1, e2), area2, b1, b2 */
     real16 gx = e1y * e2z - e1z * e2y, gy = e1z * e2x - e1x * e2z, gz = e1x * e2y - e1y * e2x;
     real16 area2 = gx * gx + gy * gy + gz * gz;
@@ -490,9 +512,13 @@ CLR_PACKET_INLINE Directions16 triangle_normals16(const int* indices, Points16 p
     b1 = select((real16)(0.0f), b1, weighted);
     b2 = select((real16)(0.0f), b2, weighted);
     real16 b0 = 1.0f - b1 - b2;
-    real16 bx = b0 * vload16(0, t.n0x) + b1 * vload16(0, t.n1x) + b2 * vload16(0, t.n2x);
-    real16 by = b0 * vload16(0, t.n0y) + b1 * vload16(0, t.n1y) + b2 * vload16(0, t.n2y);
-    real16 bz = b0 * vload16(0, t.n0z) + b1 * vload16(0, t.n1z) + b2 * vload16(0, t.n2z);
+    real16 n0x, n0y, n0z, n1x, n1y, n1z, n2x, n2y, n2z;
+    columns16(t.n0, &n0x, &n0y, &n0z);
+    columns16(t.n1, &n1x, &n1y, &n1z);
+    columns16(t.n2, &n2x, &n2y, &n2z);
+    real16 bx = b0 * n0x + b1 * n1x + b2 * n2x;
+    real16 by = b0 * n0y + b1 * n1y + b2 * n2y;
+    real16 bz = b0 * n0z + b1 * n1z + b2 * n2z;
     mask16 blend = weighted && (bx * bx + by * by + bz * bz) > 0.0f;
     real16 nx = select(gx, bx, blend), ny = select(gy, by, blend), nz = select(gz, bz, blend);
     real16 length = sqrt(nx * nx + ny * ny + nz * nz); /* unit3() */

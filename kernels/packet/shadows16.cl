@@ -56,10 +56,9 @@ bool lane_meets16(const ShadowRays16* rays, int lane, int kind, int index, CLR_S
     return hit_beats(t, kind, index, none);
 }
 
-/* The lanes among `reach` whose rays surface (kind, index), at distances `t`, occludes: those
- * it meets before their t_max (hit_beats()), but for the lanes that leave it. */
-CLR_PACKET_INLINE int16 lanes_met16(real16 t, int kind, int index, mask16 reach, int16 skip_kind, int16 skip_index,
-                                    real16 t_max)
+/* The lanes among `reach` that surface (kind, index) may occlude: all but those whose rays
+ * leave it (skips_surface() lane by lane). */
+CLR_PACKET_INLINE mask16 lanes_tested16(int kind, int index, mask16 reach, int16 skip_kind, int16 skip_index)
 {
 #if CLR_FEATURE_TRIANGLE_TIES
     /* A pair (skips_surface()): the triangle skip_index and the one CLR_SKIP_PAIR - skip_kind. */
@@ -72,6 +71,13 @@ CLR_PACKET_INLINE int16 lanes_met16(real16 t, int kind, int index, mask16 reach,
 #else
     mask16 tested = reach & convert_mask16(skip_kind != (int16)(kind) || skip_index != (int16)(index));
 #endif
+    return tested;
+}
+
+/* The lanes among `tested` whose rays surface (kind, index), at distances `t`, occludes: those
+ * it meets before their t_max (hit_beats()). */
+CLR_PACKET_INLINE int16 lanes_met16(real16 t, int kind, int index, mask16 tested, real16 t_max)
+{
     return convert_int16(tested & hits_beat16(t, kind, index, t_max, (int16)(CLR_HIT_NONE), (int16)(-1)));
 }
 
@@ -113,8 +119,13 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
             /* All 16 lanes at once, as lane_meets16() would answer each. */
 #if CLR_FEATURE_TRIANGLES
             if (kind == CLR_HIT_TRIANGLE) {
-                real16 t = triangle_distance16_from(&triangles[index], origins, slack, d);
-                met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
+                /* Lanes already occluded, or leaving this triangle, need no answer from it. */
+                mask16 tested = lanes_tested16(kind, index, reach & convert_mask16(met == (int16)(0)), skip_kind,
+                                               skip_index);
+                if (!any_lanes16(tested))
+                    continue;
+                real16 t = triangle_distance16_from(&triangles[index], origins, slack, d, tested);
+                met |= lanes_met16(t, kind, index, tested, t_max);
                 continue;
             }
 #endif
@@ -123,14 +134,14 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
                 __global const ClrSphere* sphere = &spheres[index];
                 real16 t = sphere_distance16_from(sphere->center_radius, sphere->color.w,
                                                   (sphere->flags & CLR_SURFACE_NEAR_EYE) != 0u, origins, d);
-                met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
+                met |= lanes_met16(t, kind, index, lanes_tested16(kind, index, reach, skip_kind, skip_index), t_max);
                 continue;
             }
 #endif
 #if CLR_FEATURE_BILLBOARDS
             if (kind == CLR_HIT_BILLBOARD) {
                 real16 t = billboard_distance16_from(&billboards[index], coverage, origins, d);
-                met |= lanes_met16(t, kind, index, reach, skip_kind, skip_index, t_max);
+                met |= lanes_met16(t, kind, index, lanes_tested16(kind, index, reach, skip_kind, skip_index), t_max);
                 continue;
             }
 #endif

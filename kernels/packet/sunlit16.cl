@@ -73,17 +73,15 @@ CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits
     out->color.r = select(out->color.r, (float16)(0.0f), away);
     out->color.g = select(out->color.g, (float16)(0.0f), away);
     out->color.b = select(out->color.b, (float16)(0.0f), away);
-    float r[16], g[16], b[16]; /* triangle_surface_color() */
-    for (int lane = 0; lane < 16; ++lane) {
-        float3 color = indices[lane] < 0 ? (float3)(0.0f) : triangles[indices[lane]].color.xyz;
-        r[lane] = color.x;
-        g[lane] = color.y;
-        b[lane] = color.z;
-    }
+    float4 colors[16]; /* triangle_surface_color() */
+    for (int lane = 0; lane < 16; ++lane)
+        colors[lane] = indices[lane] < 0 ? (float4)(0.0f) : triangles[indices[lane]].color;
+    float16 r, g, b;
+    float_columns16(colors, &r, &g, &b);
     float16 shade = convert_float16(cosine);
-    out->lit.r = select(out->lit.r, vload16(0, r) * shade, lit);
-    out->lit.g = select(out->lit.g, vload16(0, g) * shade, lit);
-    out->lit.b = select(out->lit.b, vload16(0, b) * shade, lit);
+    out->lit.r = select(out->lit.r, r * shade, lit);
+    out->lit.g = select(out->lit.g, g * shade, lit);
+    out->lit.b = select(out->lit.b, b * shade, lit);
     ShadowRays16* rays = &out->rays;
     mask16 ray = convert_mask16(lit);
     vstore16(select(vload16(0, rays->wanted), (int16)(1), lit), 0, rays->wanted);
