@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <dlfcn.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -15,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/loopback_client.h"
 #include "view/bounded_server.h"
 
 // accept() as cpp-httplib's library calls it (this definition comes before the C library's):
@@ -62,14 +62,8 @@ TEST(BoundedServer, ASlowButSteadyReaderGetsTheWholeAnswer) {
     ASSERT_GT(port, 0);
     std::thread listener([&] { server.listen_after_bind(); });
 
-    const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
-    int small = 64 * 1024;
-    ::setsockopt(socket, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int socket = testing::connect_to_loopback(port, 64 * 1024);
+    ASSERT_GE(socket, 0);
     const std::string request = "GET /big HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n";
     ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
     // 32 KiB every 20 ms: about 1.6 MB/s, 4 s for the answer; never a pause of 0.2 s.
@@ -121,12 +115,8 @@ TEST(BoundedServer, AFailedAcceptDoesNotEndTheListening) {
 
     // Stopped while every accept fails (rounds end one after another), the listening ends.
     failing_accepts = 1000000;
-    const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);  // waits in the backlog
+    const int socket = testing::connect_to_loopback(port);  // waits in the backlog
+    ASSERT_GE(socket, 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
     const auto stopped_at = std::chrono::steady_clock::now();
     server.stop();
@@ -149,12 +139,8 @@ TEST(BoundedServer, SmallAnswersOnAKeptAliveConnectionAreNotHeldBack) {
     ASSERT_GT(port, 0);
     std::thread listener([&] { server.listen_after_bind(); });
 
-    const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int socket = testing::connect_to_loopback(port);
+    ASSERT_GE(socket, 0);
     // One answer: its head and the two bytes of its body.
     const auto ask = [socket] {
         const std::string request = "GET /hi HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
@@ -186,20 +172,6 @@ TEST(BoundedServer, SmallAnswersOnAKeptAliveConnectionAreNotHeldBack) {
 }
 
 
-// A connection to `port` on loopback; -1 when it cannot connect.
-int connect_to(int port) {
-    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
-        ::close(socket);
-        return -1;
-    }
-    return socket;
-}
-
 // Clients that send a request the server refuses (one it answers and closes, as the viewer's 403
 // without the token; one whose head never ends, 408) and then neither read nor close: each
 // refused connection lingered a tenth of a second in the thread that served it while others
@@ -223,7 +195,7 @@ TEST(BoundedServer, RefusedConnectionsThatLingerDoNotHoldTheThreads) {
     constexpr int kRefused = 300;  // at 0.1 s of one of 2 threads each: 15 s
     std::vector<int> refused;
     for (int k = 0; k < kRefused; ++k) {
-        const int socket = connect_to(port);
+        const int socket = testing::connect_to_loopback(port);
         if (socket < 0) break;
         const std::string request = k % 2 == 0 ? "GET /refused HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"
                                                : "GET /hi HTTP/1.1\r\nHost: 127.0.0.1\r\n";  // no end
@@ -263,7 +235,7 @@ TEST(BoundedServer, ARefusedConnectionLingersThenCloses) {
     std::thread listener([&] { server.listen_after_bind(); });
     while (!server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
 
-    const int socket = connect_to(port);
+    const int socket = testing::connect_to_loopback(port);
     ASSERT_GE(socket, 0);
     const std::string request = "GET /refused HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
     ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
@@ -21,6 +20,7 @@
 #include <thread>
 
 #include "support/command.h"
+#include "support/loopback_client.h"
 #include "support/temp_folder.h"
 #include "view/viewer_process.h"
 
@@ -279,12 +279,8 @@ TEST(ViewLifetime, AHalfSentRequestIsDroppedAtTheStop) {
     TempFolder folder;
     ViewerProcess viewer("'" + kDemoScene + "' --size 16x9", folder.path());
     ASSERT_TRUE(viewer.started()) << viewer.output();
-    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(viewer.port()));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int socket = testing::connect_to_loopback(viewer.port());
+    ASSERT_GE(socket, 0);
     ASSERT_EQ(::write(socket, "GET /scene", 10), 10);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the server is reading it
     int code = 0;

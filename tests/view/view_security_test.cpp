@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -19,6 +18,7 @@
 #include <tuple>
 #include <vector>
 
+#include "support/loopback_client.h"
 #include "support/process_memory.h"
 #include "support/temp_folder.h"
 #include "view/bounded_server.h"
@@ -28,24 +28,11 @@ namespace clr {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::connect_to_loopback;
 using testing::TempFolder;
 using testing::ViewerProcess;
 
 const std::string kDemoScene = std::string(CLRENDER_SOURCE_DIR) + "/scenes/demo/demo.json";
-
-// A TCP connection to the viewer; -1 when it cannot connect.
-int connect_to_viewer(int port) {
-    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
-        ::close(socket);
-        return -1;
-    }
-    return socket;
-}
 
 // What the server sends on `socket` within `seconds`: until it closes the connection, or until
 // `whole` says that what came is whole.
@@ -192,7 +179,7 @@ TEST_F(ViewSecurity, EveryAnswerCarriesTheSameHeadersRefusalsIncluded) {
                                               "Accept-Ranges: none",
                                               "Content-Security-Policy: default-src 'none';"};
     for (const auto& [request, status] : requests) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
         const std::string answer = read_one_answer(socket, 5);
@@ -237,7 +224,7 @@ TEST_F(ViewSecurity, AHostOrOriginGivenTwiceIsRefused) {
         post + "Origin: " + own_origin() + "\r\nOrigin: " + own_origin() + "\r\n\r\n" + body,
     };
     for (const std::string& request : requests) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
         const std::string answer = read_one_answer(socket, 5);
@@ -246,7 +233,7 @@ TEST_F(ViewSecurity, AHostOrOriginGivenTwiceIsRefused) {
     }
     EXPECT_FALSE(fs::exists(folder_->file("twice_check.json")));
     // The same requests with each header once are served.
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string once = get + "Host: " + own_host() + "\r\n\r\n";
     ASSERT_EQ(::send(socket, once.data(), once.size(), MSG_NOSIGNAL), static_cast<ssize_t>(once.size()));
@@ -291,7 +278,7 @@ TEST_F(ViewSecurity, ABodyNotReadIsNeverTakenForTheNextRequest) {
         {"GET " + viewer_->with_token("/scene.json") + carrying + own + "Range: bytes=oops\r\n\r\n", "HTTP/1.1 416"},
     };
     for (const auto& [request, status] : requests) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         const std::string both = request + smuggled;
         ASSERT_EQ(::send(socket, both.data(), both.size(), MSG_NOSIGNAL), static_cast<ssize_t>(both.size()));
@@ -319,7 +306,7 @@ TEST_F(ViewSecurity, AnInterimContinueIsNotTakenForTheAnswer) {
         const std::string request = "GET " + viewer_->with_token(path) + " HTTP/1.1\r\nHost: " + own_host() +
                                     "\r\nExpect: 100-continue\r\nContent-Length: " + std::to_string(smuggled.size()) +
                                     "\r\n\r\n" + smuggled;
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
         const std::string received = read_until_closed(socket, 5);
@@ -404,7 +391,7 @@ TEST_F(ViewSecurity, BadParametersGet400NamingTheParameterAndTheServerGoesOn) {
 // has not ended), and the answer asks the client to close the connection.
 TEST_F(ViewSecurity, AChunkedBodyIsRefusedBeforeItIsRead) {
     for (const std::string method : {"POST", "GET"}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         // The headers and the first chunk of a body that never ends.
         const std::string request = method + " " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
@@ -442,7 +429,7 @@ std::size_t send_until_refused(int socket, const std::string& block, std::size_t
 // view/bounded_server.h) and closes the connection, answering 431, instead of keeping it
 // all in memory. Without the limit the server would read all 32 MB.
 TEST_F(ViewSecurity, AnEndlessRequestLineIsCutAtTheHeadsLimit) {
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string block(64 * 1024, 'G');
     const std::size_t sent = send_until_refused(socket, block, 32u * 1024 * 1024);
@@ -460,7 +447,7 @@ TEST_F(ViewSecurity, AnEndlessRequestLineIsCutAtTheHeadsLimit) {
 // the server stops reading at the limit (2 MiB), answers 413 and closes. Without the limit
 // the server would read all 32 MB.
 TEST_F(ViewSecurity, ABodyOverTheLimitIsNotReadToItsEnd) {
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string head = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
                              "\r\nOrigin: " + own_origin() + "\r\nContent-Type: application/json\r\nContent-Length: " +
@@ -479,7 +466,7 @@ TEST_F(ViewSecurity, ABodyOverTheLimitIsNotReadToItsEnd) {
 
 // Headers that go on and on, each line short: the same limit, with its answer.
 TEST_F(ViewSecurity, EndlessHeadersGet431) {
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     std::string request = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n";
     for (int i = 0; request.size() < 70 * 1024; ++i) request += "X-Filler-" + std::to_string(i) + ": 0123456789\r\n";
@@ -506,7 +493,7 @@ TEST_F(ViewSecurity, ARequestEndedByALimitGetsOneAnswer) {
                                        std::string(2 * 1024 * 1024 + 4096, ' ');
     for (const auto& [request, status] :
          {std::pair{endless_headers, std::string("HTTP/1.1 431")}, std::pair{over_the_limit, std::string("HTTP/1.1 413")}}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
         const std::string answers = read_until_closed(socket, 10);
@@ -525,7 +512,7 @@ TEST_F(ViewSecurity, APostWithoutALengthIsAnsweredAtOnce) {
                              "\r\nOrigin: " + own_origin() + "\r\n\r\n";
     const std::string body = R"({"keys": [{"eye": [0, 2, 12], "lookat": [0, 1, 0]}], "name": "lengthless_check"})";
     for (const std::string& request : {head, head + body}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
         if (request != head) ::shutdown(socket, SHUT_WR);  // as `nc -N` ends what it sends
@@ -551,7 +538,7 @@ TEST_F(ViewSecurity, AContentLengthThatIsNotOneNumberIsRefused) {
     for (const std::string& lengths : {"Content-Length: " + length + "\r\nContent-Length: 0\r\n",
                                        "Content-Length: " + length + ", " + length + "\r\n",
                                        "Content-Length: +" + length + "\r\n"}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         const std::string request = head + lengths + "\r\n" + body;
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
@@ -569,7 +556,7 @@ TEST_F(ViewSecurity, ABodyDeclaredOverTheLimitIsRefusedAtOnce) {
     const std::string head = "POST " + viewer_->with_token("/export") + " HTTP/1.1\r\nHost: " + own_host() +
                              "\r\nOrigin: " + own_origin() + "\r\nContent-Type: application/json\r\n";
     for (const char* length : {"3000000", "999999999999"}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         const std::string request = head + "Content-Length: " + length + "\r\n\r\n";
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
@@ -590,7 +577,7 @@ TEST_F(ViewSecurity, AnAnswerThatClosesSaysSoOnce) {
     for (const std::string& request : {"GET /scene.json HTTP/1.1\r\n" + host + "\r\n",
                                        "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\n\r\n",
                                        exporting + "\r\n", exporting + "Content-Length: 1, 2\r\n\r\n"}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
         const std::string answer = read_until_closed(socket, 4);
@@ -673,7 +660,7 @@ TEST_F(ViewSecurity, AQueryIsReadAsSentEachParameterOnceAndKnown) {
 // looks before its first band ends, and a small explanation is answered as that frame is.
 TEST_F(ViewSecurity, AHalfClosedClientGetsASmallFrameOrExplanation) {
     for (const char* path : {"/frame.png", "/explain?x=1&y=1"}) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         const std::string request =
             "GET " + viewer_->with_token(path) + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
@@ -690,7 +677,7 @@ TEST_F(ViewSecurity, AHalfClosedClientGetsASmallFrameOrExplanation) {
 // those lines as head too, whatever the line ends: 431, where the whole 100 KB was parsed
 // and served before.
 TEST_F(ViewSecurity, ABareLineFeedDoesNotLiftTheHeadsLimit) {
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     std::string request = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\n\n";
     while (request.size() < 100 * 1024) request += "a:b\r\n";
@@ -705,7 +692,7 @@ TEST_F(ViewSecurity, ABareLineFeedDoesNotLiftTheHeadsLimit) {
 // its request ends kRequestSeconds (10 s) after it began, with 408, rather than holding one
 // of the server's threads for as long as it goes on.
 TEST_F(ViewSecurity, ATrickledRequestEndsAtItsDeadline) {
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const auto start = std::chrono::steady_clock::now();
     std::string answer;
@@ -733,7 +720,7 @@ TEST_F(ViewSecurity, AStalledRequestGets408WithItsReason) {
     };
     std::vector<int> sockets;
     for (const std::string& request : stalled) {
-        sockets.push_back(connect_to_viewer(viewer_->port()));
+        sockets.push_back(connect_to_loopback(viewer_->port()));
         ASSERT_GE(sockets.back(), 0);
         const ssize_t sent = ::send(sockets.back(), request.data(), request.size(), MSG_NOSIGNAL);
         ASSERT_EQ(sent, static_cast<ssize_t>(request.size()));
@@ -765,7 +752,7 @@ TEST_F(ViewSecurity, TricklingHeadsDoNotStallARequestThatArrivesWhole) {
         std::vector<std::size_t> sent(kTricklers, 0);
         while (!stop) {
             for (int k = 0; k < kTricklers; ++k) {
-                if (sockets[k] < 0 && (sockets[k] = connect_to_viewer(viewer_->port())) >= 0) {
+                if (sockets[k] < 0 && (sockets[k] = connect_to_loopback(viewer_->port())) >= 0) {
                     sent[k] = 0;
                     ++connections;
                 }
@@ -784,7 +771,7 @@ TEST_F(ViewSecurity, TricklingHeadsDoNotStallARequestThatArrivesWhole) {
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // every thread taken, others waiting
     const auto start = std::chrono::steady_clock::now();
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     const std::string request =
         "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
     const bool sent = socket >= 0 && ::send(socket, request.data(), request.size(), MSG_NOSIGNAL) ==
@@ -806,13 +793,13 @@ TEST_F(ViewSecurity, TricklingHeadsDoNotStallARequestThatArrivesWhole) {
 TEST_F(ViewSecurity, ConnectionsThatSendNothingDoNotStallTheOthers) {
     std::vector<int> idle;
     for (int k = 0; k < 320; ++k) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         if (socket < 0) break;
         idle.push_back(socket);
     }
     EXPECT_EQ(idle.size(), 320u);
     const auto start = std::chrono::steady_clock::now();
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string request = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
     ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
@@ -826,7 +813,7 @@ TEST_F(ViewSecurity, ConnectionsThatSendNothingDoNotStallTheOthers) {
 
 // Two requests sent together on one connection: both are answered, in order.
 TEST_F(ViewSecurity, PipelinedRequestsAreEachAnswered) {
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string first = "GET " + viewer_->with_token("/scene.json") + " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
     const std::string second = "GET /nothing HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
@@ -856,7 +843,7 @@ TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
         {exporting + head + "\r\n", "HTTP/1.1 411"},  // no length at all
     };
     for (const auto& [request, status] : refused) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
         const std::string answer = read_one_answer(socket, 5);
@@ -867,7 +854,7 @@ TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
         EXPECT_EQ(after, 0) << request;
     }
     // A request that may be served is invited, and its body read.
-    const int socket = connect_to_viewer(viewer_->port());
+    const int socket = connect_to_loopback(viewer_->port());
     ASSERT_GE(socket, 0);
     const std::string request = exporting + head + "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n";
     ASSERT_EQ(::send(socket, request.data(), request.size(), MSG_NOSIGNAL), static_cast<ssize_t>(request.size()));
@@ -887,7 +874,7 @@ TEST_F(ViewSecurity, ABodyIsInvitedOnlyWhereTheRequestMayBeServed) {
 // `head` (a request's head, without its Content-Length and empty line) with `body`, sent on a
 // connection of its own; the answer, and whether the connection then closed.
 std::pair<std::string, bool> send_with_body(int port, const std::string& head, const std::string& body) {
-    const int socket = connect_to_viewer(port);
+    const int socket = connect_to_loopback(port);
     if (socket < 0) return {"", false};
     const std::string request = head + "Content-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
     if (::send(socket, request.data(), request.size(), MSG_NOSIGNAL) != static_cast<ssize_t>(request.size())) {
@@ -1016,7 +1003,7 @@ TEST_F(ViewSecurity, TraceAndConnectGet405WithAllow) {
         {"TRACE", "/nothing", ""},
     };
     for (const auto& [method, path, allow] : cases) {
-        const int socket = connect_to_viewer(viewer_->port());
+        const int socket = connect_to_loopback(viewer_->port());
         ASSERT_GE(socket, 0);
         const std::string request = method + " " + viewer_->with_token(path) + " HTTP/1.1\r\nHost: " + own_host() +
                                     "\r\nOrigin: " + own_origin() + "\r\n\r\n";
@@ -1048,26 +1035,20 @@ TEST_F(ViewSecurity, AJobIsNamedByItsWholeNumber) {
 
 TEST_F(ViewSecurity, TenClientsAtOnceBesideOnesThatHangUpStallOrReadSlowly) {
     // A client that asks for a large frame and closes the connection before the answer.
-    const int hang_up = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(viewer_->port()));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(hang_up, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int hang_up = connect_to_loopback(viewer_->port());
+    ASSERT_GE(hang_up, 0);
     const std::string request = "GET " + viewer_->with_token("/frame.png?size=1280x720&spp=2") +
                                 " HTTP/1.1\r\nHost: " + own_host() + "\r\n\r\n";
     ASSERT_EQ(::write(hang_up, request.data(), request.size()), static_cast<ssize_t>(request.size()));
     ::close(hang_up);
     // One that connects and sends half a request, then nothing.
-    const int silent = ::socket(AF_INET, SOCK_STREAM, 0);
-    ASSERT_EQ(::connect(silent, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int silent = connect_to_loopback(viewer_->port());
+    ASSERT_GE(silent, 0);
     ASSERT_EQ(::write(silent, "GET /frame.png", 14), 14);
     // And a slow reader: it asks for large raw frames, more than the socket buffers hold, and
     // reads none of them.
-    const int slow = ::socket(AF_INET, SOCK_STREAM, 0);
-    int small_buffer = 4096;
-    ::setsockopt(slow, SOL_SOCKET, SO_RCVBUF, &small_buffer, sizeof small_buffer);
-    ASSERT_EQ(::connect(slow, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const int slow = connect_to_loopback(viewer_->port(), 4096);
+    ASSERT_GE(slow, 0);
     std::string slow_requests;
     for (int i = 0; i < 3; ++i)
         slow_requests += "GET " + viewer_->with_token("/frame.rgba?size=1280x720&eye=0,1," + std::to_string(12 + i)) +

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <arpa/inet.h>
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -19,6 +18,7 @@
 #include <thread>
 #include <utility>
 
+#include "support/loopback_client.h"
 #include "support/temp_folder.h"
 #include "view/viewer_process.h"
 
@@ -47,16 +47,8 @@ void write_deep_mirrors(const TempFolder& folder) {
 // A connection to the viewer that has sent `path`'s GET; -1 when it cannot connect. With
 // `receive_buffer`, the connection's receive buffer is that small.
 int send_request(const ViewerProcess& viewer, const std::string& path, int receive_buffer = 0) {
-    const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (receive_buffer > 0) ::setsockopt(socket, SOL_SOCKET, SO_RCVBUF, &receive_buffer, sizeof receive_buffer);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(viewer.port()));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
-        ::close(socket);
-        return -1;
-    }
+    const int socket = testing::connect_to_loopback(viewer.port(), receive_buffer);
+    if (socket < 0) return -1;
     const std::string request = "GET " + viewer.with_token(path) + " HTTP/1.1\r\nHost: 127.0.0.1:" +
                                 std::to_string(viewer.port()) + "\r\n\r\n";
     (void)::send(socket, request.data(), request.size(), MSG_NOSIGNAL);
