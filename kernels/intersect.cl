@@ -3,6 +3,7 @@
 #ifndef CLR_INTERSECT_CL
 #define CLR_INTERSECT_CL
 
+#include "common/bvh_nodes.cl"
 #include "common/hit_order.cl"
 #include "common/math.cl"
 #include "common/scene_items.cl"
@@ -79,12 +80,12 @@ Hit intersect_bvh(real3 origin, real3 direction, real t_max, int skip_kind, int 
         __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
         if (!box_reachable(node, origin, inverse, hit.t))
             continue;
-        if (node->count == 0) {
-            stack[top++] = node->first + 1;
-            stack[top++] = node->first;
+        if (bvh_count(node) == 0) {
+            stack[top++] = bvh_first(node) + 1;
+            stack[top++] = bvh_first(node);
             continue;
         }
-        for (uint k = node->first; k < node->first + node->count; ++k) {
+        for (uint k = bvh_first(node), end = k + bvh_count(node); k < end; ++k) {
             int kind = item_kind(bvh_items[k]);
             int index = item_index(bvh_items[k]);
             if (skips_surface(kind, index, skip_kind, skip_index))

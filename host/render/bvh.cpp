@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <future>
 #include <limits>
 #include <system_error>
@@ -218,7 +219,16 @@ Bvh build_tree(std::vector<BvhPrimitive> primitives, int max_depth) {
 
 namespace {
 
-ClrBvhNode device_node(const Bvh::Node& node, const Vec3& shift) {
+// The bits of `value` in a float word (ClrBvhNode's w words; the kernels read them back with
+// as_uint, and the host never computes with them).
+float word_of(std::uint32_t value) {
+    float word;
+    std::memcpy(&word, &value, sizeof word);
+    return word;
+}
+
+// `node` in the device form; an inner node's children found at `children` there.
+ClrBvhNode device_node(const Bvh::Node& node, const Vec3& shift, std::uint32_t children) {
     ClrBvhNode out{};
     // A little room, so that objects rounded to float on their own (compile_scene) stay
     // inside the float bounds too.
@@ -234,9 +244,26 @@ ClrBvhNode device_node(const Bvh::Node& node, const Vec3& shift) {
     out.upper.s[0] = up(upper.x);
     out.upper.s[1] = up(upper.y);
     out.upper.s[2] = up(upper.z);
-    out.first = node.first;
-    out.count = node.count;
+    out.lower.s[3] = word_of(node.count == 0 ? children : node.first);
+    out.upper.s[3] = word_of(node.count);
     return out;
+}
+
+// Where each of `bvh`'s nodes goes in the device form: in order, but every pair of siblings
+// starting at an even index (a zero node that no node names before it where needed), so that
+// with 32-byte nodes in a 64-byte aligned buffer a node's children share one cache line.
+// Returns the device form's node count.
+std::uint32_t device_positions(const Bvh& bvh, std::vector<std::uint32_t>& positions) {
+    std::vector<bool> starts_pair(bvh.nodes.size(), false);
+    for (const Bvh::Node& node : bvh.nodes)
+        if (node.count == 0) starts_pair[node.first] = true;
+    positions.resize(bvh.nodes.size());
+    std::uint32_t next = 0;
+    for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
+        if (starts_pair[i] && next % 2 == 1) ++next;
+        positions[i] = next++;
+    }
+    return next;
 }
 
 // Nodes a worker converts at a time: a moving camera re-expresses every node each frame (half
@@ -246,12 +273,17 @@ constexpr std::size_t kNodesPerTask = 1u << 16;
 }  // namespace
 
 void compile_bvh(const Bvh& bvh, const Vec3& origin, std::vector<ClrBvhNode>& nodes) {
-    nodes.resize(bvh.nodes.size());
+    std::vector<std::uint32_t> positions;
+    nodes.assign(device_positions(bvh, positions), ClrBvhNode{});
     const Vec3 shift = origin - bvh.origin;  // zero when the frame's impostors were placed there
     const std::size_t tasks = (bvh.nodes.size() + kNodesPerTask - 1) / kNodesPerTask;
     parallel_for(tasks, static_cast<std::size_t>(usable_cpu_count()), [&](std::size_t task) {
         const std::size_t end = std::min(bvh.nodes.size(), (task + 1) * kNodesPerTask);
-        for (std::size_t i = task * kNodesPerTask; i < end; ++i) nodes[i] = device_node(bvh.nodes[i], shift);
+        for (std::size_t i = task * kNodesPerTask; i < end; ++i) {
+            const Bvh::Node& node = bvh.nodes[i];
+            const std::uint32_t children = node.count == 0 ? positions[node.first] : 0;
+            nodes[positions[i]] = device_node(node, shift, children);
+        }
     });
 }
 

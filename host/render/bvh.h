@@ -44,7 +44,8 @@ Bvh build_tree(std::vector<BvhPrimitive> primitives, int max_depth = kMaxBvhDept
 
 // The device form into `nodes` (whose storage a moving camera's frames reuse), bounds relative
 // to `origin` and rounded outwards to float so that they still contain every object after
-// rounding.
+// rounding. Node 0 is the root; siblings start at even indices (ClrBvhNode), so there may be
+// a few more nodes than in `bvh`, which no node names.
 void compile_bvh(const Bvh& bvh, const Vec3& origin, std::vector<ClrBvhNode>& nodes);
 
 }  // namespace clr

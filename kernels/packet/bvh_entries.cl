@@ -14,6 +14,7 @@
 #ifndef CLR_PACKET_BVH_ENTRIES_CL
 #define CLR_PACKET_BVH_ENTRIES_CL
 
+#include "common/bvh_nodes.cl"
 #include "common/math.cl"
 #include "common/scene_params.cl"
 #include "intersect.cl"
@@ -98,14 +99,14 @@ void bvh_entries(const TileFrustum* f, BvhEntries* entries, CLR_SCENE_PARAMS)
             __global const ClrBvhNode* node = &bvh_nodes[entries->node[i]];
             uint kept[2];
             int n = 0;
-            if (node->count > 0) {
+            if (bvh_count(node) > 0) {
                 kept[n++] = entries->node[i];
             } else {
                 deeper = true;
-                __global const ClrBvhNode* left = &bvh_nodes[node->first];
+                __global const ClrBvhNode* left = &bvh_nodes[bvh_first(node)];
                 bool left_first = centre_along(left, f->eye, f->centre) <= centre_along(left + 1, f->eye, f->centre);
-                uint near = left_first ? node->first : node->first + 1;
-                uint far = left_first ? node->first + 1 : node->first;
+                uint near = left_first ? bvh_first(node) : bvh_first(node) + 1;
+                uint far = left_first ? bvh_first(node) + 1 : bvh_first(node);
                 if (frustum_meets(f, &bvh_nodes[near]))
                     kept[n++] = near;
                 if (frustum_meets(f, &bvh_nodes[far]))

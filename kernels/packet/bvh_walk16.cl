@@ -15,6 +15,7 @@
 #ifndef CLR_PACKET_BVH_WALK16_CL
 #define CLR_PACKET_BVH_WALK16_CL
 
+#include "common/bvh_nodes.cl"
 #include "common/math.cl"
 #include "common/scene_items.cl"
 #include "common/scene_params.cl"
@@ -44,14 +45,14 @@ CLR_PACKET_INLINE void nearest_in_bvh16(real3 origin, Directions16 d, const BvhE
         __global const ClrBvhNode* node = &bvh_nodes[stack[--top]];
         if (!any_lanes16(box_reached16(node, eye, inverse, best->t)))
             continue;
-        if (node->count == 0) {
-            __global const ClrBvhNode* left = &bvh_nodes[node->first];
+        if (bvh_count(node) == 0) {
+            __global const ClrBvhNode* left = &bvh_nodes[bvh_first(node)];
             bool left_first = centre_along(left, origin, lead) <= centre_along(left + 1, origin, lead);
-            stack[top++] = left_first ? node->first + 1 : node->first; /* popped second */
-            stack[top++] = left_first ? node->first : node->first + 1;
+            stack[top++] = left_first ? bvh_first(node) + 1 : bvh_first(node); /* popped second */
+            stack[top++] = left_first ? bvh_first(node) : bvh_first(node) + 1;
             continue;
         }
-        for (uint k = node->first; k < node->first + node->count; ++k)
+        for (uint k = bvh_first(node), end = k + bvh_count(node); k < end; ++k)
             keep_nearer16(item_kind(bvh_items[k]), item_index(bvh_items[k]), origin, d, best, colors, best_texel,
                           CLR_SCENE_ARGS);
     }

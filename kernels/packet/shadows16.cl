@@ -16,6 +16,7 @@
 #define CLR_PACKET_SHADOWS16_CL
 
 #include "common/hit_order.cl"
+#include "common/bvh_nodes.cl"
 #include "common/math.cl"
 #include "common/scene_params.cl"
 #include "intersect.cl"
@@ -105,15 +106,15 @@ void occluded_lanes16(ShadowRays16* rays, CLR_SCENE_PARAMS)
         mask16 reach = open & box_reached16(node, origins, inverse, t_max);
         if (!any_lanes16(reach))
             continue;
-        if (node->count == 0) {
-            stack[top++] = node->first + 1;
-            stack[top++] = node->first;
+        if (bvh_count(node) == 0) {
+            stack[top++] = bvh_first(node) + 1;
+            stack[top++] = bvh_first(node);
             continue;
         }
         int reaching[16];
         vstore16(convert_int16(reach), 0, reaching);
         int16 met = (int16)(0); /* lanes that a triangle of this leaf occludes */
-        for (uint k = node->first; k < node->first + node->count; ++k) {
+        for (uint k = bvh_first(node), end = k + bvh_count(node); k < end; ++k) {
             int kind = item_kind(bvh_items[k]);
             int index = item_index(bvh_items[k]);
             /* All 16 lanes at once, as lane_meets16() would answer each. */

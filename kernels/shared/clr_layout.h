@@ -73,10 +73,6 @@
     CLR_LAYOUT_STRUCT(ClrBvhNode)                   \
     CLR_LAYOUT_FIELD(ClrBvhNode, lower)             \
     CLR_LAYOUT_FIELD(ClrBvhNode, upper)             \
-    CLR_LAYOUT_FIELD(ClrBvhNode, first)             \
-    CLR_LAYOUT_FIELD(ClrBvhNode, count)             \
-    CLR_LAYOUT_FIELD(ClrBvhNode, pad0)              \
-    CLR_LAYOUT_FIELD(ClrBvhNode, pad1)              \
     CLR_LAYOUT_STRUCT(ClrSceneInfo)                 \
     CLR_LAYOUT_FIELD(ClrSceneInfo, background)      \
     CLR_LAYOUT_FIELD(ClrSceneInfo, sun)             \

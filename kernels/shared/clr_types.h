@@ -155,14 +155,16 @@ typedef struct {
 } ClrHit;
 
 /* A node of the bounding volume hierarchy used by secondary rays (host/render/bvh.h). Trees
- * are at most CLR_BVH_STACK - 1 levels deep, so a traversal stack of CLR_BVH_STACK suffices. */
+ * are at most CLR_BVH_STACK - 1 levels deep, so a traversal stack of CLR_BVH_STACK suffices.
+ * 32 bytes, and two siblings start at an even index, so that a node's two children are one
+ * 64-byte cache line (host: compile_bvh). The w words hold integers' bits: kernels read them
+ * with bvh_first() and bvh_count() (kernels/common/bvh_nodes.cl). */
 #define CLR_BVH_STACK 48
 typedef struct {
-    clr_float4 lower; /* xyz = lower corner of the bounds */
-    clr_float4 upper; /* xyz = upper corner */
-    clr_uint first;   /* inner node: left child (the right child is first + 1); leaf: first item */
-    clr_uint count;   /* leaf: number of items (scene items, see CLR_ITEM_KIND_BITS); 0: inner */
-    clr_uint pad0, pad1;
+    clr_float4 lower; /* xyz = lower corner of the bounds; w = first: inner node, its left child
+                         (the right child is first + 1); leaf, its first item */
+    clr_float4 upper; /* xyz = upper corner; w = count: leaf, its number of items (scene items,
+                         see CLR_ITEM_KIND_BITS); 0: inner node */
 } ClrBvhNode;
 
 /* Everything about the scene that is not per object and not per frame. */
@@ -192,7 +194,7 @@ static_assert(sizeof(ClrSceneInfo) == 64, "ClrSceneInfo layout");
 static_assert(sizeof(ClrPlane) == 64, "ClrPlane layout");
 static_assert(sizeof(ClrLight) == 32, "ClrLight layout");
 static_assert(sizeof(ClrMaterial) == 48, "ClrMaterial layout");
-static_assert(sizeof(ClrBvhNode) == 48, "ClrBvhNode layout");
+static_assert(sizeof(ClrBvhNode) == 32, "ClrBvhNode layout");
 #endif
 
 #endif /* CLR_TYPES_H */
