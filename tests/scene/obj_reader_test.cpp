@@ -478,6 +478,35 @@ TEST(ObjReader, EveryMaterialFileIsReadBeforeTheFaces) {
     }
 }
 
+// "mtllib My Model.mtl", as Blender writes the .mtl of a model saved as "My Model.obj" (and as
+// three.js and Assimp read it): the whole rest of the line names that file. Cut at the space, it
+// named "My", no file, and the model was refused ("line 1: mtllib My: no such file"). A line
+// whose whole rest names no file is still cut into names, and the file is listed among the
+// model's own for a model that fails at a later line too.
+TEST(ObjReader, AnMtllibLineThatNamesOneFileWithASpaceReadsIt) {
+    TempFolder folder;
+    folder.write("My Model.mtl", "newmtl red\nKd 1 0 0\n");
+    for (const std::string line : {"mtllib My Model.mtl\n", "mtllib   My Model.mtl \t\n", "mtllib My Model.mtl\r\n"}) {
+        const ObjMesh mesh = read_obj(folder.write("My Model.obj", line + kSquare + "usemtl red\nf 1 2 3\n"));
+        EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}})) << line;
+        EXPECT_TRUE(mesh.warnings.empty()) << line << mesh.warnings.front();
+        ASSERT_EQ(mesh.material_files.size(), 1u) << line;
+        EXPECT_EQ(mesh.material_files[0], folder.file("My Model.mtl")) << line;
+    }
+    try {
+        read_obj(folder.write("broken.obj", "mtllib My Model.mtl\n" + kSquare + "f 1 2 9\n"));
+        ADD_FAILURE() << "a face of a missing position was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(error.material_files, std::vector<std::string>{folder.file("My Model.mtl")});
+    }
+    try {
+        read_obj(folder.write("other.obj", "mtllib Other Model.mtl\n" + kSquare + "f 1 2 3\n"));
+        ADD_FAILURE() << "read without its .mtl";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "line 1: mtllib Other: no such file");
+    }
+}
+
 // A line of millions of words is refused at the words it may have, without a list of them
 // all (about 17 times the line's size): checked in a child whose address space may grow by
 // 400 MiB, with a 64 MiB line whose list of words alone would take 512 MiB.
