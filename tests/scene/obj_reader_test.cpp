@@ -633,6 +633,35 @@ TEST(ObjReader, Utf16AndGzipFilesAreNamedAsSuch) {
     }
 }
 
+// An OBJ kept compressed with another tool than gzip, or in an archive, and named .obj: each
+// named as such (the first bytes as the tools write them). Read as text they were "no faces",
+// or the error of a line that a block stored uncompressed held (a zstd file of a triangle:
+// "line 2: 'v': 'f' is not a finite number").
+TEST(ObjReader, CompressedAndArchivedFilesAreNamedAsSuch) {
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {std::string("\x28\xB5\x2F\xFD\x24\x23\xE5\0\0\x90", 10) + triangle,
+         "it is zstd-compressed; decompress it first"},
+        {std::string("\xFD" "7zXZ\0\0\x04\xE6\xD6\xB4\x46", 12), "it is xz-compressed; decompress it first"},
+        {"BZh91AY&SY\xF6\xA5", "it is bzip2-compressed; decompress it first"},
+        {std::string("\x04\x22\x4D\x18\x64\x40\xA7", 7) + triangle, "it is LZ4-compressed; decompress it first"},
+        {std::string("7z\xBC\xAF\x27\x1C\0\x04", 8), "it is a 7-Zip archive; extract the file first"},
+        {std::string("PK\x03\x04\x14\0\0\0\x08\0", 10) + "mesh.obj" + triangle,
+         "it is a ZIP archive; extract the file first"},
+    };
+    for (const auto& [text, expected] : cases) EXPECT_EQ(error_for(text), expected);
+    // Text that merely starts as bzip2's mark does is read as text.
+    EXPECT_EQ(error_for("BZh 1 2 3\n" + triangle).find("compressed"), std::string::npos);
+    TempFolder folder;
+    folder.write("packed.mtl", std::string("\x28\xB5\x2F\xFD\x24\x23\xE5\0\0\x90", 10) + "newmtl red\nKd 1 0 0\n");
+    try {
+        read_obj(folder.write("mesh.obj", "mtllib packed.mtl\nusemtl red\n" + triangle));
+        ADD_FAILURE() << "a zstd .mtl was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "line 1: mtllib packed.mtl: it is zstd-compressed; decompress it first");
+    }
+}
+
 TEST(ObjReader, FacesOfFewerThanThreeCornersAreRefused) {
     EXPECT_EQ(error_for(kSquare + "f 1 2\n"), "line 5: a face needs 3 corners or more, this one has 2");
     EXPECT_EQ(error_for(kSquare + "f\n"), "line 5: a face needs 3 corners or more, this one has 0");
