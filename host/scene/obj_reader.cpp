@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
@@ -81,6 +82,36 @@ std::string material_file_path(const std::filesystem::path& folder, const std::s
     return path_in_folder(folder, name);
 }
 
+// Whether an entry of the OBJ's folder has `name` (obj_text_checks.h, LibraryFileExists): each
+// name looked up once, however many `mtllib` lines repeat it, while the names held stay small.
+class LibraryFileLookup {
+public:
+    explicit LibraryFileLookup(const std::filesystem::path& folder)
+        : folder_(folder.empty() ? std::string() : folder.string() + "/") {}
+
+    bool exists(const std::string& name) {
+        if (const auto known = known_.find(name); known != known_.end()) return known->second;
+        // The name as the system resolves it (material_file_path's, without its normalising,
+        // which took most of the time of an OBJ of a million such lines).
+        struct stat info {};
+        const bool found = ::stat((name.front() == '/' ? name : folder_ + name).c_str(), &info) == 0;
+        if (held_bytes_ + name.size() + 64 <= kMostHeldBytes) {
+            held_bytes_ += name.size() + 64;
+            known_.emplace(name, found);
+        }
+        return found;
+    }
+    LibraryFileExists as_function() {
+        return [this](const std::string& name) { return exists(name); };
+    }
+
+private:
+    static constexpr std::uint64_t kMostHeldBytes = 16u << 20;
+    std::string folder_;  // with its '/', or "" for the current folder
+    std::unordered_map<std::string, bool> known_;
+    std::uint64_t held_bytes_ = 0;
+};
+
 // Reads each .mtl file an OBJ names, relative to the OBJ's folder, with the limits of any
 // input file; the first failure is kept for read_obj to report. The materials are combined as
 // tinyobjloader's LoadMtl would list them, file after file, a name's first definition kept,
@@ -140,6 +171,7 @@ public:
     }
 
     const std::string& problem() const { return problem_; }
+    const std::filesystem::path& folder() const { return folder_; }
     // A warning for each .mtl file with a statement clrender reads written in another case.
     std::vector<std::string> miscased_statement_warnings() const {
         std::vector<std::string> warnings;
@@ -440,7 +472,8 @@ void warn_about_polygons_outside_their_outline(const std::string& text, std::uin
 // them before the faces (docs/scene-format.md, Meshes), which tinyobjloader then reads without
 // their `mtllib` and `usemtl` lines.
 ObjMesh parse_checked(const std::string& text, const ObjTextCounts& counts, MaterialFiles& material_files) {
-    ObjMaterialStatements statements = material_statements(text);
+    LibraryFileLookup library_files(material_files.folder());
+    ObjMaterialStatements statements = material_statements(text, library_files.as_function());
     read_material_libraries(statements, material_files);
     if (!material_files.problem().empty()) throw ObjError(material_files.problem());
     choose_material_names(statements, material_files);
@@ -645,6 +678,7 @@ void list_named_material_files(const std::string& text, const std::filesystem::p
     std::unordered_set<std::string> names;
     std::uint64_t name_bytes = 0;
     std::set<FileInFolderKey> files;
+    LibraryFileLookup library_files(folder);
     for_each_library_name(text, [&](std::uint64_t line, std::string name) {
         if (names.count(name) > 0) return true;
         name_bytes += name.size() + 64;  // with the set's node
@@ -663,7 +697,7 @@ void list_named_material_files(const std::string& text, const std::filesystem::p
         }
         error.material_files.push_back(std::move(path));
         return true;
-    });
+    }, library_files.as_function());
 }
 
 }  // namespace

@@ -308,13 +308,30 @@ std::string obj_statements_used(std::string_view text) {
 
 namespace {
 
+// The longest path the system opens (PATH_MAX): a longer rest of a line names no file.
+constexpr std::size_t kLongestLibraryName = 4096;
+
+// The rest of an `mtllib` statement after its keyword, without the blanks around it, where it
+// holds a space (it would be cut into names) and may be a file's name; "" otherwise.
+std::string whole_library_name(std::string_view rest) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    std::size_t first = 0, end = rest.size();
+    while (first < end && blank(rest[first])) ++first;
+    while (end > first && blank(rest[end - 1])) --end;
+    const std::string_view whole = rest.substr(first, end - first);
+    if (whole.find(' ') == std::string_view::npos || whole.size() > kLongestLibraryName) return {};
+    return std::string(whole);
+}
+
 // Calls `visit(name)` for each name of `mtllib` statement `line`, as tinyobjloader cuts them: the
 // text after "mtllib" and one blank, cut at spaces, a backslash keeping the next character;
 // empty names dropped. Stops when `visit` returns false, and then returns false.
 template <typename Visit>
-bool visit_library_names(std::string_view line, Visit&& visit) {
+bool visit_library_names(std::string_view line, Visit&& visit, const LibraryFileExists& exists) {
     const std::size_t at = line.find("mtllib") + 6;
     if (at >= line.size()) return true;  // "mtllib" alone
+    if (std::string whole = whole_library_name(line.substr(at)); !whole.empty() && exists && exists(whole))
+        return visit(std::move(whole));
     std::string name;
     bool escaped = false;
     for (const char c : line.substr(at + 1)) {
@@ -356,18 +373,21 @@ std::string whole_material_name(std::string_view statement) {
 
 // Adds the names of `mtllib` statement `line` (line `number`) that `seen` does not hold yet.
 void add_new_library_names(std::string_view line, std::uint64_t number, std::unordered_set<std::string>& seen,
-                           std::vector<ObjLibraryName>& libraries) {
-    visit_library_names(line, [&](std::string name) {
-        if (seen.insert(name).second) libraries.push_back({std::move(name), number});
-        return true;
-    });
+                           std::vector<ObjLibraryName>& libraries, const LibraryFileExists& exists) {
+    visit_library_names(
+        line,
+        [&](std::string name) {
+            if (seen.insert(name).second) libraries.push_back({std::move(name), number});
+            return true;
+        },
+        exists);
 }
 
 }  // namespace
 
 // Each name once, however many lines repeat it: a file of millions of `usemtl` or `mtllib`
 // lines holds one entry per name.
-ObjMaterialStatements material_statements(std::string_view text) {
+ObjMaterialStatements material_statements(std::string_view text, const LibraryFileExists& exists) {
     ObjMaterialStatements found;
     std::unordered_set<std::string> libraries;
     std::unordered_map<std::string, std::size_t> uses;  // a name's entry in found.uses
@@ -375,7 +395,7 @@ ObjMaterialStatements material_statements(std::string_view text) {
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         const std::string_view keyword = keyword_of(line);
         if (keyword == "mtllib") {
-            add_new_library_names(line, number, libraries, found.libraries);
+            add_new_library_names(line, number, libraries, found.libraries, exists);
         } else if (keyword == "usemtl") {
             std::string name = used_material_name(line), whole = whole_material_name(line);
             if (!faces_begun) found.first_face_material = name, found.first_face_whole = whole;
@@ -390,10 +410,11 @@ ObjMaterialStatements material_statements(std::string_view text) {
     return found;
 }
 
-void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit) {
+void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit,
+                           const LibraryFileExists& exists) {
     for_each_line(without_byte_order_mark(text), [&](std::uint64_t number, std::string_view line) {
         if (keyword_of(line) != "mtllib") return true;
-        return visit_library_names(line, [&](std::string name) { return visit(number, std::move(name)); });
+        return visit_library_names(line, [&](std::string name) { return visit(number, std::move(name)); }, exists);
     });
 }
 

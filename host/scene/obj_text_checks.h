@@ -137,11 +137,20 @@ struct ObjMaterialStatements {
     std::string first_face_material;
     std::string first_face_whole;
 };
-ObjMaterialStatements material_statements(std::string_view text);
+// Whether a file (or any entry) of the OBJ's folder has `name`, as an `mtllib` statement writes
+// it: a line whose whole rest names one names that file (obj_reader.cpp gives the lookup).
+using LibraryFileExists = std::function<bool(const std::string& name)>;
+
+// With `exists`, an `mtllib` line that cuts into several names while the whole rest of it (the
+// blanks around it left out) names a file names that one file: "mtllib My Model.mtl", as Blender
+// writes the .mtl of a model saved as "My Model.obj", and as other readers take it (three.js,
+// Assimp). Cut, it named "My", which is no file: the model was refused.
+ObjMaterialStatements material_statements(std::string_view text, const LibraryFileExists& exists = {});
 
 // Calls `visit(line_number, name)` for each name of each `mtllib` statement of `text`, as
 // material_statements cuts them, repeated ones included, one at a time: a text that fails its
 // checks has had no memory estimate, and may name millions. Stops when `visit` returns false.
-void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit);
+void for_each_library_name(std::string_view text, const std::function<bool(std::uint64_t, std::string)>& visit,
+                           const LibraryFileExists& exists = {});
 
 }  // namespace clr

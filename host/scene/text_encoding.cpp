@@ -1,5 +1,7 @@
 #include "scene/text_encoding.h"
 
+#include <utility>
+
 namespace clr {
 namespace {
 
@@ -31,9 +33,31 @@ std::optional<std::string> wide_unicode_encoding(std::string_view text) {
 }
 
 std::string saved_text_problem(std::string_view text) {
+    using namespace std::string_view_literals;
     if (const auto encoding = wide_unicode_encoding(text))
         return "it is " + *encoding + " text; save it as UTF-8 (clrender reads only UTF-8)";
-    if (text.size() >= 2 && text[0] == '\x1F' && text[1] == '\x8B') return "it is gzip-compressed; decompress it first";
+    // Each format's magic number, as its tools write it: a model downloaded or kept compressed
+    // and named .obj. Read as text, such a file was "no faces", or an error at a line of its
+    // bytes where a stored block happened to hold an OBJ line ("line 2: 'v': 'f' is not a
+    // finite number" for a zstd file).
+    static constexpr std::pair<std::string_view, std::string_view> kCompressed[] = {
+        {"\x1F\x8B"sv, "gzip-compressed"},
+        {"\x28\xB5\x2F\xFD"sv, "zstd-compressed"},
+        {"\xFD" "7zXZ\0"sv, "xz-compressed"},
+        {"BZh"sv, "bzip2-compressed"},
+        {"\x04\x22\x4D\x18"sv, "LZ4-compressed"},
+        {"7z\xBC\xAF\x27\x1C"sv, "a 7-Zip archive"},
+        {"PK\x03\x04"sv, "a ZIP archive"},
+    };
+    for (const auto& [magic, format] : kCompressed) {
+        if (!starts_with(text, magic)) continue;
+        // "BZh" may begin a line of text: bzip2's block size digit and its first block's magic
+        // ("1AY&SY", from the digits of pi) follow it.
+        if (magic == "BZh"sv && (text.size() < 4 || text[3] < '1' || text[3] > '9' || text.substr(4, 6) != "1AY&SY"sv))
+            continue;
+        const bool archive = format.substr(0, 2) == "a ";
+        return "it is " + std::string(format) + (archive ? "; extract the file first" : "; decompress it first");
+    }
     return "";
 }
 

@@ -15,8 +15,8 @@ namespace clr {
 std::optional<std::string> wide_unicode_encoding(std::string_view text);
 
 // Why `text` is not the text of an OBJ or .mtl file though it may be one saved another way:
-// UTF-16 or UTF-32 (whose NUL bytes would read as unknown statements), or gzip-compressed.
-// "" when neither.
+// UTF-16 or UTF-32 (whose NUL bytes would read as unknown statements), compressed (gzip, zstd,
+// xz, bzip2, LZ4) or archived (ZIP, 7-Zip), each known by its first bytes. "" when none.
 std::string saved_text_problem(std::string_view text);
 
 }  // namespace clr

@@ -2,6 +2,7 @@
 // frame until its client has read it (up to the answer's 60 s deadline, view/bounded_server.h),
 // so slow clients could otherwise hold a frame each: 32 connections at up to 265 MB. A frame is
 // rendered only once its answer's bytes fit the budget; a request beyond it is answered 503.
+// An export's answer, which keeps the exported scene's text, takes its room here too.
 #pragma once
 
 #include <atomic>
@@ -23,6 +24,7 @@ public:
 
     std::uint64_t left() const { return left_.load(); }
     std::uint64_t in_flight() const { return total_ - left_.load(); }
+    std::uint64_t total() const { return total_; }
 
 private:
     const std::uint64_t total_;

@@ -14,6 +14,10 @@ namespace clr {
 // Most keys one export may have: far more than anyone records by hand.
 constexpr std::size_t kMostCameraKeys = 10000;
 
+// Most JSON values and object members a body may hold: kMostCameraKeys keys take 11 each, and a
+// key may carry a few members more (the page's own `up` or `fov` of a later version).
+constexpr std::size_t kMostBodyValues = 16 * kMostCameraKeys + 64;
+
 struct CameraKeysRequest {
     std::vector<CameraKey> keys;  // at least one
     std::string name;             // base name of the files written; "" when not given

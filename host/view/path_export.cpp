@@ -113,7 +113,8 @@ void PathExporter::check_output(const std::string& role, const std::string& path
     roles.add_output(role, path);
 }
 
-ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused) const {
+ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused,
+                                       const std::function<void(const std::string& text)>& before_write) const {
     const std::lock_guard<std::mutex> one_at_a_time(one_at_a_time_);
     // Exports sent together wait here for their turn: at a stop, those still waiting write
     // nothing (503), rather than run one after another after the signal, writing files no client
@@ -139,6 +140,7 @@ ExportedScene PathExporter::export_keys(const CameraKeysRequest& request, const 
         throw ParameterError("keys", error.location().empty() ? error.detail() : error.location() + ": " + error.detail());
     }
     throw_if_interrupted();  // the check takes seconds on a large scene: a stop meanwhile writes nothing
+    if (before_write) before_write(exported.text);
     // A name that an input of the scene holds though no file is there (a texture that a .mtl
     // names, which clrender never reads) is passed over, for the scene and for the outputs that
     // follow under its name: the export was refused (409, "choose another output name", which

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -34,8 +35,10 @@ public:
     // of the request's name's series (view/unused_name_file.h) whose NAME.json, and NAME + each
     // of `also_unused` (".mp4" for a video), do not exist and are no input of the scene.
     // Throws ParameterError (the keys make no valid scene: "keys", naming the problem as the
-    // loader does) and OutputError (the file cannot be written).
-    ExportedScene export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused = {}) const;
+    // loader does) and OutputError (the file cannot be written). `before_write`, given, sees the
+    // checked text before anything is written: what it throws refuses the export, writing nothing.
+    ExportedScene export_keys(const CameraKeysRequest& request, const std::vector<std::string>& also_unused = {},
+                              const std::function<void(const std::string& text)>& before_write = {}) const;
 
     // The exported scene's text without writing it (for the checks and tests).
     std::string scene_text_for(const CameraKeysRequest& request) const;

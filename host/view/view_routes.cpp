@@ -195,6 +195,31 @@ void send_held(Response& response, std::shared_ptr<const std::vector<std::uint8_
         });
 }
 
+// A hold on the answer budget for the answer to an export of `text`: the text escaped as a JSON
+// string (at most twice its bytes: its newlines and quotes escaped) and the names; the whole
+// budget at most, so that an export of the largest scene is answered once nothing else is in
+// flight. FramesInFlight (503) where the answers still being sent leave no room for it: each
+// answer keeps its scene's text until its client has it (up to the answer's 60 s), 16 clients
+// that took theirs slowly 16 texts (of a scene of the largest size, 64 MiB, 32 would keep 2 GB).
+std::shared_ptr<const void> hold_for_export(ViewSession& session, const std::string& text) {
+    const std::uint64_t bytes =
+        std::min<std::uint64_t>(2 * std::uint64_t(text.size()) + 64 * 1024, session.answers.total());
+    std::shared_ptr<const void> hold = session.answers.hold(bytes);
+    if (!hold)
+        throw FramesInFlight("answers of " + std::to_string(session.answers.in_flight() >> 20) +
+                             " MiB are still being sent to other clients; export again when they have them");
+    return hold;
+}
+
+// Answers `text` from memory the answer keeps (with the budget's hold) until it is sent.
+void send_held_text(Response& response, std::string text, const char* content_type, std::shared_ptr<const void> hold) {
+    auto body = std::make_shared<const std::string>(std::move(text));
+    response.set_content_provider(
+        body->size(), content_type, [body, hold](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+            return sink.write(body->data() + offset, length);
+        });
+}
+
 void add_frame_routes(httplib::Server& server, ViewSession& session) {
     server.Get("/frame\\.png", [&session](const Request& request, Response& response) {
         answer(response, [&] {
@@ -263,11 +288,17 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
     server.Post("/export", [&session](const Request& request, Response& response) {
         answer(response, [&] {
             (void)query_parameters(request.target, kNoParameters);
-            ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body));
+            // The answer's room is taken before the file is written: a refusal writes nothing.
+            std::shared_ptr<const void> hold;
+            const auto take_room = [&](const std::string& text) { hold = hold_for_export(session, text); };
+            ExportedScene exported = session.exporter.export_keys(parse_camera_keys(request.body), {}, take_room);
             // Names are for the reader: escaped as clrender's messages escape them (shown_name).
             // The text is moved, not copied, into the answer: it may be as large as the scene.
-            send_json(response, 200, {{"scene", std::move(exported.text)}, {"file", shown_name(exported.path)},
-                                      {"name", shown_name(exported.name)}});
+            nlohmann::json body = {{"scene", std::move(exported.text)}, {"file", shown_name(exported.path)},
+                                   {"name", shown_name(exported.name)}};
+            std::string text = body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+            body = nullptr;
+            send_held_text(response, std::move(text), "application/json", std::move(hold));
         });
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {

@@ -478,6 +478,35 @@ TEST(ObjReader, EveryMaterialFileIsReadBeforeTheFaces) {
     }
 }
 
+// "mtllib My Model.mtl", as Blender writes the .mtl of a model saved as "My Model.obj" (and as
+// three.js and Assimp read it): the whole rest of the line names that file. Cut at the space, it
+// named "My", no file, and the model was refused ("line 1: mtllib My: no such file"). A line
+// whose whole rest names no file is still cut into names, and the file is listed among the
+// model's own for a model that fails at a later line too.
+TEST(ObjReader, AnMtllibLineThatNamesOneFileWithASpaceReadsIt) {
+    TempFolder folder;
+    folder.write("My Model.mtl", "newmtl red\nKd 1 0 0\n");
+    for (const std::string line : {"mtllib My Model.mtl\n", "mtllib   My Model.mtl \t\n", "mtllib My Model.mtl\r\n"}) {
+        const ObjMesh mesh = read_obj(folder.write("My Model.obj", line + kSquare + "usemtl red\nf 1 2 3\n"));
+        EXPECT_EQ(mesh.diffuse, (std::optional<Vec3>{Vec3{1, 0, 0}})) << line;
+        EXPECT_TRUE(mesh.warnings.empty()) << line << mesh.warnings.front();
+        ASSERT_EQ(mesh.material_files.size(), 1u) << line;
+        EXPECT_EQ(mesh.material_files[0], folder.file("My Model.mtl")) << line;
+    }
+    try {
+        read_obj(folder.write("broken.obj", "mtllib My Model.mtl\n" + kSquare + "f 1 2 9\n"));
+        ADD_FAILURE() << "a face of a missing position was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(error.material_files, std::vector<std::string>{folder.file("My Model.mtl")});
+    }
+    try {
+        read_obj(folder.write("other.obj", "mtllib Other Model.mtl\n" + kSquare + "f 1 2 3\n"));
+        ADD_FAILURE() << "read without its .mtl";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "line 1: mtllib Other: no such file");
+    }
+}
+
 // A line of millions of words is refused at the words it may have, without a list of them
 // all (about 17 times the line's size): checked in a child whose address space may grow by
 // 400 MiB, with a 64 MiB line whose list of words alone would take 512 MiB.
@@ -601,6 +630,35 @@ TEST(ObjReader, Utf16AndGzipFilesAreNamedAsSuch) {
     } catch (const ObjError& error) {
         EXPECT_EQ(std::string(error.what()), "line 1: mtllib wide.mtl: it is UTF-16 (little-endian) text; save it as "
                                              "UTF-8 (clrender reads only UTF-8)");
+    }
+}
+
+// An OBJ kept compressed with another tool than gzip, or in an archive, and named .obj: each
+// named as such (the first bytes as the tools write them). Read as text they were "no faces",
+// or the error of a line that a block stored uncompressed held (a zstd file of a triangle:
+// "line 2: 'v': 'f' is not a finite number").
+TEST(ObjReader, CompressedAndArchivedFilesAreNamedAsSuch) {
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {std::string("\x28\xB5\x2F\xFD\x24\x23\xE5\0\0\x90", 10) + triangle,
+         "it is zstd-compressed; decompress it first"},
+        {std::string("\xFD" "7zXZ\0\0\x04\xE6\xD6\xB4\x46", 12), "it is xz-compressed; decompress it first"},
+        {"BZh91AY&SY\xF6\xA5", "it is bzip2-compressed; decompress it first"},
+        {std::string("\x04\x22\x4D\x18\x64\x40\xA7", 7) + triangle, "it is LZ4-compressed; decompress it first"},
+        {std::string("7z\xBC\xAF\x27\x1C\0\x04", 8), "it is a 7-Zip archive; extract the file first"},
+        {std::string("PK\x03\x04\x14\0\0\0\x08\0", 10) + "mesh.obj" + triangle,
+         "it is a ZIP archive; extract the file first"},
+    };
+    for (const auto& [text, expected] : cases) EXPECT_EQ(error_for(text), expected);
+    // Text that merely starts as bzip2's mark does is read as text.
+    EXPECT_EQ(error_for("BZh 1 2 3\n" + triangle).find("compressed"), std::string::npos);
+    TempFolder folder;
+    folder.write("packed.mtl", std::string("\x28\xB5\x2F\xFD\x24\x23\xE5\0\0\x90", 10) + "newmtl red\nKd 1 0 0\n");
+    try {
+        read_obj(folder.write("mesh.obj", "mtllib packed.mtl\nusemtl red\n" + triangle));
+        ADD_FAILURE() << "a zstd .mtl was read";
+    } catch (const ObjError& error) {
+        EXPECT_EQ(std::string(error.what()), "line 1: mtllib packed.mtl: it is zstd-compressed; decompress it first");
     }
 }
 

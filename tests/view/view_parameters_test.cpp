@@ -196,5 +196,30 @@ TEST(ViewCameraKeys, EachWayABodyFailsSaysWhich) {
     }
 }
 
+// A body of more JSON values than the most keys take is refused as the body's fault, before it
+// is built (it was built whole, 24 times its bytes, and then refused for its count of keys);
+// the most keys, each with a member more than the page sends, are still read.
+TEST(ViewCameraKeys, ABodyOfMoreValuesThanTheMostKeysTakeIsRefusedAsSuch) {
+    std::string many = R"({"keys": [)";
+    for (std::size_t i = 0; i < kMostBodyValues; ++i) many += "[],";
+    many.back() = ']';
+    many += "}";
+    try {
+        parse_camera_keys(many);
+        ADD_FAILURE() << "accepted";
+    } catch (const ParameterError& error) {
+        EXPECT_EQ(error.parameter(), "body") << error.what();
+        EXPECT_NE(std::string(error.what()).find("more than " + std::to_string(kMostBodyValues) + " JSON values"),
+                  std::string::npos)
+            << error.what();
+    }
+    std::string most = R"({"keys": [)";
+    for (std::size_t i = 0; i < kMostCameraKeys; ++i)
+        most += R"({"eye": [1, 2, 3], "lookat": [0, 0, 0], "fov": 40},)";
+    most.back() = ']';
+    most += R"(, "name": "n", "up": [0, 1, 0], "fov": 40})";
+    EXPECT_EQ(parse_camera_keys(most).keys.size(), kMostCameraKeys);
+}
+
 }  // namespace
 }  // namespace clr
