@@ -142,10 +142,14 @@ for _ in $(seq 1 600); do
 done
 array=$(cut -d, -f1 twice/flight.farm/jobs)
 scontrol requeue "${array}_0" || fail "scontrol requeue ${array}_0"
-# A requeued job waits two minutes before it may start again; once it is pending, start it now.
+# A requeued job waits two minutes before it may start again; once it is pending, let it start
+# two seconds on. Not at once: the node revokes the first run's credential at the requeue, to the
+# second, and a run launched within that second has a credential from it, which the node takes for
+# a revoked one ("Killing non-startable batch JobId=...: Job credential revoked"), failing the task
+# with no second run (about one run in three on a loaded machine).
 for _ in $(seq 1 150); do
     [ "$(squeue -h -j "${array}_0" -o %T 2>/dev/null)" = PENDING ] &&
-        scontrol update jobid="${array}_0" StartTime=now 2>/dev/null && break
+        scontrol update jobid="${array}_0" StartTime=now+2 2>/dev/null && break
     sleep 0.2
 done
 (cd twice/flight.farm/frames && stat -c '%n %i %Y' ./*.png) >requeued-before.txt
