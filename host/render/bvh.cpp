@@ -6,6 +6,8 @@
 #include <cstring>
 #include <future>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <system_error>
 
 #include "core/box3.h"
@@ -219,11 +221,15 @@ Bvh build_tree(std::vector<BvhPrimitive> primitives, int max_depth) {
 
 namespace {
 
-// The bits of `value` in a float word (ClrBvhNode's w words; the kernels read them back with
-// as_uint, and the host never computes with them).
+// `value` as a ClrBvhNode w word: the float whose bits are value + CLR_BVH_WORD_BIAS, a normal
+// float (the kernels read it back with bvh_first() and bvh_count()). A larger value than a word
+// holds would name another node or item: the scene limits make that many impossible, so it is a bug.
 float word_of(std::uint32_t value) {
+    if (value > CLR_BVH_WORD_MAX)
+        throw std::length_error("BVH word " + std::to_string(value) + " above " + std::to_string(CLR_BVH_WORD_MAX));
+    const std::uint32_t bits = value + CLR_BVH_WORD_BIAS;
     float word;
-    std::memcpy(&word, &value, sizeof word);
+    std::memcpy(&word, &bits, sizeof word);
     return word;
 }
 
@@ -274,7 +280,9 @@ constexpr std::size_t kNodesPerTask = 1u << 16;
 
 void compile_bvh(const Bvh& bvh, const Vec3& origin, std::vector<ClrBvhNode>& nodes) {
     std::vector<std::uint32_t> positions;
-    nodes.assign(device_positions(bvh, positions), ClrBvhNode{});
+    ClrBvhNode unnamed{};  // zero box, zero first and count, as normal w words
+    unnamed.lower.s[3] = unnamed.upper.s[3] = word_of(0);
+    nodes.assign(device_positions(bvh, positions), unnamed);
     const Vec3 shift = origin - bvh.origin;  // zero when the frame's impostors were placed there
     const std::size_t tasks = (bvh.nodes.size() + kNodesPerTask - 1) / kNodesPerTask;
     parallel_for(tasks, static_cast<std::size_t>(usable_cpu_count()), [&](std::size_t task) {

@@ -157,14 +157,20 @@ typedef struct {
 /* A node of the bounding volume hierarchy used by secondary rays (host/render/bvh.h). Trees
  * are at most CLR_BVH_STACK - 1 levels deep, so a traversal stack of CLR_BVH_STACK suffices.
  * 32 bytes, and two siblings start at an even index, so that a node's two children are one
- * 64-byte cache line (host: compile_bvh). The w words hold integers' bits: kernels read them
- * with bvh_first() and bvh_count() (kernels/common/bvh_nodes.cl). */
+ * 64-byte cache line (host: compile_bvh). The w words hold integers plus CLR_BVH_WORD_BIAS as
+ * a float's bits: kernels read them with bvh_first() and bvh_count() (kernels/common/bvh_nodes.cl).
+ * The bias (1.0f's bits) makes every such word a normal float: small integers' bits are
+ * subnormal floats, and a box's float4 arithmetic, which may carry the w lane along, then took a
+ * processor's slow path for subnormal operands at every node. */
 #define CLR_BVH_STACK 48
+#define CLR_BVH_WORD_BIAS 0x3F800000u
+/* The largest integer a w word holds: with the bias, below the bits of +inf. */
+#define CLR_BVH_WORD_MAX 0x3FFFFFFFu
 typedef struct {
-    clr_float4 lower; /* xyz = lower corner of the bounds; w = first: inner node, its left child
-                         (the right child is first + 1); leaf, its first item */
-    clr_float4 upper; /* xyz = upper corner; w = count: leaf, its number of items (scene items,
-                         see CLR_ITEM_KIND_BITS); 0: inner node */
+    clr_float4 lower; /* xyz = lower corner of the bounds; w = first (biased): inner node, its
+                         left child (the right child is first + 1); leaf, its first item */
+    clr_float4 upper; /* xyz = upper corner; w = count (biased): leaf, its number of items (scene
+                         items, see CLR_ITEM_KIND_BITS); 0: inner node */
 } ClrBvhNode;
 
 /* Everything about the scene that is not per object and not per frame. */
