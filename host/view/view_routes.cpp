@@ -32,9 +32,14 @@ namespace {
 using httplib::Request;
 using httplib::Response;
 
+// `body` as the answers' JSON text: invalid UTF-8 in a string replaced, never a throw.
+std::string json_text(const nlohmann::json& body) {
+    return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 void send_json(Response& response, int status, const nlohmann::json& body) {
     response.status = status;
-    response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+    response.set_content(json_text(body), "application/json");
 }
 
 void send_error(Response& response, int status, const std::string& message, const std::string& parameter = "") {
@@ -186,7 +191,8 @@ std::shared_ptr<const void> hold_for_frame(ViewSession& session, const ViewCamer
 
 // Answers `bytes` from memory the answer keeps (with the budget's hold) until it is sent, in
 // pieces rather than copied whole into the answer.
-void send_held(Response& response, std::shared_ptr<const std::vector<std::uint8_t>> bytes, const char* content_type,
+template <typename Bytes>  // std::vector<std::uint8_t> (a frame) or std::string (an export's JSON)
+void send_held(Response& response, std::shared_ptr<const Bytes> bytes, const char* content_type,
                std::shared_ptr<const void> hold) {
     const std::size_t size = bytes->size();
     response.set_content_provider(
@@ -209,15 +215,6 @@ std::shared_ptr<const void> hold_for_export(ViewSession& session, const std::str
         throw FramesInFlight("answers of " + std::to_string(session.answers.in_flight() >> 20) +
                              " MiB are still being sent to other clients; export again when they have them");
     return hold;
-}
-
-// Answers `text` from memory the answer keeps (with the budget's hold) until it is sent.
-void send_held_text(Response& response, std::string text, const char* content_type, std::shared_ptr<const void> hold) {
-    auto body = std::make_shared<const std::string>(std::move(text));
-    response.set_content_provider(
-        body->size(), content_type, [body, hold](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-            return sink.write(body->data() + offset, length);
-        });
 }
 
 void add_frame_routes(httplib::Server& server, ViewSession& session) {
@@ -296,9 +293,9 @@ void add_path_routes(httplib::Server& server, ViewSession& session) {
             // The text is moved, not copied, into the answer: it may be as large as the scene.
             nlohmann::json body = {{"scene", std::move(exported.text)}, {"file", shown_name(exported.path)},
                                    {"name", shown_name(exported.name)}};
-            std::string text = body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-            body = nullptr;
-            send_held_text(response, std::move(text), "application/json", std::move(hold));
+            auto text = std::make_shared<const std::string>(json_text(body));
+            body = nullptr;  // the tree's memory back before the answer is sent
+            send_held(response, std::move(text), "application/json", std::move(hold));
         });
     });
     server.Post("/render-video", [&session](const Request& request, Response& response) {
