@@ -13,6 +13,7 @@ TriangleMemory triangle_memory(const Scene& scene) {
     memory.triangles = scene.triangles.size();
     if (memory.triangles == 0) return memory;
     memory.triangle_bytes = memory.triangles * sizeof(ClrTriangle);
+    memory.mesh_bytes = scene.meshes.size() * sizeof(ClrMeshSurface);
     memory.normal_bytes = scene.corner_normals.size() * 3 * sizeof(cl_float4);
     if (FeatureSet::of(scene).triangle_ties) memory.tie_bytes = memory.triangles * 6 * sizeof(cl_int);
     FrameGeometry frame(scene);

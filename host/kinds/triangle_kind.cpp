@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "render/device_structs.h"
 #include "render/object_bounds.h"
+#include "scene/mesh_loader.h"
 
 namespace clr {
 
@@ -44,15 +47,26 @@ double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& tr
     return std::sqrt(std::max(to_box2, std::isfinite(to_plane2) ? to_plane2 : 0.0));
 }
 
+// Every mesh has a triangle (the loader refuses a mesh that draws nothing), so a scene's mesh
+// indices fit the 24 bits that ClrTriangle::mesh_flags has for them.
+static_assert(kMaxSceneTriangles <= (std::size_t(1) << (32 - CLR_TRIANGLE_MESH_SHIFT)));
+
 ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {
-    const Mesh& mesh = scene.meshes[triangle.mesh];
+    if (triangle.mesh >= scene.meshes.size() || triangle.mesh >= (1u << (32 - CLR_TRIANGLE_MESH_SHIFT)))
+        throw std::logic_error("a triangle names mesh " + std::to_string(triangle.mesh) + " of " +
+                               std::to_string(scene.meshes.size()));
     ClrTriangle out{};
-    // Before move(), which stores the plane's offset in the colour's w and marks a triangle near
-    // the eye in the flags.
-    out.color = to_float4(mesh.ambient);
-    out.flags = mesh.is_mirror ? CLR_SURFACE_MIRROR : 0u;
+    // Before move(), which marks a triangle near the eye in the flags' own bits.
+    out.mesh_flags = triangle.mesh << CLR_TRIANGLE_MESH_SHIFT;
     move(out, triangle, origin);
     out.normals = triangle.normals < 0 ? -1 : triangle.normals * 3;
+    return out;
+}
+
+ClrMeshSurface TriangleKind::mesh_surface(const Mesh& mesh) {
+    ClrMeshSurface out{};
+    out.color = to_float4(mesh.ambient);
+    out.flags = mesh.is_mirror ? CLR_SURFACE_MIRROR : 0u;
     out.material = mesh.material;
     return out;
 }
@@ -91,8 +105,8 @@ void store_plane_normal(ClrTriangle& device) {
     device.corner2.s[3] = static_cast<float>(normal.z);
 }
 
-// The plane's offset from the origin (the frame's eye) for the normal n as stored, into the
-// colour's w: |n| times the eye's signed distance from the triangle's plane, in double from the
+// The plane's offset from the origin (the frame's eye) for the normal n as stored, into
+// plane_offset: |n| times the eye's signed distance from the triangle's plane, in double from the
 // unrounded corners. The kernels take a hit's t from it where it is the more exact
 // (kernels/kinds/triangle.cl). So the plane the kernels see passes through the true plane's
 // point nearest the eye, and the float normal's rounding (about 6e-8 of a radian) tilts it
@@ -123,7 +137,7 @@ void store_plane_offset(ClrTriangle& device, const Triangle& triangle, const Vec
     const double side = dot(stored, plane) < 0 ? -1.0 : 1.0;
     const double offset = side * distance * length(stored);
     // The loader keeps no triangle without area; should one come all the same, the corner's.
-    device.color.s[3] = static_cast<float>(std::isfinite(offset) ? offset : dot(c[0] - origin, stored));
+    device.plane_offset = static_cast<float>(std::isfinite(offset) ? offset : dot(c[0] - origin, stored));
 }
 
 // Whether the triangle is larger than an eighth of its distance from the origin (the frame's
@@ -148,7 +162,8 @@ void TriangleKind::move(ClrTriangle& device, const Triangle& triangle, const Vec
     device.longest_edge = longest_edge(device);
     store_plane_normal(device);
     store_plane_offset(device, triangle, origin);
-    device.flags = near_eye(triangle, origin) ? device.flags | CLR_SURFACE_NEAR_EYE : device.flags & ~CLR_SURFACE_NEAR_EYE;
+    device.mesh_flags = near_eye(triangle, origin) ? device.mesh_flags | CLR_SURFACE_NEAR_EYE
+                                                   : device.mesh_flags & ~CLR_SURFACE_NEAR_EYE;
 }
 
 }  // namespace clr

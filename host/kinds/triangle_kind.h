@@ -48,11 +48,13 @@ struct TriangleKind {
     static PixelBounds pixel_bounds(const ObjectBounds& view, const Triangle& triangle, const Vec3& object_origin);
     static double least_distance(const ObjectBounds& view, const Triangle& triangle, const Vec3& object_origin);
 
-    // The device struct, corners relative to `origin` (its mesh gives colour and mirror
-    // flag; its corner normals are Scene::corner_normals, uploaded as they are), and the part
-    // of it that moves with the frame's origin.
+    // The device struct, corners relative to `origin` (its corner normals are
+    // Scene::corner_normals, uploaded as they are), and the part of it that moves with the
+    // frame's origin.
     static ClrTriangle device(const Scene& scene, const Triangle& triangle, const Vec3& origin);
     static void move(ClrTriangle& device, const Triangle& triangle, const Vec3& origin);
+    // What its mesh gives each triangle's shading (ClrTriangle::mesh_flags names it).
+    static ClrMeshSurface mesh_surface(const Mesh& mesh);
 
     // The double-precision reference's half (kinds/triangle_reference.cpp), as for spheres
     // (sphere_kind.h); the normal faces `direction`'s ray.

@@ -67,7 +67,8 @@ const TextureSlot* texture_of(const Billboard& billboard, const CompiledScene& c
 
 std::size_t triangle_device_bytes(const Scene& scene) {
     const std::size_t ties = FeatureSet::of(scene).triangle_ties ? scene.triangles.size() * 6 * sizeof(cl_int) : 0;
-    return scene.triangles.size() * sizeof(ClrTriangle) + scene.corner_normals.size() * 3 * sizeof(cl_float4) + ties;
+    return scene.triangles.size() * sizeof(ClrTriangle) + scene.meshes.size() * sizeof(ClrMeshSurface) +
+           scene.corner_normals.size() * 3 * sizeof(cl_float4) + ties;
 }
 
 CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
@@ -78,6 +79,8 @@ CompiledScene compile_scene(const FrameGeometry& frame, const Vec3& origin) {
     compiled.triangles.reserve(scene.triangles.size());
     for (const Triangle& triangle : scene.triangles)
         compiled.triangles.push_back(TriangleKind::device(scene, triangle, origin));
+    compiled.mesh_surfaces.reserve(scene.meshes.size());
+    for (const Mesh& mesh : scene.meshes) compiled.mesh_surfaces.push_back(TriangleKind::mesh_surface(mesh));
     compiled.triangle_normals.reserve(scene.corner_normals.size() * 3);
     for (const auto& normals : scene.corner_normals)
         for (const Vec3& normal : normals) compiled.triangle_normals.push_back(to_float4(normal));

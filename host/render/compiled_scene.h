@@ -20,6 +20,7 @@ struct CompiledScene {
     std::vector<ClrSphere> spheres;
     std::vector<ClrBillboard> billboards;  // the frame's billboards, in FrameGeometry's order
     std::vector<ClrTriangle> triangles;    // the scene's mesh triangles
+    std::vector<ClrMeshSurface> mesh_surfaces;  // Scene::meshes' shading, one a mesh
     std::vector<cl_float4> triangle_normals;  // Scene::corner_normals, three a triangle
     std::vector<ClrPlane> planes;
     std::vector<ClrLight> lights;        // the scene's point lights (positions move with the origin)

@@ -21,6 +21,7 @@ struct SceneArgs {
     cl::Buffer spheres;     // ClrSphere[info.sphere_count]
     cl::Buffer billboards;  // ClrBillboard[info.billboard_count]
     cl::Buffer triangles;   // ClrTriangle[info.triangle_count]
+    cl::Buffer mesh_surfaces;     // ClrMeshSurface, one a mesh (ClrTriangle::mesh_flags)
     cl::Buffer triangle_normals;  // float4: three corner normals per triangle that has them
     cl::Buffer triangle_ties;     // int, six a triangle: Scene::triangle_ties (CLR_FEATURE_TRIANGLE_TIES)
     cl::Buffer planes;      // ClrPlane[info.plane_count]
@@ -37,6 +38,7 @@ struct SceneArgs {
         visit("spheres", spheres);
         visit("billboards", billboards);
         visit("triangles", triangles);
+        visit("mesh_surfaces", mesh_surfaces);
         visit("triangle_normals", triangle_normals);
         visit("triangle_ties", triangle_ties);
         visit("planes", planes);

@@ -146,9 +146,11 @@ Renderer::Renderer(DeviceContext& device, const Scene& scene, const RendererOpti
             mesh_trees_ = build_mesh_trees(scene_, &tree_cache);
             bvh_ = build_bvh(frame_, mesh_trees_);
         }
-        // Corner normals do not move with the eye: uploaded once, not with each frame's geometry.
+        // Corner normals and meshes' shading do not move with the eye: uploaded once, not with
+        // each frame's geometry.
         scene_args_.triangle_normals = upload(device_.context(), compiled_.triangle_normals);
         compiled_.triangle_normals = {};  // the buffer's now, as the texels are
+        scene_args_.mesh_surfaces = upload(device_.context(), compiled_.mesh_surfaces);
         scene_args_.triangle_ties = upload_triangle_ties();
         scene_args_.materials = upload(device_.context(), compiled_.materials);
         upload_geometry();

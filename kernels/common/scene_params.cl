@@ -11,14 +11,15 @@
 
 #define CLR_SCENE_PARAMS                                                                      \
     __global const ClrSphere *spheres, __global const ClrBillboard *billboards,              \
-        __global const ClrTriangle *triangles, __global const float4 *triangle_normals,      \
+        __global const ClrTriangle *triangles, __global const ClrMeshSurface *mesh_surfaces,  \
+        __global const float4 *triangle_normals,                                              \
         __global const int *triangle_ties,                                                    \
         __global const ClrPlane *planes, __global const ClrLight *lights,                    \
         __global const ClrMaterial *materials, __global const uchar4 *texels,                \
         __global const uint *coverage, ClrSceneInfo info, __global const ClrBvhNode *bvh_nodes, \
         __global const uint *bvh_items
 #define CLR_SCENE_ARGS                                                                              \
-    spheres, billboards, triangles, triangle_normals, triangle_ties, planes, lights, materials, texels, coverage, info, \
+    spheres, billboards, triangles, mesh_surfaces, triangle_normals, triangle_ties, planes, lights, materials, texels, coverage, info, \
         bvh_nodes, bvh_items
 
 #endif /* CLR_COMMON_SCENE_PARAMS_CL */

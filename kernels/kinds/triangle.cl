@@ -100,12 +100,18 @@ real3 triangle_plane_normal(__global const ClrTriangle* triangle)
     return convert_real3((float3)(triangle->corner0.w, triangle->corner1.w, triangle->corner2.w));
 }
 
+/* The shading its mesh gives every one of its triangles (ClrTriangle::mesh_flags). */
+__global const ClrMeshSurface* triangle_mesh_surface(int index, CLR_SCENE_PARAMS)
+{
+    return &mesh_surfaces[triangles[index].mesh_flags >> CLR_TRIANGLE_MESH_SHIFT];
+}
+
 /* The origin's offset (c0 - o).n from the plane, with a bound on its rounding (in units of
  * its precision), the more exact of two ways. From the corner as stored (`a` = c0 - o): exact
  * near the triangle, and of the plane that the corners as stored span, where the edge tests
  * decide; but the corner is rounded relative to the eye, so for a triangle 1e8 across the
  * plane was units off near the eye however near it passes. From the plane's offset from the
- * eye, which the host computed in double (ClrTriangle color.w), less n.o: exact near the eye
+ * eye, which the host computed in double (ClrTriangle plane_offset), less n.o: exact near the eye
  * (o = 0 for a primary ray), but for a ray leaving a far triangle n.o is as large as the
  * triangle is far. */
 typedef struct {
@@ -114,7 +120,7 @@ typedef struct {
 
 PlaneOffset triangle_offset(__global const ClrTriangle* triangle, real3 a, real3 n, real3 origin)
 {
-    real stored = (real)triangle->color.w;
+    real stored = (real)triangle->plane_offset;
     PlaneOffset from_corner = {dot3(a, n), abs_dot3(a, n)};
     PlaneOffset from_eye = {stored - dot3(n, origin), fabs(stored) + abs_dot3(n, origin)};
     return from_eye.error < from_corner.error ? from_eye : from_corner;
@@ -189,7 +195,7 @@ real triangle_distance(__global const ClrTriangle* triangle, real3 origin, real3
     if (!banded_inside(u, v, w, det, edge_band(norm1(k.a) + longest, longest)))
         return INFINITY;
     real3 n = triangle_plane_normal(triangle);
-    bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
+    bool near_eye = (triangle->mesh_flags & CLR_SURFACE_NEAR_EYE) != 0u;
     PlaneOffset plane = near_eye ? triangle_offset(triangle, k.a, n, origin) : (PlaneOffset){dot3(k.a, n), 0.0f};
     real offset = plane.offset, facing = dot3(direction, n);
     if (!plane_ahead(offset, facing))
@@ -265,7 +271,7 @@ CLR_PACKET_INLINE real16 triangle_distance16(__global const ClrTriangle* triangl
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
-    bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
+    bool near_eye = (triangle->mesh_flags & CLR_SURFACE_NEAR_EYE) != 0u;
     PlaneOffset plane = near_eye ? triangle_offset(triangle, k.a, n, origin) : (PlaneOffset){dot3(k.a, n), 0.0f};
     real offset = plane.offset;
     real16 facing = dot16(n, d);
@@ -319,10 +325,10 @@ CLR_PACKET_INLINE real16 triangle_distance16_from(__global const ClrTriangle* tr
     if (!any_lanes16(hit))
         return (real16)(INFINITY);
     real3 n = triangle_plane_normal(triangle);
-    bool near_eye = (triangle->flags & CLR_SURFACE_NEAR_EYE) != 0u;
+    bool near_eye = (triangle->mesh_flags & CLR_SURFACE_NEAR_EYE) != 0u;
     real16 offset = ax * n.x + ay * n.y + az * n.z, offset_error = (real16)(0.0f);
     if (near_eye) { /* triangle_offset() lane by lane */
-        real stored = (real)triangle->color.w;
+        real stored = (real)triangle->plane_offset;
         offset_error = fabs(ax * n.x) + fabs(ay * n.y) + fabs(az * n.z);
         real16 from_eye = stored - (n.x * o.x + n.y * o.y + n.z * o.z);
         real16 from_eye_error = fabs(stored) + (fabs(n.x * o.x) + fabs(n.y * o.y) + fabs(n.z * o.z));
@@ -560,24 +566,25 @@ CLR_PACKET_INLINE Directions16 triangle_normals16(const int* indices, Points16 p
 
 uint triangle_flags(int index, CLR_SCENE_PARAMS)
 {
-    return triangles[index].flags;
+    uint own = triangles[index].mesh_flags;
+    return (own & CLR_TRIANGLE_OWN_FLAGS) | triangle_mesh_surface(index, CLR_SCENE_ARGS)->flags;
 }
 
 /* Its Blinn-Phong material (ClrMaterial) in `materials`. */
 uint triangle_material(int index, CLR_SCENE_PARAMS)
 {
-    return triangles[index].material;
+    return triangle_mesh_surface(index, CLR_SCENE_ARGS)->material;
 }
 
 /* The colour before lighting: the mesh's ambient colour. */
 float3 triangle_surface_color(int index, real3 origin, real3 direction, real t, CLR_SCENE_PARAMS)
 {
-    return triangles[index].color.xyz;
+    return triangle_mesh_surface(index, CLR_SCENE_ARGS)->color.xyz;
 }
 
 CLR_PACKET_INLINE Colors16 triangle_flat_colors16(int index, uint16 texel, CLR_SCENE_PARAMS)
 {
-    return uniform_colors16(triangles[index].color.xyz);
+    return uniform_colors16(triangle_mesh_surface(index, CLR_SCENE_ARGS)->color.xyz);
 }
 
 /* Meshes are lit by the sun as spheres are (docs/scene-format.md, Meshes). */

@@ -106,7 +106,7 @@ CLR_PACKET_INLINE Colors16 settled_flat_colors16(real3 eye, Directions16 d, Hits
     for (int lane = 0; lane < 16; ++lane) {
         if (!moved_lanes[lane])
             continue;
-        float3 color = triangles[indices[lane]].color.xyz;
+        float3 color = triangle_mesh_surface(indices[lane], CLR_SCENE_ARGS)->color.xyz;
         r[lane] = color.x;
         g[lane] = color.y;
         b[lane] = color.z;

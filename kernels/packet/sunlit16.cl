@@ -75,7 +75,7 @@ CLR_PACKET_INLINE void sunlit_triangles16(real3 eye, Directions16 d, Hits16 hits
     out->color.b = select(out->color.b, (float16)(0.0f), away);
     float4 colors[16]; /* triangle_surface_color() */
     for (int lane = 0; lane < 16; ++lane)
-        colors[lane] = indices[lane] < 0 ? (float4)(0.0f) : triangles[indices[lane]].color;
+        colors[lane] = indices[lane] < 0 ? (float4)(0.0f) : triangle_mesh_surface(indices[lane], CLR_SCENE_ARGS)->color;
     float16 r, g, b;
     float_columns16(colors, &r, &g, &b);
     float16 shade = convert_float16(cosine);

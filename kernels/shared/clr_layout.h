@@ -42,11 +42,16 @@
     CLR_LAYOUT_FIELD(ClrTriangle, corner0)          \
     CLR_LAYOUT_FIELD(ClrTriangle, corner1)          \
     CLR_LAYOUT_FIELD(ClrTriangle, corner2)          \
-    CLR_LAYOUT_FIELD(ClrTriangle, color)            \
-    CLR_LAYOUT_FIELD(ClrTriangle, flags)            \
-    CLR_LAYOUT_FIELD(ClrTriangle, normals)          \
-    CLR_LAYOUT_FIELD(ClrTriangle, material)         \
+    CLR_LAYOUT_FIELD(ClrTriangle, plane_offset)     \
     CLR_LAYOUT_FIELD(ClrTriangle, longest_edge)     \
+    CLR_LAYOUT_FIELD(ClrTriangle, mesh_flags)       \
+    CLR_LAYOUT_FIELD(ClrTriangle, normals)          \
+    CLR_LAYOUT_STRUCT(ClrMeshSurface)               \
+    CLR_LAYOUT_FIELD(ClrMeshSurface, color)         \
+    CLR_LAYOUT_FIELD(ClrMeshSurface, flags)         \
+    CLR_LAYOUT_FIELD(ClrMeshSurface, material)      \
+    CLR_LAYOUT_FIELD(ClrMeshSurface, pad0)          \
+    CLR_LAYOUT_FIELD(ClrMeshSurface, pad1)          \
     CLR_LAYOUT_STRUCT(ClrPlane)                     \
     CLR_LAYOUT_FIELD(ClrPlane, point)               \
     CLR_LAYOUT_FIELD(ClrPlane, normal)              \

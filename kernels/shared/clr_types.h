@@ -21,7 +21,8 @@ typedef cl_int clr_int;
 typedef cl_uint clr_uint;
 #endif
 
-/* Surface flags (ClrSphere.flags, ClrBillboard.flags, ClrTriangle.flags, ClrPlane.flags). */
+/* Surface flags (ClrSphere.flags, ClrBillboard.flags, ClrTriangle.mesh_flags, ClrMeshSurface.flags,
+ * ClrPlane.flags). */
 #define CLR_SURFACE_MIRROR 1u   /* ideal mirror on the front side */
 #define CLR_SURFACE_TEXTURED 2u /* shows its image; otherwise its flat colour */
 #define CLR_SURFACE_HOLES 4u    /* its image has texels with alpha below CLR_OPAQUE_ALPHA */
@@ -101,21 +102,36 @@ typedef struct {
 
 /* A triangle of a mesh: corners c0, c1, c2 in the face's order, seen from both sides. Its
  * normal is the corner normals (triangle_normals[normals + 0..2], xyz) interpolated by the
- * hit's barycentric coordinates where the OBJ gives them, else (c1 - c0) x (c2 - c0). */
+ * hit's barycentric coordinates where the OBJ gives them, else (c1 - c0) x (c2 - c0). 64 bytes,
+ * one cache line: what a ray's test reads, and no more (its mesh's colour, material and mirror
+ * flag are its ClrMeshSurface, read only where a ray's hit is shaded). */
 typedef struct {
     /* The corners' w hold the plane's normal (c1 - c0) x (c2 - c0) from edges scaled by a power
      * of two (host: TriangleKind::move): corner0.w, corner1.w, corner2.w = x, y, z. */
     clr_float4 corner0; /* xyz = c0; w = the plane normal's x */
     clr_float4 corner1; /* xyz = c1; w = its y */
     clr_float4 corner2; /* xyz = c2; w = its z */
-    clr_float4 color;   /* xyz = its mesh's ambient colour; w = the plane's offset (c0 - eye).n */
-    clr_uint flags;     /* CLR_SURFACE_* */
-    clr_int normals;    /* first of its three corner normals in triangle_normals, or -1 */
-    clr_uint material;  /* its mesh's Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */
+    clr_float plane_offset; /* the plane's offset (c0 - eye).n, computed in double (host) */
     /* The largest |x| + |y| + |z| of its edges as stored, rounded up: what bounds its edge
      * volumes' rounding (kernels/kinds/triangle_sides.cl). */
     clr_float longest_edge;
+    /* Bits 0-7: its own CLR_SURFACE_* (CLR_SURFACE_NEAR_EYE); bits 8-31: its mesh's entry in
+     * mesh_surfaces (CLR_TRIANGLE_MESH_SHIFT; a scene has at most 2^24 triangles, and every
+     * mesh at least one). */
+    clr_uint mesh_flags;
+    clr_int normals; /* first of its three corner normals in triangle_normals, or -1 */
 } ClrTriangle;
+
+#define CLR_TRIANGLE_MESH_SHIFT 8u
+#define CLR_TRIANGLE_OWN_FLAGS 0xffu
+
+/* What every triangle of one mesh shares: its shading. */
+typedef struct {
+    clr_float4 color;  /* xyz = the mesh's ambient colour; w unused */
+    clr_uint flags;    /* CLR_SURFACE_MIRROR */
+    clr_uint material; /* its Blinn-Phong material in `materials` (CLR_FEATURE_LIGHTS) */
+    clr_uint pad0, pad1;
+} ClrMeshSurface;
 
 /* An infinite plane through `point` with unit normal `normal`, seen from both sides. Planes
  * are in no BVH and no screen tile: every ray tests every plane. */
@@ -195,7 +211,8 @@ static_assert(sizeof(ClrSphere) == 48, "ClrSphere layout");
 static_assert(sizeof(ClrBillboard) == 96, "ClrBillboard layout");
 static_assert(sizeof(ClrRay) == 32, "ClrRay layout");
 static_assert(sizeof(ClrHit) == 16, "ClrHit layout");
-static_assert(sizeof(ClrTriangle) == 80, "ClrTriangle layout");
+static_assert(sizeof(ClrTriangle) == 64, "ClrTriangle layout");
+static_assert(sizeof(ClrMeshSurface) == 32, "ClrMeshSurface layout");
 static_assert(sizeof(ClrSceneInfo) == 64, "ClrSceneInfo layout");
 static_assert(sizeof(ClrPlane) == 64, "ClrPlane layout");
 static_assert(sizeof(ClrLight) == 32, "ClrLight layout");

@@ -25,16 +25,17 @@ TEST(TriangleMemory, TrianglesNormalsAndTree) {
     ASSERT_EQ(scene.corner_normals.size(), smooth);
     const TriangleMemory memory = triangle_memory(scene);
     EXPECT_EQ(memory.triangles, flat + smooth);
-    EXPECT_EQ(memory.triangle_bytes, (flat + smooth) * 80);
+    EXPECT_EQ(memory.triangle_bytes, (flat + smooth) * 64) << "one cache line a triangle";
+    EXPECT_EQ(memory.mesh_bytes, 2u * 32u) << "each mesh's shading once";
     EXPECT_EQ(memory.normal_bytes, smooth * 3 * 16) << "three float4 normals for each smooth triangle only";
     EXPECT_EQ(memory.tie_bytes, 0u) << "unlit: no neighbours on the device";
-    // Every triangle is in one leaf (a 4-byte item) and there is at least a root node (48
+    // Every triangle is in one leaf (a 4-byte item) and there is at least a root node (32
     // bytes); a binary tree over n objects has at most 2n - 1 nodes.
     const std::size_t n = flat + smooth;
-    EXPECT_GE(memory.bvh_bytes, n * 4 + 48);
-    EXPECT_LE(memory.bvh_bytes, n * 4 + (2 * n - 1) * 48);
+    EXPECT_GE(memory.bvh_bytes, n * 4 + 32);
+    EXPECT_LE(memory.bvh_bytes, n * 4 + (2 * n - 1) * 32);
     EXPECT_DOUBLE_EQ(memory.per_triangle(),
-                     static_cast<double>(memory.triangle_bytes + memory.normal_bytes + memory.bvh_bytes) / n);
+                     static_cast<double>(memory.triangle_bytes + memory.mesh_bytes + memory.normal_bytes + memory.bvh_bytes) / n);
     scene.has_sun = true;  // lit, the grid faceted: six neighbour numbers a triangle
     scene.sun_location = {1, 5, 2};
     compute_triangle_ties(scene);

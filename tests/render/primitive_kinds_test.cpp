@@ -126,8 +126,8 @@ TEST(PrimitiveKinds, OnlyObjectsFarLargerThanTheirDistanceAreMarkedNearTheEye) {
                       {Vec3{-1e8, -1.4, -1e8}, Vec3{1e8, -1.4, -1e8}, Vec3{0, -1.4, 1e8}}};  // ground
     testing::add_mesh(scene, mesh, {1, 1, 1});
     const Vec3 eye{0, 0, 5};
-    EXPECT_FALSE(TriangleKind::device(scene, scene.triangles[0], eye).flags & CLR_SURFACE_NEAR_EYE);
-    EXPECT_TRUE(TriangleKind::device(scene, scene.triangles[1], eye).flags & CLR_SURFACE_NEAR_EYE);
+    EXPECT_FALSE(TriangleKind::device(scene, scene.triangles[0], eye).mesh_flags & CLR_SURFACE_NEAR_EYE);
+    EXPECT_TRUE(TriangleKind::device(scene, scene.triangles[1], eye).mesh_flags & CLR_SURFACE_NEAR_EYE);
     EXPECT_FALSE(SphereKind::device(testing::make_sphere({0, 0, 0}, 1, {1, 1, 1}), eye).flags & CLR_SURFACE_NEAR_EYE);
     EXPECT_TRUE(SphereKind::device(testing::make_sphere({0, -1e8 - 1.4, 5}, 1e8, {1, 1, 1}), eye).flags &
                 CLR_SURFACE_NEAR_EYE);
