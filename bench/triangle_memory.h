@@ -1,6 +1,7 @@
 // What a scene's mesh triangles cost in device memory, for the benchmark's triangle rows:
-// the kernels' ClrTriangle, their meshes' ClrMeshSurface, their corner normals, their neighbours on shared edges and corners
-// where the program settles hits there, and the BVH that shadow rays traverse.
+// the kernels' ClrTriangle, their meshes' ClrMeshSurface, their corner normals, their neighbours
+// on shared edges and corners where the program settles hits there, and the BVH that shadow rays
+// traverse.
 #pragma once
 
 #include <cstddef>
@@ -20,7 +21,8 @@ struct TriangleMemory {
     // Everything above shared by the triangles (the BVH's few non-triangle objects included:
     // the triangle scenes hold a handful next to a million triangles); 0 without triangles.
     double per_triangle() const {
-        return triangles ? static_cast<double>(triangle_bytes + mesh_bytes + normal_bytes + tie_bytes + bvh_bytes) / triangles : 0;
+        const std::size_t bytes = triangle_bytes + mesh_bytes + normal_bytes + tie_bytes + bvh_bytes;
+        return triangles ? static_cast<double>(bytes) / triangles : 0;
     }
 };
 

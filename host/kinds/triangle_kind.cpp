@@ -50,6 +50,9 @@ double TriangleKind::least_distance(const ObjectBounds& view, const Triangle& tr
 // Every mesh has a triangle (the loader refuses a mesh that draws nothing), so a scene's mesh
 // indices fit the 24 bits that ClrTriangle::mesh_flags has for them.
 static_assert(kMaxSceneTriangles <= (std::size_t(1) << (32 - CLR_TRIANGLE_MESH_SHIFT)));
+// And every surface flag fits the bits below the mesh's.
+static_assert(((CLR_SURFACE_MIRROR | CLR_SURFACE_TEXTURED | CLR_SURFACE_HOLES | CLR_SURFACE_NEAR_EYE) &
+               ~CLR_TRIANGLE_OWN_FLAGS) == 0);
 
 ClrTriangle TriangleKind::device(const Scene& scene, const Triangle& triangle, const Vec3& origin) {
     if (triangle.mesh >= scene.meshes.size() || triangle.mesh >= (1u << (32 - CLR_TRIANGLE_MESH_SHIFT)))

@@ -566,8 +566,8 @@ CLR_PACKET_INLINE Directions16 triangle_normals16(const int* indices, Points16 p
 
 uint triangle_flags(int index, CLR_SCENE_PARAMS)
 {
-    uint own = triangles[index].mesh_flags;
-    return (own & CLR_TRIANGLE_OWN_FLAGS) | triangle_mesh_surface(index, CLR_SCENE_ARGS)->flags;
+    uint word = triangles[index].mesh_flags; /* its own flags and its mesh, read once */
+    return (word & CLR_TRIANGLE_OWN_FLAGS) | mesh_surfaces[word >> CLR_TRIANGLE_MESH_SHIFT].flags;
 }
 
 /* Its Blinn-Phong material (ClrMaterial) in `materials`. */

@@ -35,7 +35,9 @@ TEST(TriangleMemory, TrianglesNormalsAndTree) {
     EXPECT_GE(memory.bvh_bytes, n * 4 + 32);
     EXPECT_LE(memory.bvh_bytes, n * 4 + (2 * n - 1) * 32);
     EXPECT_DOUBLE_EQ(memory.per_triangle(),
-                     static_cast<double>(memory.triangle_bytes + memory.mesh_bytes + memory.normal_bytes + memory.bvh_bytes) / n);
+                     static_cast<double>(memory.triangle_bytes + memory.mesh_bytes + memory.normal_bytes +
+                                         memory.bvh_bytes) /
+                         n);
     scene.has_sun = true;  // lit, the grid faceted: six neighbour numbers a triangle
     scene.sun_location = {1, 5, 2};
     compute_triangle_ties(scene);
